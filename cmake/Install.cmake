@@ -1,0 +1,19 @@
+include(GNUInstallDirs)
+include(CMakePackageConfigHelpers)
+
+install(TARGETS edgeland_kernel edgeland_clip edgeland
+  EXPORT edgelandTargets
+  ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+  LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
+  RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
+  INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+install(DIRECTORY kernel/include/ clip/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+install(EXPORT edgelandTargets NAMESPACE edgeland:: DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/edgeland)
+configure_package_config_file(cmake/edgelandConfig.cmake.in
+  ${CMAKE_CURRENT_BINARY_DIR}/edgelandConfig.cmake
+  INSTALL_DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/edgeland)
+write_basic_package_version_file(${CMAKE_CURRENT_BINARY_DIR}/edgelandConfigVersion.cmake
+  COMPATIBILITY SameMinorVersion)
+install(FILES ${CMAKE_CURRENT_BINARY_DIR}/edgelandConfig.cmake
+  ${CMAKE_CURRENT_BINARY_DIR}/edgelandConfigVersion.cmake
+  DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/edgeland)

@@ -1,0 +1,55 @@
+#pragma once
+// The kernel's arithmetic, written once over a number type `W`.
+//
+// The library instantiates these with arith::Checked<Int128>; proofs/ instantiates the very
+// same templates with a Z3-backed symbolic integer that asks, at every operation, whether the
+// exact value can leave the range of the machine type. Keep them branch-free: a formula that
+// needs a case split takes it as a separate function so each case can be proven on its own.
+// Inputs are coordinates already checked against kCoordBound (point.hpp).
+
+namespace edgeland::formulas {
+
+// Cross product of (ax, ay) and (bx, by).
+template <class W>
+constexpr W cross(W ax, W ay, W bx, W by) {
+  return ax * by - ay * bx;
+}
+
+// Twice the signed area of triangle abc: > 0 when c is left of a->b.
+template <class W>
+constexpr W orient(W ax, W ay, W bx, W by, W cx, W cy) {
+  return cross(bx - ax, by - ay, cx - ax, cy - ay);
+}
+
+// Dot product of (b - a) and (c - a): sign tells whether c projects before, onto or past a.
+template <class W>
+constexpr W dot_from(W ax, W ay, W bx, W by, W cx, W cy) {
+  return (bx - ax) * (cx - ax) + (by - ay) * (cy - ay);
+}
+
+// Exact intersection of the lines through segments p0->p1 and q0->q1 as homogeneous
+// coordinates (x_num / den, y_num / den). den == 0 means parallel lines.
+template <class W>
+struct Homogeneous {
+  W x_num, y_num, den;
+};
+
+template <class W>
+constexpr Homogeneous<W> line_intersection(W p0x, W p0y, W p1x, W p1y, W q0x, W q0y, W q1x,
+                                           W q1y) {
+  const W rx = p1x - p0x, ry = p1y - p0y;
+  const W sx = q1x - q0x, sy = q1y - q0y;
+  const W den = cross(rx, ry, sx, sy);
+  const W t = cross(q0x - p0x, q0y - p0y, sx, sy);
+  return {p0x * den + rx * t, p0y * den + ry * t, den};
+}
+
+// The one rounding rule of the library: the nearest integer, halves rounded up (toward +inf),
+// i.e. floor(num / den + 1/2) = floor((2 num + den) / (2 den)), for den > 0.
+template <class W>
+constexpr W round_half_up(W num, W den) {
+  const W two = W(2);
+  return floor_div(two * num + den, two * den);
+}
+
+}  // namespace edgeland::formulas

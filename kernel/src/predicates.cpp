@@ -1,0 +1,114 @@
+#include "edgeland/kernel/predicates.hpp"
+
+#include <algorithm>
+#include <utility>
+
+#include "edgeland/kernel/checked.hpp"
+#include "edgeland/kernel/formulas.hpp"
+
+namespace edgeland {
+namespace {
+
+using W = arith::Checked<Int128>;
+
+constexpr int sign(Int128 v) noexcept { return (v > 0) - (v < 0); }
+
+// Position of p along the segment direction a->b, used to order collinear points.
+Int128 along(Point64 a, Point64 b, Point64 p) noexcept {
+  return formulas::dot_from<W>(a.x, a.y, b.x, b.y, p.x, p.y).v;
+}
+
+}  // namespace
+
+Int128 orient_det(Point64 a, Point64 b, Point64 c) noexcept {
+  return formulas::orient<W>(a.x, a.y, b.x, b.y, c.x, c.y).v;
+}
+
+Orientation orientation(Point64 a, Point64 b, Point64 c) noexcept {
+  return static_cast<Orientation>(sign(orient_det(a, b, c)));
+}
+
+int dot_sign(Point64 a, Point64 b, Point64 c) noexcept { return sign(along(a, b, c)); }
+
+bool on_segment(Point64 p, const Segment& s) noexcept {
+  if (orient_det(s.a, s.b, p) != 0) return false;
+  return std::min(s.a.x, s.b.x) <= p.x && p.x <= std::max(s.a.x, s.b.x) &&
+         std::min(s.a.y, s.b.y) <= p.y && p.y <= std::max(s.a.y, s.b.y);
+}
+
+bool on_segment_interior(Point64 p, const Segment& s) noexcept {
+  return p != s.a && p != s.b && on_segment(p, s);
+}
+
+std::optional<RationalPoint> line_intersection(const Segment& s, const Segment& t) noexcept {
+  const auto h = formulas::line_intersection<W>(s.a.x, s.a.y, s.b.x, s.b.y, t.a.x, t.a.y,
+                                                t.b.x, t.b.y);
+  if (h.den.v == 0) return std::nullopt;
+  // Negating cannot overflow: the proofs bound every component well inside (-2^127, 2^127).
+  if (h.den.v < 0) return RationalPoint{-h.x_num.v, -h.y_num.v, -h.den.v};
+  return RationalPoint{h.x_num.v, h.y_num.v, h.den.v};
+}
+
+namespace {
+
+RationalPoint integer_point(Point64 p) noexcept { return RationalPoint{p.x, p.y, 1}; }
+
+// Both segments lie on one line: compare their extents along it.
+SegmentIntersection collinear_intersection(const Segment& s, const Segment& t) noexcept {
+  Point64 s0 = std::min(s.a, s.b), s1 = std::max(s.a, s.b);
+  Point64 t0 = std::min(t.a, t.b), t1 = std::max(t.a, t.b);
+  // On a common line the lexicographic order of points is the order along the line.
+  const Point64 lo = std::max(s0, t0), hi = std::min(s1, t1);
+  SegmentIntersection r;
+  if (hi < lo) return r;
+  if (lo == hi) {
+    r.relation = SegmentRelation::kTouching;
+    r.point = integer_point(lo);
+    return r;
+  }
+  r.relation = SegmentRelation::kOverlapping;
+  r.overlap_from = lo;
+  r.overlap_to = hi;
+  return r;
+}
+
+SegmentIntersection point_against_segment(Point64 p, const Segment& t) noexcept {
+  SegmentIntersection r;
+  if (on_segment(p, t)) {
+    r.relation = SegmentRelation::kTouching;
+    r.point = integer_point(p);
+  }
+  return r;
+}
+
+}  // namespace
+
+SegmentIntersection intersect(const Segment& s, const Segment& t) noexcept {
+  if (s.a == s.b) return point_against_segment(s.a, t);
+  if (t.a == t.b) return point_against_segment(t.a, s);
+  const int o1 = sign(orient_det(s.a, s.b, t.a));
+  const int o2 = sign(orient_det(s.a, s.b, t.b));
+  const int o3 = sign(orient_det(t.a, t.b, s.a));
+  const int o4 = sign(orient_det(t.a, t.b, s.b));
+  SegmentIntersection r;
+  if (o1 == 0 && o2 == 0) return collinear_intersection(s, t);
+  if (o1 * o2 > 0 || o3 * o4 > 0) return r;
+  // From here the lines cross at exactly one point, which lies on both closed segments.
+  if (o1 == 0 || o2 == 0 || o3 == 0 || o4 == 0) {
+    r.relation = SegmentRelation::kTouching;
+    const Point64 p = o1 == 0 ? t.a : o2 == 0 ? t.b : o3 == 0 ? s.a : s.b;
+    r.point = integer_point(p);
+    return r;
+  }
+  r.relation = SegmentRelation::kCrossing;
+  r.point = *line_intersection(s, t);
+  return r;
+}
+
+Point64 round_to_grid(const RationalPoint& p) noexcept {
+  const W x = formulas::round_half_up<W>(p.x_num, p.den);
+  const W y = formulas::round_half_up<W>(p.y_num, p.den);
+  return Point64{static_cast<std::int64_t>(x.v), static_cast<std::int64_t>(y.v)};
+}
+
+}  // namespace edgeland
