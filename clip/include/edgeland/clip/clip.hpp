@@ -1,0 +1,89 @@
+#pragma once
+// Boolean operations on integer polygon sets (thesis chapter 3), closed under repetition:
+// every result is a valid polygon set (kernel validate.hpp) and is accepted as input again.
+//
+// ACCURACY CONTRACT. For valid integer inputs the output differs from the exact real-number
+// result R only by snap rounding (the kernel's round_to_grid, see clip/README.md):
+//   * every output vertex lies within one unit of the boundary of R;
+//   * |area(output) - area(R)| <= perimeter(R) (in coordinate units);
+//   * every point farther than 1.5 units from the boundary of R is inside the output iff it
+//     is inside R.
+// LOCALITY. An input edge farther than 2 units from the other operand's boundary appears in
+// the output unchanged, vertex for vertex, or not at all.
+// CANONICAL OUTPUT. Polygons are hole-free, strictly simple and CCW, have no collinear
+// consecutive vertices, start at their lexicographically smallest vertex and are sorted by
+// that vertex; equal inputs give byte-identical outputs on every compiler and platform.
+// ERRORS. Invalid input throws InvalidInput (nothing is returned half-done). In checked mode
+// every output is re-validated; a violation throws InternalError carrying the inputs as WKT.
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "edgeland/kernel/bbox.hpp"
+#include "edgeland/kernel/errors.hpp"
+#include "edgeland/kernel/export.hpp"
+#include "edgeland/kernel/polygon.hpp"
+#include "edgeland/kernel/validate.hpp"
+
+namespace edgeland {
+
+enum class ClipOp : std::uint8_t { kUnion, kIntersection, kDifference, kXor };
+// How arbitrary rings are filled by normalize(): a point is inside when its winding number w
+// satisfies: odd (kEvenOdd), w != 0 (kNonZero), w > 0 (kPositive), w < 0 (kNegative).
+enum class FillRule : std::uint8_t { kEvenOdd, kNonZero, kPositive, kNegative };
+
+EDGELAND_EXPORT const char* op_name(ClipOp op) noexcept;
+EDGELAND_EXPORT const char* fill_rule_name(FillRule rule) noexcept;
+
+struct ClipOptions {
+  // Re-validate every output with the kernel's checkers (on in tests, fuzzers, `--check`).
+  bool checked = false;
+};
+
+struct ClipStats {
+  std::size_t intersections = 0;      // edge pairs meeting other than at shared vertices
+  std::size_t vertices_snapped = 0;   // points moved to the grid by snap rounding
+  std::size_t holes_split = 0;        // holes removed by cutting their polygon
+  std::size_t zero_area_dropped = 0;  // collapsed pieces removed
+};
+
+struct ClipResult {
+  PolygonSet polygons;
+  ClipStats stats;
+};
+
+// Which operand an InvalidInput error is about.
+enum class Operand : std::uint8_t { kSubject, kClip, kRings };
+
+// An operand failed validation; `violation` says which rule, polygon and edge.
+class EDGELAND_EXPORT InvalidInput : public Error {
+ public:
+  InvalidInput(Operand operand, Violation violation);
+  Operand operand;
+  Violation violation;
+};
+
+// A result failed the checkers in checked mode: a bug in edgeland. Carries the inputs.
+class EDGELAND_EXPORT InternalError : public Error {
+ public:
+  InternalError(const std::string& what, std::string subject_wkt, std::string clip_wkt);
+  std::string subject_wkt;
+  std::string clip_wkt;
+};
+
+// subject OP clip. Both must be valid polygon sets. O((n + k) log n) for n input vertices and
+// k intersections.
+EDGELAND_EXPORT ClipResult clip(ClipOp op, const PolygonSet& subject, const PolygonSet& clip,
+                                const ClipOptions& options = {});
+
+// Any rings (self-intersecting, either orientation, overlapping, repeated points, spikes,
+// zero-area parts) filled by `rule` -> a valid polygon set. Coordinates must be in range;
+// rings with fewer than 3 distinct points contribute nothing.
+EDGELAND_EXPORT ClipResult normalize(const std::vector<Ring>& rings, FillRule rule,
+                                     const ClipOptions& options = {});
+
+// The part of a valid set inside a closed axis-aligned box (the landscape's cell cut).
+EDGELAND_EXPORT ClipResult clip_to_box(const PolygonSet& set, const Box64& box,
+                                       const ClipOptions& options = {});
+
+}  // namespace edgeland
