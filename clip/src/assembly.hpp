@@ -1,0 +1,40 @@
+#pragma once
+// Assembly (thesis 3.5): the operation table picks the result label of every face, and the
+// boundary of every labeled region is traced with the sharpest-left-turn rule (3.5.2).
+#include <cstdint>
+#include <functional>
+#include <utility>
+#include <vector>
+
+#include "edgeland/kernel/polygon.hpp"
+#include "labeling.hpp"
+#include "planar_graph.hpp"
+
+namespace edgeland::detail {
+
+// A face label: which output polygon family a face belongs to, or -1 when not in the result.
+using FaceLabel = std::int64_t;
+using LabelOf = std::function<FaceLabel(const SideState&)>;
+
+// The boundary of one labeled region, split into simple loops.
+struct RegionRings {
+  FaceLabel label = -1;
+  std::vector<Ring> outers;  // counter-clockwise
+  std::vector<Ring> holes;   // clockwise
+};
+
+// Regions sorted by label. Loops that revisit a vertex are split there, so every ring is a
+// simple closed polyline of graph edges.
+std::vector<RegionRings> assemble(const PlaneGraph& g, const std::vector<SideState>& left,
+                                  const LabelOf& label_of);
+
+// Closed walks along the half-edges with emitted[h] >= 0, each following the sharpest left
+// turn among half-edges of its own label. Returns (label, vertex walk) in a fixed order.
+std::vector<std::pair<FaceLabel, std::vector<std::uint32_t>>> trace_boundaries(
+    const PlaneGraph& g, const std::vector<FaceLabel>& emitted);
+
+// Splits a closed vertex walk at repeated vertices into simple loops (sizes >= 3 kept).
+std::vector<std::vector<std::uint32_t>> split_at_repeated_vertices(
+    const std::vector<std::uint32_t>& walk, std::vector<std::int32_t>& scratch_position);
+
+}  // namespace edgeland::detail

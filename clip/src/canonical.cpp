@@ -1,0 +1,42 @@
+#include "canonical.hpp"
+
+#include <algorithm>
+
+#include "edgeland/kernel/predicates.hpp"
+
+namespace edgeland::detail {
+
+Ring canonical_ring(Ring ring) {
+  // Drop vertices that lie on the straight line through their neighbours. In a simple ring
+  // with nonzero area a collinear vertex is a straight continuation, never a fold-back.
+  Ring out;
+  out.reserve(ring.size());
+  for (Point64 p : ring) {
+    while (out.size() >= 2 &&
+           orientation(out[out.size() - 2], out.back(), p) == Orientation::kCollinear)
+      out.pop_back();
+    out.push_back(p);
+  }
+  // The seam: the first and last vertices may be collinear with their wrap-around neighbours.
+  bool changed = true;
+  while (changed && out.size() > 3) {
+    changed = false;
+    const std::size_t n = out.size();
+    if (orientation(out[n - 2], out[n - 1], out[0]) == Orientation::kCollinear) {
+      out.pop_back();
+      changed = true;
+    } else if (orientation(out[n - 1], out[0], out[1]) == Orientation::kCollinear) {
+      out.erase(out.begin());
+      changed = true;
+    }
+  }
+  std::rotate(out.begin(), std::min_element(out.begin(), out.end()), out.end());
+  return out;
+}
+
+void canonicalize(PolygonSet& set) {
+  for (Polygon& p : set) p = canonical_ring(std::move(p));
+  std::sort(set.begin(), set.end());
+}
+
+}  // namespace edgeland::detail

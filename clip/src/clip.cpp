@@ -1,0 +1,222 @@
+// The public operations: validate the input, run the pipeline of clip/README.md, check.
+#include "edgeland/clip/clip.hpp"
+
+#include <stdexcept>
+
+#include "assembly.hpp"
+#include "canonical.hpp"
+#include "edgeland/kernel/validate.hpp"
+#include "edgeland/kernel/wkt_writer.hpp"
+#include "hole_splitting.hpp"
+#include "input_edges.hpp"
+#include "labeling.hpp"
+#include "planar_graph.hpp"
+#include "snap_rounding.hpp"
+
+namespace edgeland {
+namespace {
+
+using detail::FaceLabel;
+using detail::SideState;
+
+const char* operand_name(Operand o) {
+  switch (o) {
+    case Operand::kSubject: return "subject";
+    case Operand::kClip: return "clip";
+    case Operand::kRings: return "rings";
+  }
+  return "?";
+}
+
+FaceLabel label(int channel, std::int32_t polygon) {
+  return (static_cast<FaceLabel>(channel) << 32) | static_cast<FaceLabel>(polygon);
+}
+
+// The operation table of thesis 3.5, on the polygons covering a face (-1: none). Subject
+// polygons are never merged with each other: a face keeps the polygon it came from.
+FaceLabel op_label(ClipOp op, const SideState& st) {
+  const std::int32_t a = st.s[0], b = st.s[1];
+  switch (op) {
+    case ClipOp::kUnion:
+      return a >= 0 ? label(0, a) : b >= 0 ? label(1, b) : -1;
+    case ClipOp::kIntersection:
+      return a >= 0 && b >= 0 ? label(0, a) : -1;
+    case ClipOp::kDifference:
+      return a >= 0 && b < 0 ? label(0, a) : -1;
+    case ClipOp::kXor:
+      return a >= 0 && b < 0 ? label(0, a) : a < 0 && b >= 0 ? label(1, b) : -1;
+  }
+  return -1;
+}
+
+bool filled(FillRule rule, std::int32_t w) {
+  switch (rule) {
+    case FillRule::kEvenOdd: return (w & 1) != 0;
+    case FillRule::kNonZero: return w != 0;
+    case FillRule::kPositive: return w > 0;
+    case FillRule::kNegative: return w < 0;
+  }
+  return false;
+}
+
+struct Pipeline {
+  std::vector<detail::TaggedSegment> edges;
+  detail::LabelMode mode;
+  detail::LabelOf label_of;
+};
+
+ClipResult run(const Pipeline& p) {
+  ClipResult result;
+  std::vector<Segment> segs(p.edges.size());
+  std::vector<std::uint8_t> channel(p.edges.size());
+  std::vector<std::int32_t> polygon(p.edges.size());
+  for (std::size_t i = 0; i < p.edges.size(); ++i) {
+    segs[i] = p.edges[i].seg;
+    channel[i] = p.edges[i].channel;
+    polygon[i] = p.edges[i].polygon;
+  }
+  detail::SnapStats snap;
+  const auto fragments = detail::snap_round(segs, snap);
+  const detail::PlaneGraph g = detail::build_plane_graph(fragments, channel, polygon);
+  const auto left = detail::label_sides(g, p.mode);
+  for (auto& region : detail::assemble(g, left, p.label_of)) {
+    for (Ring& r : detail::split_holes(std::move(region.outers), std::move(region.holes),
+                                       result.stats.holes_split))
+      result.polygons.push_back(std::move(r));
+  }
+  detail::canonicalize(result.polygons);
+  result.stats.intersections = snap.intersections;
+  result.stats.vertices_snapped = snap.hot_pixels;
+  result.stats.zero_area_dropped = g.cancelled_edges;
+  return result;
+}
+
+void require_valid(const PolygonSet& set, Operand which) {
+  const ValidationReport report = validate(set, 1);
+  if (!report.ok()) throw InvalidInput(which, report.violations.front());
+}
+
+// Runs the pipeline; any failure of an internal invariant becomes an InternalError with the
+// inputs, and in checked mode so does an output that fails validation.
+template <class F>
+ClipResult guarded(F&& body, const ClipOptions& options, const std::string& what,
+                   const std::function<std::string()>& subject_wkt,
+                   const std::function<std::string()>& clip_wkt) {
+  ClipResult r;
+  try {
+    r = body();
+  } catch (const std::logic_error& e) {
+    throw InternalError(what + ": " + e.what(), subject_wkt(), clip_wkt());
+  }
+  if (options.checked) {
+    const ValidationReport report = validate(r.polygons, 1);
+    if (!report.ok())
+      throw InternalError(what + ": invalid output: " + report.violations.front().describe(),
+                          subject_wkt(), clip_wkt());
+  }
+  return r;
+}
+
+}  // namespace
+
+const char* op_name(ClipOp op) noexcept {
+  switch (op) {
+    case ClipOp::kUnion: return "union";
+    case ClipOp::kIntersection: return "intersection";
+    case ClipOp::kDifference: return "difference";
+    case ClipOp::kXor: return "xor";
+  }
+  return "?";
+}
+
+const char* fill_rule_name(FillRule rule) noexcept {
+  switch (rule) {
+    case FillRule::kEvenOdd: return "evenodd";
+    case FillRule::kNonZero: return "nonzero";
+    case FillRule::kPositive: return "positive";
+    case FillRule::kNegative: return "negative";
+  }
+  return "?";
+}
+
+InvalidInput::InvalidInput(Operand which, Violation v)
+    : Error(std::string("invalid ") + operand_name(which) + ": " + v.describe()),
+      operand(which),
+      violation(v) {}
+
+InternalError::InternalError(const std::string& what, std::string subject, std::string clip)
+    : Error("edgeland internal error (please report with the inputs): " + what),
+      subject_wkt(std::move(subject)),
+      clip_wkt(std::move(clip)) {}
+
+ClipResult clip(ClipOp op, const PolygonSet& subject, const PolygonSet& clip_set,
+                const ClipOptions& options) {
+  require_valid(subject, Operand::kSubject);
+  require_valid(clip_set, Operand::kClip);
+  return guarded(
+      [&] {
+        Pipeline p;
+        detail::append_ring_edges(subject, 0, true, p.edges);
+        detail::append_ring_edges(clip_set, 1, true, p.edges);
+        p.mode = detail::LabelMode::kOwner;
+        p.label_of = [op](const SideState& s) { return op_label(op, s); };
+        return run(p);
+      },
+      options, op_name(op), [&] { return to_wkt(subject); }, [&] { return to_wkt(clip_set); });
+}
+
+ClipResult normalize(const std::vector<Ring>& rings, FillRule rule, const ClipOptions& options) {
+  for (std::size_t r = 0; r < rings.size(); ++r)
+    for (std::size_t i = 0; i < rings[r].size(); ++i)
+      if (!in_range(rings[r][i])) {
+        Violation v;
+        v.rule = Rule::kCoordinateOutOfRange;
+        v.polygon = r;
+        v.edge = i;
+        v.where = rings[r][i];
+        throw InvalidInput(Operand::kRings, v);
+      }
+  return guarded(
+      [&] {
+        Pipeline p;
+        detail::append_ring_edges(rings, 0, false, p.edges);
+        p.mode = detail::LabelMode::kWinding;
+        p.label_of = [rule](const SideState& s) -> FaceLabel { return filled(rule, s.s[0]) ? 0 : -1; };
+        return run(p);
+      },
+      options, std::string("normalize ") + fill_rule_name(rule),
+      [&] {
+        PolygonSet as_set(rings.begin(), rings.end());
+        return to_wkt(as_set);
+      },
+      [] { return std::string("MULTIPOLYGON EMPTY"); });
+}
+
+ClipResult clip_to_box(const PolygonSet& set, const Box64& box, const ClipOptions& options) {
+  if (!in_range(box.min) || !in_range(box.max) || box.min.x > box.max.x || box.min.y > box.max.y) {
+    Violation v;
+    v.rule = Rule::kCoordinateOutOfRange;
+    v.where = in_range(box.min) ? box.max : box.min;
+    throw InvalidInput(Operand::kClip, v);
+  }
+  require_valid(set, Operand::kSubject);
+  if (box.min.x == box.max.x || box.min.y == box.max.y) return {};
+  // Members that cannot reach the box take no part; the rest go through the full pipeline,
+  // so the result stays closed under repetition exactly like clip().
+  PolygonSet near;
+  for (const Polygon& p : set)
+    if (bounding_box(p)->overlaps(box)) near.push_back(p);
+  const PolygonSet cell{{box.min, {box.max.x, box.min.y}, box.max, {box.min.x, box.max.y}}};
+  return guarded(
+      [&] {
+        Pipeline p;
+        detail::append_ring_edges(near, 0, true, p.edges);
+        detail::append_ring_edges(cell, 1, true, p.edges);
+        p.mode = detail::LabelMode::kOwner;
+        p.label_of = [](const SideState& s) { return op_label(ClipOp::kIntersection, s); };
+        return run(p);
+      },
+      options, "clip_to_box", [&] { return to_wkt(set); }, [&] { return to_wkt(cell); });
+}
+
+}  // namespace edgeland

@@ -1,0 +1,244 @@
+#include "hole_splitting.hpp"
+
+#include <algorithm>
+#include <optional>
+#include <stdexcept>
+#include <unordered_map>
+
+#include "assembly.hpp"
+#include "edgeland/kernel/angle.hpp"
+#include "edgeland/kernel/area.hpp"
+#include "edgeland/kernel/bbox.hpp"
+#include "edgeland/kernel/point_in_polygon.hpp"
+#include "edgeland/kernel/predicates.hpp"
+#include "planar_graph.hpp"
+
+namespace edgeland::detail {
+namespace {
+
+// Whether hole `h` (clockwise) lies inside outer ring `o` (counter-clockwise). They share no
+// edge; they may touch at vertices.
+bool hole_inside(const Ring& h, const Ring& o) {
+  for (Point64 v : h) {
+    const PointLocation loc = locate(v, o);
+    if (loc != PointLocation::kOnBoundary) return loc == PointLocation::kInside;
+  }
+  // Every vertex of h is on o: decide by the direction of h's first edge at its first vertex.
+  const auto it = std::find(o.begin(), o.end(), h[0]);
+  const std::size_t j = static_cast<std::size_t>(it - o.begin()), n = o.size();
+  const Point64 v = o[j], next = o[(j + 1) % n], prev = o[(j + n - 1) % n];
+  return strictly_inside_ccw_sector({next.x - v.x, next.y - v.y}, {prev.x - v.x, prev.y - v.y},
+                                    {h[1].x - v.x, h[1].y - v.y});
+}
+
+// Coordinates seen through a half-turn (s = -1) or as they are (s = 1). A half-turn keeps
+// orientations and reverses the lexicographic order, so "right" bridges reuse the left code.
+Point64 frame(Point64 p, int s) { return {s * p.x, s * p.y}; }
+
+struct Hit {
+  bool found = false;
+  bool at_vertex = false;
+  Point64 vertex;       // when at_vertex
+  Segment edge;         // otherwise: the edge crossed (framed coordinates)
+  Int128 num = 0, den = 1;  // x of the hit
+};
+
+void offer(Hit& best, const Hit& h) {
+  if (!best.found || h.num * best.den > best.num * h.den) best = h;
+}
+
+// Nearest hit of the ray from o towards -x (framed coordinates), ignoring edges at o.
+Hit cast_west(Point64 o, const std::vector<Segment>& obstacles, int s) {
+  Hit best;
+  for (const Segment& raw : obstacles) {
+    const Point64 a = frame(raw.a, s), b = frame(raw.b, s);
+    if (a == o || b == o) continue;
+    if (a.y == b.y) {
+      if (a.y != o.y) continue;
+      const Point64 near = a.x > b.x ? a : b;
+      if (near.x < o.x) offer(best, {true, true, near, {}, near.x, 1});
+      continue;
+    }
+    if (o.y < std::min(a.y, b.y) || o.y > std::max(a.y, b.y)) continue;
+    if (a.y == o.y || b.y == o.y) {
+      const Point64 v = a.y == o.y ? a : b;
+      if (v.x < o.x) offer(best, {true, true, v, {}, v.x, 1});
+      continue;
+    }
+    Int128 den = b.y - a.y;
+    Int128 num = Int128(a.x) * den + Int128(o.y - a.y) * (b.x - a.x);
+    if (den < 0) num = -num, den = -den;
+    if (num < Int128(o.x) * den) offer(best, {true, false, {}, {a, b}, num, den});
+  }
+  return best;
+}
+
+bool sign_matches(Orientation want, Orientation got) {
+  return got == want || got == Orientation::kCollinear;
+}
+
+// A vertex visible from hole vertex o (framed: lexicographically smaller than o), found as in
+// Eberly's hole bridging: nearest hit of the westward ray, then inside the triangle (o, hit,
+// end of the hit edge) the vertex making the smallest angle with the ray.
+std::optional<Point64> ray_candidate(Point64 o, const std::vector<Segment>& obstacles,
+                                     const std::vector<Point64>& vertices, int s) {
+  const Hit hit = cast_west(o, obstacles, s);
+  if (!hit.found) return std::nullopt;
+  if (hit.at_vertex) return hit.vertex;
+  const Point64 p = std::min(hit.edge.a, hit.edge.b);
+  const bool upper = p.y > o.y;
+  const Orientation side_of_edge = orientation(hit.edge.a, hit.edge.b, o);
+  const Orientation side_of_op = orientation(o, p, {o.x - 1, o.y});
+  Point64 best = p;
+  for (Point64 raw : vertices) {
+    const Point64 v = frame(raw, s);
+    if (v == o || v == p) continue;
+    if (upper ? v.y <= o.y : v.y >= o.y) continue;
+    if (!sign_matches(side_of_edge, orientation(hit.edge.a, hit.edge.b, v))) continue;
+    if (!sign_matches(side_of_op, orientation(o, p, v))) continue;
+    const Point64 u1{v.x - o.x, v.y - o.y}, u2{best.x - o.x, best.y - o.y};
+    const Orientation turn = upper ? orientation({0, 0}, u2, u1) : orientation({0, 0}, u1, u2);
+    if (turn == Orientation::kCounterClockwise || (turn == Orientation::kCollinear && v.x > best.x))
+      best = v;
+  }
+  return best;
+}
+
+// The open segment o-t touches no obstacle and no obstacle overlaps it.
+bool visible(Point64 o, Point64 t, const std::vector<Segment>& obstacles) {
+  const Segment bridge{o, t};
+  for (const Segment& e : obstacles) {
+    const SegmentIntersection r = intersect(bridge, e);
+    if (r.relation == SegmentRelation::kDisjoint) continue;
+    if (r.relation != SegmentRelation::kTouching) return false;
+    const Point64 q = round_to_grid(r.point);  // exact: a touching point is an endpoint
+    if ((q == o || q == t) && (q == e.a || q == e.b)) continue;
+    return false;
+  }
+  return true;
+}
+
+std::optional<Point64> bridge_target(Point64 o, const std::vector<Segment>& obstacles,
+                                     const std::vector<Point64>& vertices, int s) {
+  const Point64 fo = frame(o, s);
+  if (auto t = ray_candidate(fo, obstacles, vertices, s)) {
+    const Point64 target = frame(*t, s);
+    if (visible(o, target, obstacles)) return target;
+  }
+  // Not expected; keep going with the nearest visible smaller vertex rather than give up.
+  std::vector<Point64> smaller;
+  for (Point64 v : vertices)
+    if (frame(v, s) < fo) smaller.push_back(v);
+  auto dist2 = [&](Point64 v) {
+    const Int128 dx = v.x - o.x, dy = v.y - o.y;
+    return dx * dx + dy * dy;
+  };
+  std::sort(smaller.begin(), smaller.end(), [&](Point64 a, Point64 b) {
+    const Int128 da = dist2(a), db = dist2(b);
+    return da != db ? da < db : a < b;
+  });
+  for (Point64 v : smaller)
+    if (visible(o, v, obstacles)) return v;
+  return std::nullopt;
+}
+
+std::vector<Ring> split_one(const Ring& outer, std::vector<const Ring*> holes) {
+  std::vector<Segment> obstacles;
+  std::vector<Point64> vertices;
+  std::unordered_map<Point64, int, Point64Hash> degree;
+  auto add_ring = [&](const Ring& r) {
+    for (std::size_t i = 0; i < r.size(); ++i) {
+      obstacles.push_back(ring_edge(r, i));
+      vertices.push_back(r[i]);
+      ++degree[r[i]];
+    }
+  };
+  add_ring(outer);
+  for (const Ring* h : holes) add_ring(*h);
+  const std::size_t ring_edges = obstacles.size();
+
+  std::sort(holes.begin(), holes.end(), [](const Ring* a, const Ring* b) {
+    return *std::min_element(a->begin(), a->end()) < *std::min_element(b->begin(), b->end());
+  });
+  for (const Ring* h : holes) {
+    for (int s : {1, -1}) {
+      // s = 1: from the smallest vertex leftwards; s = -1: from the largest rightwards.
+      const Point64 o = s == 1 ? *std::min_element(h->begin(), h->end())
+                               : *std::max_element(h->begin(), h->end());
+      if (degree[o] > 1) continue;  // the hole already touches another ring here
+      const auto t = bridge_target(o, obstacles, vertices, s);
+      if (!t) throw std::logic_error("hole splitting: no visible vertex for a bridge");
+      obstacles.push_back({o, *t});
+    }
+  }
+
+  // Trace the faces of rings + bridges (each bridge usable once in each direction).
+  std::vector<Fragment> frags;
+  std::vector<std::uint8_t> channel;
+  std::vector<std::int32_t> polygon;
+  for (std::size_t i = 0; i < obstacles.size(); ++i) {
+    const bool bridge = i >= ring_edges;
+    frags.push_back({obstacles[i], static_cast<std::uint32_t>(channel.size())});
+    channel.push_back(bridge ? 1 : 0);
+    polygon.push_back(0);
+    if (bridge) {
+      frags.push_back({{obstacles[i].b, obstacles[i].a}, static_cast<std::uint32_t>(channel.size())});
+      channel.push_back(1);
+      polygon.push_back(1);
+    }
+  }
+  const PlaneGraph g = build_plane_graph(frags, channel, polygon);
+  std::vector<FaceLabel> emitted(2 * g.edge_count(), -1);
+  for (std::uint32_t e = 0; e < g.edge_count(); ++e)
+    for (std::uint32_t k = g.mult_begin[e]; k < g.mult_begin[e + 1]; ++k)
+      emitted[2 * e + (g.mults[k].net > 0 ? 0 : 1)] = 0;
+  std::vector<Ring> pieces;
+  std::vector<std::int32_t> position(g.vertices.size(), -1);
+  for (const auto& walk : trace_boundaries(g, emitted)) {
+    for (const auto& loop : split_at_repeated_vertices(walk.second, position)) {
+      Ring ring(loop.size());
+      for (std::size_t i = 0; i < loop.size(); ++i) ring[i] = g.vertices[loop[i]];
+      if (twice_signed_area(ring) <= 0)
+        throw std::logic_error("hole splitting: a piece is still a hole");
+      pieces.push_back(std::move(ring));
+    }
+  }
+  return pieces;
+}
+
+}  // namespace
+
+std::vector<Ring> split_holes(std::vector<Ring> outers, std::vector<Ring> holes,
+                              std::size_t& holes_split) {
+  if (holes.empty()) return outers;
+  std::vector<Box64> boxes(outers.size());
+  std::vector<Int128> areas(outers.size());
+  for (std::size_t i = 0; i < outers.size(); ++i) {
+    boxes[i] = *bounding_box(outers[i]);
+    areas[i] = twice_signed_area(outers[i]);
+  }
+  std::vector<std::vector<const Ring*>> owned(outers.size());
+  for (const Ring& h : holes) {
+    const Box64 hb = *bounding_box(h);
+    std::size_t parent = outers.size();
+    for (std::size_t i = 0; i < outers.size(); ++i) {
+      if (!boxes[i].contains(hb.min) || !boxes[i].contains(hb.max)) continue;
+      if (parent < outers.size() && areas[i] >= areas[parent]) continue;
+      if (hole_inside(h, outers[i])) parent = i;
+    }
+    if (parent == outers.size()) throw std::logic_error("hole splitting: hole outside every ring");
+    owned[parent].push_back(&h);
+  }
+  std::vector<Ring> out;
+  for (std::size_t i = 0; i < outers.size(); ++i) {
+    if (owned[i].empty()) {
+      out.push_back(std::move(outers[i]));
+      continue;
+    }
+    holes_split += owned[i].size();
+    for (Ring& piece : split_one(outers[i], owned[i])) out.push_back(std::move(piece));
+  }
+  return out;
+}
+
+}  // namespace edgeland::detail

@@ -1,0 +1,174 @@
+#include "snap_rounding.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <unordered_set>
+#include <utility>
+
+#include "box_sweep.hpp"
+#include "edgeland/kernel/bbox.hpp"
+#include "edgeland/kernel/pixel.hpp"
+#include "edgeland/kernel/predicates.hpp"
+#include "noding.hpp"
+
+namespace edgeland::detail {
+namespace {
+
+using PointSet = std::unordered_set<Point64, Point64Hash>;
+
+Box64 segment_box(const Segment& s) {
+  Box64 b{s.a, s.a};
+  b.expand(s.b);
+  return b;
+}
+
+// A box that contains the whole pixel of p (closed, integer corners).
+Box64 pixel_box(Point64 p) { return Box64{{p.x - 1, p.y - 1}, {p.x + 1, p.y + 1}}; }
+
+std::vector<Box64> pixel_boxes(const std::vector<Point64>& pts) {
+  std::vector<Box64> boxes(pts.size());
+  for (std::size_t i = 0; i < pts.size(); ++i) boxes[i] = pixel_box(pts[i]);
+  return boxes;
+}
+
+struct Closure {
+  std::vector<Point64> hot;                                      // all hot pixel centres
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> meets;    // (segment, hot index)
+  std::vector<bool> moved;
+};
+
+// Grows the hot set until every vertex pixel met by a moved segment is hot and every segment
+// meeting a hot pixel off its centre is moved. Each round only looks at what is new.
+void close_hot_set(const std::vector<Segment>& segs, const std::vector<Box64>& seg_boxes,
+                   const std::vector<Point64>& vertices, PointSet& is_hot, Closure& c,
+                   std::vector<Point64> fresh) {
+  while (!fresh.empty()) {
+    const std::uint32_t base = static_cast<std::uint32_t>(c.hot.size());
+    c.hot.insert(c.hot.end(), fresh.begin(), fresh.end());
+    std::vector<std::uint32_t> newly_moved;
+    for_each_overlapping_pair(pixel_boxes(fresh), seg_boxes, [&](std::uint32_t h, std::uint32_t s) {
+      const Point64 centre = fresh[h];
+      if (!segment_meets_pixel(segs[s], centre)) return;
+      c.meets.emplace_back(s, base + h);
+      if (!c.moved[s] && !on_segment(centre, segs[s])) {
+        c.moved[s] = true;
+        newly_moved.push_back(s);
+      }
+    });
+    fresh.clear();
+    if (newly_moved.empty()) break;
+    std::vector<Box64> moved_boxes(newly_moved.size());
+    for (std::size_t k = 0; k < newly_moved.size(); ++k)
+      moved_boxes[k] = seg_boxes[newly_moved[k]];
+    for_each_overlapping_pair(moved_boxes, pixel_boxes(vertices),
+                              [&](std::uint32_t k, std::uint32_t v) {
+                                const Point64 p = vertices[v];
+                                if (is_hot.count(p)) return;
+                                if (!segment_meets_pixel(segs[newly_moved[k]], p)) return;
+                                is_hot.insert(p);
+                                fresh.push_back(p);
+                              });
+    std::sort(fresh.begin(), fresh.end());  // deterministic order, independent of hashing
+  }
+}
+
+// Routes every segment through its split points and the centres of the hot pixels it meets.
+std::vector<Fragment> route(const std::vector<Segment>& segs, const Closure& c,
+                            const std::vector<std::pair<std::uint32_t, Point64>>& splits) {
+  std::vector<std::pair<std::uint32_t, Point64>> stops = splits;
+  for (const auto& [s, h] : c.meets) stops.emplace_back(s, c.hot[h]);
+  std::sort(stops.begin(), stops.end(), [&](const auto& x, const auto& y) {
+    if (x.first != y.first) return x.first < y.first;
+    const Segment& s = segs[x.first];
+    const Int128 px = projection(s, x.second), py = projection(s, y.second);
+    if (px != py) return px < py;
+    return x.second < y.second;
+  });
+  std::vector<Fragment> out;
+  out.reserve(segs.size() + stops.size());
+  std::size_t k = 0;
+  for (std::uint32_t s = 0; s < segs.size(); ++s) {
+    Point64 at = segs[s].a;
+    for (; k < stops.size() && stops[k].first == s; ++k) {
+      const Point64 p = stops[k].second;
+      if (p == at || p == segs[s].b) continue;
+      out.push_back({{at, p}, s});
+      at = p;
+    }
+    if (at != segs[s].b) out.push_back({{at, segs[s].b}, s});
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<Fragment> snap_round(const std::vector<Segment>& segs, SnapStats& stats) {
+  std::vector<Box64> seg_boxes(segs.size());
+  for (std::size_t i = 0; i < segs.size(); ++i) seg_boxes[i] = segment_box(segs[i]);
+
+  Contacts contacts = find_contacts(segs);
+  stats.intersections = contacts.intersections;
+
+  // Vertex pixels: input endpoints and exact split points.
+  std::vector<Point64> vertices;
+  vertices.reserve(2 * segs.size() + contacts.splits.size());
+  for (const Segment& s : segs) {
+    vertices.push_back(s.a);
+    vertices.push_back(s.b);
+  }
+  for (const auto& sp : contacts.splits) vertices.push_back(sp.second);
+
+  PointSet is_hot;
+  Closure closure;
+  closure.moved.assign(segs.size(), false);
+  std::vector<Point64> fresh;
+  auto add_hot = [&](const std::vector<Point64>& pts) {
+    for (Point64 p : pts)
+      if (is_hot.insert(p).second) fresh.push_back(p);
+  };
+  add_hot(contacts.hot);
+
+  constexpr std::size_t kMaxRounds = 16;
+  for (std::size_t round = 1;; ++round) {
+    std::sort(fresh.begin(), fresh.end());
+    std::sort(vertices.begin(), vertices.end());
+    vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+    close_hot_set(segs, seg_boxes, vertices, is_hot, closure, std::move(fresh));
+    fresh.clear();
+    std::vector<Fragment> frags = route(segs, closure, contacts.splits);
+    stats.rounds = round;
+    stats.hot_pixels = closure.hot.size();
+
+    // Safety re-check: fragments of moved segments against everything, exactly.
+    std::vector<Segment> pieces(frags.size());
+    std::vector<bool> involved(frags.size());
+    bool any_moved = false;
+    for (std::size_t i = 0; i < frags.size(); ++i) {
+      pieces[i] = frags[i].seg;
+      involved[i] = closure.moved[frags[i].parent];
+      any_moved = any_moved || involved[i];
+    }
+    if (!any_moved) {
+      if (round == 1) return frags;
+    }
+    Contacts again = find_contacts(pieces, involved);
+    if (again.hot.empty()) {
+      if (again.splits.empty()) return frags;
+      // Only exact integer splits remain (snapped fragments landing on vertices or overlapping
+      // collinearly): split and finish; nothing moves.
+      std::vector<Fragment> out;
+      Closure none;
+      std::vector<Fragment> split = route(pieces, none, again.splits);
+      out.reserve(split.size());
+      for (const Fragment& f : split) out.push_back({f.seg, frags[f.parent].parent});
+      return out;
+    }
+    // A crossing survived: snap rounding's guarantee was violated; make its pixel hot and
+    // run the closure again over the original segments.
+    if (round >= kMaxRounds) throw std::logic_error("snap rounding did not converge");
+    add_hot(again.hot);
+    for (const auto& sp : again.splits) vertices.push_back(sp.second);
+  }
+}
+
+}  // namespace edgeland::detail

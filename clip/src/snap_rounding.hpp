@@ -1,0 +1,27 @@
+#pragma once
+// Stable snap rounding: turns segments with arbitrary crossings into integer fragments that
+// meet only at shared endpoints or overlap exactly. See clip/README.md for the argument.
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "edgeland/kernel/polygon.hpp"
+
+namespace edgeland::detail {
+
+struct Fragment {
+  Segment seg;            // integer endpoints, seg.a != seg.b
+  std::uint32_t parent;   // index of the input segment it comes from (same direction)
+};
+
+struct SnapStats {
+  std::size_t intersections = 0;
+  std::size_t hot_pixels = 0;
+  std::size_t rounds = 0;
+};
+
+// Fragments of every input segment, in input order; a segment that meets no hot pixel and has
+// no contact yields itself. Throws std::logic_error if the safety re-check does not converge.
+std::vector<Fragment> snap_round(const std::vector<Segment>& segments, SnapStats& stats);
+
+}  // namespace edgeland::detail

@@ -1,0 +1,61 @@
+#include "edgeland/kernel/pixel.hpp"
+
+#include "edgeland/kernel/checked.hpp"
+#include "edgeland/kernel/formulas.hpp"
+
+namespace edgeland {
+namespace {
+
+using W = arith::Checked<Int128>;
+
+// A parameter value t = num / den along the segment, den > 0.
+struct Param {
+  Int128 num;
+  Int128 den;
+};
+
+// a < b for fractions with positive denominators (|num|, den < 2^35: products < 2^70).
+bool less(const Param& a, const Param& b) { return a.num * b.den < b.num * a.den; }
+
+}  // namespace
+
+bool segment_meets_pixel(const Segment& s, Point64 c) noexcept {
+  // Doubled coordinates relative to the pixel centre: the pixel is [-1, 1) x [-1, 1).
+  const Int128 px = 2 * Int128(s.a.x - c.x), py = 2 * Int128(s.a.y - c.y);
+  const Int128 dx = 2 * Int128(s.b.x - s.a.x), dy = 2 * Int128(s.b.y - s.a.y);
+  // Liang-Barsky against the closed square: each constraint reads p * t <= q.
+  Param lo{0, 1}, hi{1, 1};
+  const Int128 ps[4] = {-dx, dx, -dy, dy};
+  const Int128 qs[4] = {px + 1, 1 - px, py + 1, 1 - py};
+  for (int i = 0; i < 4; ++i) {
+    const Int128 p = ps[i], q = qs[i];
+    if (p == 0) {
+      if (q < 0) return false;
+      continue;
+    }
+    const Param r = p > 0 ? Param{q, p} : Param{-q, -p};
+    if (p < 0) {
+      if (less(lo, r)) lo = r;
+    } else {
+      if (less(r, hi)) hi = r;
+    }
+  }
+  if (less(hi, lo)) return false;
+  // The closed square is met on [lo, hi]. Remove what lies only on the open top/right sides.
+  if (!less(lo, hi)) {  // a single point: it must have x < 1 and y < 1
+    const Int128 x_den = px * lo.den + lo.num * dx;  // x * den
+    const Int128 y_den = py * lo.den + lo.num * dy;
+    return x_den < lo.den && y_den < lo.den;
+  }
+  // A piece of positive length lies on the right side only when vertical at x = 1, on the top
+  // side only when horizontal at y = 1; otherwise it has points inside the half-open square.
+  if (dx == 0 && px == 1) return false;
+  if (dy == 0 && py == 1) return false;
+  return true;
+}
+
+Int128 projection(const Segment& s, Point64 p) noexcept {
+  return formulas::dot_from<W>(s.a.x, s.a.y, s.b.x, s.b.y, p.x, p.y).v;
+}
+
+}  // namespace edgeland
