@@ -1,0 +1,167 @@
+#pragma once
+// Private to validate_*.cpp: the plane sweep shared by the ring check (strict simplicity) and
+// the set check (disjoint interiors).
+//
+// Events are the edge endpoints in lexicographic (x, then y) order: a sweep line in x, tilted
+// infinitesimally so that it meets the points of one vertical line from the bottom up. The
+// status holds the edges cut by that line, ordered by y. It is only ever asked to place an
+// edge that starts at the current event point q, or to locate q itself, so every order
+// question is one exact orientation or cross-product sign in Int128; no rational y is formed.
+// A vertical edge in the status always runs through q (it entered at its lower end, at or
+// below q, and leaves at its upper end, at or above q), so it sorts by its direction: steepest.
+//
+// The order stays consistent as long as no two status edges cross at a point interior to both;
+// touching at a point and collinear overlap keep it consistent. Both checks stop at the first
+// crossing, which the Shamos-Hoey argument finds no later than the sweep reaches it: the edges
+// through the leftmost crossing are adjacent in the status just before it, and every pair that
+// becomes adjacent is tested.
+//
+// Complexity: O(n log n) for n edges, plus the size of the last event's neighbourhood when a
+// check stops there.
+#include <algorithm>
+#include <cstddef>
+#include <iterator>
+#include <numeric>
+#include <optional>
+#include <set>
+#include <vector>
+
+#include "edgeland/kernel/int128.hpp"
+#include "edgeland/kernel/point.hpp"
+#include "edgeland/kernel/polygon.hpp"
+#include "edgeland/kernel/validate.hpp"
+
+namespace edgeland::detail {
+
+// One ring edge as the sweep sees it: endpoints in sweep order, plus where it came from.
+struct SweepEdge {
+  Point64 left;          // lexicographically smaller end
+  Point64 right;         // larger end; never equal to `left`
+  std::size_t polygon;   // index of the ring in the caller's set
+  std::size_t edge;      // index of the edge in its ring
+  bool forward;          // the ring runs from `left` to `right` (rightward, or upward if vertical)
+};
+
+// Appends the edges of `ring` as polygon `polygon`. The ring has >= 3 vertices, all in range,
+// and no zero-length edge.
+void append_ring_edges(const Ring& ring, std::size_t polygon, std::vector<SweepEdge>& out);
+
+inline bool is_vertical(const SweepEdge& e) noexcept { return e.left.x == e.right.x; }
+
+inline int sign_of(Int128 v) noexcept { return (v > 0) - (v < 0); }
+
+// Where an edge cut by the sweep line at q lies: -1 strictly below q, 0 through q, +1 strictly
+// above q.
+int side_of_point(const SweepEdge& t, Point64 q) noexcept;
+
+// Order of the directions in which two edges through a common point leave it to the right
+// (upward if vertical): -1 when a leaves below b, +1 above, 0 when collinear. Vertical is
+// steepest.
+int compare_directions(const SweepEdge& a, const SweepEdge& b) noexcept;
+
+// Stands for the event point in heterogeneous status look-ups.
+struct EventProbe {};
+
+// Strict weak order of the status at the current event point (see the file comment).
+class StatusOrder {
+ public:
+  using is_transparent = void;
+  StatusOrder(const SweepEdge* edges, const Point64* event) : edges_(edges), event_(event) {}
+
+  bool operator()(std::size_t a, std::size_t b) const noexcept {
+    if (a == b) return false;
+    const int c = compare_at_event(edges_[a], edges_[b]);
+    return c != 0 ? c < 0 : a < b;  // collinear edges: by index, fixed for their whole life
+  }
+  bool operator()(std::size_t a, EventProbe) const noexcept {
+    return side_of_point(edges_[a], *event_) < 0;
+  }
+  bool operator()(EventProbe, std::size_t b) const noexcept {
+    return side_of_point(edges_[b], *event_) > 0;
+  }
+
+ private:
+  // At least one of a, b starts at the event point: std::set only compares the edge being
+  // inserted with edges already there.
+  int compare_at_event(const SweepEdge& a, const SweepEdge& b) const noexcept;
+
+  const SweepEdge* edges_;
+  const Point64* event_;
+};
+
+// What the sweep tells a check at each event point q.
+struct EventView {
+  Point64 q;
+  const std::vector<std::size_t>& ending;    // edges whose right end is q
+  const std::vector<std::size_t>& through;   // status edges with q strictly inside, bottom-up
+  const std::vector<std::size_t>& starting;  // edges whose left end is q
+  std::size_t below;                         // status edge just below q, or kNone
+};
+
+// Runs the sweep over `edges`, asking `check` at each event:
+//   check.at_event(view)            before the status changes at q;
+//   check.after_event(q, block)     with the edges through or leaving q, bottom-up, after it;
+//   check.adjacent(a, b)            for every pair that has just become neighbours (a below b).
+// Each returns an optional Violation; the first one stops the sweep and is returned.
+template <class Check>
+std::optional<Violation> run_sweep(const std::vector<SweepEdge>& edges, Check& check) {
+  const std::size_t n = edges.size();
+  std::vector<std::size_t> starts(n), ends(n);
+  std::iota(starts.begin(), starts.end(), std::size_t{0});
+  std::iota(ends.begin(), ends.end(), std::size_t{0});
+  std::sort(starts.begin(), starts.end(),
+            [&](std::size_t a, std::size_t b) { return edges[a].left < edges[b].left; });
+  std::sort(ends.begin(), ends.end(),
+            [&](std::size_t a, std::size_t b) { return edges[a].right < edges[b].right; });
+
+  Point64 q{};
+  using Status = std::set<std::size_t, StatusOrder>;
+  Status status(StatusOrder(edges.data(), &q));
+  std::vector<Status::iterator> handle(n, status.end());
+  std::vector<std::size_t> ending, through, starting, block;
+
+  std::size_t si = 0, ei = 0;
+  while (si < n || ei < n) {
+    // Every edge ends after it starts, so an edge ending at q has already been inserted.
+    q = si < n && (ei == n || edges[starts[si]].left < edges[ends[ei]].right)
+            ? edges[starts[si]].left
+            : edges[ends[ei]].right;
+    ending.clear();
+    starting.clear();
+    through.clear();
+    for (; ei < n && edges[ends[ei]].right == q; ++ei) ending.push_back(ends[ei]);
+    for (; si < n && edges[starts[si]].left == q; ++si) starting.push_back(starts[si]);
+
+    // The status edges through q form one run; the ones not ending here pass through.
+    auto it = status.lower_bound(EventProbe{});
+    const std::size_t below = it == status.begin() ? kNone : *std::prev(it);
+    for (; it != status.end() && side_of_point(edges[*it], q) == 0; ++it) {
+      if (edges[*it].right != q) through.push_back(*it);
+    }
+    const auto above_it = it;  // not through q, so neither erased nor moved below
+
+    if (auto v = check.at_event(EventView{q, ending, through, starting, below})) return v;
+
+    for (const std::size_t e : ending) status.erase(handle[e]);
+    for (const std::size_t s : starting) handle[s] = status.insert(s).first;
+
+    block.clear();
+    for (auto b = below == kNone ? status.begin() : std::next(handle[below]); b != above_it; ++b) {
+      block.push_back(*b);
+    }
+    if (auto v = check.after_event(q, block)) return v;
+
+    const std::size_t above = above_it == status.end() ? kNone : *above_it;
+    const std::size_t low = block.empty() ? above : block.front();
+    const std::size_t high = block.empty() ? below : block.back();
+    if (below != kNone && low != kNone) {
+      if (auto v = check.adjacent(below, low)) return v;
+    }
+    if (!block.empty() && above != kNone) {
+      if (auto v = check.adjacent(high, above)) return v;
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace edgeland::detail
