@@ -1,9 +1,11 @@
 // The public operations: validate the input, run the pipeline of clip/README.md, check.
 #include "edgeland/clip/clip.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "assembly.hpp"
+#include "box_sweep.hpp"
 #include "canonical.hpp"
 #include "edgeland/kernel/validate.hpp"
 #include "edgeland/kernel/wkt_writer.hpp"
@@ -65,7 +67,7 @@ struct Pipeline {
   detail::LabelOf label_of;
 };
 
-ClipResult run(const Pipeline& p) {
+ClipResult run(const Pipeline& p, std::vector<Box64>* moved_boxes = nullptr) {
   ClipResult result;
   std::vector<Segment> segs(p.edges.size());
   std::vector<std::uint8_t> channel(p.edges.size());
@@ -88,7 +90,63 @@ ClipResult run(const Pipeline& p) {
   result.stats.intersections = snap.intersections;
   result.stats.vertices_snapped = snap.hot_pixels;
   result.stats.zero_area_dropped = g.cancelled_edges;
+  if (moved_boxes) *moved_boxes = std::move(snap.moved_boxes);
   return result;
+}
+
+Box64 grown(Box64 b, std::int64_t by) {
+  return {{b.min.x - by, b.min.y - by}, {b.max.x + by, b.max.y + by}};
+}
+
+// clip() restricted to the subject polygons that can interact with the clip operand.
+// A subject polygon is left out when its box stays clear of the clip operand's box and of every
+// segment snap rounding moved (one unit of margin: a snapped segment stays within half a unit of
+// where it was). Left-out polygons are unaffected by the operation: kept as they are, or dropped
+// by an intersection. If rounding moved a segment near a left-out polygon, that polygon is
+// brought in and the operation re-run; the included set only grows, so this terminates.
+ClipResult clip_near(ClipOp op, const PolygonSet& subject, const PolygonSet& clip_set) {
+  std::vector<Box64> boxes(subject.size());
+  for (std::size_t i = 0; i < subject.size(); ++i) boxes[i] = *bounding_box(subject[i]);
+  std::vector<bool> included(subject.size(), false);
+  if (const auto cb = bounding_box(clip_set)) {
+    const Box64 reach = grown(*cb, 1);
+    for (std::size_t i = 0; i < subject.size(); ++i) included[i] = boxes[i].overlaps(reach);
+  }
+  for (;;) {
+    Pipeline p;
+    PolygonSet near;
+    std::vector<std::int32_t> index;
+    for (std::size_t i = 0; i < subject.size(); ++i)
+      if (included[i]) {
+        near.push_back(subject[i]);
+        index.push_back(static_cast<std::int32_t>(i));
+      }
+    detail::append_ring_edges(near, 0, true, p.edges);
+    for (auto& e : p.edges)
+      if (e.channel == 0) e.polygon = index[static_cast<std::size_t>(e.polygon)];
+    detail::append_ring_edges(clip_set, 1, true, p.edges);
+    p.mode = detail::LabelMode::kOwner;
+    p.label_of = [op](const SideState& s) { return op_label(op, s); };
+    std::vector<Box64> moved;
+    ClipResult r = run(p, &moved);
+
+    std::vector<Box64> left_out;
+    std::vector<std::size_t> left_out_index;
+    for (std::size_t i = 0; i < subject.size(); ++i)
+      if (!included[i]) {
+        left_out.push_back(grown(boxes[i], 1));
+        left_out_index.push_back(i);
+      }
+    bool grew = false;
+    detail::for_each_overlapping_pair(left_out, moved, [&](std::uint32_t k, std::uint32_t) {
+      if (!included[left_out_index[k]]) included[left_out_index[k]] = grew = true;
+    });
+    if (grew) continue;
+    if (op != ClipOp::kIntersection)
+      for (std::size_t i : left_out_index) r.polygons.push_back(detail::canonical_ring(subject[i]));
+    std::sort(r.polygons.begin(), r.polygons.end());
+    return r;
+  }
 }
 
 void require_valid(const PolygonSet& set, Operand which) {
@@ -154,14 +212,7 @@ ClipResult clip(ClipOp op, const PolygonSet& subject, const PolygonSet& clip_set
   require_valid(subject, Operand::kSubject);
   require_valid(clip_set, Operand::kClip);
   return guarded(
-      [&] {
-        Pipeline p;
-        detail::append_ring_edges(subject, 0, true, p.edges);
-        detail::append_ring_edges(clip_set, 1, true, p.edges);
-        p.mode = detail::LabelMode::kOwner;
-        p.label_of = [op](const SideState& s) { return op_label(op, s); };
-        return run(p);
-      },
+      [&] { return clip_near(op, subject, clip_set); },
       options, op_name(op), [&] { return to_wkt(subject); }, [&] { return to_wkt(clip_set); });
 }
 

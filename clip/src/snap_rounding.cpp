@@ -138,6 +138,9 @@ std::vector<Fragment> snap_round(const std::vector<Segment>& segs, SnapStats& st
     std::vector<Fragment> frags = route(segs, closure, contacts.splits);
     stats.rounds = round;
     stats.hot_pixels = closure.hot.size();
+    stats.moved_boxes.clear();
+    for (std::size_t i = 0; i < segs.size(); ++i)
+      if (closure.moved[i]) stats.moved_boxes.push_back(seg_boxes[i]);
 
     // Safety re-check: fragments of moved segments against everything, exactly.
     std::vector<Segment> pieces(frags.size());

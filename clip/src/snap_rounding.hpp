@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "edgeland/kernel/bbox.hpp"
 #include "edgeland/kernel/polygon.hpp"
 
 namespace edgeland::detail {
@@ -15,6 +16,9 @@ struct Fragment {
 };
 
 struct SnapStats {
+  // Bounding boxes of the input segments that snap rounding moved: nothing farther than one
+  // unit from these boxes can be affected by the rounding.
+  std::vector<Box64> moved_boxes;
   std::size_t intersections = 0;
   std::size_t hot_pixels = 0;
   std::size_t rounds = 0;
