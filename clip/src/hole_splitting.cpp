@@ -142,7 +142,13 @@ std::optional<Point64> bridge_target(Point64 o, const std::vector<Segment>& obst
   return std::nullopt;
 }
 
-std::vector<Ring> split_one(const Ring& outer, std::vector<const Ring*> holes) {
+std::vector<Ring> split_holes_at_depth(std::vector<Ring> outers, std::vector<Ring> holes,
+                                      int depth);
+
+// Cuts one outer ring with its holes. Two bridges per hole normally leave no hole; when bridges
+// of pinched holes meet at a single vertex a face can still enclose a loop touching it there,
+// and that loop is cut again, with fresh bridges, one level down.
+std::vector<Ring> split_one(const Ring& outer, std::vector<const Ring*> holes, int depth) {
   std::vector<Segment> obstacles;
   std::vector<Point64> vertices;
   std::unordered_map<Point64, int, Point64Hash> degree;
@@ -192,24 +198,23 @@ std::vector<Ring> split_one(const Ring& outer, std::vector<const Ring*> holes) {
   for (std::uint32_t e = 0; e < g.edge_count(); ++e)
     for (std::uint32_t k = g.mult_begin[e]; k < g.mult_begin[e + 1]; ++k)
       emitted[2 * e + (g.mults[k].net > 0 ? 0 : 1)] = 0;
-  std::vector<Ring> pieces;
+  std::vector<Ring> pieces, left_holes;
   std::vector<std::int32_t> position(g.vertices.size(), -1);
   for (const auto& walk : trace_boundaries(g, emitted)) {
     for (const auto& loop : split_at_repeated_vertices(walk.second, position)) {
       Ring ring(loop.size());
       for (std::size_t i = 0; i < loop.size(); ++i) ring[i] = g.vertices[loop[i]];
-      if (twice_signed_area(ring) <= 0)
-        throw std::logic_error("hole splitting: a piece is still a hole");
-      pieces.push_back(std::move(ring));
+      (twice_signed_area(ring) > 0 ? pieces : left_holes).push_back(std::move(ring));
     }
   }
-  return pieces;
+  if (left_holes.empty()) return pieces;
+  constexpr int kMaxDepth = 16;
+  if (depth >= kMaxDepth) throw std::logic_error("hole splitting: a piece is still a hole");
+  return split_holes_at_depth(std::move(pieces), std::move(left_holes), depth + 1);
 }
 
-}  // namespace
-
-std::vector<Ring> split_holes(std::vector<Ring> outers, std::vector<Ring> holes,
-                              std::size_t& holes_split) {
+std::vector<Ring> split_holes_at_depth(std::vector<Ring> outers, std::vector<Ring> holes,
+                                      int depth) {
   if (holes.empty()) return outers;
   std::vector<Box64> boxes(outers.size());
   std::vector<Int128> areas(outers.size());
@@ -235,10 +240,17 @@ std::vector<Ring> split_holes(std::vector<Ring> outers, std::vector<Ring> holes,
       out.push_back(std::move(outers[i]));
       continue;
     }
-    holes_split += owned[i].size();
-    for (Ring& piece : split_one(outers[i], owned[i])) out.push_back(std::move(piece));
+    for (Ring& piece : split_one(outers[i], owned[i], depth)) out.push_back(std::move(piece));
   }
   return out;
+}
+
+}  // namespace
+
+std::vector<Ring> split_holes(std::vector<Ring> outers, std::vector<Ring> holes,
+                              std::size_t& holes_split) {
+  holes_split += holes.size();
+  return split_holes_at_depth(std::move(outers), std::move(holes), 0);
 }
 
 }  // namespace edgeland::detail
