@@ -1,0 +1,15 @@
+#pragma once
+// The list of subcommands. To add one, write cli/<name>_command.cpp defining
+//   Command add_<name>_command(CLI::App& parent);
+// (it registers its options on `parent`) and add one X(<name>) line below; CMake picks up
+// every *_command.cpp by itself.
+#include "command.hpp"
+
+#define EDGELAND_CLI_COMMANDS(X) \
+  X(validate)
+
+namespace edgeland::cli {
+#define EDGELAND_CLI_DECLARE_COMMAND(name) Command add_##name##_command(CLI::App& parent);
+EDGELAND_CLI_COMMANDS(EDGELAND_CLI_DECLARE_COMMAND)
+#undef EDGELAND_CLI_DECLARE_COMMAND
+}  // namespace edgeland::cli

@@ -1,0 +1,18 @@
+# Registers the install/consumer test (included from tests/CMakeLists.txt): install the current
+# build into a fresh prefix inside the build tree, then configure, build and run this folder's
+# consumer project against it with find_package(edgeland CONFIG REQUIRED).
+set(consumer_flags "")
+if(EDGELAND_SANITIZE)
+  # The installed static libraries carry ASan/UBSan references; the consumer must link the runtimes.
+  set(consumer_flags "-fsanitize=address,undefined -fno-sanitize=vptr")
+endif()
+add_test(NAME install.consumer
+  COMMAND ${CMAKE_COMMAND}
+    -DEDGELAND_BUILD_DIR=${PROJECT_BINARY_DIR}
+    -DCONSUMER_SOURCE_DIR=${CMAKE_CURRENT_LIST_DIR}
+    -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}/consumer
+    -DCXX_COMPILER=${CMAKE_CXX_COMPILER}
+    -DBUILD_TYPE=${CMAKE_BUILD_TYPE}
+    "-DCXX_FLAGS=${consumer_flags}"
+    -P ${CMAKE_CURRENT_LIST_DIR}/run_consumer_test.cmake)
+set_tests_properties(install.consumer PROPERTIES LABELS install TIMEOUT 600)

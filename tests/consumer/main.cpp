@@ -1,0 +1,37 @@
+// Uses the installed headers and libraries: an exact orientation, validate() on a square and
+// on the same square clockwise, and the WKT writer. Exit status 0 when all agree.
+#include <edgeland/kernel/point.hpp>
+#include <edgeland/kernel/polygon.hpp>
+#include <edgeland/kernel/predicates.hpp>
+#include <edgeland/kernel/validate.hpp>
+#include <edgeland/kernel/wkt_writer.hpp>
+#include <iostream>
+
+int main() {
+  using namespace edgeland;
+  int failures = 0;
+  auto check = [&failures](bool ok, const char* what) {
+    if (!ok) {
+      std::cerr << "consumer: FAILED: " << what << '\n';
+      ++failures;
+    }
+  };
+
+  // Left turn at the far corners of the coordinate range: exact, no overflow.
+  const Point64 a{-kCoordBound, -kCoordBound};
+  const Point64 b{kCoordBound, -kCoordBound};
+  const Point64 c{kCoordBound, kCoordBound};
+  check(orientation(a, b, c) == Orientation::kCounterClockwise, "orientation(a, b, c) is CCW");
+  check(orientation(a, c, b) == Orientation::kClockwise, "orientation(a, c, b) is CW");
+
+  const Polygon square{{0, 0}, {10, 0}, {10, 10}, {0, 10}};
+  check(validate(square).ok(), "the CCW square is valid");
+  const Polygon clockwise(square.rbegin(), square.rend());
+  const ValidationReport report = validate(clockwise);
+  check(!report.ok() && report.violations.front().rule == Rule::kNotCounterClockwise,
+        "the clockwise square breaks the counter-clockwise rule");
+  check(to_wkt(square) == "POLYGON ((0 0, 10 0, 10 10, 0 10, 0 0))", "to_wkt(square)");
+
+  if (failures == 0) std::cout << "consumer: ok\n";
+  return failures == 0 ? 0 : 1;
+}
