@@ -1,20 +1,83 @@
 #pragma once
 // Candidate pairs for exact tests: every pair of boxes that overlap (closed boxes), found by
-// sorting on min x and sweeping (the scanbeam of thesis 3.3.2). O(n log n + pairs tested).
+// sorting on min x and sweeping (the scanbeam of thesis 3.3.2): O(n log n + a) for a the
+// number of (box, active box) encounters. Boxes are copied into one contiguous array so the
+// sweep touches memory in order; expired boxes leave the active list as it is scanned.
+#include <algorithm>
 #include <cstdint>
-#include <functional>
 #include <vector>
 
 #include "edgeland/kernel/bbox.hpp"
 
 namespace edgeland::detail {
 
-// Calls visit(i, j) once for every i < j whose boxes overlap.
-void for_each_overlapping_pair(const std::vector<Box64>& boxes,
-                               const std::function<void(std::uint32_t, std::uint32_t)>& visit);
+struct SweepBox {
+  std::int64_t min_x, max_x, min_y, max_y;
+  std::uint32_t id;
+};
 
-// Calls visit(i, j) for every box i of `a` overlapping box j of `b`.
+inline std::vector<SweepBox> sorted_for_sweep(const std::vector<Box64>& boxes) {
+  std::vector<SweepBox> s(boxes.size());
+  for (std::size_t i = 0; i < boxes.size(); ++i)
+    s[i] = {boxes[i].min.x, boxes[i].max.x, boxes[i].min.y, boxes[i].max.y,
+            static_cast<std::uint32_t>(i)};
+  std::sort(s.begin(), s.end(), [](const SweepBox& a, const SweepBox& b) {
+    return a.min_x != b.min_x ? a.min_x < b.min_x : a.id < b.id;
+  });
+  return s;
+}
+
+// Visits b against the active boxes that still reach it, dropping those that do not.
+template <class F>
+void sweep_against(std::vector<SweepBox>& active, const SweepBox& b, F&& visit) {
+  std::size_t keep = 0;
+  for (std::size_t k = 0; k < active.size(); ++k) {
+    const SweepBox o = active[k];
+    if (o.max_x < b.min_x) continue;
+    active[keep++] = o;
+    if (o.min_y <= b.max_y && b.min_y <= o.max_y) visit(o.id);
+  }
+  active.resize(keep);
+}
+
+// Calls visit(i, j) once for every i < j whose boxes overlap. Order of calls is unspecified.
+template <class F>
+void for_each_overlapping_pair(const std::vector<SweepBox>& sorted, F&& visit) {
+  std::vector<SweepBox> active;
+  for (const SweepBox& b : sorted) {
+    sweep_against(active, b, [&](std::uint32_t o) { visit(std::min(o, b.id), std::max(o, b.id)); });
+    active.push_back(b);
+  }
+}
+
+template <class F>
+void for_each_overlapping_pair(const std::vector<Box64>& boxes, F&& visit) {
+  for_each_overlapping_pair(sorted_for_sweep(boxes), visit);
+}
+
+// Calls visit(i, j) for every box i of `a` overlapping box j of `b` (both sorted_for_sweep).
+template <class F>
+void for_each_overlapping_pair(const std::vector<SweepBox>& a, const std::vector<SweepBox>& b,
+                               F&& visit) {
+  std::vector<SweepBox> active_a, active_b;
+  std::size_t ia = 0, ib = 0;
+  while (ia < a.size() || ib < b.size()) {
+    if (ib == b.size() || (ia < a.size() && a[ia].min_x <= b[ib].min_x)) {
+      const SweepBox& x = a[ia++];
+      sweep_against(active_b, x, [&](std::uint32_t j) { visit(x.id, j); });
+      active_a.push_back(x);
+    } else {
+      const SweepBox& y = b[ib++];
+      sweep_against(active_a, y, [&](std::uint32_t i) { visit(i, y.id); });
+      active_b.push_back(y);
+    }
+  }
+}
+
+template <class F>
 void for_each_overlapping_pair(const std::vector<Box64>& a, const std::vector<Box64>& b,
-                               const std::function<void(std::uint32_t, std::uint32_t)>& visit);
+                               F&& visit) {
+  for_each_overlapping_pair(sorted_for_sweep(a), sorted_for_sweep(b), visit);
+}
 
 }  // namespace edgeland::detail

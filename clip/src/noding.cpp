@@ -9,27 +9,20 @@
 namespace edgeland::detail {
 namespace {
 
-Box64 box_of(const Segment& s) {
-  Box64 b{s.a, s.a};
-  b.expand(s.b);
-  return b;
-}
-
 void split_if_interior(Contacts& c, std::uint32_t seg, const Segment& s, Point64 p) {
   if (p != s.a && p != s.b) c.splits.emplace_back(seg, p);
 }
 
 }  // namespace
 
-Contacts find_contacts(const std::vector<Segment>& segments, const std::vector<bool>& involved) {
-  std::vector<Box64> boxes(segments.size());
-  for (std::size_t i = 0; i < segments.size(); ++i) boxes[i] = box_of(segments[i]);
-  Contacts c;
-  for_each_overlapping_pair(boxes, [&](std::uint32_t i, std::uint32_t j) {
-    if (!involved.empty() && !involved[i] && !involved[j]) return;
-    const Segment& s = segments[i];
-    const Segment& t = segments[j];
-    const SegmentIntersection r = intersect(s, t);
+void classify_pair(const Segment& s, std::uint32_t i, const Segment& t, std::uint32_t j,
+                   Contacts& c) {
+  // Ring neighbours share an endpoint: unless they are collinear that is their only contact.
+  if (s.a == t.a || s.a == t.b || s.b == t.a || s.b == t.b) {
+    const Point64 t_other = (t.a == s.a || t.a == s.b) ? t.b : t.a;
+    if (orientation(s.a, s.b, t_other) != Orientation::kCollinear) return;
+  }
+  const SegmentIntersection r = intersect(s, t);
     switch (r.relation) {
       case SegmentRelation::kDisjoint:
         return;
@@ -59,6 +52,18 @@ Contacts find_contacts(const std::vector<Segment>& segments, const std::vector<b
         }
         return;
     }
+}
+
+Box64 segment_box(const Segment& s) {
+  Box64 b{s.a, s.a};
+  b.expand(s.b);
+  return b;
+}
+
+Contacts find_contacts(const std::vector<Segment>& segments, const std::vector<SweepBox>& sweep) {
+  Contacts c;
+  for_each_overlapping_pair(sweep, [&](std::uint32_t i, std::uint32_t j) {
+    classify_pair(segments[i], i, segments[j], j, c);
   });
   return c;
 }

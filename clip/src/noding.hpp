@@ -5,6 +5,7 @@
 #include <utility>
 #include <vector>
 
+#include "edgeland/kernel/bbox.hpp"
 #include "edgeland/kernel/polygon.hpp"
 
 namespace edgeland::detail {
@@ -18,9 +19,17 @@ struct Contacts {
   std::size_t intersections = 0;
 };
 
-// Finds all contacts among `segments`. If `involved` is non-empty, only pairs with at least one
-// segment marked in it are examined. O(n log n + box-overlapping pairs).
-Contacts find_contacts(const std::vector<Segment>& segments,
-                       const std::vector<bool>& involved = {});
+struct SweepBox;
+
+// Finds all contacts among `segments`, given their boxes sorted_for_sweep (box_sweep.hpp).
+// O(n log n + box-overlapping pairs).
+Contacts find_contacts(const std::vector<Segment>& segments, const std::vector<SweepBox>& sweep);
+
+// Exact classification of one pair, adding what it finds to `c`.
+void classify_pair(const Segment& s, std::uint32_t i, const Segment& t, std::uint32_t j,
+                   Contacts& c);
+
+// Box of a segment.
+Box64 segment_box(const Segment& s);
 
 }  // namespace edgeland::detail

@@ -16,12 +16,6 @@ namespace {
 
 using PointSet = std::unordered_set<Point64, Point64Hash>;
 
-Box64 segment_box(const Segment& s) {
-  Box64 b{s.a, s.a};
-  b.expand(s.b);
-  return b;
-}
-
 // A box that contains the whole pixel of p (closed, integer corners).
 Box64 pixel_box(Point64 p) { return Box64{{p.x - 1, p.y - 1}, {p.x + 1, p.y + 1}}; }
 
@@ -39,28 +33,29 @@ struct Closure {
 
 // Grows the hot set until every vertex pixel met by a moved segment is hot and every segment
 // meeting a hot pixel off its centre is moved. Each round only looks at what is new.
-void close_hot_set(const std::vector<Segment>& segs, const std::vector<Box64>& seg_boxes,
-                   const std::vector<Point64>& vertices, PointSet& is_hot, Closure& c,
-                   std::vector<Point64> fresh) {
+void close_hot_set(const std::vector<Segment>& segs, const std::vector<SweepBox>& seg_sweep,
+                   const std::vector<Point64>& vertices, const std::vector<SweepBox>& vertex_sweep,
+                   PointSet& is_hot, Closure& c, std::vector<Point64> fresh) {
   while (!fresh.empty()) {
     const std::uint32_t base = static_cast<std::uint32_t>(c.hot.size());
     c.hot.insert(c.hot.end(), fresh.begin(), fresh.end());
     std::vector<std::uint32_t> newly_moved;
-    for_each_overlapping_pair(pixel_boxes(fresh), seg_boxes, [&](std::uint32_t h, std::uint32_t s) {
-      const Point64 centre = fresh[h];
-      if (!segment_meets_pixel(segs[s], centre)) return;
-      c.meets.emplace_back(s, base + h);
-      if (!c.moved[s] && !on_segment(centre, segs[s])) {
-        c.moved[s] = true;
-        newly_moved.push_back(s);
-      }
-    });
+    for_each_overlapping_pair(sorted_for_sweep(pixel_boxes(fresh)), seg_sweep,
+                              [&](std::uint32_t h, std::uint32_t s) {
+                                const Point64 centre = fresh[h];
+                                if (!segment_meets_pixel(segs[s], centre)) return;
+                                c.meets.emplace_back(s, base + h);
+                                if (!c.moved[s] && !on_segment(centre, segs[s])) {
+                                  c.moved[s] = true;
+                                  newly_moved.push_back(s);
+                                }
+                              });
     fresh.clear();
     if (newly_moved.empty()) break;
     std::vector<Box64> moved_boxes(newly_moved.size());
     for (std::size_t k = 0; k < newly_moved.size(); ++k)
-      moved_boxes[k] = seg_boxes[newly_moved[k]];
-    for_each_overlapping_pair(moved_boxes, pixel_boxes(vertices),
+      moved_boxes[k] = segment_box(segs[newly_moved[k]]);
+    for_each_overlapping_pair(sorted_for_sweep(moved_boxes), vertex_sweep,
                               [&](std::uint32_t k, std::uint32_t v) {
                                 const Point64 p = vertices[v];
                                 if (is_hot.count(p)) return;
@@ -100,14 +95,53 @@ std::vector<Fragment> route(const std::vector<Segment>& segs, const Closure& c,
   return out;
 }
 
+// Contacts between fragments of moved segments and all fragments. Every fragment lies within
+// one unit of its segment's box, so candidates come from the segments' sweep order.
+Contacts recheck(const std::vector<Fragment>& frags, const std::vector<bool>& moved,
+                 std::size_t segment_count, const std::vector<SweepBox>& seg_sweep) {
+  std::vector<std::uint32_t> first(segment_count + 1, 0);
+  for (const Fragment& f : frags) ++first[f.parent + 1];
+  for (std::size_t s = 0; s < segment_count; ++s) first[s + 1] += first[s];
+  std::vector<Box64> boxes;
+  std::vector<std::uint32_t> which;
+  for (std::uint32_t i = 0; i < frags.size(); ++i) {
+    if (!moved[frags[i].parent]) continue;
+    Box64 b = segment_box(frags[i].seg);
+    boxes.push_back({{b.min.x - 2, b.min.y - 2}, {b.max.x + 2, b.max.y + 2}});
+    which.push_back(i);
+  }
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+  for_each_overlapping_pair(sorted_for_sweep(boxes), seg_sweep, [&](std::uint32_t k, std::uint32_t s) {
+    const std::uint32_t f = which[k];
+    for (std::uint32_t g = first[s]; g < first[s + 1]; ++g)
+      if (g != f) pairs.emplace_back(std::min(f, g), std::max(f, g));
+  });
+  std::sort(pairs.begin(), pairs.end());
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  Contacts c;
+  for (const auto& [f, g] : pairs) classify_pair(frags[f].seg, f, frags[g].seg, g, c);
+  return c;
+}
+
+// Pixel boxes of points already in lexicographic (hence min-x) order.
+std::vector<SweepBox> sweep_of_sorted_points(const std::vector<Point64>& pts) {
+  std::vector<SweepBox> s(pts.size());
+  for (std::size_t i = 0; i < pts.size(); ++i)
+    s[i] = {pts[i].x - 1, pts[i].x + 1, pts[i].y - 1, pts[i].y + 1, static_cast<std::uint32_t>(i)};
+  return s;
+}
+
 }  // namespace
 
 std::vector<Fragment> snap_round(const std::vector<Segment>& segs, SnapStats& stats) {
   std::vector<Box64> seg_boxes(segs.size());
   for (std::size_t i = 0; i < segs.size(); ++i) seg_boxes[i] = segment_box(segs[i]);
-
-  Contacts contacts = find_contacts(segs);
+  const std::vector<SweepBox> seg_sweep = sorted_for_sweep(seg_boxes);
+  Contacts contacts = find_contacts(segs, seg_sweep);
   stats.intersections = contacts.intersections;
+  stats.moved_boxes.clear();
+  // No crossing at a non-integer point: every contact is an exact split and nothing moves.
+  if (contacts.hot.empty()) return route(segs, Closure{}, contacts.splits);
 
   // Vertex pixels: input endpoints and exact split points.
   std::vector<Point64> vertices;
@@ -133,7 +167,8 @@ std::vector<Fragment> snap_round(const std::vector<Segment>& segs, SnapStats& st
     std::sort(fresh.begin(), fresh.end());
     std::sort(vertices.begin(), vertices.end());
     vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
-    close_hot_set(segs, seg_boxes, vertices, is_hot, closure, std::move(fresh));
+    close_hot_set(segs, seg_sweep, vertices, sweep_of_sorted_points(vertices), is_hot, closure,
+                  std::move(fresh));
     fresh.clear();
     std::vector<Fragment> frags = route(segs, closure, contacts.splits);
     stats.rounds = round;
@@ -143,25 +178,15 @@ std::vector<Fragment> snap_round(const std::vector<Segment>& segs, SnapStats& st
       if (closure.moved[i]) stats.moved_boxes.push_back(seg_boxes[i]);
 
     // Safety re-check: fragments of moved segments against everything, exactly.
-    std::vector<Segment> pieces(frags.size());
-    std::vector<bool> involved(frags.size());
-    bool any_moved = false;
-    for (std::size_t i = 0; i < frags.size(); ++i) {
-      pieces[i] = frags[i].seg;
-      involved[i] = closure.moved[frags[i].parent];
-      any_moved = any_moved || involved[i];
-    }
-    if (!any_moved) {
-      if (round == 1) return frags;
-    }
-    Contacts again = find_contacts(pieces, involved);
+    Contacts again = recheck(frags, closure.moved, segs.size(), seg_sweep);
     if (again.hot.empty()) {
       if (again.splits.empty()) return frags;
       // Only exact integer splits remain (snapped fragments landing on vertices or overlapping
       // collinearly): split and finish; nothing moves.
+      std::vector<Segment> pieces(frags.size());
+      for (std::size_t i = 0; i < frags.size(); ++i) pieces[i] = frags[i].seg;
       std::vector<Fragment> out;
-      Closure none;
-      std::vector<Fragment> split = route(pieces, none, again.splits);
+      std::vector<Fragment> split = route(pieces, Closure{}, again.splits);
       out.reserve(split.size());
       for (const Fragment& f : split) out.push_back({f.seg, frags[f.parent].parent});
       return out;
