@@ -7,6 +7,7 @@
 #include "assembly.hpp"
 #include "box_sweep.hpp"
 #include "canonical.hpp"
+#include "edgeland/kernel/area.hpp"
 #include "edgeland/kernel/validate.hpp"
 #include "edgeland/kernel/wkt_writer.hpp"
 #include "hole_splitting.hpp"
@@ -241,6 +242,29 @@ ClipResult normalize(const std::vector<Ring>& rings, FillRule rule, const ClipOp
         return to_wkt(as_set);
       },
       [] { return std::string("MULTIPOLYGON EMPTY"); });
+}
+
+ClipResult import_polygons(const std::vector<std::vector<Ring>>& polygons,
+                           const ClipOptions& options) {
+  std::vector<Ring> rings;
+  for (const auto& polygon : polygons)
+    for (std::size_t k = 0; k < polygon.size(); ++k) {
+      Ring ring = polygon[k];
+      for (std::size_t i = 0; i < ring.size(); ++i)
+        if (!in_range(ring[i])) {
+          Violation v;
+          v.rule = Rule::kCoordinateOutOfRange;
+          v.polygon = static_cast<std::size_t>(&polygon - polygons.data());
+          v.edge = i;
+          v.where = ring[i];
+          throw InvalidInput(Operand::kRings, v);
+        }
+      const Int128 area = twice_signed_area(ring);
+      const bool exterior = k == 0;
+      if ((exterior && area < 0) || (!exterior && area > 0)) std::reverse(ring.begin(), ring.end());
+      rings.push_back(std::move(ring));
+    }
+  return normalize(rings, FillRule::kPositive, options);
 }
 
 ClipResult clip_to_box(const PolygonSet& set, const Box64& box, const ClipOptions& options) {

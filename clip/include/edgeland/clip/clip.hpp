@@ -82,6 +82,12 @@ EDGELAND_EXPORT ClipResult clip(ClipOp op, const PolygonSet& subject, const Poly
 EDGELAND_EXPORT ClipResult normalize(const std::vector<Ring>& rings, FillRule rule,
                                      const ClipOptions& options = {});
 
+// OGC-style polygons with holes (element 0 of each entry is the exterior, the rest its holes;
+// any ring orientation) -> a valid hole-free set: each exterior minus its holes, all members
+// united. Equivalent to normalize() with exteriors made CCW, holes CW and FillRule::kPositive.
+EDGELAND_EXPORT ClipResult import_polygons(const std::vector<std::vector<Ring>>& polygons,
+                                           const ClipOptions& options = {});
+
 // The part of a valid set inside a closed axis-aligned box (the landscape's cell cut).
 EDGELAND_EXPORT ClipResult clip_to_box(const PolygonSet& set, const Box64& box,
                                        const ClipOptions& options = {});
