@@ -1,0 +1,132 @@
+// The carving workload of issue 4: an 8192 x 8192 square minus OPS 32-gons of radius 40, one
+// difference at a time on the whole set, each result being the next subject (the naive
+// landscape, before the spatial tree). For every peer: the mean time per operation over each
+// block of operations as the set grows, and the first operation whose result, rounded back to
+// integers, fails check_rings (ring_check.hpp).
+//
+// Environment: EDGELAND_BENCH_CARVE_OPS (default 10000) operations;
+// EDGELAND_BENCH_CARVE_BLOCK (default 1000) operations per reported block;
+// EDGELAND_BENCH_CARVE_BUDGET_S (default 0 = none) stops a peer once its run, operations and
+// checks together, has taken that many CPU seconds (the counters then say how far it got).
+// The reported time is the sum of the timed operations only (manual time, measured as thread
+// CPU time like the other families): loading each 32-gon and checking each result are not timed.
+#include <benchmark/benchmark.h>
+
+#include <time.h>
+
+#include <cstdlib>
+#include <exception>
+#include <string>
+#include <vector>
+
+#include "registration.hpp"
+#include "ring_check.hpp"
+#include "workloads.hpp"
+
+namespace edgeland::bench {
+namespace {
+
+double env_number(const char* name, double fallback) {
+  const char* value = std::getenv(name);
+  if (value == nullptr || *value == '\0') return fallback;
+  return std::strtod(value, nullptr);
+}
+
+const Carving& carving_input(std::size_t ops) {
+  static Carving cached;
+  if (cached.holes.size() != ops) cached = carving(ops);
+  return cached;
+}
+
+// Two-digit block names keep the counters in order in every output format.
+std::string block_name(std::size_t block, const char* what) {
+  return std::string("block") + (block < 10 ? "0" : "") + std::to_string(block) + "_" + what;
+}
+
+// CPU time of this thread: the machine is shared, and every peer is single-threaded.
+double thread_seconds() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + static_cast<double>(t.tv_nsec) * 1e-9;
+}
+
+void run_carving(benchmark::State& state, const Peer& peer) {
+  const auto ops = static_cast<std::size_t>(state.range(0));
+  const auto block = static_cast<std::size_t>(env_number("EDGELAND_BENCH_CARVE_BLOCK", 1000));
+  const double budget = env_number("EDGELAND_BENCH_CARVE_BUDGET_S", 0);
+  const Carving& work = carving_input(ops);
+
+  std::vector<double> block_seconds;
+  std::vector<std::size_t> block_vertices;
+  std::size_t done = 0;
+  std::int64_t first_invalid = -1;
+  std::int64_t threw_at = -1;
+  std::string note;
+  double total = 0;
+  for (auto _ : state) {
+    const double run_start = thread_seconds();
+    std::unique_ptr<Shape> subject = peer.load({work.square});
+    double in_block = 0;
+    for (std::size_t i = 0; i < ops; ++i) {
+      const std::unique_ptr<Shape> hole = peer.load({work.holes[i]});
+      std::unique_ptr<Shape> next;
+      const double start = thread_seconds();
+      try {
+        next = peer.apply(ClipOp::kDifference, *subject, *hole);
+      } catch (const std::exception& e) {
+        threw_at = static_cast<std::int64_t>(i + 1);
+        note = peer.name() + " op " + std::to_string(i + 1) + " threw: " + e.what();
+        break;
+      }
+      const double seconds = thread_seconds() - start;
+      subject = std::move(next);
+      total += seconds;
+      in_block += seconds;
+      ++done;
+      if (done % block == 0) {
+        block_seconds.push_back(in_block / static_cast<double>((done - 1) % block + 1));
+        block_vertices.push_back(peer.vertex_count(*subject));
+        in_block = 0;
+      }
+      // Checked until the first failure; the invalid result is still fed on, as a game would.
+      if (first_invalid < 0) {
+        const RingCheck check = check_rings(peer.rings(*subject));
+        if (!check.ok) {
+          first_invalid = static_cast<std::int64_t>(i + 1);
+          note = peer.name() + " op " + std::to_string(i + 1) + " invalid: " + check.failure;
+        }
+      }
+      if (budget > 0 && thread_seconds() - run_start > budget) break;
+    }
+    if (done % block != 0) {  // a last, partial block
+      block_seconds.push_back(in_block / static_cast<double>(done % block));
+      block_vertices.push_back(peer.vertex_count(*subject));
+    }
+    state.SetIterationTime(total);
+  }
+  for (std::size_t b = 0; b < block_seconds.size(); ++b) {
+    state.counters[block_name(b, "ms_per_op")] = block_seconds[b] * 1e3;
+    state.counters[block_name(b, "vertices")] = static_cast<double>(block_vertices[b]);
+  }
+  state.counters["ops_done"] = static_cast<double>(done);
+  state.counters["first_invalid_op"] = static_cast<double>(first_invalid);
+  state.counters["threw_at_op"] = static_cast<double>(threw_at);
+  state.counters["block_size"] = static_cast<double>(block);
+  if (!note.empty()) state.SetLabel(note);
+}
+
+}  // namespace
+
+void register_carving_benchmarks(const std::vector<std::unique_ptr<Peer>>& peers) {
+  const auto ops = static_cast<std::int64_t>(env_number("EDGELAND_BENCH_CARVE_OPS", 10000));
+  for (const auto& peer : peers) {
+    benchmark::RegisterBenchmark(("carving/" + peer->name()).c_str(),
+                                 [p = peer.get()](benchmark::State& state) { run_carving(state, *p); })
+        ->Arg(ops)
+        ->Iterations(1)
+        ->UseManualTime()
+        ->Unit(benchmark::kMillisecond);
+  }
+}
+
+}  // namespace edgeland::bench
