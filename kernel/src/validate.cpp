@@ -16,6 +16,7 @@ bool validate_ring(const Ring& ring, std::size_t polygon, detail::ViolationSink&
   bool simple = detail::check_spikes(ring, polygon, sink);
   scratch.clear();
   detail::append_ring_edges(ring, polygon, scratch);
+  detail::sort_for_sweep(scratch);
   if (auto v = detail::find_self_intersection(scratch, ring.size())) {
     sink.add(*v);
     simple = false;
@@ -34,6 +35,7 @@ ValidationReport validate_polygons(std::span<const Polygon> polygons, std::size_
   if (valid_rings.size() >= 2 && !sink.full()) {
     edges.clear();
     for (const std::size_t i : valid_rings) detail::append_ring_edges(polygons[i], i, edges);
+    detail::sort_for_sweep(edges);
     // One sweep finds one overlapping pair; drop the later member and look again, so each
     // further sweep can only report a new pair.
     while (!sink.full()) {

@@ -39,14 +39,14 @@ bool check_spikes(const Ring& ring, std::size_t polygon, ViolationSink& sink);
 // Positive area for a simple ring: O(n). Returns whether the ring is counter-clockwise.
 bool check_orientation(const Ring& ring, std::size_t polygon, ViolationSink& sink);
 
-// The first pair of non-adjacent edges of one ring (its `edges`, built by append_ring_edges)
-// that share a point, found by the sweep in O(n log n). Needs a ring that passed the
+// The first pair of non-adjacent edges of one ring (its `edges`, built by append_ring_edges
+// and sort_for_sweep) that share a point, found by the sweep in O(n log n). Needs a ring that passed the
 // structure check; spikes are allowed (they are a separate rule).
 std::optional<Violation> find_self_intersection(const std::vector<SweepEdge>& edges,
                                                 std::size_t ring_size);
 
 // The first pair of rings whose interiors overlap, found by the sweep in O(n log n). Needs
-// rings that are each strictly simple and counter-clockwise.
+// rings that are each strictly simple and counter-clockwise, edges sorted by sort_for_sweep.
 std::optional<Violation> find_overlap(const std::vector<SweepEdge>& edges);
 
 }  // namespace edgeland::detail

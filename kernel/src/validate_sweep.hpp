@@ -21,11 +21,13 @@
 #include <algorithm>
 #include <cstddef>
 #include <iterator>
-#include <numeric>
+#include <memory_resource>
 #include <optional>
 #include <set>
 #include <vector>
 
+#include "edgeland/kernel/checked.hpp"
+#include "edgeland/kernel/formulas.hpp"
 #include "edgeland/kernel/int128.hpp"
 #include "edgeland/kernel/point.hpp"
 #include "edgeland/kernel/polygon.hpp"
@@ -46,18 +48,35 @@ struct SweepEdge {
 // and no zero-length edge.
 void append_ring_edges(const Ring& ring, std::size_t polygon, std::vector<SweepEdge>& out);
 
+// Puts edges in the order run_sweep needs: by left end.
+void sort_for_sweep(std::vector<SweepEdge>& edges);
+
 inline bool is_vertical(const SweepEdge& e) noexcept { return e.left.x == e.right.x; }
 
 inline int sign_of(Int128 v) noexcept { return (v > 0) - (v < 0); }
 
 // Where an edge cut by the sweep line at q lies: -1 strictly below q, 0 through q, +1 strictly
-// above q.
-int side_of_point(const SweepEdge& t, Point64 q) noexcept;
+// above q. Inline: the status asks this O(log n) times per event.
+inline int side_of_point(const SweepEdge& t, Point64 q) noexcept {
+  if (is_vertical(t)) return 0;
+  // t runs rightward, so q left of t means q above it, i.e. t below q.
+  using W = arith::Checked<Int128>;
+  return -sign_of(formulas::orient<W>(t.left.x, t.left.y, t.right.x, t.right.y, q.x, q.y).v);
+}
 
 // Order of the directions in which two edges through a common point leave it to the right
 // (upward if vertical): -1 when a leaves below b, +1 above, 0 when collinear. Vertical is
 // steepest.
-int compare_directions(const SweepEdge& a, const SweepEdge& b) noexcept;
+inline int compare_directions(const SweepEdge& a, const SweepEdge& b) noexcept {
+  const bool av = is_vertical(a), bv = is_vertical(b);
+  if (av || bv) return av == bv ? 0 : (av ? 1 : -1);
+  // Both point rightward: b turning counter-clockwise from a means b leaves above a.
+  // Differences of in-range coordinates fit 33 bits and the cross product 66 bits (proofs/).
+  using W = arith::Checked<Int128>;
+  const W c = formulas::cross<W>(W(a.right.x) - W(a.left.x), W(a.right.y) - W(a.left.y),
+                                 W(b.right.x) - W(b.left.x), W(b.right.y) - W(b.left.y));
+  return -sign_of(c.v);
+}
 
 // Stands for the event point in heterogeneous status look-ups.
 struct EventProbe {};
@@ -83,7 +102,18 @@ class StatusOrder {
  private:
   // At least one of a, b starts at the event point: std::set only compares the edge being
   // inserted with edges already there.
-  int compare_at_event(const SweepEdge& a, const SweepEdge& b) const noexcept;
+  int compare_at_event(const SweepEdge& a, const SweepEdge& b) const noexcept {
+    const Point64 q = *event_;
+    const bool a_new = a.left == q, b_new = b.left == q;
+    if (a_new && b_new) return compare_directions(a, b);
+    if (a_new) {
+      const int s = side_of_point(b, q);
+      return s != 0 ? -s : compare_directions(a, b);
+    }
+    // b is the new edge (the status never compares two old ones).
+    const int s = side_of_point(a, q);
+    return s != 0 ? s : compare_directions(a, b);
+  }
 
   const SweepEdge* edges_;
   const Point64* event_;
@@ -103,39 +133,59 @@ struct EventView {
 //   check.after_event(q, block)     with the edges through or leaving q, bottom-up, after it;
 //   check.adjacent(a, b)            for every pair that has just become neighbours (a below b).
 // Each returns an optional Violation; the first one stops the sweep and is returned.
+// An edge endpoint in event order.
+struct SweepEvent {
+  Point64 at;
+  std::size_t edge;
+  friend bool operator<(const SweepEvent& a, const SweepEvent& b) noexcept {
+    return a.at < b.at || (a.at == b.at && a.edge < b.edge);
+  }
+};
+
+// Runs the sweep over `edges`, asking `check` at each event:
+//   check.at_event(view)            before the status changes at q;
+//   check.after_event(q, block)     with the edges through or leaving q, bottom-up, after it;
+//   check.adjacent(a, b)            for every pair that has just become neighbours (a below b).
+// Each returns an optional Violation; the first one stops the sweep and is returned.
+// `edges` must be sorted by their left ends (sort_for_sweep), which makes the start events
+// the edges themselves in order and keeps the edges cut by the sweep line close in memory.
 template <class Check>
 std::optional<Violation> run_sweep(const std::vector<SweepEdge>& edges, Check& check) {
   const std::size_t n = edges.size();
-  std::vector<std::size_t> starts(n), ends(n);
-  std::iota(starts.begin(), starts.end(), std::size_t{0});
-  std::iota(ends.begin(), ends.end(), std::size_t{0});
-  std::sort(starts.begin(), starts.end(),
-            [&](std::size_t a, std::size_t b) { return edges[a].left < edges[b].left; });
-  std::sort(ends.begin(), ends.end(),
-            [&](std::size_t a, std::size_t b) { return edges[a].right < edges[b].right; });
+  std::vector<SweepEvent> ends(n);
+  for (std::size_t i = 0; i < n; ++i) ends[i] = {edges[i].right, i};
+  std::sort(ends.begin(), ends.end());
 
   Point64 q{};
-  using Status = std::set<std::size_t, StatusOrder>;
-  Status status(StatusOrder(edges.data(), &q));
+  // Status nodes come from one arena released at the end: no allocator call per event.
+  std::pmr::monotonic_buffer_resource arena;
+  using Status = std::pmr::set<std::size_t, StatusOrder>;
+  Status status(StatusOrder(edges.data(), &q), &arena);
   std::vector<Status::iterator> handle(n, status.end());
   std::vector<std::size_t> ending, through, starting, block;
+  const auto through_q = [&](std::size_t e) { return side_of_point(edges[e], q) == 0; };
 
   std::size_t si = 0, ei = 0;
   while (si < n || ei < n) {
     // Every edge ends after it starts, so an edge ending at q has already been inserted.
-    q = si < n && (ei == n || edges[starts[si]].left < edges[ends[ei]].right)
-            ? edges[starts[si]].left
-            : edges[ends[ei]].right;
+    q = si < n && (ei == n || edges[si].left < ends[ei].at) ? edges[si].left : ends[ei].at;
     ending.clear();
     starting.clear();
     through.clear();
-    for (; ei < n && edges[ends[ei]].right == q; ++ei) ending.push_back(ends[ei]);
-    for (; si < n && edges[starts[si]].left == q; ++si) starting.push_back(starts[si]);
+    for (; ei < n && ends[ei].at == q; ++ei) ending.push_back(ends[ei].edge);
+    for (; si < n && edges[si].left == q; ++si) starting.push_back(si);
 
-    // The status edges through q form one run; the ones not ending here pass through.
-    auto it = status.lower_bound(EventProbe{});
+    // The status edges through q form one run; the ones not ending here pass through. An
+    // edge ending here is in the run, so the run is found from it without a search.
+    auto it = status.end();
+    if (!ending.empty()) {
+      it = handle[ending.front()];
+      while (it != status.begin() && through_q(*std::prev(it))) --it;
+    } else {
+      it = status.lower_bound(EventProbe{});
+    }
     const std::size_t below = it == status.begin() ? kNone : *std::prev(it);
-    for (; it != status.end() && side_of_point(edges[*it], q) == 0; ++it) {
+    for (; it != status.end() && through_q(*it); ++it) {
       if (edges[*it].right != q) through.push_back(*it);
     }
     const auto above_it = it;  // not through q, so neither erased nor moved below
@@ -143,7 +193,13 @@ std::optional<Violation> run_sweep(const std::vector<SweepEdge>& edges, Check& c
     if (auto v = check.at_event(EventView{q, ending, through, starting, below})) return v;
 
     for (const std::size_t e : ending) status.erase(handle[e]);
-    for (const std::size_t s : starting) handle[s] = status.insert(s).first;
+    // Bottom-up, each new edge lands just before the edge above q unless edges pass through
+    // q: then the hint is wrong and the set searches as usual.
+    std::sort(starting.begin(), starting.end(), [&](std::size_t a, std::size_t b) {
+      const int c = compare_directions(edges[a], edges[b]);
+      return c != 0 ? c < 0 : a < b;
+    });
+    for (const std::size_t s : starting) handle[s] = status.insert(above_it, s);
 
     block.clear();
     for (auto b = below == kNone ? status.begin() : std::next(handle[below]); b != above_it; ++b) {
