@@ -95,29 +95,41 @@ std::vector<Fragment> route(const std::vector<Segment>& segs, const Closure& c,
   return out;
 }
 
-// Contacts between fragments of moved segments and all fragments. Every fragment lies within
-// one unit of its segment's box, so candidates come from the segments' sweep order.
+// Contacts between fragments of moved segments and all fragments, each pair once.
 Contacts recheck(const std::vector<Fragment>& frags, const std::vector<bool>& moved,
                  std::size_t segment_count, const std::vector<SweepBox>& seg_sweep) {
-  std::vector<std::uint32_t> first(segment_count + 1, 0);
-  for (const Fragment& f : frags) ++first[f.parent + 1];
-  for (std::size_t s = 0; s < segment_count; ++s) first[s + 1] += first[s];
   std::vector<Box64> boxes;
   std::vector<std::uint32_t> which;
+  std::vector<bool> is_moved(frags.size(), false);
   for (std::uint32_t i = 0; i < frags.size(); ++i) {
     if (!moved[frags[i].parent]) continue;
-    Box64 b = segment_box(frags[i].seg);
-    boxes.push_back({{b.min.x - 2, b.min.y - 2}, {b.max.x + 2, b.max.y + 2}});
+    boxes.push_back(segment_box(frags[i].seg));
     which.push_back(i);
+    is_moved[i] = true;
   }
   std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
-  for_each_overlapping_pair(sorted_for_sweep(boxes), seg_sweep, [&](std::uint32_t k, std::uint32_t s) {
-    const std::uint32_t f = which[k];
-    for (std::uint32_t g = first[s]; g < first[s + 1]; ++g)
-      if (g != f) pairs.emplace_back(std::min(f, g), std::max(f, g));
-  });
-  std::sort(pairs.begin(), pairs.end());
-  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  auto add = [&](std::uint32_t f, std::uint32_t g) {
+    if (f == g || (is_moved[g] && g < f)) return;  // a moved pair is seen from both sides
+    pairs.emplace_back(std::min(f, g), std::max(f, g));
+  };
+  if (8 * which.size() < frags.size() && frags.size() < 2 * segment_count) {
+    // Few moved fragments and few splits: reuse the segments' sweep order. Every fragment lies
+    // within one unit of its segment's box (grow the query boxes by 2 to be safe).
+    std::vector<std::uint32_t> first(segment_count + 1, 0);
+    for (const Fragment& f : frags) ++first[f.parent + 1];
+    for (std::size_t s = 0; s < segment_count; ++s) first[s + 1] += first[s];
+    for (Box64& b : boxes) b = {{b.min.x - 2, b.min.y - 2}, {b.max.x + 2, b.max.y + 2}};
+    for_each_overlapping_pair(sorted_for_sweep(boxes), seg_sweep, [&](std::uint32_t k, std::uint32_t s) {
+      for (std::uint32_t g = first[s]; g < first[s + 1]; ++g) add(which[k], g);
+    });
+    std::sort(pairs.begin(), pairs.end());
+    pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  } else {
+    std::vector<Box64> all(frags.size());
+    for (std::size_t i = 0; i < frags.size(); ++i) all[i] = segment_box(frags[i].seg);
+    for_each_overlapping_pair(sorted_for_sweep(boxes), sorted_for_sweep(all),
+                              [&](std::uint32_t k, std::uint32_t g) { add(which[k], g); });
+  }
   Contacts c;
   for (const auto& [f, g] : pairs) classify_pair(frags[f].seg, f, frags[g].seg, g, c);
   return c;
