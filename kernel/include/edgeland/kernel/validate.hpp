@@ -10,6 +10,30 @@
 //
 // Complexity: O(n log n) in the total vertex count (sweep line); the report lists every
 // violation found by the sweep but stops after `max_violations`.
+//
+// What is checked, in order (the report follows polygon order, then overlaps):
+//   1. each ring on its own: too few vertices (nothing else is checked then); every vertex out
+//      of range and every zero-length edge (a ring with either gets no geometric check, so
+//      no arithmetic ever sees an out-of-range coordinate); every spike; the first
+//      self-intersection the sweep meets (one per ring); and, only for a ring that is
+//      strictly simple, its orientation;
+//   2. the rings that passed step 1, together: one sweep finds one overlapping pair, reports
+//      it, drops the later member of the pair and sweeps again, so k reported overlaps cost
+//      k + 1 sweeps (k <= max_violations).
+// An invalid input always yields at least one violation, even with max_violations == 0.
+// The input needs no precondition: any vector of int64 points is accepted.
+//
+// Violation fields per rule (`edge` i is the edge from vertex i to vertex i + 1):
+//   too-few-vertices        polygon; where = vertex 0 (or (0 0) for an empty ring)
+//   coordinate-out-of-range polygon, edge = the offending vertex; where = that vertex
+//   repeated-vertex         polygon, edge = the zero-length edge; where = its vertex
+//   spike                   polygon, edge and other_edge = the two edges folding back at
+//                           their common vertex `where`
+//   self-intersection       polygon, edge < other_edge, non-adjacent; where = a common point
+//                           (a crossing point is rounded by round_to_grid)
+//   not-counter-clockwise   polygon; where = its lexicographically smallest vertex
+//   overlapping-interiors   polygon < other_polygon with an edge of each near `where`, a point
+//                           on the boundary of the common part (or a rounded crossing point)
 #include <cstddef>
 #include <string>
 #include <vector>
