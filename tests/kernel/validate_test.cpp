@@ -51,6 +51,7 @@ TEST(ValidatePolygon, NonConvexRingWithVerticalEdgesIsValid) {
 }
 
 TEST(ValidatePolygon, BowTieCrossesAtItsCentre) {
+  // Thesis 2.1, fig. 6 (left): edges that cross make a polygon non-simple.
   const Violation v = single(validate(Polygon{{0, 0}, {10, 10}, {10, 0}, {0, 10}}));
   EXPECT_EQ(v.rule, Rule::kSelfIntersection);
   EXPECT_EQ(v.polygon, 0u);
@@ -61,7 +62,8 @@ TEST(ValidatePolygon, BowTieCrossesAtItsCentre) {
 }
 
 TEST(ValidatePolygon, RingTouchingItselfAtAVertex) {
-  // Two triangles joined at (5, 5): vertex (5, 5) appears twice, 4 edges meet there.
+  // Thesis 2.1, fig. 6 (right): a self-touching ("weakly simple") polygon, which the thesis
+  // excludes. Two triangles joined at (5, 5): the vertex appears twice, 4 edges meet there.
   const Violation v =
       single(validate(Polygon{{0, 0}, {10, 0}, {5, 5}, {10, 10}, {0, 10}, {5, 5}}));
   EXPECT_EQ(v.rule, Rule::kSelfIntersection);
@@ -83,6 +85,7 @@ TEST(ValidatePolygon, CrossingAtANonIntegerPointIsReportedRounded) {
 }
 
 TEST(ValidatePolygon, ClockwiseSquareIsNotCounterClockwise) {
+  // Thesis 2.2: the signed trapezoid sum is negative for a clockwise ring.
   const Violation v = single(validate(reversed(square(0, 0, 10, 10))));
   EXPECT_EQ(v.rule, Rule::kNotCounterClockwise);
   EXPECT_EQ(v.describe(), "not-counter-clockwise: polygon 0 at (0 0)");
@@ -108,6 +111,14 @@ TEST(ValidatePolygon, FlatTriangleIsTwoSpikesAndNoOrientation) {
   EXPECT_EQ(rules_of(r), std::set<Rule>{Rule::kSpike});
   EXPECT_EQ(r.violations[0].where, (Point64{0, 0}));
   EXPECT_EQ(r.violations[1].where, (Point64{10, 0}));
+}
+
+TEST(ValidatePolygon, PipeToAHoleIsNotSimple) {
+  // Thesis 3.6.2, fig. 36: a hole joined to the border by a "pipe", two edges on one line in
+  // opposite directions. The thesis drops this representation; such a ring self-touches.
+  const Violation v = single(validate(Polygon{{0, 0}, {10, 0}, {10, 10}, {0, 10}, {0, 5}, {3, 5},
+                                              {3, 7}, {7, 7}, {7, 3}, {3, 3}, {3, 5}, {0, 5}}));
+  EXPECT_EQ(v.rule, Rule::kSelfIntersection);
 }
 
 TEST(ValidatePolygon, RepeatedVertex) {
@@ -237,6 +248,7 @@ TEST(ValidateSet, FanOfTrianglesAroundOnePointIsValid) {
 }
 
 TEST(ValidateSet, SquareFillingTheHoleOfARingOfRectanglesIsValid) {
+  // Thesis 3.6.3, fig. 38: a region split into simple polygons with no space between them.
   EXPECT_TRUE(validate(PolygonSet{square(0, 0, 30, 10), square(20, 10, 30, 20),
                                   square(0, 20, 30, 30), square(0, 10, 10, 20),
                                   square(10, 10, 20, 20)})
