@@ -1,5 +1,6 @@
 // The sweep of validate() against the O(n^2) brute force of tests/support (written apart from
-// the kernel), on random valid inputs and on the same inputs broken on purpose.
+// the kernel): RapidCheck properties on random valid inputs and on the same inputs broken on
+// purpose, and bounded-exhaustive runs over every small ring and triangle set of tiny grids.
 //
 // Agreement means: the same ok() verdict; the same per-ring findings (rule, polygon, index)
 // for every rule the sweep reports in full; the same rings found self-intersecting, every
@@ -10,6 +11,7 @@
 
 #include <algorithm>
 #include <set>
+#include <string>
 #include <tuple>
 
 #include "edgeland/kernel/validate.hpp"
@@ -32,10 +34,11 @@ struct RcDraw {
   }
 };
 
-void check_agrees(const PolygonSet& set) {
+// Empty when the sweep and the brute force agree on `set` (see the file comment), else why not.
+std::string disagreement(const PolygonSet& set) {
   const ValidationReport sweep = validate(set, kAll);
   const testing::BruteForceFindings bf = validate_bruteforce(set);
-  RC_ASSERT(sweep.ok() == bf.ok());
+  if (sweep.ok() != bf.ok()) return sweep.ok() ? "sweep finds nothing" : "brute force finds nothing";
 
   std::set<std::tuple<Rule, std::size_t, std::size_t>> ring_rules;
   std::set<std::size_t> self_intersecting, bf_self_intersecting;
@@ -43,18 +46,28 @@ void check_agrees(const PolygonSet& set) {
   for (const Violation& v : sweep.violations) {
     if (v.rule == Rule::kSelfIntersection) {
       self_intersecting.insert(v.polygon);
-      RC_ASSERT(bf.self_intersections.count({v.polygon, v.edge, v.other_edge}) == 1u);
+      if (bf.self_intersections.count({v.polygon, v.edge, v.other_edge}) == 0) {
+        return "not confirmed: " + v.describe();
+      }
     } else if (v.rule == Rule::kOverlappingInteriors) {
       overlap = true;
-      RC_ASSERT(bf.overlaps.count({v.polygon, v.other_polygon}) == 1u);
+      if (bf.overlaps.count({v.polygon, v.other_polygon}) == 0) {
+        return "not confirmed: " + v.describe();
+      }
     } else {
       ring_rules.emplace(v.rule, v.polygon, v.edge);
     }
   }
   for (const auto& [p, e, f] : bf.self_intersections) bf_self_intersecting.insert(p);
-  RC_ASSERT(ring_rules == bf.ring_rules);
-  RC_ASSERT(self_intersecting == bf_self_intersecting);
-  RC_ASSERT(overlap == !bf.overlaps.empty());
+  if (ring_rules != bf.ring_rules) return "per-ring rules differ";
+  if (self_intersecting != bf_self_intersecting) return "self-intersecting rings differ";
+  if (overlap == bf.overlaps.empty()) return overlap ? "overlap not confirmed" : "overlap missed";
+  return {};
+}
+
+void check_agrees(const PolygonSet& set) {
+  const std::string why = disagreement(set);
+  if (!why.empty()) RC_FAIL(why);
 }
 
 // The same set turned a quarter turn, or mirrored with every ring reversed to stay
@@ -230,6 +243,90 @@ RC_GTEST_PROP(ValidateSweepVsBruteForce, GridSetsSpanningTheWholeRange, ()) {
          std::clamp<std::int64_t>(v.y + draw(-1, 2), -B, B)};
   }
   check_agrees_in_every_direction(set);
+}
+
+// --- bounded-exhaustive cross-checks ------------------------------------------------------
+
+// The points of the grid [0, w) x [0, h), row by row.
+std::vector<Point64> grid(std::int64_t w, std::int64_t h) {
+  std::vector<Point64> out;
+  for (std::int64_t y = 0; y < h; ++y)
+    for (std::int64_t x = 0; x < w; ++x) out.push_back({x, y});
+  return out;
+}
+
+TEST(ValidateExhaustive, EveryRingOfFourVerticesOnA3x3Grid) {
+  const std::vector<Point64> g = grid(3, 3);
+  std::size_t rings = 0, valid = 0;
+  for (const Point64 a : g)
+    for (const Point64 b : g)
+      for (const Point64 c : g)
+        for (const Point64 d : g) {
+          const PolygonSet set{{a, b, c, d}};
+          ASSERT_EQ(disagreement(set), "") << a.x << a.y << b.x << b.y << c.x << c.y << d.x << d.y;
+          ++rings;
+          valid += validate(set).ok();
+        }
+  EXPECT_EQ(rings, 6561u);
+  EXPECT_GT(valid, 0u);
+}
+
+TEST(ValidateExhaustive, EveryRingOfFiveVerticesOnA3x2Grid) {
+  const std::vector<Point64> g = grid(3, 2);
+  std::size_t rings = 0;
+  for (const Point64 a : g)
+    for (const Point64 b : g)
+      for (const Point64 c : g)
+        for (const Point64 d : g)
+          for (const Point64 e : g) {
+            const PolygonSet set{{a, b, c, d, e}};
+            ASSERT_EQ(disagreement(turned(set, false)), "");
+            ++rings;
+          }
+  EXPECT_EQ(rings, 7776u);
+}
+
+// All counter-clockwise triangles with area on the grid [0, w) x [0, h).
+std::vector<Polygon> grid_triangles(std::int64_t w, std::int64_t h) {
+  const std::vector<Point64> g = grid(w, h);
+  std::vector<Polygon> triangles;
+  for (std::size_t i = 0; i < g.size(); ++i)
+    for (std::size_t j = i + 1; j < g.size(); ++j)
+      for (std::size_t k = j + 1; k < g.size(); ++k) {
+        Polygon t{g[i], g[j], g[k]};
+        const __int128 area = __int128(t[1].x - t[0].x) * (t[2].y - t[0].y) -
+                              __int128(t[1].y - t[0].y) * (t[2].x - t[0].x);
+        if (area == 0) continue;
+        if (area < 0) std::swap(t[1], t[2]);
+        triangles.push_back(t);
+      }
+  return triangles;
+}
+
+TEST(ValidateExhaustive, EveryPairOfTrianglesOnA3x3Grid) {
+  // Each triangle against every one, itself included: nesting, shared edges both ways, shared
+  // vertices, vertices on edges, crossings.
+  const std::vector<Polygon> triangles = grid_triangles(3, 3);
+  ASSERT_EQ(triangles.size(), 76u);  // 84 triples less 8 collinear ones
+  std::size_t valid_pairs = 0;
+  for (const Polygon& s : triangles)
+    for (const Polygon& t : triangles) {
+      const PolygonSet set{s, t};
+      ASSERT_EQ(disagreement(set), "");
+      ASSERT_EQ(disagreement(turned(set, true)), "");
+      valid_pairs += validate(set).ok();
+    }
+  EXPECT_GT(valid_pairs, 0u);
+}
+
+TEST(ValidateExhaustive, EveryTripleOfTrianglesOnA3x2Grid) {
+  // Three members: after one overlapping pair is reported, the re-sweep without its later
+  // member must still find (or not) the rest.
+  const std::vector<Polygon> triangles = grid_triangles(3, 2);
+  ASSERT_EQ(triangles.size(), 18u);  // 20 triples less 2 collinear rows
+  for (const Polygon& s : triangles)
+    for (const Polygon& t : triangles)
+      for (const Polygon& u : triangles) ASSERT_EQ(disagreement({s, t, u}), "");
 }
 
 }  // namespace
