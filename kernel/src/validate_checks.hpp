@@ -16,7 +16,8 @@ namespace edgeland::detail {
 // Collects violations up to a maximum (at least one, so an invalid input never looks valid).
 class ViolationSink {
  public:
-  explicit ViolationSink(std::size_t max_violations) : max_(std::max<std::size_t>(max_violations, 1)) {}
+  explicit ViolationSink(std::size_t max_violations)
+      : max_(std::max<std::size_t>(max_violations, 1)) {}
   bool full() const noexcept { return violations_.size() >= max_; }
   void add(const Violation& v) {
     if (!full()) violations_.push_back(v);
@@ -40,8 +41,8 @@ bool check_spikes(const Ring& ring, std::size_t polygon, ViolationSink& sink);
 bool check_orientation(const Ring& ring, std::size_t polygon, ViolationSink& sink);
 
 // The first pair of non-adjacent edges of one ring (its `edges`, built by append_ring_edges
-// and sort_for_sweep) that share a point, found by the sweep in O(n log n). Needs a ring that passed the
-// structure check; spikes are allowed (they are a separate rule).
+// and sort_for_sweep) that share a point, found by the sweep in O(n log n). Needs a ring that
+// passed the structure check; spikes are allowed (they are a separate rule).
 std::optional<Violation> find_self_intersection(const std::vector<SweepEdge>& edges,
                                                 std::size_t ring_size);
 

@@ -73,8 +73,8 @@ class DisjointInteriorsCheck {
 
   std::optional<Violation> adjacent(std::size_t a, std::size_t b) {
     if (edges_[a].polygon == edges_[b].polygon) return std::nullopt;
-    const SegmentIntersection hit =
-        intersect(Segment{edges_[a].left, edges_[a].right}, Segment{edges_[b].left, edges_[b].right});
+    const SegmentIntersection hit = intersect(Segment{edges_[a].left, edges_[a].right},
+                                              Segment{edges_[b].left, edges_[b].right});
     if (hit.relation != SegmentRelation::kCrossing) return std::nullopt;
     return report(a, b, round_to_grid(hit.point));
   }

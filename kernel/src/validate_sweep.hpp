@@ -37,11 +37,11 @@ namespace edgeland::detail {
 
 // One ring edge as the sweep sees it: endpoints in sweep order, plus where it came from.
 struct SweepEdge {
-  Point64 left;          // lexicographically smaller end
-  Point64 right;         // larger end; never equal to `left`
-  std::size_t polygon;   // index of the ring in the caller's set
-  std::size_t edge;      // index of the edge in its ring
-  bool forward;          // the ring runs from `left` to `right` (rightward, or upward if vertical)
+  Point64 left;         // lexicographically smaller end
+  Point64 right;        // larger end; never equal to `left`
+  std::size_t polygon;  // index of the ring in the caller's set
+  std::size_t edge;     // index of the edge in its ring
+  bool forward;         // the ring runs from `left` to `right` (rightward, or upward if vertical)
 };
 
 // Appends the edges of `ring` as polygon `polygon`. The ring has >= 3 vertices, all in range,

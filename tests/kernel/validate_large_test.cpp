@@ -32,8 +32,8 @@ const LargeSet& large_set() {
     LargeSet l;
     l.set = testing::random_grid_set(draw, kCells, kCell, Point64{0, 0});
     // Far to the right of the grid, with radii from 1 to 10^8: a very spiky ring.
-    l.set.push_back(testing::random_star(draw, Point64{1'000'000'000, 0}, 100'000'000,
-                                         kStarVertices));
+    l.set.push_back(
+        testing::random_star(draw, Point64{1'000'000'000, 0}, 100'000'000, kStarVertices));
     l.star = l.set.size() - 1;
     for (const Polygon& p : l.set) l.vertices += p.size();
     return l;

@@ -38,7 +38,8 @@ struct RcDraw {
 std::string disagreement(const PolygonSet& set) {
   const ValidationReport sweep = validate(set, kAll);
   const testing::BruteForceFindings bf = validate_bruteforce(set);
-  if (sweep.ok() != bf.ok()) return sweep.ok() ? "sweep finds nothing" : "brute force finds nothing";
+  if (sweep.ok() != bf.ok())
+    return sweep.ok() ? "sweep finds nothing" : "brute force finds nothing";
 
   std::set<std::tuple<Rule, std::size_t, std::size_t>> ring_rules;
   std::set<std::size_t> self_intersecting, bf_self_intersecting;
@@ -97,8 +98,8 @@ std::int64_t extreme_coordinate() {
 // A triangle on a small grid turned counter-clockwise if it has area, left flat otherwise.
 Polygon grid_triangle(std::int64_t size) {
   Polygon t{grid_point(size), grid_point(size), grid_point(size)};
-  const __int128 area = __int128(t[1].x - t[0].x) * (t[2].y - t[0].y) -
-                        __int128(t[1].y - t[0].y) * (t[2].x - t[0].x);
+  const __int128 area =
+      __int128(t[1].x - t[0].x) * (t[2].y - t[0].y) - __int128(t[1].y - t[0].y) * (t[2].x - t[0].x);
   if (area < 0) std::swap(t[1], t[2]);
   return t;
 }
@@ -124,7 +125,8 @@ void perturb(PolygonSet& set, std::int64_t extent) {
       p[i] = grid_point(extent);
       break;
     case 3: {  // a vertex onto another member's vertex or edge midpoint (when integer)
-      const Polygon& q = set[static_cast<std::size_t>(draw(0, static_cast<std::int64_t>(set.size())))];
+      const Polygon& q =
+          set[static_cast<std::size_t>(draw(0, static_cast<std::int64_t>(set.size())))];
       if (q.empty()) break;
       const auto j = static_cast<std::size_t>(draw(0, static_cast<std::int64_t>(q.size())));
       const Point64 a = q[j], b = q[(j + 1) % q.size()];
@@ -163,7 +165,8 @@ RC_GTEST_PROP(ValidateSweepVsBruteForce, RandomRingsOnATinyGrid, ()) {
   Polygon ring;
   for (std::int64_t k = 0; k < n; ++k) ring.push_back(grid_point(size));
   check_agrees_in_every_direction({ring});
-  RC_ASSERT(validate(ring, kAll).violations.size() == validate(PolygonSet{ring}, kAll).violations.size());
+  RC_ASSERT(validate(ring, kAll).violations.size() ==
+            validate(PolygonSet{ring}, kAll).violations.size());
 }
 
 RC_GTEST_PROP(ValidateSweepVsBruteForce, StarShapedRingsAreValid, ()) {
@@ -200,7 +203,8 @@ RC_GTEST_PROP(ValidateSweepVsBruteForce, GridCellSetsAreValid, ()) {
   RcDraw draw;
   const int cells = static_cast<int>(draw(1, 7));
   const std::int64_t cell = *rc::gen::element<std::int64_t>(1, 2, 4);
-  const PolygonSet set = testing::random_grid_set(draw, cells, cell, Point64{draw(-5, 5), draw(-5, 5)});
+  const PolygonSet set =
+      testing::random_grid_set(draw, cells, cell, Point64{draw(-5, 5), draw(-5, 5)});
   RC_ASSERT(validate(set).ok());
   check_agrees_in_every_direction(set);
 }

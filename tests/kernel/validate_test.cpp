@@ -46,8 +46,8 @@ TEST(ValidatePolygon, CollinearVertexOnAStraightSideIsAllowed) {
 
 TEST(ValidatePolygon, NonConvexRingWithVerticalEdgesIsValid) {
   // A U shape: vertical edges at one x on both sides of the notch.
-  EXPECT_TRUE(validate(Polygon{{0, 0}, {9, 0}, {9, 9}, {6, 9}, {6, 3}, {3, 3}, {3, 9}, {0, 9}})
-                  .ok());
+  EXPECT_TRUE(
+      validate(Polygon{{0, 0}, {9, 0}, {9, 9}, {6, 9}, {6, 3}, {3, 3}, {3, 9}, {0, 9}}).ok());
 }
 
 TEST(ValidatePolygon, BowTieCrossesAtItsCentre) {
@@ -64,8 +64,7 @@ TEST(ValidatePolygon, BowTieCrossesAtItsCentre) {
 TEST(ValidatePolygon, RingTouchingItselfAtAVertex) {
   // Thesis 2.1, fig. 6 (right): a self-touching ("weakly simple") polygon, which the thesis
   // excludes. Two triangles joined at (5, 5): the vertex appears twice, 4 edges meet there.
-  const Violation v =
-      single(validate(Polygon{{0, 0}, {10, 0}, {5, 5}, {10, 10}, {0, 10}, {5, 5}}));
+  const Violation v = single(validate(Polygon{{0, 0}, {10, 0}, {5, 5}, {10, 10}, {0, 10}, {5, 5}}));
   EXPECT_EQ(v.rule, Rule::kSelfIntersection);
   EXPECT_EQ(v.where, (Point64{5, 5}));
 }
@@ -116,8 +115,18 @@ TEST(ValidatePolygon, FlatTriangleIsTwoSpikesAndNoOrientation) {
 TEST(ValidatePolygon, PipeToAHoleIsNotSimple) {
   // Thesis 3.6.2, fig. 36: a hole joined to the border by a "pipe", two edges on one line in
   // opposite directions. The thesis drops this representation; such a ring self-touches.
-  const Violation v = single(validate(Polygon{{0, 0}, {10, 0}, {10, 10}, {0, 10}, {0, 5}, {3, 5},
-                                              {3, 7}, {7, 7}, {7, 3}, {3, 3}, {3, 5}, {0, 5}}));
+  const Violation v = single(validate(Polygon{{0, 0},
+                                              {10, 0},
+                                              {10, 10},
+                                              {0, 10},
+                                              {0, 5},
+                                              {3, 5},
+                                              {3, 7},
+                                              {7, 7},
+                                              {7, 3},
+                                              {3, 3},
+                                              {3, 5},
+                                              {0, 5}}));
   EXPECT_EQ(v.rule, Rule::kSelfIntersection);
 }
 
@@ -234,8 +243,8 @@ TEST(ValidateSet, MembersTouchingOnlyAtAVertexAreValid) {
 TEST(ValidateSet, VertexOnTheInteriorOfAnotherMembersEdgeIsValid) {
   EXPECT_TRUE(validate(PolygonSet{square(0, 0, 10, 10), Polygon{{10, 5}, {15, 0}, {15, 10}}}).ok());
   // A big square beside two small ones: the small ones' shared corner lies on its side.
-  EXPECT_TRUE(validate(PolygonSet{square(0, 0, 10, 10), square(10, 0, 15, 5), square(10, 5, 15, 10)})
-                  .ok());
+  EXPECT_TRUE(
+      validate(PolygonSet{square(0, 0, 10, 10), square(10, 0, 15, 5), square(10, 5, 15, 10)}).ok());
 }
 
 TEST(ValidateSet, FanOfTrianglesAroundOnePointIsValid) {
@@ -249,10 +258,10 @@ TEST(ValidateSet, FanOfTrianglesAroundOnePointIsValid) {
 
 TEST(ValidateSet, SquareFillingTheHoleOfARingOfRectanglesIsValid) {
   // Thesis 3.6.3, fig. 38: a region split into simple polygons with no space between them.
-  EXPECT_TRUE(validate(PolygonSet{square(0, 0, 30, 10), square(20, 10, 30, 20),
-                                  square(0, 20, 30, 30), square(0, 10, 10, 20),
-                                  square(10, 10, 20, 20)})
-                  .ok());
+  EXPECT_TRUE(
+      validate(PolygonSet{square(0, 0, 30, 10), square(20, 10, 30, 20), square(0, 20, 30, 30),
+                          square(0, 10, 10, 20), square(10, 10, 20, 20)})
+          .ok());
 }
 
 TEST(ValidateSet, ProperCrossingBetweenMembers) {
@@ -296,9 +305,9 @@ TEST(ValidateSet, MemberInsideAnotherSharingAVertex) {
 
 TEST(ValidateSet, MembersSharingAnEdgeInTheSameDirection) {
   // Both rings run (0,0)->(10,0): both interiors lie above it.
-  EXPECT_EQ(single(validate(PolygonSet{square(0, 0, 10, 10), Polygon{{0, 0}, {10, 0}, {5, 30}}}))
-                .rule,
-            Rule::kOverlappingInteriors);
+  EXPECT_EQ(
+      single(validate(PolygonSet{square(0, 0, 10, 10), Polygon{{0, 0}, {10, 0}, {5, 30}}})).rule,
+      Rule::kOverlappingInteriors);
 }
 
 TEST(ValidateSet, DiamondPassingThroughAnEdgeAtTwoVertices) {
