@@ -5,8 +5,11 @@
 // every *_command.cpp by itself.
 #include "command.hpp"
 
+// One X(...) line per subcommand.
+// clang-format off
 #define EDGELAND_CLI_COMMANDS(X) \
   X(validate)
+// clang-format on
 
 namespace edgeland::cli {
 #define EDGELAND_CLI_DECLARE_COMMAND(name) Command add_##name##_command(CLI::App& parent);

@@ -79,9 +79,10 @@ int run_validate(const ValidateOptions& options) {
 
 Command add_validate_command(CLI::App& parent) {
   auto options = std::make_shared<ValidateOptions>();
-  CLI::App* app = parent.add_subcommand(
-      "validate", "Check a WKT POLYGON or MULTIPOLYGON (integer coordinates) against the "
-                  "kernel's invariants; a MULTIPOLYGON is checked as a polygon set.");
+  CLI::App* app =
+      parent.add_subcommand("validate",
+                            "Check a WKT POLYGON or MULTIPOLYGON (integer coordinates) against the "
+                            "kernel's invariants; a MULTIPOLYGON is checked as a polygon set.");
   app->add_option("FILE", options->path, "WKT file, or - for standard input")->required();
   app->add_flag("--all", options->all, "List every violation found, one per line");
   app->footer(

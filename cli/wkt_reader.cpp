@@ -36,7 +36,8 @@ std::string boost_reason(const std::exception& error) {
     reason = "expected a number" + reason.substr(kLexicalCast.size());
   }
   if (reason.find(" at '") == std::string::npos) reason += " at the end of the text";
-  if (!reason.empty() && reason[0] >= 'A' && reason[0] <= 'Z') reason[0] = static_cast<char>(reason[0] - 'A' + 'a');
+  if (!reason.empty() && reason[0] >= 'A' && reason[0] <= 'Z')
+    reason[0] = static_cast<char>(reason[0] - 'A' + 'a');
   constexpr std::size_t kMaxLength = 160;
   if (reason.size() > kMaxLength) reason = reason.substr(0, kMaxLength) + "...";
   return reason;
@@ -51,9 +52,8 @@ class RingConverter {
     const std::size_t first_point = next_point_;
     next_point_ += in.size();
     if (in.empty()) {
-      WktError error(WktErrorKind::kEmptyGeometry,
-                     "polygon " + std::to_string(polygon) + " ring " + std::to_string(ring) +
-                         " is empty");
+      WktError error(WktErrorKind::kEmptyGeometry, "polygon " + std::to_string(polygon) + " ring " +
+                                                       std::to_string(ring) + " is empty");
       error.polygon = polygon;
       error.ring = ring;
       throw error;
@@ -119,15 +119,24 @@ WktPolygon convert_polygon(const BgPolygon& in, std::size_t index, RingConverter
 
 const char* wkt_error_kind_name(WktErrorKind kind) noexcept {
   switch (kind) {
-    case WktErrorKind::kEmptyInput: return "empty-input";
-    case WktErrorKind::kNotText: return "not-text";
-    case WktErrorKind::kSyntax: return "syntax";
-    case WktErrorKind::kNotInteger: return "not-integer";
-    case WktErrorKind::kWrongDimension: return "wrong-dimension";
-    case WktErrorKind::kUnsupportedGeometry: return "unsupported-geometry";
-    case WktErrorKind::kEmptyGeometry: return "empty-geometry";
-    case WktErrorKind::kUnclosedRing: return "unclosed-ring";
-    case WktErrorKind::kCoordinateOutOfRange: return "coordinate-out-of-range";
+    case WktErrorKind::kEmptyInput:
+      return "empty-input";
+    case WktErrorKind::kNotText:
+      return "not-text";
+    case WktErrorKind::kSyntax:
+      return "syntax";
+    case WktErrorKind::kNotInteger:
+      return "not-integer";
+    case WktErrorKind::kWrongDimension:
+      return "wrong-dimension";
+    case WktErrorKind::kUnsupportedGeometry:
+      return "unsupported-geometry";
+    case WktErrorKind::kEmptyGeometry:
+      return "empty-geometry";
+    case WktErrorKind::kUnclosedRing:
+      return "unclosed-ring";
+    case WktErrorKind::kCoordinateOutOfRange:
+      return "coordinate-out-of-range";
   }
   return "unknown";
 }

@@ -31,15 +31,15 @@ namespace edgeland {
 
 // Why a text was rejected.
 enum class WktErrorKind : std::uint8_t {
-  kEmptyInput,             // no text at all, or only white space
-  kNotText,                // a byte that is not printable ASCII, tab or line break
-  kSyntax,                 // not well-formed WKT (Boost.Geometry's message, or a misplaced ',')
-  kNotInteger,             // a decimal or exponent coordinate such as 1.5 or 1e3
-  kWrongDimension,         // a point without exactly two coordinates, or a Z/M qualifier
-  kUnsupportedGeometry,    // a geometry other than POLYGON / MULTIPOLYGON
-  kEmptyGeometry,          // "POLYGON EMPTY" or "()"
-  kUnclosedRing,           // a ring whose last point is not its first
-  kCoordinateOutOfRange,   // |c| > kCoordBound
+  kEmptyInput,            // no text at all, or only white space
+  kNotText,               // a byte that is not printable ASCII, tab or line break
+  kSyntax,                // not well-formed WKT (Boost.Geometry's message, or a misplaced ',')
+  kNotInteger,            // a decimal or exponent coordinate such as 1.5 or 1e3
+  kWrongDimension,        // a point without exactly two coordinates, or a Z/M qualifier
+  kUnsupportedGeometry,   // a geometry other than POLYGON / MULTIPOLYGON
+  kEmptyGeometry,         // "POLYGON EMPTY" or "()"
+  kUnclosedRing,          // a ring whose last point is not its first
+  kCoordinateOutOfRange,  // |c| > kCoordBound
 };
 
 // Stable lower-case name of a kind, e.g. "not-integer".
@@ -51,7 +51,7 @@ class WktError : public Error {
  public:
   WktError(WktErrorKind kind, const std::string& message);
   WktErrorKind kind;
-  std::size_t line = 0;       // 1-based position in the text, when known
+  std::size_t line = 0;  // 1-based position in the text, when known
   std::size_t column = 0;
   std::size_t polygon = kNone;  // index of the polygon in the MULTIPOLYGON (0 for a POLYGON)
   std::size_t ring = kNone;     // 0 = exterior ring, 1.. = holes

@@ -77,8 +77,8 @@ void check_number(const Token& token) {
       const auto digit = static_cast<std::uint64_t>(c - '0');
       if (magnitude > (limit - digit) / 10) {
         fail(WktErrorKind::kCoordinateOutOfRange, token.at,
-             "coordinate " + quoted(token.text) + " is beyond the bound |c| <= " +
-                 std::to_string(kCoordBound));
+             "coordinate " + quoted(token.text) +
+                 " is beyond the bound |c| <= " + std::to_string(kCoordBound));
       }
       magnitude = magnitude * 10 + digit;
     }
@@ -105,8 +105,7 @@ void check_number(const Token& token) {
   }
   if (decimal && seen_digit && (seen_dot || seen_exponent)) {
     fail(WktErrorKind::kNotInteger, token.at,
-         "coordinate " + quoted(token.text) + " is not an integer; only integer coordinates are "
-         "accepted");
+         "coordinate " + quoted(token.text) + " is not an integer; only integers are accepted");
   }
   fail(WktErrorKind::kSyntax, token.at, "malformed number " + quoted(token.text));
 }

@@ -60,17 +60,17 @@ RC_GTEST_PROP(WktReaderProperty, ArbitraryBytesAreReadOrRejected, (const std::st
 
 RC_GTEST_PROP(WktReaderProperty, TextFromTheWktAlphabetIsReadOrRejected, ()) {
   // Mostly the characters WKT is made of, so the checks behind the byte filter are reached.
-  const auto text = *rc::gen::container<std::string>(rc::gen::element(
-      '(', ')', ',', ' ', '\n', '0', '1', '7', '-', '+', '.', 'e', 'P', 'O', 'L', 'Y', 'G', 'N',
-      'M', 'U', 'T', 'I', 'E', 'Z'));
+  const auto text = *rc::gen::container<std::string>(
+      rc::gen::element('(', ')', ',', ' ', '\n', '0', '1', '7', '-', '+', '.', 'e', 'P', 'O', 'L',
+                       'Y', 'G', 'N', 'M', 'U', 'T', 'I', 'E', 'Z'));
   read_or_reject(text);
   read_or_reject("POLYGON " + text);
   read_or_reject("MULTIPOLYGON (" + text);
 }
 
 RC_GTEST_PROP(WktReaderProperty, OneEditedByteOfAValidTextIsReadOrRejected, ()) {
-  std::string text = to_wkt(PolygonSet{{{0, 0}, {10, 0}, {10, 10}, {0, 10}},
-                                       {{20, 0}, {30, 0}, {25, 9}}});
+  std::string text =
+      to_wkt(PolygonSet{{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{20, 0}, {30, 0}, {25, 9}}});
   const auto at = *rc::gen::inRange<std::size_t>(0, text.size());
   const auto byte = *rc::gen::arbitrary<char>();
   const auto erase = *rc::gen::arbitrary<bool>();

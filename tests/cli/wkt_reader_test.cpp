@@ -83,8 +83,8 @@ TEST(WktReaderAccepts, CoordinatesAtTheBoundAndExplicitSigns) {
   const std::string b = std::to_string(kCoordBound);
   const WktGeometry g = read_wkt("POLYGON ((-" + b + " -" + b + ", +" + b + " -" + b + ", " + b +
                                  " " + b + ", -" + b + " -" + b + "))");
-  const Ring expected{{-kCoordBound, -kCoordBound}, {kCoordBound, -kCoordBound},
-                      {kCoordBound, kCoordBound}};
+  const Ring expected{
+      {-kCoordBound, -kCoordBound}, {kCoordBound, -kCoordBound}, {kCoordBound, kCoordBound}};
   EXPECT_EQ(g.polygons[0].exterior, expected);
 }
 
@@ -151,9 +151,9 @@ TEST(WktReaderRejects, CoordinateOfTwoToTheFortyNamingTheVertex) {
 
 TEST(WktReaderRejects, CoordinateJustBeyondTheBoundInAHoleOfTheSecondMember) {
   const std::string over = std::to_string(-kCoordBound - 1);
-  const WktError e = rejection(
-      "MULTIPOLYGON (((0 0, 1 0, 1 1, 0 0)), ((0 0, 9 0, 9 9, 0 0), (1 1, 2 1, " + over +
-      " 2, 1 1)))");
+  const WktError e =
+      rejection("MULTIPOLYGON (((0 0, 1 0, 1 1, 0 0)), ((0 0, 9 0, 9 9, 0 0), (1 1, 2 1, " + over +
+                " 2, 1 1)))");
   EXPECT_EQ(e.kind, WktErrorKind::kCoordinateOutOfRange);
   EXPECT_EQ(e.polygon, 1u);
   EXPECT_EQ(e.ring, 1u);
@@ -162,10 +162,9 @@ TEST(WktReaderRejects, CoordinateJustBeyondTheBoundInAHoleOfTheSecondMember) {
 }
 
 TEST(WktReaderRejects, CoordinatesBeyondInt64) {
-  for (const char* literal : {"9223372036854775808", "-9223372036854775809",
-                              "99999999999999999999", "9223372036854775807"}) {
-    const WktError e =
-        rejection(std::string("POLYGON ((0 0, ") + literal + " 0, 1 1, 0 0))");
+  for (const char* literal : {"9223372036854775808", "-9223372036854775809", "99999999999999999999",
+                              "9223372036854775807"}) {
+    const WktError e = rejection(std::string("POLYGON ((0 0, ") + literal + " 0, 1 1, 0 0))");
     EXPECT_EQ(e.kind, WktErrorKind::kCoordinateOutOfRange) << literal;
     EXPECT_EQ(e.column, 16u) << literal;
   }
@@ -192,9 +191,10 @@ TEST(WktReaderRejects, ZAndMQualifiers) {
 
 TEST(WktReaderRejects, MisplacedCommasThatReadWktTurnsIntoPointsOrDrops) {
   // ",," and "(," would become a (0 0) point; a trailing comma would be dropped.
-  for (const char* text : {"POLYGON ((0 0, 1 0,, 1 1, 0 0))", "POLYGON ((, 0 0, 1 0, 1 1, 0 0))",
-                           "POLYGON ((0 0, 1 0, 1 1, 0 0,))", "POLYGON ((0 0, 1 0, 1 1, 0 0),)",
-                           "MULTIPOLYGON (((0 0, 1 0, 1 1, 0 0)),)", "POLYGON, ((0 0, 1 0, 1 1, 0 0))"}) {
+  for (const char* text :
+       {"POLYGON ((0 0, 1 0,, 1 1, 0 0))", "POLYGON ((, 0 0, 1 0, 1 1, 0 0))",
+        "POLYGON ((0 0, 1 0, 1 1, 0 0,))", "POLYGON ((0 0, 1 0, 1 1, 0 0),)",
+        "MULTIPOLYGON (((0 0, 1 0, 1 1, 0 0)),)", "POLYGON, ((0 0, 1 0, 1 1, 0 0))"}) {
     EXPECT_EQ(rejection_kind(text), WktErrorKind::kSyntax) << text;
   }
 }
@@ -228,9 +228,9 @@ TEST(WktReaderRejects, UnclosedRingNamingItsLastVertex) {
 }
 
 TEST(WktReaderRejects, OtherGeometryTypes) {
-  for (const char* text : {"LINESTRING (0 0, 1 1)", "POINT (1 2)",
-                           "GEOMETRYCOLLECTION (POLYGON ((0 0, 1 0, 1 1, 0 0)))",
-                           "POLYGONS ((0 0, 1 0, 1 1, 0 0))"}) {
+  for (const char* text :
+       {"LINESTRING (0 0, 1 1)", "POINT (1 2)",
+        "GEOMETRYCOLLECTION (POLYGON ((0 0, 1 0, 1 1, 0 0)))", "POLYGONS ((0 0, 1 0, 1 1, 0 0))"}) {
     EXPECT_EQ(rejection_kind(text), WktErrorKind::kUnsupportedGeometry) << text;
   }
   EXPECT_EQ(rejection_kind("((0 0, 1 0, 1 1, 0 0))"), WktErrorKind::kSyntax);
