@@ -8,7 +8,8 @@
 // One X(...) line per subcommand.
 // clang-format off
 #define EDGELAND_CLI_COMMANDS(X) \
-  X(validate)
+  X(validate) \
+  X(replay)
 // clang-format on
 
 namespace edgeland::cli {

@@ -1,0 +1,239 @@
+#include "edit_log.hpp"
+
+#include <array>
+#include <utility>
+
+#include "edgeland/kernel/validate.hpp"
+#include "edgeland/kernel/wkt_writer.hpp"
+
+namespace edgeland::log {
+namespace {
+
+struct Keyword {
+  std::string_view word;
+  StepKind kind;
+};
+constexpr std::array<Keyword, 5> kKeywords{{{"set", StepKind::kSet},
+                                            {"union", StepKind::kUnion},
+                                            {"intersection", StepKind::kIntersection},
+                                            {"difference", StepKind::kDifference},
+                                            {"xor", StepKind::kXor}}};
+
+bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+
+std::string_view trim(std::string_view s) {
+  while (!s.empty() && is_blank(s.front())) s.remove_prefix(1);
+  while (!s.empty() && is_blank(s.back())) s.remove_suffix(1);
+  return s;
+}
+
+// A printable excerpt of an unknown keyword for the message (the line may be binary junk).
+std::string excerpt(std::string_view word) {
+  constexpr std::size_t kMax = 24;
+  std::string out;
+  for (std::size_t i = 0; i < word.size() && i < kMax; ++i) {
+    const unsigned char c = static_cast<unsigned char>(word[i]);
+    out += (c >= 0x20 && c < 0x7f) ? static_cast<char>(c) : '?';
+  }
+  if (word.size() > kMax) out += "...";
+  return out;
+}
+
+ClipOp op_of(StepKind kind) {
+  switch (kind) {
+    case StepKind::kUnion:
+      return ClipOp::kUnion;
+    case StepKind::kIntersection:
+      return ClipOp::kIntersection;
+    case StepKind::kDifference:
+      return ClipOp::kDifference;
+    case StepKind::kXor:
+    case StepKind::kSet:
+      break;
+  }
+  return ClipOp::kXor;
+}
+
+}  // namespace
+
+const char* step_keyword(StepKind kind) noexcept {
+  for (const Keyword& k : kKeywords) {
+    if (k.kind == kind) return k.word.data();
+  }
+  return "?";
+}
+
+StepKind step_kind(ClipOp op) noexcept {
+  switch (op) {
+    case ClipOp::kUnion:
+      return StepKind::kUnion;
+    case ClipOp::kIntersection:
+      return StepKind::kIntersection;
+    case ClipOp::kDifference:
+      return StepKind::kDifference;
+    case ClipOp::kXor:
+      break;
+  }
+  return StepKind::kXor;
+}
+
+const char* log_error_kind_name(LogErrorKind kind) noexcept {
+  switch (kind) {
+    case LogErrorKind::kUnknownStep:
+      return "unknown-step";
+    case LogErrorKind::kMissingShape:
+      return "missing-shape";
+    case LogErrorKind::kBadShape:
+      return "bad-shape";
+  }
+  return "?";
+}
+
+LogError::LogError(LogErrorKind kind_, std::size_t line_, const std::string& reason)
+    : Error("line " + std::to_string(line_) + ": " + reason), kind(kind_), line(line_) {}
+
+std::optional<Step> parse_log_line(std::string_view raw, std::size_t line_number) {
+  const std::string_view line = trim(raw);
+  if (line.empty() || line.front() == '#') return std::nullopt;
+  std::size_t end = 0;
+  while (end < line.size() && !is_blank(line[end])) ++end;
+  const std::string_view word = line.substr(0, end);
+  const Keyword* keyword = nullptr;
+  for (const Keyword& k : kKeywords) {
+    if (k.word == word) keyword = &k;
+  }
+  if (keyword == nullptr) {
+    throw LogError(LogErrorKind::kUnknownStep, line_number,
+                   "unknown step '" + excerpt(word) +
+                       "' (expected set, union, intersection, difference or xor)");
+  }
+  const std::string_view wkt = trim(line.substr(end));
+  if (wkt.empty()) {
+    throw LogError(LogErrorKind::kMissingShape, line_number,
+                   std::string(keyword->word) + ": missing WKT shape");
+  }
+  Step step;
+  step.kind = keyword->kind;
+  step.line = line_number;
+  try {
+    step.shape = read_wkt(wkt);
+  } catch (const WktError& error) {
+    LogError log_error(LogErrorKind::kBadShape, line_number,
+                       std::string(keyword->word) + ": " + error.what());
+    log_error.wkt_error = error.kind;
+    throw log_error;
+  }
+  return step;
+}
+
+ParsedLog parse_log(std::string_view text) {
+  ParsedLog parsed;
+  std::size_t line_number = 0;
+  while (!text.empty()) {
+    ++line_number;
+    const std::size_t newline = text.find('\n');
+    const std::string_view line = text.substr(0, newline);
+    text.remove_prefix(newline == std::string_view::npos ? text.size() : newline + 1);
+    try {
+      if (std::optional<Step> step = parse_log_line(line, line_number)) {
+        parsed.steps.push_back(std::move(*step));
+      }
+    } catch (const LogError& error) {
+      parsed.error = error;
+      break;
+    }
+  }
+  return parsed;
+}
+
+PolygonSet shape_to_set(const WktGeometry& shape, const ClipOptions& options) {
+  bool hole_free = true;
+  PolygonSet exteriors;
+  std::vector<std::vector<Ring>> polygons;
+  polygons.reserve(shape.polygons.size());
+  for (const WktPolygon& polygon : shape.polygons) {
+    hole_free = hole_free && polygon.holes.empty();
+    exteriors.push_back(polygon.exterior);
+    std::vector<Ring> rings{polygon.exterior};
+    rings.insert(rings.end(), polygon.holes.begin(), polygon.holes.end());
+    polygons.push_back(std::move(rings));
+  }
+  // A recorded state is already valid: keep it vertex for vertex (same region either way).
+  if (hole_free && validate(exteriors, 0).ok()) return exteriors;
+  return import_polygons(polygons, options).polygons;
+}
+
+void EvolvingSet::apply(const Step& step, const ClipOptions& options) {
+  PolygonSet operand = shape_to_set(step.shape, options);
+  if (step.kind == StepKind::kSet) {
+    current_ = std::move(operand);
+    return;
+  }
+  apply(op_of(step.kind), operand, options);
+}
+
+ClipStats EvolvingSet::apply(ClipOp op, const PolygonSet& operand, const ClipOptions& options) {
+  ClipResult result = clip(op, current_, operand, options);  // throws before any change
+  current_ = std::move(result.polygons);
+  return result.stats;
+}
+
+void EditLog::comment(std::string_view comment_text) {
+  text_ += "# ";
+  for (const char c : comment_text) text_ += (c == '\n' || c == '\r') ? ' ' : c;
+  text_ += '\n';
+}
+
+void EditLog::write_step(StepKind kind, const PolygonSet& shape) {
+  text_ += step_keyword(kind);
+  text_ += ' ';
+  text_ += to_wkt(shape);
+  text_ += '\n';
+  ++steps_;
+}
+
+void EditLog::record_set(const PolygonSet& set) {
+  write_step(StepKind::kSet, set);
+  state_ = set;
+}
+
+void EditLog::record_clip(ClipOp op, const PolygonSet& subject, const PolygonSet& operand,
+                          const PolygonSet& result) {
+  if (!state_ || *state_ != subject) write_step(StepKind::kSet, subject);
+  write_step(step_kind(op), operand);
+  state_ = result;
+}
+
+ClipResult EditLog::clip(ClipOp op, const PolygonSet& subject, const PolygonSet& operand,
+                         const ClipOptions& options) {
+  try {
+    ClipResult result = edgeland::clip(op, subject, operand, options);
+    record_clip(op, subject, operand, result.polygons);
+    return result;
+  } catch (const InternalError& error) {
+    comment(std::string("the next step failed: ") + error.what());
+    if (!state_ || *state_ != subject) write_step(StepKind::kSet, subject);
+    write_step(step_kind(op), operand);
+    state_.reset();
+    throw;
+  }
+}
+
+std::string fnv1a64_hex(std::string_view text) {
+  std::uint64_t hash = 0xcbf29ce484222325ull;  // FNV-1a 64 offset basis
+  for (const char c : text) {
+    hash ^= static_cast<unsigned char>(c);
+    hash *= 0x100000001b3ull;  // FNV-1a 64 prime
+  }
+  static constexpr char kHex[] = "0123456789abcdef";
+  std::string out(16, '0');
+  for (int i = 15; i >= 0; --i) {
+    out[static_cast<std::size_t>(i)] = kHex[hash & 0xf];
+    hash >>= 4;
+  }
+  return out;
+}
+
+std::string state_hash(const PolygonSet& set) { return fnv1a64_hex(to_wkt(set)); }
+
+}  // namespace edgeland::log
