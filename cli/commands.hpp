@@ -9,6 +9,7 @@
 // clang-format off
 #define EDGELAND_CLI_COMMANDS(X) \
   X(validate) \
+  X(clip) \
   X(replay)
 // clang-format on
 
