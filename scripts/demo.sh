@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# The main job (for now): build the `edgeland` command and run `edgeland validate` on every
-# sample shape in examples/, printing `file: verdict`. Later parts replace it with the
-# clipping and landscape demos. Run from anywhere; builds in build/release.
+# The main job: build the `edgeland` command, run `edgeland validate` on every sample shape in
+# examples/ (printing `file: verdict`), then the clipping demo: a terrain carved and filled
+# again and again, every result fed back in and validated. Run from anywhere; builds in
+# build/release.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build="${EDGELAND_BUILD_DIR:-build/release}"
@@ -12,3 +13,5 @@ cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release \
 cmake --build "$build" -j "$jobs" --target edgeland_cli
 echo
 examples/run_validate.sh "$build/cli/edgeland"
+echo
+examples/run_clip_demo.sh "$build/cli/edgeland"
