@@ -1,0 +1,52 @@
+#pragma once
+// The fuzz targets' decoding and checking code, shared by the libFuzzer executables (clang,
+// fuzz/CMakeLists.txt) and by the regression replay in the normal gcc build
+// (tests/regress/CMakeLists.txt), so that a saved input means the same case in both.
+//
+// Each run_* function decodes one input (FuzzedDataProvider, structure-aware), runs the
+// library in checked mode and checks its contracts. It returns a Finding when a contract is
+// broken (an InternalError, an invalid output, a wrong area or point classification, an
+// exception that is not the documented typed error); memory errors are left to the
+// sanitizers. Inputs that decode to nothing interesting simply pass.
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace edgeland::fuzz {
+
+struct Finding {
+  std::string what;  // one paragraph: the broken contract and the inputs as WKT
+  std::string log;   // a replayable continuous-clip log of the case (empty if not a clip)
+};
+
+// Two valid polygon sets biased toward near-degenerate geometry (shared edges, vertices on
+// edges, one-unit slivers, coordinates at +-kCoordBound, many edges through one pixel); all
+// four operations; every output validated; exact area identities when nothing was snapped,
+// the accuracy contract's bound otherwise; for small inputs lattice points far from both
+// boundaries are classified against the operands (kernel point-in-polygon).
+std::optional<Finding> run_clip_pair(const std::uint8_t* data, std::size_t size);
+
+// A continuous-clip sequence on one evolving set (operands built from the current state's
+// own vertices); every output validated; a step rejected with InvalidInput leaves the set
+// unchanged; the recorded log replays to the same final state.
+std::optional<Finding> run_clip_sequence(const std::uint8_t* data, std::size_t size);
+
+// Arbitrary rings (any orientation, self-intersections, repeats, out-of-range coordinates)
+// and a fill rule: a valid set, or InvalidInput when a coordinate is out of range; for small
+// inputs lattice points far from every ring are classified against the winding numbers.
+std::optional<Finding> run_normalize(const std::uint8_t* data, std::size_t size);
+
+// The WKT reader and the log parser on arbitrary bytes: a result or their typed error.
+std::optional<Finding> run_parse(const std::uint8_t* data, std::size_t size);
+
+// The target's run_* function by name ("clip_pair", ...); nullptr for an unknown name.
+using Runner = std::optional<Finding> (*)(const std::uint8_t*, std::size_t);
+Runner runner_for(std::string_view target);
+
+// The continuous-clip log an input of clip_pair or clip_sequence decodes to (what the
+// campaign saves under tests/regress/logs/); empty for other targets.
+std::string input_as_log(std::string_view target, const std::uint8_t* data, std::size_t size);
+
+}  // namespace edgeland::fuzz
