@@ -52,9 +52,10 @@ rc::Gen<std::vector<Ring>> messy_rings() {
     std::vector<Ring> rings;
     const int n = *rc::gen::inRange(1, 4);
     for (int i = 0; i < n; ++i) rings.push_back(*messy_ring({0, 0}, r));
-    if (*rc::gen::inRange(0, 8) == 0) {  // move to the end of the coordinate range
-      const std::int64_t dx = *rc::gen::element(kCoordBound - r, -kCoordBound + r);
-      const std::int64_t dy = *rc::gen::element(kCoordBound - r, -kCoordBound + r);
+    const auto box = bounding_box(PolygonSet(rings.begin(), rings.end()));
+    if (box && *gen::coord(0, 7) == 0) {  // move into a corner of the coordinate range
+      const std::int64_t dx = *rc::gen::element(kCoordBound - box->max.x, -kCoordBound - box->min.x);
+      const std::int64_t dy = *rc::gen::element(kCoordBound - box->max.y, -kCoordBound - box->min.y);
       for (Ring& ring : rings)
         for (Point64& p : ring) p = {p.x + dx, p.y + dy};
     }
