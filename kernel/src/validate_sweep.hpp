@@ -26,12 +26,11 @@
 #include <set>
 #include <vector>
 
-#include "edgeland/kernel/checked.hpp"
-#include "edgeland/kernel/formulas.hpp"
 #include "edgeland/kernel/int128.hpp"
 #include "edgeland/kernel/point.hpp"
 #include "edgeland/kernel/polygon.hpp"
 #include "edgeland/kernel/validate.hpp"
+#include "validate_exact.hpp"
 
 namespace edgeland::detail {
 
@@ -53,15 +52,12 @@ void sort_for_sweep(std::vector<SweepEdge>& edges);
 
 inline bool is_vertical(const SweepEdge& e) noexcept { return e.left.x == e.right.x; }
 
-inline int sign_of(Int128 v) noexcept { return (v > 0) - (v < 0); }
-
 // Where an edge cut by the sweep line at q lies: -1 strictly below q, 0 through q, +1 strictly
 // above q. Inline: the status asks this O(log n) times per event.
 inline int side_of_point(const SweepEdge& t, Point64 q) noexcept {
   if (is_vertical(t)) return 0;
   // t runs rightward, so q left of t means q above it, i.e. t below q.
-  using W = arith::Checked<Int128>;
-  return -sign_of(formulas::orient<W>(t.left.x, t.left.y, t.right.x, t.right.y, q.x, q.y).v);
+  return -orient_sign(t.left, t.right, q);
 }
 
 // Order of the directions in which two edges through a common point leave it to the right
@@ -71,11 +67,8 @@ inline int compare_directions(const SweepEdge& a, const SweepEdge& b) noexcept {
   const bool av = is_vertical(a), bv = is_vertical(b);
   if (av || bv) return av == bv ? 0 : (av ? 1 : -1);
   // Both point rightward: b turning counter-clockwise from a means b leaves above a.
-  // Differences of in-range coordinates fit 33 bits and the cross product 66 bits (proofs/).
-  using W = arith::Checked<Int128>;
-  const W c = formulas::cross<W>(W(a.right.x) - W(a.left.x), W(a.right.y) - W(a.left.y),
-                                 W(b.right.x) - W(b.left.x), W(b.right.y) - W(b.left.y));
-  return -sign_of(c.v);
+  return -cross_sign(coord_diff(a.right.x, a.left.x), coord_diff(a.right.y, a.left.y),
+                     coord_diff(b.right.x, b.left.x), coord_diff(b.right.y, b.left.y));
 }
 
 // Stands for the event point in heterogeneous status look-ups.
