@@ -60,11 +60,12 @@ bool run(const Theorem& t, unsigned bits, unsigned rlimit, bool verbose) {
   }
   const double secs =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::printf("%s %s: %d obligations, %.3f s (solver %.3f s)%s\n",
-              proven ? "PROVEN" : "NOT PROVEN", t.name.c_str(), prover.obligations(), secs,
-              prover.solver_seconds(),
-              t.expect_refuted ? (as_expected ? ", refuted as expected" : ", expected a refutation")
-                               : "");
+  const char* verdict = proven                     ? "PROVEN"
+                        : t.expect_refuted && as_expected ? "REFUTED AS EXPECTED"
+                                                          : "NOT PROVEN";
+  std::printf("%s %s: %d obligations, %.3f s (solver %.3f s)%s\n", verdict, t.name.c_str(),
+              prover.obligations(), secs, prover.solver_seconds(),
+              t.expect_refuted && !as_expected ? ", but a confirmed refutation was expected" : "");
   return as_expected;
 }
 
