@@ -26,6 +26,9 @@ bool validate_ring(const Ring& ring, std::size_t polygon, detail::ViolationSink&
 }
 
 ValidationReport validate_polygons(std::span<const Polygon> polygons, std::size_t max_violations) {
+  // Valid inputs are the common case (the clipper checks every operand): one sweep proves
+  // them valid. Anything else takes the reporting checks below, which alone decide the report.
+  if (detail::accepted_by_one_sweep(polygons)) return {};
   detail::ViolationSink sink(max_violations);
   std::vector<detail::SweepEdge> edges;
   std::vector<std::size_t> valid_rings;

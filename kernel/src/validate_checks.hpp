@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <optional>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -45,6 +46,12 @@ bool check_orientation(const Ring& ring, std::size_t polygon, ViolationSink& sin
 // passed the structure check; spikes are allowed (they are a separate rule).
 std::optional<Violation> find_self_intersection(const std::vector<SweepEdge>& edges,
                                                 std::size_t ring_size);
+
+// Whether `polygons` is a valid polygon set, proven by the local rules of each ring and one
+// sweep over all edges (validate_one_sweep.cpp): O(n log n), and cheaper than the checks below.
+// True only for a valid input; false means invalid or undecided, and reports nothing: the
+// checks below then find and report what is wrong.
+bool accepted_by_one_sweep(std::span<const Polygon> polygons);
 
 // The first pair of rings whose interiors overlap, found by the sweep in O(n log n). Needs
 // rings that are each strictly simple and counter-clockwise, edges sorted by sort_for_sweep.

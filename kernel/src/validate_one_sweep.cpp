@@ -1,0 +1,333 @@
+// The fast acceptance path of validate() (validate_checks.hpp): the local rules of every ring
+// in O(n), then ONE sweep over the edges of all rings together that checks strict simplicity
+// and disjoint interiors at once, with the status in a flat sorted array.
+//
+// It only ever concludes "valid". At the first sign of trouble it gives up, and validate()
+// runs the reporting checks, which say exactly what is wrong; so reports never depend on it.
+//
+// Why one sweep suffices: it is the sweep of validate_sweep.hpp over all edges, asking at each
+// event point q and of each new pair of status neighbours the union of the questions of the
+// two reporting checks (validate_self_intersection.cpp, validate_overlap.cpp):
+//   * two edges of one ring that are not ring neighbours must share no point: at q, every edge
+//     containing q is listed, so touching and collinear overlap are seen at an event; a
+//     crossing is a crossing of the whole arrangement;
+//   * two edges of different rings must not cross, and edges through q in different
+//     directions cross at q;
+//   * the winding walk of validate_overlap.cpp around q must never count 2.
+// If no two edges cross, the status order is consistent and the Shamos-Hoey argument of
+// validate_sweep.hpp applies to the whole arrangement: the leftmost crossing, if any, is seen
+// at an event or between new status neighbours. Without crossings, the rings are strictly
+// simple (nothing else can make two edges of one ring meet), counter-clockwise (checked
+// locally), and the winding walk is exact.
+#include <algorithm>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "edgeland/kernel/checked.hpp"
+#include "validate_checks.hpp"
+#include "validate_exact.hpp"
+
+namespace edgeland::detail {
+namespace {
+
+// Past this many status edges a flat array costs more per insert than the balanced tree of
+// the reporting sweep: give up and let that sweep (O(n log n) in every case) decide.
+constexpr std::size_t kStatusLimit = 4096;
+
+struct Edge {
+  Point64 left;   // lexicographically smaller end
+  Point64 right;  // larger end
+  std::uint32_t ring;
+  bool forward;  // the ring runs from left to right
+};
+
+struct RingRange {
+  std::uint32_t begin;  // first edge (= first vertex) of the ring in the global numbering
+  std::uint32_t size;
+};
+
+struct Event {
+  std::uint64_t key;  // the vertex in sweep order as one unsigned number
+  std::uint32_t vertex;
+};
+
+// (x, y) of an in-range point as one 64-bit key whose unsigned order is the lexicographic
+// order: each coordinate plus 2^31 lies in [1, 2^32 - 1].
+std::uint64_t sweep_key(Point64 p) noexcept {
+  constexpr std::int64_t kOffset = std::int64_t{1} << 31;
+  return (static_cast<std::uint64_t>(p.x + kOffset) << 32) |
+         static_cast<std::uint64_t>(p.y + kOffset);
+}
+
+// Vertex count, range, repeated vertices, spikes and positive area of one ring, in O(n),
+// without reporting: whether the ring passes every rule that needs no sweep.
+bool local_rules_hold(const Ring& ring) {
+  const std::size_t n = ring.size();
+  if (n < 3) return false;
+  for (const Point64& p : ring) {
+    if (!in_range(p)) return false;
+  }
+  // Twice the signed area by the shoelace formula: each term x_i y_j - x_j y_i has two
+  // products below 2^62, so it fits int64; their sum fits Int128 for any ring below 2^64.
+  Int128 twice_area = 0;
+  Point64 prev = ring[n - 1];
+  for (std::size_t i = 0; i < n; ++i) {
+    const Point64 at = ring[i], next = ring[i + 1 == n ? 0 : i + 1];
+    if (at == next) return false;
+    const std::int64_t ux = coord_diff(prev.x, at.x), uy = coord_diff(prev.y, at.y);
+    const std::int64_t vx = coord_diff(next.x, at.x), vy = coord_diff(next.y, at.y);
+    // A spike: both neighbours on one ray from the vertex.
+    if (cross_sign(ux, uy, vx, vy) == 0 && Int128(ux) * vx + Int128(uy) * vy > 0) return false;
+    const std::int64_t term = arith::sub<std::int64_t>(arith::mul<std::int64_t>(at.x, next.y),
+                                                       arith::mul<std::int64_t>(next.x, at.y));
+    twice_area = arith::add<Int128>(twice_area, term);
+    prev = at;
+  }
+  return twice_area > 0;
+}
+
+bool is_vertical(const Edge& e) noexcept { return e.left.x == e.right.x; }
+
+// -1 when the status edge t passes strictly below q, 0 through q, +1 above (validate_sweep.hpp).
+int side_of_point(const Edge& t, Point64 q) noexcept {
+  if (is_vertical(t)) return 0;
+  return -orient_sign(t.left, t.right, q);
+}
+
+// Order of the directions of two edges leaving one point rightward (upward if vertical).
+int compare_directions(const Edge& a, const Edge& b) noexcept {
+  const bool av = is_vertical(a), bv = is_vertical(b);
+  if (av || bv) return av == bv ? 0 : (av ? 1 : -1);
+  return -cross_sign(coord_diff(a.right.x, a.left.x), coord_diff(a.right.y, a.left.y),
+                     coord_diff(b.right.x, b.left.x), coord_diff(b.right.y, b.left.y));
+}
+
+// Whether two closed segments share a point (any contact) and whether they cross at a point
+// interior to both.
+struct Contact {
+  bool any;
+  bool crossing;
+};
+
+Contact contact(const Edge& a, const Edge& b) noexcept {
+  // Disjoint boxes: no contact. Status neighbours overlap in x, so y decides most pairs.
+  if (std::max(a.left.y, a.right.y) < std::min(b.left.y, b.right.y) ||
+      std::max(b.left.y, b.right.y) < std::min(a.left.y, a.right.y) || a.right.x < b.left.x ||
+      b.right.x < a.left.x) {
+    return {false, false};
+  }
+  const int o1 = orient_sign(a.left, a.right, b.left), o2 = orient_sign(a.left, a.right, b.right);
+  if (o1 * o2 > 0) return {false, false};
+  const int o3 = orient_sign(b.left, b.right, a.left), o4 = orient_sign(b.left, b.right, a.right);
+  if (o3 * o4 > 0) return {false, false};
+  if (o1 == 0 && o2 == 0) {  // collinear: on one line, lexicographic order is order along it
+    return {std::max(a.left, b.left) <= std::min(a.right, b.right), false};
+  }
+  return {true, o1 != 0 && o2 != 0 && o3 != 0 && o4 != 0};
+}
+
+class OneSweep {
+ public:
+  explicit OneSweep(std::span<const Polygon> polygons) : polygons_(polygons) {}
+
+  bool run() {
+    if (!build()) return false;
+    std::sort(events_.begin(), events_.end(), [](const Event& a, const Event& b) {
+      return a.key < b.key || (a.key == b.key && a.vertex < b.vertex);
+    });
+    for (std::size_t g = 0; g < events_.size();) {
+      std::size_t h = g + 1;
+      while (h < events_.size() && events_[h].key == events_[g].key) ++h;
+      if (!event(g, h)) return false;
+      g = h;
+    }
+    return status_.empty();
+  }
+
+ private:
+  // Every ring passes its local rules; flattens them into edges and events.
+  bool build() {
+    std::size_t total = 0;
+    for (const Polygon& p : polygons_) {
+      if (!local_rules_hold(p)) return false;
+      total += p.size();
+    }
+    if (total >= UINT32_MAX || polygons_.size() >= UINT32_MAX) return false;
+    multi_ = polygons_.size() >= 2;
+    edges_.reserve(total);
+    events_.reserve(total);
+    rings_.reserve(polygons_.size());
+    std::uint32_t id = 0;
+    for (std::size_t r = 0; r < polygons_.size(); ++r) {
+      const Polygon& p = polygons_[r];
+      rings_.push_back({id, static_cast<std::uint32_t>(p.size())});
+      for (std::size_t i = 0; i < p.size(); ++i, ++id) {
+        const Point64 a = p[i], b = p[i + 1 == p.size() ? 0 : i + 1];
+        const bool forward = a < b;
+        edges_.push_back(
+            {forward ? a : b, forward ? b : a, static_cast<std::uint32_t>(r), forward});
+        events_.push_back({sweep_key(a), id});
+      }
+    }
+    if (multi_) cover_.assign(total, 0);
+    return true;
+  }
+
+  std::uint32_t previous_edge(std::uint32_t v) const noexcept {
+    const RingRange& r = rings_[edges_[v].ring];
+    return v == r.begin ? r.begin + r.size - 1 : v - 1;
+  }
+
+  // Edges of one ring that may touch: ring neighbours, or any two edges of a triangle.
+  bool may_touch(std::uint32_t a, std::uint32_t b) const noexcept {
+    const RingRange& r = rings_[edges_[a].ring];
+    if (r.size <= 3) return true;
+    const std::uint32_t d = a > b ? a - b : b - a;
+    return d == 1 || d == r.size - 1;
+  }
+
+  // The events g..h-1 share one point q.
+  bool event(std::size_t g, std::size_t h) {
+    const Point64 q = edge_start(events_[g].vertex);
+    ending_.clear();
+    starting_.clear();
+    through_.clear();
+    for (std::size_t k = g; k < h; ++k) {
+      const std::uint32_t v = events_[k].vertex;
+      const std::uint32_t in = previous_edge(v);
+      (edges_[in].forward ? ending_ : starting_).push_back(in);
+      (edges_[v].forward ? starting_ : ending_).push_back(v);
+    }
+
+    // The status edges through q form one run [i, j), holding every edge ending at q.
+    std::size_t lo = 0, hi = status_.size();
+    while (lo < hi) {
+      const std::size_t mid = (lo + hi) / 2;
+      if (side_of_point(edges_[status_[mid]], q) < 0) {
+        lo = mid + 1;
+      } else {
+        hi = mid;
+      }
+    }
+    const std::size_t i = lo;
+    std::size_t j = i, ended = 0;
+    for (; j < status_.size() && side_of_point(edges_[status_[j]], q) == 0; ++j) {
+      const std::uint32_t e = status_[j];
+      if (edges_[e].right == q) {
+        ++ended;
+      } else {
+        through_.push_back(e);
+      }
+    }
+    if (ended != ending_.size())
+      return false;  // not a consistent status: let the reporting sweep tell
+
+    // Edges through q in different directions cross there.
+    for (std::size_t k = 1; k < through_.size(); ++k) {
+      if (compare_directions(edges_[through_[k - 1]], edges_[through_[k]]) != 0) return false;
+    }
+    // Edges of one ring at q must be ring neighbours. A single vertex with nothing passing
+    // through q brings just its two edges, which are.
+    if (h - g > 1 || !through_.empty()) {
+      at_.clear();
+      at_.insert(at_.end(), ending_.begin(), ending_.end());
+      at_.insert(at_.end(), through_.begin(), through_.end());
+      at_.insert(at_.end(), starting_.begin(), starting_.end());
+      for (std::size_t a = 0; a < at_.size(); ++a) {
+        for (std::size_t b = a + 1; b < at_.size(); ++b) {
+          if (edges_[at_[a]].ring == edges_[at_[b]].ring && !may_touch(at_[a], at_[b]))
+            return false;
+        }
+      }
+    }
+
+    // The new run: edges through q and edges leaving q, bottom-up (by direction; collinear
+    // ones by number, fixed for their life).
+    block_.assign(through_.begin(), through_.end());
+    for (const std::uint32_t s : starting_) {
+      std::size_t at = block_.size();
+      while (at > 0) {
+        const int c = compare_directions(edges_[block_[at - 1]], edges_[s]);
+        if (c < 0 || (c == 0 && block_[at - 1] < s)) break;
+        --at;
+      }
+      block_.insert(block_.begin() + static_cast<std::ptrdiff_t>(at), s);
+    }
+    const std::size_t run = j - i, k = block_.size();
+    if (k > run) {
+      status_.insert(status_.begin() + static_cast<std::ptrdiff_t>(j), k - run, 0);
+    } else if (k < run) {
+      status_.erase(status_.begin() + static_cast<std::ptrdiff_t>(i + k),
+                    status_.begin() + static_cast<std::ptrdiff_t>(j));
+    }
+    std::copy(block_.begin(), block_.end(), status_.begin() + static_cast<std::ptrdiff_t>(i));
+    if (status_.size() > kStatusLimit) return false;
+
+    const std::uint32_t kNo = UINT32_MAX;
+    const std::uint32_t below = i > 0 ? status_[i - 1] : kNo;
+    const std::uint32_t above = i + k < status_.size() ? status_[i + k] : kNo;
+    if (multi_ && !winding_stays_below_two(below)) return false;
+    const std::uint32_t low = k > 0 ? block_.front() : above;
+    const std::uint32_t high = k > 0 ? block_.back() : below;
+    if (below != kNo && low != kNo && !neighbours_fine(below, low)) return false;
+    if (k > 0 && above != kNo && !neighbours_fine(high, above)) return false;
+    return true;
+  }
+
+  Point64 edge_start(std::uint32_t v) const noexcept {
+    const Edge& e = edges_[v];
+    return e.forward ? e.left : e.right;
+  }
+
+  // The winding walk of validate_overlap.cpp over the sectors right of q, counter-clockwise
+  // from straight down, storing the count above each edge of the block.
+  bool winding_stays_below_two(std::uint32_t below) {
+    int cover = below == UINT32_MAX ? 0 : cover_[below];
+    for (std::size_t first = 0; first < block_.size();) {
+      std::size_t last = first + 1;
+      while (last < block_.size() &&
+             compare_directions(edges_[block_[first]], edges_[block_[last]]) == 0) {
+        ++last;
+      }
+      int entering = 0;
+      for (std::size_t m = first; m < last; ++m) {
+        if (edges_[block_[m]].forward) {
+          ++entering;
+          ++cover;
+        } else {
+          --cover;
+        }
+      }
+      if (entering > 1 || cover >= 2 || cover < 0) return false;
+      for (std::size_t m = first; m < last; ++m)
+        cover_[block_[m]] = static_cast<std::int8_t>(cover);
+      first = last;
+    }
+    return true;
+  }
+
+  // New status neighbours: of one ring they must not meet unless ring neighbours; of two
+  // rings they must not cross (touching is judged at events).
+  bool neighbours_fine(std::uint32_t a, std::uint32_t b) const noexcept {
+    if (edges_[a].ring == edges_[b].ring) {
+      return may_touch(a, b) || !contact(edges_[a], edges_[b]).any;
+    }
+    return !contact(edges_[a], edges_[b]).crossing;
+  }
+
+  std::span<const Polygon> polygons_;
+  bool multi_ = false;
+  std::vector<Edge> edges_;  // edge v runs from vertex v to the next vertex of its ring
+  std::vector<RingRange> rings_;
+  std::vector<Event> events_;
+  std::vector<std::int8_t> cover_;  // winding number just above each placed edge (sets only)
+  std::vector<std::uint32_t> status_;
+  std::vector<std::uint32_t> ending_, starting_, through_, at_, block_;
+};
+
+}  // namespace
+
+bool accepted_by_one_sweep(std::span<const Polygon> polygons) { return OneSweep(polygons).run(); }
+
+}  // namespace edgeland::detail
