@@ -1,0 +1,55 @@
+// Minimized failures found by the property tests of this directory, kept as permanent cases.
+// Each names the property that found it; the inputs were shrunk by hand / greedy deletion
+// while the failure persisted. See the report of issue 4's verification for the analysis.
+#include <gtest/gtest.h>
+
+#include "accuracy_contract.hpp"
+#include "checked_clip.hpp"
+#include "locality_check.hpp"
+#include "polygon_set_helpers.hpp"
+
+namespace edgeland::test {
+namespace {
+
+// Both sides of the locality oracle (tests/support/locality_check.hpp).
+std::string locality_failure(ClipOp op, const char* a_wkt, const char* b_wkt) {
+  const PolygonSet a = parse_wkt(a_wkt), b = parse_wkt(b_wkt);
+  const Outcome o = run_clip(op, a, b);
+  if (!o.ok()) return o.error;
+  std::string f = check_locality(op, a, b, true, o.result->polygons);
+  if (f.empty()) f = check_locality(op, b, a, false, o.result->polygons);
+  return f.empty() ? f : f + "\n  output = " + to_wkt(o.result->polygons);
+}
+
+// ClipLocality: A is a needle of area 1/2 (thinner than a pixel all along). B crosses it near
+// (7 0), and snap rounding reroutes A's long edge (0 1)-(8 0) through the vertex pixel (1 1),
+// 3.9 units from B: the long edges then cancel along (0 1)-(1 1), and the edge (1 1)-(0 1),
+// farther than 2 from B's boundary, is missing from A + B although union keeps A whole.
+TEST(ClipLocalityRegression, NeedleTipFarFromTheCutSurvivesUnion) {
+  EXPECT_EQ(locality_failure(ClipOp::kUnion, "POLYGON ((8 0, 1 1, 0 1, 8 0))",
+                             "POLYGON ((7 0, 2 6, 1 7, 7 0))"),
+            "");
+}
+
+// ClipLocality: the same collapse in a difference; A's edge (22 9)-(22 10) is 3.1 units from
+// B's boundary and outside B, so A - B must keep it.
+TEST(ClipLocalityRegression, NeedleTipFarFromTheCutSurvivesDifference) {
+  EXPECT_EQ(locality_failure(ClipOp::kDifference, "POLYGON ((21 14, 22 9, 22 10, 21 14))",
+                             "POLYGON ((53 33, 0 0, 37 23, 53 33))"),
+            "");
+}
+
+// ClipLocality (unminimized, a realistic shape): a sheared comb with one-unit teeth, unioned
+// with a square whose edge x = -30 crosses the last teeth. The hot-pixel closure walks from
+// tooth to tooth: the tooth edge (-33 -36)-(-35 -37), 3 units from the square's boundary, is
+// rerouted through (-34 -37).
+TEST(ClipLocalityRegression, HotPixelCascadeAlongAOneUnitComb) {
+  EXPECT_EQ(locality_failure(ClipOp::kUnion,
+                             "POLYGON ((-39 -38, -29 -38, -27 -37, -32 -37, -28 -35, -29 -35, "
+                             "-33 -37, -34 -37, -32 -36, -33 -36, -35 -37, -37 -37, -39 -38))",
+                             "POLYGON ((-40 -40, -30 -40, -30 -30, -40 -30, -40 -40))"),
+            "");
+}
+
+}  // namespace
+}  // namespace edgeland::test

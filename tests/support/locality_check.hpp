@@ -1,0 +1,136 @@
+#pragma once
+// The locality promise of clip.hpp as a test oracle: an input edge farther than 2 units from
+// the other operand's boundary appears in the output unchanged, vertex for vertex, or not at
+// all - and which of the two is decided by the operation (clip/README.md's table):
+//
+//   * the edge e (of the subject or the clip set) has, on each side, an owner in its own set
+//     (its polygon on the left; on the right the member whose boundary runs back along e,
+//     if any) and an owner in the other set (the member containing e's midpoint strictly -
+//     e is far from the other boundary, so the whole edge is inside or outside it);
+//   * the operation table maps (subject owner, clip owner) to an output label; e must be in
+//     the output iff the labels of its two sides differ.
+//
+// "In the output unchanged" is checked on the canonical output, which removes collinear
+// vertices: e must lie entirely on ONE output edge (collinear, e within it), and each endpoint
+// of e where its own ring turns must still be an output vertex - when the ring's other edge
+// there is far as well (a near neighbour may be rerouted by snap rounding into a straight
+// continuation of e; the canonical form then removes the corner, and "vertex for vertex" and
+// "no collinear vertices" cannot both hold). "Not at all" means that no output edge overlaps
+// e in a piece of positive length.
+#include <string>
+#include <unordered_set>
+#include <vector>
+
+#include "cgal_reference.hpp"
+#include "edgeland/clip/clip.hpp"
+#include "edgeland/kernel/bbox.hpp"
+#include "polygon_set_helpers.hpp"
+#include "shape_builders.hpp"
+
+namespace edgeland::test {
+
+namespace locality_detail {
+
+inline bool on_closed_segment(Point64 p, Point64 a, Point64 b) {
+  return cross(a, b, p) == 0 && std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) &&
+         std::min(a.y, b.y) <= p.y && p.y <= std::max(a.y, b.y);
+}
+
+// Collinear with a common piece of positive length.
+inline bool overlaps(const Segment& e, const Segment& f) {
+  if (cross(e.a, e.b, f.a) != 0 || cross(e.a, e.b, f.b) != 0) return false;
+  auto t = [&](Point64 p) {
+    return Int128(p.x - e.a.x) * (e.b.x - e.a.x) + Int128(p.y - e.a.y) * (e.b.y - e.a.y);
+  };
+  const Int128 len = t(e.b), f0 = std::min(t(f.a), t(f.b)), f1 = std::max(t(f.a), t(f.b));
+  return std::max<Int128>(0, f0) < std::min(len, f1);
+}
+
+// The output label of a point owned by subject member a and clip member b (-1: none), as a
+// pair (channel, member) flattened to one integer; -1 for "not in the output".
+inline long long label(ClipOp op, long long a, long long b) {
+  const long long subject = a, clip = b >= 0 ? (1LL << 40) + b : -1;
+  switch (op) {
+    case ClipOp::kUnion: return a >= 0 ? subject : clip;
+    case ClipOp::kIntersection: return a >= 0 && b >= 0 ? subject : -1;
+    case ClipOp::kDifference: return a >= 0 && b < 0 ? subject : -1;
+    case ClipOp::kXor: return a >= 0 && b < 0 ? subject : a < 0 && b >= 0 ? clip : -1;
+  }
+  return -1;
+}
+
+}  // namespace locality_detail
+
+// Whether every point of e is farther than 2 units from the boundary of `other` (exact).
+inline bool far_from(const Segment& e, const PolygonSet& other) {
+  const Box64 eb{{std::min(e.a.x, e.b.x) - 2, std::min(e.a.y, e.b.y) - 2},
+                 {std::max(e.a.x, e.b.x) + 2, std::max(e.a.y, e.b.y) + 2}};
+  for (const Polygon& p : other)
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      const Segment f = ring_edge(p, i);
+      const Box64 fb{{std::min(f.a.x, f.b.x), std::min(f.a.y, f.b.y)},
+                     {std::max(f.a.x, f.b.x), std::max(f.a.y, f.b.y)}};
+      if (!eb.overlaps(fb)) continue;
+      if (!segments_farther_than(e, f, 4)) return false;
+    }
+  return true;
+}
+
+// Empty when every far edge of `input` (the subject when input_is_subject, else the clip set)
+// is kept whole or removed whole as the operation demands; otherwise the first violation.
+inline std::string check_locality(ClipOp op, const PolygonSet& input, const PolygonSet& other,
+                                  bool input_is_subject, const PolygonSet& out) {
+  using namespace locality_detail;
+  std::vector<Segment> out_edges;
+  std::unordered_set<Point64, Point64Hash> out_vertices;
+  for (const Polygon& p : out)
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      out_edges.push_back(ring_edge(p, i));
+      out_vertices.insert(p[i]);
+    }
+  for (std::size_t pi = 0; pi < input.size(); ++pi) {
+    const Polygon& p = input[pi];
+    for (std::size_t i = 0, n = p.size(); i < n; ++i) {
+      const Segment e = ring_edge(p, i);
+      if (!far_from(e, other)) continue;
+      const SamplePoint mid{e.a.x + e.b.x, e.a.y + e.b.y, 2};
+      long long right = -1, owner_other = -1;
+      for (std::size_t j = 0; j < input.size(); ++j)
+        if (j != pi && locate(PolygonSet{input[j]}, mid) == Where::kOnBoundary)
+          right = static_cast<long long>(j);
+      for (std::size_t j = 0; j < other.size(); ++j)
+        if (locate(PolygonSet{other[j]}, mid) == Where::kInside)
+          owner_other = static_cast<long long>(j);
+      const long long left_label = input_is_subject ? label(op, pi, owner_other)
+                                                    : label(op, owner_other, pi);
+      const long long right_label = input_is_subject ? label(op, right, owner_other)
+                                                     : label(op, owner_other, right);
+      const bool expected = left_label != right_label;
+
+      bool touched = false, kept = false;
+      for (const Segment& f : out_edges) {
+        if (!overlaps(e, f)) continue;
+        touched = true;
+        if (on_closed_segment(e.a, f.a, f.b) && on_closed_segment(e.b, f.a, f.b)) kept = true;
+      }
+      const std::string where = "(" + std::to_string(e.a.x) + ' ' + std::to_string(e.a.y) +
+                                ", " + std::to_string(e.b.x) + ' ' + std::to_string(e.b.y) + ")";
+      if (!expected) {
+        if (touched) return "far edge " + where + " should be gone but is (partly) in the output";
+        continue;
+      }
+      if (!touched) return "far edge " + where + " should be kept but is missing";
+      if (!kept) return "far edge " + where + " is only partly in the output";
+      const Point64 before = p[(i + n - 1) % n], after = p[(i + 2) % n];
+      const bool start_corner =
+          cross(before, e.a, e.b) != 0 && far_from(Segment{before, e.a}, other);
+      const bool end_corner = cross(e.a, e.b, after) != 0 && far_from(Segment{e.b, after}, other);
+      if ((start_corner && !out_vertices.contains(e.a)) ||
+          (end_corner && !out_vertices.contains(e.b)))
+        return "far edge " + where + " lost a corner vertex";
+    }
+  }
+  return {};
+}
+
+}  // namespace edgeland::test
