@@ -1,4 +1,5 @@
-// libFuzzer target `clip_sequence`: see run_clip_sequence in decoders.hpp for what is decoded and checked.
+// libFuzzer target `clip_sequence`: see run_clip_sequence in decoders.hpp for what is decoded and
+// checked.
 #include <cstddef>
 #include <cstdint>
 

@@ -46,8 +46,7 @@ std::string op_line(ClipOp op, const PolygonSet& a, const PolygonSet& b) {
 }
 
 std::string pair_log(ClipOp op, const PolygonSet& a, const PolygonSet& b) {
-  return "set " + to_wkt(a) + "\n" + log::step_keyword(log::step_kind(op)) + " " + to_wkt(b) +
-         "\n";
+  return "set " + to_wkt(a) + "\n" + log::step_keyword(log::step_kind(op)) + " " + to_wkt(b) + "\n";
 }
 
 std::size_t vertex_count(const PolygonSet& set) {
@@ -381,7 +380,9 @@ bool rule_fills(FillRule rule, int w) {
   return w < 0;
 }
 
-std::string point_text(Point64 p) { return "(" + std::to_string(p.x) + " " + std::to_string(p.y) + ")"; }
+std::string point_text(Point64 p) {
+  return "(" + std::to_string(p.x) + " " + std::to_string(p.y) + ")";
+}
 
 std::optional<Finding> invalid_output(const std::string& context, const PolygonSet& out,
                                       std::string log_text) {
@@ -429,11 +430,11 @@ std::optional<Finding> check_pair_areas(const Pair& p, const std::array<ClipResu
   for (const Identity& id : identities) {
     const Int128 err = id.error < 0 ? -id.error : id.error;
     if ((exact && err != 0) || err > id.bound) {
-      return Finding{std::string("area identity ") + id.name + (exact ? " (exact: nothing snapped)" : "") +
-                         " off by " + to_string(err) + "/2 (bound " + to_string(id.bound) +
-                         "/2)\n  A = " + to_wkt(p.a) + "\n  B = " + to_wkt(p.b),
-                     pair_log(ClipOp::kIntersection, p.a, p.b) +
-                         pair_log(ClipOp::kDifference, p.a, p.b)};
+      return Finding{
+          std::string("area identity ") + id.name + (exact ? " (exact: nothing snapped)" : "") +
+              " off by " + to_string(err) + "/2 (bound " + to_string(id.bound) +
+              "/2)\n  A = " + to_wkt(p.a) + "\n  B = " + to_wkt(p.b),
+          pair_log(ClipOp::kIntersection, p.a, p.b) + pair_log(ClipOp::kDifference, p.a, p.b)};
     }
   }
   return std::nullopt;
@@ -470,14 +471,16 @@ std::optional<Finding> clip_pair_checks(const Pair& p) {
     try {
       results[k] = clip(kOps[k], p.a, p.b, ClipOptions{.checked = true});
     } catch (const InternalError& e) {
-      return Finding{std::string("InternalError: ") + e.what() + "\n  " + op_line(kOps[k], p.a, p.b),
-                     log_text};
+      return Finding{
+          std::string("InternalError: ") + e.what() + "\n  " + op_line(kOps[k], p.a, p.b),
+          log_text};
     } catch (const std::exception& e) {
       return Finding{std::string("unexpected exception on valid inputs: ") + e.what() + "\n  " +
                          op_line(kOps[k], p.a, p.b),
                      log_text};
     }
-    if (auto f = invalid_output(op_line(kOps[k], p.a, p.b), results[k].polygons, log_text)) return f;
+    if (auto f = invalid_output(op_line(kOps[k], p.a, p.b), results[k].polygons, log_text))
+      return f;
   }
   if (auto f = check_pair_areas(p, results)) return f;
   return check_pair_points(p, results);
@@ -529,8 +532,9 @@ SequenceRun run_sequence(const std::uint8_t* data, std::size_t size) {
     } catch (const InternalError& e) {
       recorder.comment(std::string("the next step failed: ") + e.what());
       recorder.record_clip(op, before, operand, before);
-      return {Finding{std::string("InternalError: ") + e.what() + "\n  " + context, recorder.text()},
-              recorder.text()};
+      return {
+          Finding{std::string("InternalError: ") + e.what() + "\n  " + context, recorder.text()},
+          recorder.text()};
     }
     recorder.record_clip(op, before, operand, state.current());
     if (auto f = invalid_output(context, state.current(), recorder.text())) {
@@ -647,7 +651,8 @@ std::optional<Finding> run_parse(const std::uint8_t* data, std::size_t size) {
   try {
     const log::ParsedLog parsed = log::parse_log(text);
     if (parsed.error) {
-      const std::size_t lines = static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')) + 1;
+      const std::size_t lines =
+          static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')) + 1;
       if (parsed.error->line == 0 || parsed.error->line > lines) {
         return Finding{"log error names line " + std::to_string(parsed.error->line) + " of " +
                            std::to_string(lines),

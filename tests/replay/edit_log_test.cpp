@@ -87,8 +87,8 @@ TEST(LogParser, StopsAtTheFirstBadLineKeepingTheStepsBefore) {
 
 TEST(LogSet, WktWithAHoleIsImportedWithOgcSemantics) {
   // 10x10 minus the 2x2 hole: twice the area is 2 * 96.
-  const PolygonSet state = replay(
-      "set POLYGON ((0 0, 10 0, 10 10, 0 10, 0 0), (2 2, 2 4, 4 4, 4 2, 2 2))\n");
+  const PolygonSet state =
+      replay("set POLYGON ((0 0, 10 0, 10 10, 0 10, 0 0), (2 2, 2 4, 4 4, 4 2, 2 2))\n");
   EXPECT_TRUE(validate(state).ok());
   EXPECT_EQ(twice_signed_area(state), 192);
 }
