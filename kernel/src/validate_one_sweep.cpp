@@ -20,6 +20,7 @@
 // simple (nothing else can make two edges of one ring meet), counter-clockwise (checked
 // locally), and the winding walk is exact.
 #include <algorithm>
+#include <bit>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -52,12 +53,33 @@ struct Event {
   std::uint32_t vertex;
 };
 
-// (x, y) of an in-range point as one 64-bit key whose unsigned order is the lexicographic
-// order: each coordinate plus 2^31 lies in [1, 2^32 - 1].
-std::uint64_t sweep_key(Point64 p) noexcept {
-  constexpr std::int64_t kOffset = std::int64_t{1} << 31;
-  return (static_cast<std::uint64_t>(p.x + kOffset) << 32) |
-         static_cast<std::uint64_t>(p.y + kOffset);
+// Sorts events by key, equal keys in vertex order (LSD radix sort, stable): as many passes
+// of at most 11 bits as the keys have significant bits. Every key is below 2^bits.
+void sort_events(std::vector<Event>& events, std::vector<Event>& scratch, unsigned bits) {
+  if (events.size() < 256) {  // a radix pass costs its 2048 counters whatever the size
+    std::sort(events.begin(), events.end(), [](const Event& a, const Event& b) {
+      return a.key < b.key || (a.key == b.key && a.vertex < b.vertex);
+    });
+    return;
+  }
+  if (bits == 0) return;
+  const unsigned passes = (bits + 10) / 11;
+  const unsigned width = (bits + passes - 1) / passes;
+  const std::uint64_t mask = (std::uint64_t{1} << width) - 1;
+  std::vector<std::uint32_t> count(std::size_t{1} << width);
+  scratch.resize(events.size());
+  for (unsigned pass = 0, shift = 0; pass < passes; ++pass, shift += width) {
+    std::fill(count.begin(), count.end(), 0);
+    for (const Event& e : events) ++count[(e.key >> shift) & mask];
+    std::uint32_t sum = 0;
+    for (std::uint32_t& c : count) {
+      const std::uint32_t here = c;
+      c = sum;
+      sum += here;
+    }
+    for (const Event& e : events) scratch[count[(e.key >> shift) & mask]++] = e;
+    events.swap(scratch);
+  }
 }
 
 // Vertex count, range, repeated vertices, spikes and positive area of one ring, in O(n),
@@ -133,9 +155,7 @@ class OneSweep {
 
   bool run() {
     if (!build()) return false;
-    std::sort(events_.begin(), events_.end(), [](const Event& a, const Event& b) {
-      return a.key < b.key || (a.key == b.key && a.vertex < b.vertex);
-    });
+    sort_events(events_, events_scratch_, key_bits_);
     for (std::size_t g = 0; g < events_.size();) {
       std::size_t h = g + 1;
       while (h < events_.size() && events_[h].key == events_[g].key) ++h;
@@ -159,6 +179,7 @@ class OneSweep {
     events_.reserve(total);
     rings_.reserve(polygons_.size());
     std::uint32_t id = 0;
+    Point64 low{kCoordBound, kCoordBound}, high{-kCoordBound, -kCoordBound};
     for (std::size_t r = 0; r < polygons_.size(); ++r) {
       const Polygon& p = polygons_[r];
       rings_.push_back({id, static_cast<std::uint32_t>(p.size())});
@@ -167,8 +188,22 @@ class OneSweep {
         const bool forward = a < b;
         edges_.push_back(
             {forward ? a : b, forward ? b : a, static_cast<std::uint32_t>(r), forward});
-        events_.push_back({sweep_key(a), id});
+        low = {std::min(low.x, a.x), std::min(low.y, a.y)};
+        high = {std::max(high.x, a.x), std::max(high.y, a.y)};
       }
+    }
+    // Each vertex as one key whose unsigned order is the lexicographic order: its offsets
+    // from the lower-left corner of the box, x above y, in as few bits as the box needs.
+    const auto span_bits = [](std::int64_t span) {
+      return static_cast<unsigned>(std::bit_width(static_cast<std::uint64_t>(span)));
+    };
+    const unsigned y_bits = span_bits(high.y - low.y);
+    key_bits_ = y_bits + span_bits(high.x - low.x);
+    for (std::uint32_t v = 0; v < total; ++v) {
+      const Point64 a = edge_start(v);
+      events_.push_back({(static_cast<std::uint64_t>(a.x - low.x) << y_bits) |
+                             static_cast<std::uint64_t>(a.y - low.y),
+                         v});
     }
     if (multi_) cover_.assign(total, 0);
     return true;
@@ -212,24 +247,26 @@ class OneSweep {
     }
     const std::size_t i = lo;
     std::size_t j = i, ended = 0;
-    for (; j < status_.size() && side_of_point(edges_[status_[j]], q) == 0; ++j) {
+    for (; j < status_.size(); ++j) {
       const std::uint32_t e = status_[j];
       if (edges_[e].right == q) {
         ++ended;
-      } else {
+      } else if (side_of_point(edges_[e], q) == 0) {
         through_.push_back(e);
+      } else {
+        break;
       }
     }
-    if (ended != ending_.size())
-      return false;  // not a consistent status: let the reporting sweep tell
+    // Not a consistent status: let the reporting sweep tell.
+    if (ended != ending_.size()) return false;
 
-    // Edges through q in different directions cross there.
-    for (std::size_t k = 1; k < through_.size(); ++k) {
-      if (compare_directions(edges_[through_[k - 1]], edges_[through_[k]]) != 0) return false;
-    }
-    // Edges of one ring at q must be ring neighbours. A single vertex with nothing passing
-    // through q brings just its two edges, which are.
-    if (h - g > 1 || !through_.empty()) {
+    if (!through_.empty() || h - g > 1) {
+      // Edges through q in different directions cross there.
+      for (std::size_t k = 1; k < through_.size(); ++k) {
+        if (compare_directions(edges_[through_[k - 1]], edges_[through_[k]]) != 0) return false;
+      }
+      // Edges of one ring at q must be ring neighbours. (A single vertex with nothing
+      // passing through q brings just its two edges, which are.)
       at_.clear();
       at_.insert(at_.end(), ending_.begin(), ending_.end());
       at_.insert(at_.end(), through_.begin(), through_.end());
@@ -242,34 +279,37 @@ class OneSweep {
       }
     }
 
-    // The new run: edges through q and edges leaving q, bottom-up (by direction; collinear
-    // ones by number, fixed for their life).
-    block_.assign(through_.begin(), through_.end());
+    // The new run replaces [i, j): edges through q and edges leaving q, bottom-up, i.e. by
+    // direction (collinear ones by number, fixed for their life). Starting edges are sorted
+    // into the through edges, already in order.
+    const std::size_t k = through_.size() + starting_.size();
     for (const std::uint32_t s : starting_) {
-      std::size_t at = block_.size();
-      while (at > 0) {
-        const int c = compare_directions(edges_[block_[at - 1]], edges_[s]);
-        if (c < 0 || (c == 0 && block_[at - 1] < s)) break;
-        --at;
+      std::size_t at = through_.size();
+      through_.push_back(s);
+      for (; at > 0; --at) {
+        const std::uint32_t before = through_[at - 1];
+        const int c = compare_directions(edges_[before], edges_[s]);
+        if (c < 0 || (c == 0 && before < s)) break;
+        through_[at] = before;
       }
-      block_.insert(block_.begin() + static_cast<std::ptrdiff_t>(at), s);
+      through_[at] = s;
     }
-    const std::size_t run = j - i, k = block_.size();
+    const std::size_t run = j - i;
     if (k > run) {
+      if (status_.size() + (k - run) > kStatusLimit) return false;
       status_.insert(status_.begin() + static_cast<std::ptrdiff_t>(j), k - run, 0);
     } else if (k < run) {
       status_.erase(status_.begin() + static_cast<std::ptrdiff_t>(i + k),
                     status_.begin() + static_cast<std::ptrdiff_t>(j));
     }
-    std::copy(block_.begin(), block_.end(), status_.begin() + static_cast<std::ptrdiff_t>(i));
-    if (status_.size() > kStatusLimit) return false;
+    std::copy(through_.begin(), through_.end(), status_.begin() + static_cast<std::ptrdiff_t>(i));
 
     const std::uint32_t kNo = UINT32_MAX;
     const std::uint32_t below = i > 0 ? status_[i - 1] : kNo;
     const std::uint32_t above = i + k < status_.size() ? status_[i + k] : kNo;
-    if (multi_ && !winding_stays_below_two(below)) return false;
-    const std::uint32_t low = k > 0 ? block_.front() : above;
-    const std::uint32_t high = k > 0 ? block_.back() : below;
+    if (multi_ && !winding_stays_below_two(below, &status_[i], k)) return false;
+    const std::uint32_t low = k > 0 ? status_[i] : above;
+    const std::uint32_t high = k > 0 ? status_[i + k - 1] : below;
     if (below != kNo && low != kNo && !neighbours_fine(below, low)) return false;
     if (k > 0 && above != kNo && !neighbours_fine(high, above)) return false;
     return true;
@@ -281,18 +321,17 @@ class OneSweep {
   }
 
   // The winding walk of validate_overlap.cpp over the sectors right of q, counter-clockwise
-  // from straight down, storing the count above each edge of the block.
-  bool winding_stays_below_two(std::uint32_t below) {
+  // from straight down, storing the count above each of the k edges of `block`.
+  bool winding_stays_below_two(std::uint32_t below, const std::uint32_t* block, std::size_t k) {
     int cover = below == UINT32_MAX ? 0 : cover_[below];
-    for (std::size_t first = 0; first < block_.size();) {
+    for (std::size_t first = 0; first < k;) {
       std::size_t last = first + 1;
-      while (last < block_.size() &&
-             compare_directions(edges_[block_[first]], edges_[block_[last]]) == 0) {
+      while (last < k && compare_directions(edges_[block[first]], edges_[block[last]]) == 0) {
         ++last;
       }
       int entering = 0;
       for (std::size_t m = first; m < last; ++m) {
-        if (edges_[block_[m]].forward) {
+        if (edges_[block[m]].forward) {
           ++entering;
           ++cover;
         } else {
@@ -300,8 +339,7 @@ class OneSweep {
         }
       }
       if (entering > 1 || cover >= 2 || cover < 0) return false;
-      for (std::size_t m = first; m < last; ++m)
-        cover_[block_[m]] = static_cast<std::int8_t>(cover);
+      for (std::size_t m = first; m < last; ++m) cover_[block[m]] = static_cast<std::int8_t>(cover);
       first = last;
     }
     return true;
@@ -321,9 +359,11 @@ class OneSweep {
   std::vector<Edge> edges_;  // edge v runs from vertex v to the next vertex of its ring
   std::vector<RingRange> rings_;
   std::vector<Event> events_;
+  std::vector<Event> events_scratch_;
+  unsigned key_bits_ = 0;           // every event key is below 2^key_bits_
   std::vector<std::int8_t> cover_;  // winding number just above each placed edge (sets only)
   std::vector<std::uint32_t> status_;
-  std::vector<std::uint32_t> ending_, starting_, through_, at_, block_;
+  std::vector<std::uint32_t> ending_, starting_, through_, at_;
 };
 
 }  // namespace
