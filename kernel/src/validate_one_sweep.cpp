@@ -159,7 +159,7 @@ class OneSweep {
     for (std::size_t g = 0; g < events_.size();) {
       std::size_t h = g + 1;
       while (h < events_.size() && events_[h].key == events_[g].key) ++h;
-      if (!event(g, h)) return false;
+      if (!(h == g + 1 ? vertex_event(events_[g].vertex) : event(g, h))) return false;
       g = h;
     }
     return status_.empty();
@@ -222,20 +222,8 @@ class OneSweep {
     return d == 1 || d == r.size - 1;
   }
 
-  // The events g..h-1 share one point q.
-  bool event(std::size_t g, std::size_t h) {
-    const Point64 q = edge_start(events_[g].vertex);
-    ending_.clear();
-    starting_.clear();
-    through_.clear();
-    for (std::size_t k = g; k < h; ++k) {
-      const std::uint32_t v = events_[k].vertex;
-      const std::uint32_t in = previous_edge(v);
-      (edges_[in].forward ? ending_ : starting_).push_back(in);
-      (edges_[v].forward ? starting_ : ending_).push_back(v);
-    }
-
-    // The status edges through q form one run [i, j), holding every edge ending at q.
+  // Index of the first status edge not below q.
+  std::size_t first_not_below(Point64 q) const noexcept {
     std::size_t lo = 0, hi = status_.size();
     while (lo < hi) {
       const std::size_t mid = (lo + hi) / 2;
@@ -245,7 +233,66 @@ class OneSweep {
         hi = mid;
       }
     }
-    const std::size_t i = lo;
+    return lo;
+  }
+
+  // The common event: one vertex v alone at its point q, its two edges in and out. The same
+  // steps as event() below, without lists; an edge passing through q sends it there.
+  bool vertex_event(std::uint32_t v) {
+    const std::uint32_t in = previous_edge(v);
+    const Edge& ein = edges_[in];
+    const Edge& eout = edges_[v];
+    const Point64 q = ein.forward ? ein.right : ein.left;
+    const std::size_t i = first_not_below(q);
+    std::size_t j = i;
+    while (j < status_.size() && edges_[status_[j]].right == q) ++j;
+    if (j < status_.size() && side_of_point(edges_[status_[j]], q) == 0) {
+      return event_at(q, &v, 1);  // an edge passes through q
+    }
+    const std::size_t ended = j - i;
+    // `in` ends at q, and `out` starts there, when the ring runs rightward along them.
+    const bool in_ends = ein.forward, out_starts = eout.forward;
+    std::size_t k = 0;
+    if (in_ends == out_starts) {  // the ring passes q: one edge ends, the other starts
+      if (ended != 1) return false;
+      status_[i] = in_ends ? v : in;
+      k = 1;
+    } else if (out_starts) {  // both edges start at q: insert them bottom-up
+      if (ended != 0 || status_.size() + 2 > kStatusLimit) return false;
+      const int c = compare_directions(ein, eout);
+      const bool in_first = c < 0 || (c == 0 && in < v);
+      const std::uint32_t pair[2] = {in_first ? in : v, in_first ? v : in};
+      status_.insert(status_.begin() + static_cast<std::ptrdiff_t>(i), pair, pair + 2);
+      k = 2;
+    } else {  // both end at q
+      if (ended != 2) return false;
+      status_.erase(status_.begin() + static_cast<std::ptrdiff_t>(i),
+                    status_.begin() + static_cast<std::ptrdiff_t>(j));
+    }
+    return neighbourhood_fine(i, k);
+  }
+
+  // The events g..h-1 share one point q.
+  bool event(std::size_t g, std::size_t h) {
+    vertices_.clear();
+    for (std::size_t k = g; k < h; ++k) vertices_.push_back(events_[k].vertex);
+    return event_at(edge_start(vertices_.front()), vertices_.data(), vertices_.size());
+  }
+
+  // The `count` vertices at q, in general.
+  bool event_at(Point64 q, const std::uint32_t* vertices, std::size_t count) {
+    ending_.clear();
+    starting_.clear();
+    through_.clear();
+    for (std::size_t k = 0; k < count; ++k) {
+      const std::uint32_t v = vertices[k];
+      const std::uint32_t in = previous_edge(v);
+      (edges_[in].forward ? ending_ : starting_).push_back(in);
+      (edges_[v].forward ? starting_ : ending_).push_back(v);
+    }
+
+    // The status edges through q form one run [i, j), holding every edge ending at q.
+    const std::size_t i = first_not_below(q);
     std::size_t j = i, ended = 0;
     for (; j < status_.size(); ++j) {
       const std::uint32_t e = status_[j];
@@ -260,7 +307,7 @@ class OneSweep {
     // Not a consistent status: let the reporting sweep tell.
     if (ended != ending_.size()) return false;
 
-    if (!through_.empty() || h - g > 1) {
+    if (!through_.empty() || count > 1) {
       // Edges through q in different directions cross there.
       for (std::size_t k = 1; k < through_.size(); ++k) {
         if (compare_directions(edges_[through_[k - 1]], edges_[through_[k]]) != 0) return false;
@@ -303,7 +350,12 @@ class OneSweep {
                     status_.begin() + static_cast<std::ptrdiff_t>(j));
     }
     std::copy(through_.begin(), through_.end(), status_.begin() + static_cast<std::ptrdiff_t>(i));
+    return neighbourhood_fine(i, k);
+  }
 
+  // After an event, the k edges through or leaving q sit at [i, i + k) of the status: walk
+  // the winding numbers around q and test the pairs of new neighbours.
+  bool neighbourhood_fine(std::size_t i, std::size_t k) {
     const std::uint32_t kNo = UINT32_MAX;
     const std::uint32_t below = i > 0 ? status_[i - 1] : kNo;
     const std::uint32_t above = i + k < status_.size() ? status_[i + k] : kNo;
@@ -363,7 +415,7 @@ class OneSweep {
   unsigned key_bits_ = 0;           // every event key is below 2^key_bits_
   std::vector<std::int8_t> cover_;  // winding number just above each placed edge (sets only)
   std::vector<std::uint32_t> status_;
-  std::vector<std::uint32_t> ending_, starting_, through_, at_;
+  std::vector<std::uint32_t> vertices_, ending_, starting_, through_, at_;
 };
 
 }  // namespace
