@@ -8,6 +8,7 @@
 #include "box_sweep.hpp"
 #include "edgeland/kernel/bbox.hpp"
 #include "edgeland/kernel/pixel.hpp"
+#include "edgeland/kernel/point_in_polygon.hpp"
 #include "edgeland/kernel/predicates.hpp"
 #include "noding.hpp"
 
@@ -31,35 +32,75 @@ struct Closure {
   std::vector<bool> moved;
 };
 
-// Grows the hot set until every vertex pixel met by a moved segment is hot and every segment
-// meeting a hot pixel off its centre is moved. Each round only looks at what is new.
+// The polyline a segment is routed along: its ends, its exact split points and the centres of
+// the hot pixels it meets, in order along it.
+Ring route_of(const Segment& seg, std::vector<Point64> stops) {
+  std::sort(stops.begin(), stops.end(), [&](Point64 x, Point64 y) {
+    const Int128 px = projection(seg, x), py = projection(seg, y);
+    return px != py ? px < py : x < y;
+  });
+  Ring r{seg.a};
+  for (Point64 p : stops)
+    if (p != r.back() && p != seg.b) r.push_back(p);
+  r.push_back(seg.b);
+  return r;
+}
+
+// Grows the hot set until it is closed:
+//  * every segment meeting a hot pixel off its centre is moved (routed through the centre);
+//  * stable rule: a vertex becomes hot when the route of a moved segment would jump over it,
+//    i.e. it lies strictly inside the region between the segment and its route (the closed
+//    polyline route + segment winds around it). Only such a vertex could end up on the other
+//    side of the snapped segment; vertices merely near the segment are left alone, which is
+//    what keeps far edges unchanged (locality);
+//  * classic rule (fallback): every vertex pixel a moved segment meets becomes hot, as in
+//    Guibas-Marimont snap rounding, whose theorem guarantees no new crossing.
+// Each round only looks at what is new.
 void close_hot_set(const std::vector<Segment>& segs, const std::vector<SweepBox>& seg_sweep,
                    const std::vector<Point64>& vertices, const std::vector<SweepBox>& vertex_sweep,
+                   const std::vector<std::vector<Point64>>& splits_of, bool classic,
                    PointSet& is_hot, Closure& c, std::vector<Point64> fresh) {
+  std::vector<std::vector<Point64>> hot_stops(segs.size());
+  for (const auto& [s, h] : c.meets) hot_stops[s].push_back(c.hot[h]);
   while (!fresh.empty()) {
     const std::uint32_t base = static_cast<std::uint32_t>(c.hot.size());
     c.hot.insert(c.hot.end(), fresh.begin(), fresh.end());
-    std::vector<std::uint32_t> newly_moved;
+    std::vector<std::uint32_t> changed;
     for_each_overlapping_pair(sorted_for_sweep(pixel_boxes(fresh)), seg_sweep,
                               [&](std::uint32_t h, std::uint32_t s) {
                                 const Point64 centre = fresh[h];
                                 if (!segment_meets_pixel(segs[s], centre)) return;
                                 c.meets.emplace_back(s, base + h);
-                                if (!c.moved[s] && !on_segment(centre, segs[s])) {
-                                  c.moved[s] = true;
-                                  newly_moved.push_back(s);
-                                }
+                                hot_stops[s].push_back(centre);
+                                if (!on_segment(centre, segs[s])) c.moved[s] = true;
+                                changed.push_back(s);
                               });
     fresh.clear();
-    if (newly_moved.empty()) break;
-    std::vector<Box64> moved_boxes(newly_moved.size());
-    for (std::size_t k = 0; k < newly_moved.size(); ++k)
-      moved_boxes[k] = segment_box(segs[newly_moved[k]]);
-    for_each_overlapping_pair(sorted_for_sweep(moved_boxes), vertex_sweep,
+    std::sort(changed.begin(), changed.end());
+    changed.erase(std::unique(changed.begin(), changed.end()), changed.end());
+    changed.erase(std::remove_if(changed.begin(), changed.end(),
+                                 [&](std::uint32_t s) { return !c.moved[s]; }),
+                  changed.end());
+    if (changed.empty()) break;
+    std::vector<Box64> boxes(changed.size());
+    std::vector<Ring> routes(changed.size());
+    for (std::size_t k = 0; k < changed.size(); ++k) {
+      const std::uint32_t s = changed[k];
+      boxes[k] = segment_box(segs[s]);
+      if (!classic) {
+        std::vector<Point64> stops = hot_stops[s];
+        stops.insert(stops.end(), splits_of[s].begin(), splits_of[s].end());
+        routes[k] = route_of(segs[s], std::move(stops));
+      }
+    }
+    for_each_overlapping_pair(sorted_for_sweep(boxes), vertex_sweep,
                               [&](std::uint32_t k, std::uint32_t v) {
                                 const Point64 p = vertices[v];
                                 if (is_hot.count(p)) return;
-                                if (!segment_meets_pixel(segs[newly_moved[k]], p)) return;
+                                const bool pin =
+                                    classic ? segment_meets_pixel(segs[changed[k]], p)
+                                            : locate(p, routes[k]) == PointLocation::kInside;
+                                if (!pin) return;
                                 is_hot.insert(p);
                                 fresh.push_back(p);
                               });
@@ -174,13 +215,29 @@ std::vector<Fragment> snap_round(const std::vector<Segment>& segs, SnapStats& st
   };
   add_hot(contacts.hot);
 
-  constexpr std::size_t kMaxRounds = 16;
+  std::vector<std::vector<Point64>> splits_of(segs.size());
+  for (const auto& [s, p] : contacts.splits) splits_of[s].push_back(p);
+
+  // The stable rule normally converges in one round. Should crossings survive it a few times,
+  // switch to the classic closure, for which snap rounding's theorem rules them out.
+  constexpr std::size_t kStableRounds = 4, kMaxRounds = 16;
   for (std::size_t round = 1;; ++round) {
+    const bool classic = round > kStableRounds;
+    if (round == kStableRounds + 1) {
+      // Re-run the whole closure under the classic rule from the hot pixels found so far.
+      fresh.insert(fresh.end(), closure.hot.begin(), closure.hot.end());
+      std::sort(fresh.begin(), fresh.end());
+      fresh.erase(std::unique(fresh.begin(), fresh.end()), fresh.end());
+      closure = Closure{};
+      closure.moved.assign(segs.size(), false);
+      is_hot.clear();
+      is_hot.insert(fresh.begin(), fresh.end());
+    }
     std::sort(fresh.begin(), fresh.end());
     std::sort(vertices.begin(), vertices.end());
     vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
-    close_hot_set(segs, seg_sweep, vertices, sweep_of_sorted_points(vertices), is_hot, closure,
-                  std::move(fresh));
+    close_hot_set(segs, seg_sweep, vertices, sweep_of_sorted_points(vertices), splits_of, classic,
+                  is_hot, closure, std::move(fresh));
     fresh.clear();
     std::vector<Fragment> frags = route(segs, closure, contacts.splits);
     stats.rounds = round;
