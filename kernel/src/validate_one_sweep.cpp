@@ -159,7 +159,7 @@ class OneSweep {
     for (std::size_t g = 0; g < events_.size();) {
       std::size_t h = g + 1;
       while (h < events_.size() && events_[h].key == events_[g].key) ++h;
-      if (!(h == g + 1 ? vertex_event(events_[g].vertex) : event(g, h))) return false;
+      if (!(h == g + 1 ? vertex_event(g) : event(g, h))) return false;
       g = h;
     }
     return status_.empty();
@@ -206,6 +206,7 @@ class OneSweep {
                          v});
     }
     if (multi_) cover_.assign(total, 0);
+    seen_.assign(polygons_.size(), 0);
     return true;
   }
 
@@ -238,7 +239,8 @@ class OneSweep {
 
   // The common event: one vertex v alone at its point q, its two edges in and out. The same
   // steps as event() below, without lists; an edge passing through q sends it there.
-  bool vertex_event(std::uint32_t v) {
+  bool vertex_event(std::size_t g) {
+    const std::uint32_t v = events_[g].vertex;
     const std::uint32_t in = previous_edge(v);
     const Edge& ein = edges_[in];
     const Edge& eout = edges_[v];
@@ -247,7 +249,7 @@ class OneSweep {
     std::size_t j = i;
     while (j < status_.size() && edges_[status_[j]].right == q) ++j;
     if (j < status_.size() && side_of_point(edges_[status_[j]], q) == 0) {
-      return event_at(q, &v, 1);  // an edge passes through q
+      return event_at(q, &events_[g], 1);  // an edge passes through q
     }
     const std::size_t ended = j - i;
     // `in` ends at q, and `out` starts there, when the ring runs rightward along them.
@@ -274,18 +276,16 @@ class OneSweep {
 
   // The events g..h-1 share one point q.
   bool event(std::size_t g, std::size_t h) {
-    vertices_.clear();
-    for (std::size_t k = g; k < h; ++k) vertices_.push_back(events_[k].vertex);
-    return event_at(edge_start(vertices_.front()), vertices_.data(), vertices_.size());
+    return event_at(edge_start(events_[g].vertex), &events_[g], h - g);
   }
 
-  // The `count` vertices at q, in general.
-  bool event_at(Point64 q, const std::uint32_t* vertices, std::size_t count) {
+  // The vertices of `count` events at q, in general.
+  bool event_at(Point64 q, const Event* group, std::size_t count) {
     ending_.clear();
     starting_.clear();
     through_.clear();
     for (std::size_t k = 0; k < count; ++k) {
-      const std::uint32_t v = vertices[k];
+      const std::uint32_t v = group[k].vertex;
       const std::uint32_t in = previous_edge(v);
       (edges_[in].forward ? ending_ : starting_).push_back(in);
       (edges_[v].forward ? starting_ : ending_).push_back(v);
@@ -312,18 +312,19 @@ class OneSweep {
       for (std::size_t k = 1; k < through_.size(); ++k) {
         if (compare_directions(edges_[through_[k - 1]], edges_[through_[k]]) != 0) return false;
       }
-      // Edges of one ring at q must be ring neighbours. (A single vertex with nothing
-      // passing through q brings just its two edges, which are.)
-      at_.clear();
-      at_.insert(at_.end(), ending_.begin(), ending_.end());
-      at_.insert(at_.end(), through_.begin(), through_.end());
-      at_.insert(at_.end(), starting_.begin(), starting_.end());
-      for (std::size_t a = 0; a < at_.size(); ++a) {
-        for (std::size_t b = a + 1; b < at_.size(); ++b) {
-          if (edges_[at_[a]].ring == edges_[at_[b]].ring && !may_touch(at_[a], at_[b]))
-            return false;
-        }
-      }
+      // Edges of one ring at q must be ring neighbours. The two edges of one vertex are, so
+      // only a ring met twice at q (at two vertices, or at a vertex and a passing edge)
+      // needs the test of every pair.
+      ++stamp_;
+      bool met_twice = false;
+      const auto meet = [&](std::uint32_t edge) {
+        std::uint32_t& seen = seen_[edges_[edge].ring];
+        met_twice = met_twice || seen == stamp_;
+        seen = stamp_;
+      };
+      for (std::size_t k = 0; k < count; ++k) meet(group[k].vertex);
+      for (const std::uint32_t e : through_) meet(e);
+      if (met_twice && !ring_neighbours_only()) return false;
     }
 
     // The new run replaces [i, j): edges through q and edges leaving q, bottom-up, i.e. by
@@ -351,6 +352,22 @@ class OneSweep {
     }
     std::copy(through_.begin(), through_.end(), status_.begin() + static_cast<std::ptrdiff_t>(i));
     return neighbourhood_fine(i, k);
+  }
+
+  // Whether every two edges of one ring at q (ending_, through_, starting_) are neighbours.
+  bool ring_neighbours_only() {
+    at_.clear();
+    at_.insert(at_.end(), ending_.begin(), ending_.end());
+    at_.insert(at_.end(), through_.begin(), through_.end());
+    at_.insert(at_.end(), starting_.begin(), starting_.end());
+    for (std::size_t a = 0; a < at_.size(); ++a) {
+      for (std::size_t b = a + 1; b < at_.size(); ++b) {
+        if (edges_[at_[a]].ring == edges_[at_[b]].ring && !may_touch(at_[a], at_[b])) {
+          return false;
+        }
+      }
+    }
+    return true;
   }
 
   // After an event, the k edges through or leaving q sit at [i, i + k) of the status: walk
@@ -415,7 +432,9 @@ class OneSweep {
   unsigned key_bits_ = 0;           // every event key is below 2^key_bits_
   std::vector<std::int8_t> cover_;  // winding number just above each placed edge (sets only)
   std::vector<std::uint32_t> status_;
-  std::vector<std::uint32_t> vertices_, ending_, starting_, through_, at_;
+  std::vector<std::uint32_t> ending_, starting_, through_, at_;
+  std::vector<std::uint32_t> seen_;  // per ring: the last stamp_ of an event that met it
+  std::uint32_t stamp_ = 0;
 };
 
 }  // namespace
