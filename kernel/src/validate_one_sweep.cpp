@@ -27,6 +27,7 @@
 
 #include "edgeland/kernel/checked.hpp"
 #include "validate_checks.hpp"
+#include "validate_event_sort.hpp"
 #include "validate_exact.hpp"
 
 namespace edgeland::detail {
@@ -48,39 +49,7 @@ struct RingRange {
   std::uint32_t size;
 };
 
-struct Event {
-  std::uint64_t key;  // the vertex in sweep order as one unsigned number
-  std::uint32_t vertex;
-};
-
-// Sorts events by key, equal keys in vertex order (LSD radix sort, stable): as many passes
-// of at most 11 bits as the keys have significant bits. Every key is below 2^bits.
-void sort_events(std::vector<Event>& events, std::vector<Event>& scratch, unsigned bits) {
-  if (events.size() < 256) {  // a radix pass costs its 2048 counters whatever the size
-    std::sort(events.begin(), events.end(), [](const Event& a, const Event& b) {
-      return a.key < b.key || (a.key == b.key && a.vertex < b.vertex);
-    });
-    return;
-  }
-  if (bits == 0) return;
-  const unsigned passes = (bits + 10) / 11;
-  const unsigned width = (bits + passes - 1) / passes;
-  const std::uint64_t mask = (std::uint64_t{1} << width) - 1;
-  std::vector<std::uint32_t> count(std::size_t{1} << width);
-  scratch.resize(events.size());
-  for (unsigned pass = 0, shift = 0; pass < passes; ++pass, shift += width) {
-    std::fill(count.begin(), count.end(), 0);
-    for (const Event& e : events) ++count[(e.key >> shift) & mask];
-    std::uint32_t sum = 0;
-    for (std::uint32_t& c : count) {
-      const std::uint32_t here = c;
-      c = sum;
-      sum += here;
-    }
-    for (const Event& e : events) scratch[count[(e.key >> shift) & mask]++] = e;
-    events.swap(scratch);
-  }
-}
+using Event = KeyedVertex;
 
 // Vertex count, range, repeated vertices, spikes and positive area of one ring, in O(n),
 // without reporting: whether the ring passes every rule that needs no sweep.
@@ -155,7 +124,7 @@ class OneSweep {
 
   bool run() {
     if (!build()) return false;
-    sort_events(events_, events_scratch_, key_bits_);
+    sort_by_key(events_, events_scratch_, key_bits_);
     for (std::size_t g = 0; g < events_.size();) {
       std::size_t h = g + 1;
       while (h < events_.size() && events_[h].key == events_[g].key) ++h;

@@ -1,0 +1,101 @@
+#include "validate_event_sort.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cstddef>
+
+namespace edgeland::detail {
+namespace {
+
+// Below this many events std::sort is cheaper than 2048 counters per radix pass.
+constexpr std::size_t kSmall = 256;
+constexpr unsigned kMaxDigitBits = 11;
+
+bool key_less(const KeyedVertex& a, const KeyedVertex& b) noexcept { return a.key < b.key; }
+
+// LSD radix sort (stable): one counting read and one scatter per digit.
+void radix_sort(std::vector<KeyedVertex>& events, std::vector<KeyedVertex>& scratch,
+                unsigned bits) {
+  if (bits == 0) return;
+  const unsigned passes = (bits + kMaxDigitBits - 1) / kMaxDigitBits;
+  const unsigned width = (bits + passes - 1) / passes;
+  const std::uint64_t mask = (std::uint64_t{1} << width) - 1;
+  std::vector<std::uint32_t> count(std::size_t{1} << width);
+  scratch.resize(events.size());
+  for (unsigned pass = 0, shift = 0; pass < passes; ++pass, shift += width) {
+    std::fill(count.begin(), count.end(), 0);
+    for (const KeyedVertex& e : events) ++count[(e.key >> shift) & mask];
+    std::uint32_t sum = 0;
+    for (std::uint32_t& c : count) {
+      const std::uint32_t here = c;
+      c = sum;
+      sum += here;
+    }
+    for (const KeyedVertex& e : events) scratch[count[(e.key >> shift) & mask]++] = e;
+    events.swap(scratch);
+  }
+}
+
+// Cuts `events` into maximal ascending runs, reversing each strictly descending stretch, and
+// returns the run bounds (0, ..., n); stops early, with a partial answer, past `limit` runs.
+std::vector<std::uint32_t> monotone_runs(std::vector<KeyedVertex>& events, std::size_t limit) {
+  std::vector<std::uint32_t> bounds{0};
+  const std::size_t n = events.size();
+  std::size_t start = 0;
+  while (start < n && bounds.size() <= limit) {
+    std::size_t end = start + 1;
+    if (end < n && events[end].key < events[start].key) {
+      while (end < n && events[end].key < events[end - 1].key) ++end;
+      std::reverse(events.begin() + static_cast<std::ptrdiff_t>(start),
+                   events.begin() + static_cast<std::ptrdiff_t>(end));
+    } else {
+      while (end < n && events[end].key >= events[end - 1].key) ++end;
+    }
+    bounds.push_back(static_cast<std::uint32_t>(end));
+    start = end;
+  }
+  return bounds;
+}
+
+// Merges neighbouring runs pairwise until one is left (stable).
+void merge_runs(std::vector<KeyedVertex>& events, std::vector<KeyedVertex>& scratch,
+                std::vector<std::uint32_t> bounds) {
+  scratch.resize(events.size());
+  std::vector<std::uint32_t> next;
+  while (bounds.size() > 2) {
+    next.assign(1, 0);
+    for (std::size_t r = 0; r + 1 < bounds.size(); r += 2) {
+      const std::uint32_t lo = bounds[r], mid = bounds[r + 1];
+      const std::uint32_t hi = r + 2 < bounds.size() ? bounds[r + 2] : mid;
+      std::merge(events.begin() + lo, events.begin() + mid, events.begin() + mid,
+                 events.begin() + hi, scratch.begin() + lo, key_less);
+      next.push_back(hi);
+    }
+    events.swap(scratch);
+    bounds.swap(next);
+  }
+}
+
+}  // namespace
+
+void sort_by_key(std::vector<KeyedVertex>& events, std::vector<KeyedVertex>& scratch,
+                 unsigned bits) {
+  if (events.size() < kSmall) {
+    std::sort(events.begin(), events.end(), [](const KeyedVertex& a, const KeyedVertex& b) {
+      return a.key < b.key || (a.key == b.key && a.vertex < b.vertex);
+    });
+    return;
+  }
+  // A merge pass costs about half a radix pass (no counting): merge while log2(runs) is at
+  // most twice the radix passes.
+  const unsigned radix_passes = (bits + kMaxDigitBits - 1) / kMaxDigitBits;
+  const std::size_t most_runs = std::size_t{1} << std::min(2 * radix_passes, 30u);
+  std::vector<std::uint32_t> bounds = monotone_runs(events, most_runs);
+  if (bounds.back() == events.size() && bounds.size() - 1 <= most_runs) {
+    merge_runs(events, scratch, std::move(bounds));
+  } else {
+    radix_sort(events, scratch, bits);
+  }
+}
+
+}  // namespace edgeland::detail
