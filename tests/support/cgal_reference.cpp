@@ -200,8 +200,13 @@ std::string ExactRegion::to_text() const {
 }
 
 bool segments_farther_than(const Segment& s, const Segment& t, const Rational& squared_radius) {
+  const K::FT limit = ft(squared_radius);
+  // Degenerate segments are points (CGAL's Segment_2 requires distinct endpoints).
+  if (s.a == s.b && t.a == t.b) return CGAL::squared_distance(cpoint(s.a), cpoint(t.a)) > limit;
+  if (s.a == s.b) return CGAL::squared_distance(cpoint(s.a), CSegment(cpoint(t.a), cpoint(t.b))) > limit;
+  if (t.a == t.b) return CGAL::squared_distance(cpoint(t.a), CSegment(cpoint(s.a), cpoint(s.b))) > limit;
   const CSegment a(cpoint(s.a), cpoint(s.b)), b(cpoint(t.a), cpoint(t.b));
-  return CGAL::squared_distance(a, b) > ft(squared_radius);
+  return CGAL::squared_distance(a, b) > limit;
 }
 
 }  // namespace edgeland::test

@@ -67,8 +67,8 @@ class ExactRegion {
   std::shared_ptr<const Impl> impl_;
 };
 
-// Exact squared distance between two closed segments with integer endpoints, compared with
-// a rational: whether it is > squared_radius. (Locality: "farther than 2 units".)
+// Exact squared distance between two closed segments with integer endpoints (a segment with
+// a == b is a point), compared with a rational: whether it is > squared_radius.
 bool segments_farther_than(const Segment& s, const Segment& t, const Rational& squared_radius);
 
 }  // namespace edgeland::test
