@@ -10,8 +10,10 @@ namespace edgeland {
 namespace {
 
 // Checks one ring; returns whether it is valid on its own (and so may join the set check).
+// `quick` first tries the one-sweep acceptance, which settles a valid ring with no report.
 bool validate_ring(const Ring& ring, std::size_t polygon, detail::ViolationSink& sink,
-                   std::vector<detail::SweepEdge>& scratch) {
+                   std::vector<detail::SweepEdge>& scratch, bool quick) {
+  if (quick && detail::accepted_by_one_sweep(std::span<const Ring>(&ring, 1))) return true;
   if (!detail::check_ring_structure(ring, polygon, sink)) return false;
   bool simple = detail::check_spikes(ring, polygon, sink);
   scratch.clear();
@@ -32,21 +34,29 @@ ValidationReport validate_polygons(std::span<const Polygon> polygons, std::size_
   detail::ViolationSink sink(max_violations);
   std::vector<detail::SweepEdge> edges;
   std::vector<std::size_t> valid_rings;
+  // A lone polygon just failed the one-sweep acceptance: no need to try it again.
+  const bool quick = polygons.size() > 1;
   for (std::size_t i = 0; i < polygons.size() && !sink.full(); ++i) {
-    if (validate_ring(polygons[i], i, sink, edges)) valid_rings.push_back(i);
+    if (validate_ring(polygons[i], i, sink, edges, quick)) valid_rings.push_back(i);
   }
   if (valid_rings.size() >= 2 && !sink.full()) {
     edges.clear();
     for (const std::size_t i : valid_rings) detail::append_ring_edges(polygons[i], i, edges);
     detail::sort_for_sweep(edges);
     // One sweep finds one overlapping pair; drop the later member and look again, so each
-    // further sweep can only report a new pair.
+    // further sweep can only report a new pair. Members found disjoint by the one-sweep
+    // acceptance have no pair left to report (when every ring is valid, the acceptance of
+    // them all has just failed: no need to try it again).
+    bool tried = valid_rings.size() == polygons.size();
     while (!sink.full()) {
+      if (!tried && detail::accepted_by_one_sweep(polygons, valid_rings)) break;
+      tried = false;
       const auto v = detail::find_overlap(edges);
       if (!v) break;
       sink.add(*v);
       const std::size_t dropped = v->other_polygon != kNone ? v->other_polygon : v->polygon;
       std::erase_if(edges, [&](const detail::SweepEdge& e) { return e.polygon == dropped; });
+      std::erase(valid_rings, dropped);
     }
   }
   return ValidationReport{sink.take()};

@@ -52,6 +52,8 @@ std::optional<Violation> find_self_intersection(const std::vector<SweepEdge>& ed
 // True only for a valid input; false means invalid or undecided, and reports nothing: the
 // checks below then find and report what is wrong.
 bool accepted_by_one_sweep(std::span<const Polygon> polygons);
+// The same for the set of polygons[i] for i in `members`.
+bool accepted_by_one_sweep(std::span<const Polygon> polygons, std::span<const std::size_t> members);
 
 // The first pair of rings whose interiors overlap, found by the sweep in O(n log n). Needs
 // rings that are each strictly simple and counter-clockwise, edges sorted by sort_for_sweep.

@@ -120,7 +120,8 @@ Contact contact(const Edge& a, const Edge& b) noexcept {
 
 class OneSweep {
  public:
-  explicit OneSweep(std::span<const Polygon> polygons) : polygons_(polygons) {}
+  OneSweep(std::span<const Polygon> polygons, std::span<const std::size_t> members)
+      : polygons_(polygons), members_(members) {}
 
   bool run() {
     if (!build()) return false;
@@ -138,19 +139,20 @@ class OneSweep {
   // Every ring passes its local rules; flattens them into edges and events.
   bool build() {
     std::size_t total = 0;
-    for (const Polygon& p : polygons_) {
+    for (std::size_t r = 0; r < ring_count(); ++r) {
+      const Polygon& p = ring(r);
       if (!local_rules_hold(p)) return false;
       total += p.size();
     }
-    if (total >= UINT32_MAX || polygons_.size() >= UINT32_MAX) return false;
-    multi_ = polygons_.size() >= 2;
+    if (total >= UINT32_MAX || ring_count() >= UINT32_MAX) return false;
+    multi_ = ring_count() >= 2;
     edges_.reserve(total);
     events_.reserve(total);
-    rings_.reserve(polygons_.size());
+    rings_.reserve(ring_count());
     std::uint32_t id = 0;
     Point64 low{kCoordBound, kCoordBound}, high{-kCoordBound, -kCoordBound};
-    for (std::size_t r = 0; r < polygons_.size(); ++r) {
-      const Polygon& p = polygons_[r];
+    for (std::size_t r = 0; r < ring_count(); ++r) {
+      const Polygon& p = ring(r);
       rings_.push_back({id, static_cast<std::uint32_t>(p.size())});
       for (std::size_t i = 0; i < p.size(); ++i, ++id) {
         const Point64 a = p[i], b = p[i + 1 == p.size() ? 0 : i + 1];
@@ -161,21 +163,14 @@ class OneSweep {
         high = {std::max(high.x, a.x), std::max(high.y, a.y)};
       }
     }
-    // Each vertex as one key whose unsigned order is the lexicographic order: its offsets
-    // from the lower-left corner of the box, x above y, in as few bits as the box needs.
-    const auto span_bits = [](std::int64_t span) {
-      return static_cast<unsigned>(std::bit_width(static_cast<std::uint64_t>(span)));
-    };
-    const unsigned y_bits = span_bits(high.y - low.y);
-    key_bits_ = y_bits + span_bits(high.x - low.x);
+    // Each vertex as one key in as few bits as the box needs.
+    const unsigned y_bits = sweep_key_bits(high.y - low.y);
+    key_bits_ = y_bits + sweep_key_bits(high.x - low.x);
     for (std::uint32_t v = 0; v < total; ++v) {
-      const Point64 a = edge_start(v);
-      events_.push_back({(static_cast<std::uint64_t>(a.x - low.x) << y_bits) |
-                             static_cast<std::uint64_t>(a.y - low.y),
-                         v});
+      events_.push_back({sweep_key(edge_start(v), low, y_bits), v});
     }
     if (multi_) cover_.assign(total, 0);
-    seen_.assign(polygons_.size(), 0);
+    seen_.assign(ring_count(), 0);
     return true;
   }
 
@@ -392,7 +387,16 @@ class OneSweep {
     return !contact(edges_[a], edges_[b]).crossing;
   }
 
+  // The rings swept: polygons_[members_[r]] for r < members_.size(), or all of polygons_.
+  std::size_t ring_count() const noexcept {
+    return members_.empty() ? polygons_.size() : members_.size();
+  }
+  const Polygon& ring(std::size_t r) const noexcept {
+    return polygons_[members_.empty() ? r : members_[r]];
+  }
+
   std::span<const Polygon> polygons_;
+  std::span<const std::size_t> members_;
   bool multi_ = false;
   std::vector<Edge> edges_;  // edge v runs from vertex v to the next vertex of its ring
   std::vector<RingRange> rings_;
@@ -406,8 +410,22 @@ class OneSweep {
   std::uint32_t stamp_ = 0;
 };
 
+// The one place the sweep is built and run.
+bool accepted_by_one_sweep_of(std::span<const Polygon> polygons,
+                              std::span<const std::size_t> members) {
+  return OneSweep(polygons, members).run();
+}
+
 }  // namespace
 
-bool accepted_by_one_sweep(std::span<const Polygon> polygons) { return OneSweep(polygons).run(); }
+bool accepted_by_one_sweep(std::span<const Polygon> polygons) {
+  return accepted_by_one_sweep_of(polygons, {});
+}
+
+bool accepted_by_one_sweep(std::span<const Polygon> polygons,
+                           std::span<const std::size_t> members) {
+  // OneSweep reads an empty `members` as all polygons.
+  return members.empty() || accepted_by_one_sweep_of(polygons, members);
+}
 
 }  // namespace edgeland::detail

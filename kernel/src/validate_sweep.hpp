@@ -30,6 +30,7 @@
 #include "edgeland/kernel/point.hpp"
 #include "edgeland/kernel/polygon.hpp"
 #include "edgeland/kernel/validate.hpp"
+#include "validate_event_sort.hpp"
 #include "validate_exact.hpp"
 
 namespace edgeland::detail {
@@ -146,8 +147,14 @@ template <class Check>
 std::optional<Violation> run_sweep(const std::vector<SweepEdge>& edges, Check& check) {
   const std::size_t n = edges.size();
   std::vector<SweepEvent> ends(n);
-  for (std::size_t i = 0; i < n; ++i) ends[i] = {edges[i].right, i};
-  std::sort(ends.begin(), ends.end());
+  if (n < UINT32_MAX) {  // by right end, equal ends by edge: a stable sort of 64-bit keys
+    const std::vector<KeyedVertex> order =
+        sorted_by_point(n, [&](std::size_t i) { return edges[i].right; });
+    for (std::size_t k = 0; k < n; ++k) ends[k] = {edges[order[k].vertex].right, order[k].vertex};
+  } else {
+    for (std::size_t i = 0; i < n; ++i) ends[i] = {edges[i].right, i};
+    std::sort(ends.begin(), ends.end());
+  }
 
   Point64 q{};
   // Status nodes come from one arena released at the end: no allocator call per event.
