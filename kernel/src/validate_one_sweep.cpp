@@ -29,13 +29,10 @@
 #include "validate_checks.hpp"
 #include "validate_event_sort.hpp"
 #include "validate_exact.hpp"
+#include "validate_status.hpp"
 
 namespace edgeland::detail {
 namespace {
-
-// Past this many status edges a flat array costs more per insert than the balanced tree of
-// the reporting sweep: give up and let that sweep (O(n log n) in every case) decide.
-constexpr std::size_t kStatusLimit = 4096;
 
 struct Edge {
   Point64 left;   // lexicographically smaller end
@@ -189,16 +186,8 @@ class OneSweep {
 
   // Index of the first status edge not below q.
   std::size_t first_not_below(Point64 q) const noexcept {
-    std::size_t lo = 0, hi = status_.size();
-    while (lo < hi) {
-      const std::size_t mid = (lo + hi) / 2;
-      if (side_of_point(edges_[status_[mid]], q) < 0) {
-        lo = mid + 1;
-      } else {
-        hi = mid;
-      }
-    }
-    return lo;
+    return status_.partition_point(
+        [&](std::uint32_t e) { return side_of_point(edges_[e], q) < 0; });
   }
 
   // The common event: one vertex v alone at its point q, its two edges in and out. The same
@@ -219,23 +208,25 @@ class OneSweep {
     // `in` ends at q, and `out` starts there, when the ring runs rightward along them.
     const bool in_ends = ein.forward, out_starts = eout.forward;
     std::size_t k = 0;
-    if (in_ends == out_starts) {  // the ring passes q: one edge ends, the other starts
+    std::uint32_t block[2] = {0, 0};  // the edges leaving q, bottom-up
+    if (in_ends == out_starts) {      // the ring passes q: one edge ends, the other starts
       if (ended != 1) return false;
-      status_[i] = in_ends ? v : in;
+      block[0] = in_ends ? v : in;
+      status_.set(i, block[0]);
       k = 1;
     } else if (out_starts) {  // both edges start at q: insert them bottom-up
-      if (ended != 0 || status_.size() + 2 > kStatusLimit) return false;
+      if (ended != 0) return false;
       const int c = compare_directions(ein, eout);
       const bool in_first = c < 0 || (c == 0 && in < v);
-      const std::uint32_t pair[2] = {in_first ? in : v, in_first ? v : in};
-      status_.insert(status_.begin() + static_cast<std::ptrdiff_t>(i), pair, pair + 2);
+      block[0] = in_first ? in : v;
+      block[1] = in_first ? v : in;
+      status_.replace(i, 0, block, 2);
       k = 2;
     } else {  // both end at q
       if (ended != 2) return false;
-      status_.erase(status_.begin() + static_cast<std::ptrdiff_t>(i),
-                    status_.begin() + static_cast<std::ptrdiff_t>(j));
+      status_.replace(i, 2, block, 0);
     }
-    return neighbourhood_fine(i, k);
+    return neighbourhood_fine(i, block, k);
   }
 
   // The events g..h-1 share one point q.
@@ -306,16 +297,8 @@ class OneSweep {
       }
       through_[at] = s;
     }
-    const std::size_t run = j - i;
-    if (k > run) {
-      if (status_.size() + (k - run) > kStatusLimit) return false;
-      status_.insert(status_.begin() + static_cast<std::ptrdiff_t>(j), k - run, 0);
-    } else if (k < run) {
-      status_.erase(status_.begin() + static_cast<std::ptrdiff_t>(i + k),
-                    status_.begin() + static_cast<std::ptrdiff_t>(j));
-    }
-    std::copy(through_.begin(), through_.end(), status_.begin() + static_cast<std::ptrdiff_t>(i));
-    return neighbourhood_fine(i, k);
+    status_.replace(i, j - i, through_.data(), k);
+    return neighbourhood_fine(i, through_.data(), k);
   }
 
   // Whether every two edges of one ring at q (ending_, through_, starting_) are neighbours.
@@ -334,15 +317,16 @@ class OneSweep {
     return true;
   }
 
-  // After an event, the k edges through or leaving q sit at [i, i + k) of the status: walk
-  // the winding numbers around q and test the pairs of new neighbours.
-  bool neighbourhood_fine(std::size_t i, std::size_t k) {
+  // After an event, the k edges through or leaving q, `block`, sit at [i, i + k) of the
+  // status: walk the winding numbers around q and test the pairs of new neighbours.
+  [[gnu::always_inline]] bool neighbourhood_fine(std::size_t i, const std::uint32_t* block,
+                                                 std::size_t k) {
     const std::uint32_t kNo = UINT32_MAX;
     const std::uint32_t below = i > 0 ? status_[i - 1] : kNo;
     const std::uint32_t above = i + k < status_.size() ? status_[i + k] : kNo;
-    if (multi_ && !winding_stays_below_two(below, &status_[i], k)) return false;
-    const std::uint32_t low = k > 0 ? status_[i] : above;
-    const std::uint32_t high = k > 0 ? status_[i + k - 1] : below;
+    if (multi_ && !winding_stays_below_two(below, block, k)) return false;
+    const std::uint32_t low = k > 0 ? block[0] : above;
+    const std::uint32_t high = k > 0 ? block[k - 1] : below;
     if (below != kNo && low != kNo && !neighbours_fine(below, low)) return false;
     if (k > 0 && above != kNo && !neighbours_fine(high, above)) return false;
     return true;
@@ -404,7 +388,7 @@ class OneSweep {
   std::vector<Event> events_scratch_;
   unsigned key_bits_ = 0;           // every event key is below 2^key_bits_
   std::vector<std::int8_t> cover_;  // winding number just above each placed edge (sets only)
-  std::vector<std::uint32_t> status_;
+  SweepStatus status_;
   std::vector<std::uint32_t> ending_, starting_, through_, at_;
   std::vector<std::uint32_t> seen_;  // per ring: the last stamp_ of an event that met it
   std::uint32_t stamp_ = 0;
