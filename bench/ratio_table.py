@@ -127,12 +127,13 @@ def carving(results, notes):
         ops_run = max(ops_run, int(entry["ops_done"]))
         b = 0
         while f"block{b:02d}_ms_per_op" in entry:
+            partial = (b + 1) * block_size > int(entry["ops_done"])
             blocks.setdefault(b, {})[peer] = (entry[f"block{b:02d}_ms_per_op"],
-                                              entry[f"block{b:02d}_vertices"])
+                                              entry[f"block{b:02d}_vertices"], partial)
             b += 1
     present = [p for p in PEERS if p in runs and not problem(runs[p])]
     lines += ["", "CPU ms per operation, mean over each block (edgeland's output vertex count "
-              "at the end of the block in brackets):", "",
+              "at the end of the block in brackets; * a partial block, the peer's last):", "",
               "| ops | " + " | ".join(present) + " |", "|" + "---|" * (len(present) + 1)]
     for b in sorted(blocks):
         row = [f"{b * block_size + 1:,}-{min((b + 1) * block_size, ops_run):,}"]
@@ -140,8 +141,9 @@ def carving(results, notes):
             if peer not in blocks[b]:
                 row.append("")
                 continue
-            t, v = blocks[b][peer]
-            row.append(f"{t:.3g} ({int(v):,})" if peer == "edgeland" else f"{t:.3g}")
+            t, v, partial = blocks[b][peer]
+            cell = f"{t:.3g} ({int(v):,})" if peer == "edgeland" else f"{t:.3g}"
+            row.append(cell + ("*" if partial else ""))
         lines.append("| " + " | ".join(row) + " |")
     return lines
 
