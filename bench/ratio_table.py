@@ -103,8 +103,8 @@ def carving(results, notes):
             runs[parts[1]] = entry
     if not runs:
         return []
-    lines = ["| peer | ops run | first invalid op | threw at op | first problem |",
-             "|---|---|---|---|---|"]
+    lines = ["| peer | ops run | first invalid op | same, repeated vertices merged | threw at op "
+             "| first problem |", "|---|---|---|---|---|---|"]
     blocks = {}
     block_size = None
     ops_run = 0
@@ -112,14 +112,16 @@ def carving(results, notes):
         entry = runs.get(peer)
         why = problem(entry)
         if why and "failed" in (entry or {}):
-            lines.append(f"| {peer} | {why} | | | |")
+            lines.append(f"| {peer} | {why} | | | | |")
             continue
         if why:
             continue
         invalid = int(entry["first_invalid_op"])
         threw = int(entry["threw_at_op"])
+        lenient = int(entry.get("first_invalid_op_lenient", -2))
+        lenient_cell = "" if lenient == -2 else ("none" if lenient < 0 else f"{lenient:,}")
         lines.append(f"| {peer} | {int(entry['ops_done']):,} | "
-                     f"{'none' if invalid < 0 else f'{invalid:,}'} | "
+                     f"{'none' if invalid < 0 else f'{invalid:,}'} | {lenient_cell} | "
                      f"{'' if threw < 0 else f'{threw:,}'} | {entry.get('label', '')} |")
         if peer == "edgeland" and (invalid >= 0 or threw >= 0):
             notes.append(f"edgeland carving: {entry.get('label', '')}")

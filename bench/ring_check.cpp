@@ -108,6 +108,19 @@ RingCheck pairwise(const std::vector<Ring>& all) {
 
 }  // namespace
 
+PeerRings without_repeated_vertices(PeerRings rings) {
+  auto clean = [](std::vector<Ring>& list) {
+    for (Ring& ring : list) {
+      ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
+      while (ring.size() > 1 && ring.front() == ring.back()) ring.pop_back();
+    }
+    std::erase_if(list, [](const Ring& ring) { return ring.size() < 3; });
+  };
+  clean(rings.outers);
+  clean(rings.holes);
+  return rings;
+}
+
 RingCheck check_rings(const PeerRings& rings) {
   if (rings.holes.empty()) {
     const ValidationReport report = validate(rings.outers, 1);

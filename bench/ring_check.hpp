@@ -25,4 +25,9 @@ struct RingCheck {
 
 RingCheck check_rings(const PeerRings& rings);
 
+// The rings with repeated consecutive vertices merged (first and last included) and rings
+// left with fewer than 3 vertices dropped: the lenient variant of the carving check, which
+// separates vertices that merely round onto one integer point from real crossings.
+PeerRings without_repeated_vertices(PeerRings rings);
+
 }  // namespace edgeland::bench
