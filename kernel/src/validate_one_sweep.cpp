@@ -1,6 +1,8 @@
 // The fast acceptance path of validate() (validate_checks.hpp): the local rules of every ring
 // in O(n), then ONE sweep over the edges of all rings together that checks strict simplicity
-// and disjoint interiors at once, with the status in a flat sorted array.
+// and disjoint interiors at once. Events are vertices sorted by 64-bit keys
+// (validate_event_sort.hpp); the status is a sorted array of edge numbers, cut into blocks
+// when it grows wide (validate_status.hpp).
 //
 // It only ever concludes "valid". At the first sign of trouble it gives up, and validate()
 // runs the reporting checks, which say exactly what is wrong; so reports never depend on it.
@@ -33,6 +35,11 @@
 
 namespace edgeland::detail {
 namespace {
+
+// The status (validate_status.hpp) costs O(kBlock + width / kBlock) per insert: bounded while
+// the width stays below this limit. Past it the sweep gives up and the reporting sweep, a
+// balanced tree, decides; so the path is O(n log n) for any input.
+constexpr std::size_t kStatusLimit = std::size_t{1} << 18;
 
 struct Edge {
   Point64 left;   // lexicographically smaller end
@@ -215,7 +222,7 @@ class OneSweep {
       status_.set(i, block[0]);
       k = 1;
     } else if (out_starts) {  // both edges start at q: insert them bottom-up
-      if (ended != 0) return false;
+      if (ended != 0 || status_.size() >= kStatusLimit) return false;
       const int c = compare_directions(ein, eout);
       const bool in_first = c < 0 || (c == 0 && in < v);
       block[0] = in_first ? in : v;
@@ -297,6 +304,7 @@ class OneSweep {
       }
       through_[at] = s;
     }
+    if (k > j - i && status_.size() + (k - (j - i)) > kStatusLimit) return false;
     status_.replace(i, j - i, through_.data(), k);
     return neighbourhood_fine(i, through_.data(), k);
   }
