@@ -178,6 +178,10 @@ TEST(ClipClosureChain, ContinuousCarvingStaysValidAndTracksTheExactChain) {
     world = next;
     world_exact = next_exact;
     max_vertices = std::max(max_vertices, vertex_count(world));
+    if (k % 500 == 0)  // progress of long runs (EDGELAND_CHAIN_STEPS in the thousands)
+      std::cout << "[chain] step " << k << ": " << world.size() << " polygons / "
+                << vertex_count(world) << " vertices, drift "
+                << abs(Rational(area(world) - chain.area())).convert_to<double>() << std::endl;
   }
   const Rational final_sym = world_exact.apply(ClipOp::kXor, chain).area();
   EXPECT_LE(final_sym, measured) << "triangle inequality of the exact reference itself";

@@ -157,7 +157,26 @@ BigInt ExactRegion::perimeter_ceil() const {
   return sum;
 }
 
+// By the parity of boundary crossings of the ray from p towards +x (half-open in y), with
+// exact orientation tests, rather than by Polygon_set_2::oriented_side: for a result whose
+// island lies in a hole of another part (A minus B where the members of A enclose a hole
+// holding another member), CGAL 5.5's point location answered "outside" for points of the
+// island, while the boundary curves (and so areas and distances) were right.
 ExactRegion::Location ExactRegion::locate(const QPoint& p) const {
+  if (boundary_within(p, 0)) return Location::kOnBoundary;
+  const CPoint cp = cpoint(p);
+  bool inside = false;
+  for (const CSegment& s : impl_->boundary) {
+    const CPoint &a = s.source(), &b = s.target();
+    const bool a_below = a.y() <= cp.y(), b_below = b.y() <= cp.y();
+    if (a_below == b_below) continue;
+    const CGAL::Orientation o = CGAL::orientation(a, b, cp);
+    if ((a_below && o == CGAL::LEFT_TURN) || (!a_below && o == CGAL::RIGHT_TURN)) inside = !inside;
+  }
+  return inside ? Location::kInside : Location::kOutside;
+}
+
+ExactRegion::Location ExactRegion::locate_by_cgal(const QPoint& p) const {
   switch (impl_->set.oriented_side(cpoint(p))) {
     case CGAL::ON_POSITIVE_SIDE: return Location::kInside;
     case CGAL::ON_NEGATIVE_SIDE: return Location::kOutside;

@@ -54,7 +54,10 @@ class ExactRegion {
   std::size_t boundary_edges() const;
 
   enum class Location { kInside, kOnBoundary, kOutside };
+  // By the parity of crossings with the boundary curves (exact). O(boundary edges).
   Location locate(const QPoint& p) const;
+  // CGAL's own Polygon_set_2::oriented_side, kept to document its disagreement (see .cpp).
+  Location locate_by_cgal(const QPoint& p) const;
   // Whether the boundary has a point q with |p - q|^2 <= squared_radius (exact).
   bool boundary_within(const QPoint& p, const Rational& squared_radius) const;
 
