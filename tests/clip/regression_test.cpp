@@ -51,5 +51,37 @@ TEST(ClipLocalityRegression, HotPixelCascadeAlongAOneUnitComb) {
             "");
 }
 
+// ClipLocality (an oracle case, kept so that it stays right): B's far edge x = -811271609 is
+// shared, over part of its length, in reverse by B's other member. There both sides are in B,
+// so A - B has an edge only along the rest: the edge is "kept" piece by piece, cut at the
+// vertex (-811271609 -1574821345) of the other member.
+TEST(ClipLocalityRegression, EdgePartlySharedWithAnotherMemberIsKeptPieceByPiece) {
+  EXPECT_EQ(locality_failure(
+                ClipOp::kDifference,
+                "MULTIPOLYGON (((-1383933911 -1383933911, -2147483647 -2147483647, -811271609 "
+                "-2147483647, -1383933911 -1383933911)), ((-1383933911 -1383933911, -811271609 "
+                "-2147483647, -715827892 -1479377628, -1383933911 -1383933911)))",
+                "MULTIPOLYGON (((-811271609 -1383933911, -1193046477 -1670265062, -811271609 "
+                "-1574821345, -811271609 -1383933911)), ((-811271609 -1670265062, -715827892 "
+                "-1670265062, -811271609 -1479377628, -811271609 -1670265062)))"),
+            "");
+}
+
+// ClipLocality (an oracle case): another member of A touches A's far edge x = -1654618561 at
+// its vertex (-1654618561 -1725027859); in A xor B the two halves bound different output
+// polygons and meet there.
+TEST(ClipLocalityRegression, EdgeTouchedByAnotherMembersVertexMaySplitThere) {
+  EXPECT_EQ(locality_failure(
+                ClipOp::kXor,
+                "MULTIPOLYGON (((-1830641806 -1584209263, -1619413912 -1584209263, -1619413912 "
+                "-1372981369, -1830641806 -1584209263)), ((-1725027859 -1689823210, -1689823210 "
+                "-1760232508, -1654618561 -1725027859, -1689823210 -1654618561, -1725027859 "
+                "-1689823210)), ((-1654618561 -1760232508, -1619413912 -1830641806, -1654618561 "
+                "-1689823210, -1654618561 -1760232508)))",
+                "MULTIPOLYGON (((-2147483647 -2147483647, -2006665051 -2147483647, -35204707 -58, "
+                "-2147483647 -2077074349, -2147483647 -2147483647)))"),
+            "");
+}
+
 }  // namespace
 }  // namespace edgeland::test

@@ -18,7 +18,10 @@
 //     so the tests use this reading on inputs without sub-pixel features.
 //
 // "In the output unchanged" is checked on the canonical output, which removes collinear
-// vertices: e must lie entirely on ONE output edge (collinear, e within it). Its endpoints are
+// vertices, piece by piece: e is cut at the vertices of its own set that lie on it (where
+// another member starts or stops sharing it, or touches it), since the owners of its sides -
+// and so whether it bounds the output - can change there; each piece must lie entirely on ONE
+// output edge (collinear, the piece within it) or be overlapped by none. Its endpoints are
 // not required to stay output vertices one by one: where the exact boundary turns at an
 // endpoint, it turns into the ring's next edge, which is then either far too (and checked
 // the same way: a missing turn leaves it uncovered) or near (and may be rerouted by snap
@@ -87,6 +90,40 @@ inline bool far_from(const Segment& e, const PolygonSet& other) {
 // is kept whole or removed whole as the operation demands; otherwise the first violation.
 enum class Locality { kLiteral, kOperation };
 
+// One piece of a far input edge of member `pi` of `input`, with constant owners along it.
+inline std::string check_piece(ClipOp op, const Segment& e, std::size_t pi,
+                               const PolygonSet& input, const PolygonSet& other,
+                               bool input_is_subject, const std::vector<Segment>& out_edges,
+                               Locality reading) {
+  using namespace locality_detail;
+  const SamplePoint mid{e.a.x + e.b.x, e.a.y + e.b.y, 2};
+  long long right = -1, owner_other = -1;
+  for (std::size_t j = 0; j < input.size(); ++j)
+    if (j != pi && locate(PolygonSet{input[j]}, mid) == Where::kOnBoundary)
+      right = static_cast<long long>(j);
+  for (std::size_t j = 0; j < other.size(); ++j)
+    if (locate(PolygonSet{other[j]}, mid) == Where::kInside) owner_other = static_cast<long long>(j);
+  const long long me = static_cast<long long>(pi);
+  const long long left_label = input_is_subject ? label(op, me, owner_other)
+                                                : label(op, owner_other, me);
+  const long long right_label = input_is_subject ? label(op, right, owner_other)
+                                                 : label(op, owner_other, right);
+  const bool expected = left_label != right_label;
+  bool touched = false, kept = false;
+  for (const Segment& f : out_edges) {
+    if (!overlaps(e, f)) continue;
+    touched = true;
+    if (on_closed_segment(e.a, f.a, f.b) && on_closed_segment(e.b, f.a, f.b)) kept = true;
+  }
+  const std::string where = "(" + std::to_string(e.a.x) + ' ' + std::to_string(e.a.y) + ", " +
+                            std::to_string(e.b.x) + ' ' + std::to_string(e.b.y) + ")";
+  if (touched && !kept) return "far edge " + where + " is only partly in the output";
+  if (reading == Locality::kLiteral) return {};
+  if (!expected && touched) return "far edge " + where + " should be gone but is in the output";
+  if (expected && !touched) return "far edge " + where + " should be kept but is missing";
+  return {};
+}
+
 inline std::string check_locality(ClipOp op, const PolygonSet& input, const PolygonSet& other,
                                   bool input_is_subject, const PolygonSet& out,
                                   Locality reading = Locality::kOperation) {
@@ -94,37 +131,34 @@ inline std::string check_locality(ClipOp op, const PolygonSet& input, const Poly
   std::vector<Segment> out_edges;
   for (const Polygon& p : out)
     for (std::size_t i = 0; i < p.size(); ++i) out_edges.push_back(ring_edge(p, i));
+  std::vector<Point64> input_vertices;
+  for (const Polygon& p : input) input_vertices.insert(input_vertices.end(), p.begin(), p.end());
   for (std::size_t pi = 0; pi < input.size(); ++pi) {
     const Polygon& p = input[pi];
     for (std::size_t i = 0; i < p.size(); ++i) {
       const Segment e = ring_edge(p, i);
       if (!far_from(e, other)) continue;
-      const SamplePoint mid{e.a.x + e.b.x, e.a.y + e.b.y, 2};
-      long long right = -1, owner_other = -1;
-      for (std::size_t j = 0; j < input.size(); ++j)
-        if (j != pi && locate(PolygonSet{input[j]}, mid) == Where::kOnBoundary)
-          right = static_cast<long long>(j);
-      for (std::size_t j = 0; j < other.size(); ++j)
-        if (locate(PolygonSet{other[j]}, mid) == Where::kInside)
-          owner_other = static_cast<long long>(j);
-      const long long left_label = input_is_subject ? label(op, pi, owner_other)
-                                                    : label(op, owner_other, pi);
-      const long long right_label = input_is_subject ? label(op, right, owner_other)
-                                                     : label(op, owner_other, right);
-      const bool expected = left_label != right_label;
-
-      bool touched = false, kept = false;
-      for (const Segment& f : out_edges) {
-        if (!overlaps(e, f)) continue;
-        touched = true;
-        if (on_closed_segment(e.a, f.a, f.b) && on_closed_segment(e.b, f.a, f.b)) kept = true;
+      // Pieces of e between the vertices of its own set that lie on it: along each piece the
+      // owners on both sides are constant (another member may share only part of e, or touch
+      // it at a vertex), so each piece is kept or removed as a whole.
+      std::vector<Point64> cuts{e.a, e.b};
+      for (const Point64& v : input_vertices)
+        if (on_closed_segment(v, e.a, e.b)) cuts.push_back(v);
+      auto along = [&](Point64 v) {
+        return Int128(v.x - e.a.x) * (e.b.x - e.a.x) + Int128(v.y - e.a.y) * (e.b.y - e.a.y);
+      };
+      std::sort(cuts.begin(), cuts.end(),
+                [&](Point64 u, Point64 v) { return along(u) < along(v); });
+      cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
+      for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
+        const Segment piece{cuts[k], cuts[k + 1]};
+        if (std::string f = check_piece(op, piece, pi, input, other, input_is_subject, out_edges,
+                                        reading);
+            !f.empty())
+          return f + " (a piece of the input edge (" + std::to_string(e.a.x) + ' ' +
+                 std::to_string(e.a.y) + ", " + std::to_string(e.b.x) + ' ' +
+                 std::to_string(e.b.y) + "))";
       }
-      const std::string where = "(" + std::to_string(e.a.x) + ' ' + std::to_string(e.a.y) +
-                                ", " + std::to_string(e.b.x) + ' ' + std::to_string(e.b.y) + ")";
-      if (touched && !kept) return "far edge " + where + " is only partly in the output";
-      if (reading == Locality::kLiteral) continue;
-      if (!expected && touched) return "far edge " + where + " should be gone but is in the output";
-      if (expected && !touched) return "far edge " + where + " should be kept but is missing";
     }
   }
   return {};
