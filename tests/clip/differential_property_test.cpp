@@ -43,8 +43,9 @@ RC_GTEST_PROP(ClipDifferential, ClipToBoxMeetsTheAccuracyContract, ()) {
   auto at = [](std::int64_t lo, std::int64_t len, int k) {
     return lo + static_cast<std::int64_t>(static_cast<Int128>(len) * k / 8);
   };
-  const int x0 = *rc::gen::inRange(-1, 8), y0 = *rc::gen::inRange(-1, 8);
-  const int x1 = *rc::gen::inRange(x0 + 1, 10), y1 = *rc::gen::inRange(y0 + 1, 10);
+  const int x0 = static_cast<int>(*gen::coord(-1, 7)), y0 = static_cast<int>(*gen::coord(-1, 7));
+  const int x1 = static_cast<int>(*gen::coord(x0 + 1, 9));
+  const int y1 = static_cast<int>(*gen::coord(y0 + 1, 9));
   Box64 cell{{at(box->min.x, w, x0), at(box->min.y, h, y0)},
              {at(box->min.x, w, x1), at(box->min.y, h, y1)}};
   cell.min = {std::max(cell.min.x, -kCoordBound), std::max(cell.min.y, -kCoordBound)};

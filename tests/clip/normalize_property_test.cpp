@@ -19,10 +19,10 @@ rc::Gen<Ring> messy_ring(Point64 c, std::int64_t r) {
   return rc::gen::exec([=] {
     const Point64 lo{c.x - r, c.y - r}, hi{c.x + r, c.y + r};
     Ring ring = *rc::gen::container<Ring>(*rc::gen::inRange(1, 9), gen::point_in(lo, hi));
-    const int flavour = *rc::gen::inRange(0, 8);
+    const int flavour = static_cast<int>(*gen::coord(0, 7));
     if (flavour == 0 && !ring.empty()) ring.insert(ring.begin(), ring.front());  // repeat
     if (flavour == 1 && ring.size() >= 2) {  // spike out and back
-      const std::size_t i = *rc::gen::inRange<std::size_t>(0, ring.size());
+      const std::size_t i = static_cast<std::size_t>(*gen::coord(0, std::int64_t(ring.size()) - 1));
       ring.insert(ring.begin() + static_cast<std::ptrdiff_t>(i) + 1,
                   {*gen::point_in(lo, hi), ring[i]});
     }

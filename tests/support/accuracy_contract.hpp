@@ -11,8 +11,9 @@
 //      the internal edges between members, e.g. A1 and B1 - A in A union B. Their vertices
 //      are exact and far from the boundary of R, but on the boundary of a piece;
 //   4. every sample point farther than 1.5 from the boundary of R (exact squared distance
-//      > 9/4) is inside S iff it is inside R; when nothing was snapped, every sample point is
-//      in the closure of S iff it is in the closure of R;
+//      > 9/4) is in S iff it is inside R ("in S": in the closure of the union of the output
+//      polygons, so that a point on an edge shared by two output pieces counts); when nothing
+//      was snapped, every sample point is in the closure of S iff it is in the closure of R;
 //   5. (derived from 4) S xor R lies within 1.5 of the boundary of R, so its area is at most
 //      the area of that band: 3 perimeter(R) + (9/4) pi per boundary curve, pi < 22/7.
 // Sample points: every integer and half-integer point of the box around inputs and output

@@ -118,7 +118,7 @@ inline rc::Gen<PolygonSet> cells(Point64 origin, std::int64_t size, int k) {
     std::vector<std::pair<int, int>> chosen;
     for (int i = 0; i < k; ++i)
       for (int j = 0; j < k; ++j)
-        if (*rc::gen::inRange(0, 3) != 0) chosen.push_back({i, j});
+        if (*coord(0, 2) != 0) chosen.push_back({i, j});
     return grid_cells(origin, size, chosen);
   });
 }
@@ -193,7 +193,7 @@ inline rc::Gen<OperandPair> edge_triangle_pair(Point64 c, std::int64_t r) {
     const PolygonSet a = *polygon_set(c, r);
     if (a.empty()) return pair_of("edge-triangle", a, a);
     const Polygon& p = *rc::gen::elementOf(a);
-    const std::size_t i = *rc::gen::inRange<std::size_t>(0, p.size());
+    const std::size_t i = static_cast<std::size_t>(*coord(0, std::int64_t(p.size()) - 1));
     const Point64 u = p[i], v = p[(i + 1) % p.size()];
     const std::int64_t s = std::max<std::int64_t>(2, r / 2);
     const Point64 apex = *point_in({u.x - s, u.y - s}, {u.x + s, u.y + s});
@@ -211,7 +211,7 @@ inline rc::Gen<OperandPair> vertex_on_edge_pair(Point64 c, std::int64_t r) {
     const PolygonSet a = *polygon_set(c, r);
     if (a.empty()) return pair_of("vertex-on-edge", a, a);
     const Polygon& p = *rc::gen::elementOf(a);
-    const std::size_t i = *rc::gen::inRange<std::size_t>(0, p.size());
+    const std::size_t i = static_cast<std::size_t>(*coord(0, std::int64_t(p.size()) - 1));
     const Point64 u = p[i], v = p[(i + 1) % p.size()];
     const std::int64_t g = std::gcd(std::abs(v.x - u.x), std::abs(v.y - u.y));
     const std::int64_t k = g > 1 ? *coord(1, g - 1) : 0;
