@@ -157,6 +157,7 @@ ContractReport check_contract(const ExactCase& exact, const ClipResult& out,
   // 3. Vertices within one unit of the boundary of the exact pieces.
   for (const Polygon& poly : s)
     for (const Point64& v : poly) {
+      if (options.skip_vertex && options.skip_vertex(v)) continue;
       if (r.boundary_within(to_q(v), 1) || exact.near_piece_boundary(v)) continue;
       return fail("output vertex (" + std::to_string(v.x) + ' ' + std::to_string(v.y) +
                   ") is farther than 1 from the exact boundary");

@@ -165,8 +165,14 @@ BigInt ExactRegion::perimeter_ceil() const {
 ExactRegion::Location ExactRegion::locate(const QPoint& p) const {
   if (boundary_within(p, 0)) return Location::kOnBoundary;
   const CPoint cp = cpoint(p);
+  const double px = p.x.convert_to<double>(), py = p.y.convert_to<double>();
   bool inside = false;
-  for (const CSegment& s : impl_->boundary) {
+  for (std::size_t i = 0; i < impl_->boundary.size(); ++i) {
+    // Prefilter on the conservative boxes (one unit of margin for p's rounding to double):
+    // a segment entirely above, below or left of p cannot cross the ray.
+    const CGAL::Bbox_2& box = impl_->boxes[i];
+    if (box.ymin() > py + 1 || box.ymax() < py - 1 || box.xmax() < px - 1) continue;
+    const CSegment& s = impl_->boundary[i];
     const CPoint &a = s.source(), &b = s.target();
     const bool a_below = a.y() <= cp.y(), b_below = b.y() <= cp.y();
     if (a_below == b_below) continue;
