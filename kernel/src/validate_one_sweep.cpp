@@ -1,6 +1,7 @@
 // The fast acceptance path of validate() (validate_checks.hpp): the local rules of every ring
-// in O(n), then ONE sweep over the edges of all rings together that checks strict simplicity
-// and disjoint interiors at once. Events are vertices sorted by 64-bit keys
+// in O(n) and the sweep over monotone runs (validate_monotone_runs.hpp), which settle most
+// smooth inputs; then, for what they leave undecided, ONE sweep over the edges of all rings
+// together that checks strict simplicity and disjoint interiors at once. Events are vertices sorted by 64-bit keys
 // (validate_event_sort.hpp); the status is a sorted array of edge numbers, cut into blocks
 // when it grows wide (validate_status.hpp).
 //
@@ -31,6 +32,7 @@
 #include "validate_checks.hpp"
 #include "validate_event_sort.hpp"
 #include "validate_exact.hpp"
+#include "validate_monotone_runs.hpp"
 #include "validate_status.hpp"
 
 namespace edgeland::detail {
@@ -54,33 +56,6 @@ struct RingRange {
 };
 
 using Event = KeyedVertex;
-
-// Vertex count, range, repeated vertices, spikes and positive area of one ring, in O(n),
-// without reporting: whether the ring passes every rule that needs no sweep.
-bool local_rules_hold(const Ring& ring) {
-  const std::size_t n = ring.size();
-  if (n < 3) return false;
-  for (const Point64& p : ring) {
-    if (!in_range(p)) return false;
-  }
-  // Twice the signed area by the shoelace formula: each term x_i y_j - x_j y_i has two
-  // products below 2^62, so it fits int64; their sum fits Int128 for any ring below 2^64.
-  Int128 twice_area = 0;
-  Point64 prev = ring[n - 1];
-  for (std::size_t i = 0; i < n; ++i) {
-    const Point64 at = ring[i], next = ring[i + 1 == n ? 0 : i + 1];
-    if (at == next) return false;
-    const std::int64_t ux = coord_diff(prev.x, at.x), uy = coord_diff(prev.y, at.y);
-    const std::int64_t vx = coord_diff(next.x, at.x), vy = coord_diff(next.y, at.y);
-    // A spike: both neighbours on one ray from the vertex.
-    if (cross_sign(ux, uy, vx, vy) == 0 && Int128(ux) * vx + Int128(uy) * vy > 0) return false;
-    const std::int64_t term = arith::sub<std::int64_t>(arith::mul<std::int64_t>(at.x, next.y),
-                                                       arith::mul<std::int64_t>(next.x, at.y));
-    twice_area = arith::add<Int128>(twice_area, term);
-    prev = at;
-  }
-  return twice_area > 0;
-}
 
 bool is_vertical(const Edge& e) noexcept { return e.left.x == e.right.x; }
 
@@ -124,8 +99,9 @@ Contact contact(const Edge& a, const Edge& b) noexcept {
 
 class OneSweep {
  public:
-  OneSweep(std::span<const Polygon> polygons, std::span<const std::size_t> members)
-      : polygons_(polygons), members_(members) {}
+  OneSweep(std::span<const Polygon> polygons, std::span<const std::size_t> members,
+           bool local_rules_known)
+      : polygons_(polygons), members_(members), local_rules_known_(local_rules_known) {}
 
   bool run() {
     if (!build()) return false;
@@ -140,13 +116,13 @@ class OneSweep {
   }
 
  private:
-  // Every ring passes its local rules; flattens them into edges and events.
+  // Flattens the rings into edges and events once each passes its local rules (unless
+  // already known to).
   bool build() {
     std::size_t total = 0;
     for (std::size_t r = 0; r < ring_count(); ++r) {
-      const Polygon& p = ring(r);
-      if (!local_rules_hold(p)) return false;
-      total += p.size();
+      if (!local_rules_known_ && !local_rules_hold(ring(r))) return false;
+      total += ring(r).size();
     }
     if (total >= UINT32_MAX || ring_count() >= UINT32_MAX) return false;
     multi_ = ring_count() >= 2;
@@ -389,6 +365,7 @@ class OneSweep {
 
   std::span<const Polygon> polygons_;
   std::span<const std::size_t> members_;
+  bool local_rules_known_;  // every ring passes local_rules_hold (the run sweep said so)
   bool multi_ = false;
   std::vector<Edge> edges_;  // edge v runs from vertex v to the next vertex of its ring
   std::vector<RingRange> rings_;
@@ -402,10 +379,21 @@ class OneSweep {
   std::uint32_t stamp_ = 0;
 };
 
-// The one place the sweep is built and run.
+// The one place the sweeps are run: the run sweep settles smooth inputs from n / 16 sorted
+// runs; what it leaves undecided (touching rings, spiky or tiny rings) gets the vertex sweep.
 bool accepted_by_one_sweep_of(std::span<const Polygon> polygons,
                               std::span<const std::size_t> members) {
-  return OneSweep(polygons, members).run();
+  switch (sweep_monotone_runs(polygons, members)) {
+    case RunVerdict::kValid:
+      return true;
+    case RunVerdict::kInvalid:
+      return false;
+    case RunVerdict::kUndecided:
+      return OneSweep(polygons, members, true).run();
+    case RunVerdict::kNotTried:
+      break;
+  }
+  return OneSweep(polygons, members, false).run();
 }
 
 }  // namespace
