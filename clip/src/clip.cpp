@@ -73,13 +73,15 @@ ClipResult run(const Pipeline& p, std::vector<Box64>* moved_boxes = nullptr) {
   std::vector<Segment> segs(p.edges.size());
   std::vector<std::uint8_t> channel(p.edges.size());
   std::vector<std::int32_t> polygon(p.edges.size());
+  std::vector<std::uint32_t> next(p.edges.size());
   for (std::size_t i = 0; i < p.edges.size(); ++i) {
     segs[i] = p.edges[i].seg;
     channel[i] = p.edges[i].channel;
     polygon[i] = p.edges[i].polygon;
+    next[i] = p.edges[i].next;
   }
   detail::SnapStats snap;
-  const auto fragments = detail::snap_round(segs, snap);
+  const auto fragments = detail::snap_round(segs, next, snap);
   const detail::PlaneGraph g = detail::build_plane_graph(fragments, channel, polygon);
   const auto left = detail::label_sides(g, p.mode);
   for (auto& region : detail::assemble(g, left, p.label_of)) {

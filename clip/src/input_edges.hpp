@@ -13,9 +13,11 @@ struct TaggedSegment {
   Segment seg;
   std::uint8_t channel = 0;  // 0 = subject / normalize rings, 1 = clip operand
   std::int32_t polygon = 0;  // index within its operand
+  std::uint32_t next = 0;    // index (in the same list) of the edge that follows along the ring
 };
 
-// Appends the edges of every ring; zero-length edges (repeated points) are skipped.
+// Appends the edges of every ring, ring after ring, each ring's edges in order; zero-length
+// edges (repeated points) are skipped.
 void append_ring_edges(const std::vector<Ring>& rings, std::uint8_t channel, bool tag_polygons,
                        std::vector<TaggedSegment>& out);
 

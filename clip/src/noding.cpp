@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "box_sweep.hpp"
+#include "segment_index.hpp"
 #include "edgeland/kernel/bbox.hpp"
 #include "edgeland/kernel/predicates.hpp"
 
@@ -15,24 +15,24 @@ void split_if_interior(Contacts& c, std::uint32_t seg, const Segment& s, Point64
 
 }  // namespace
 
-void classify_pair(const Segment& s, std::uint32_t i, const Segment& t, std::uint32_t j,
-                   Contacts& c) {
+Meeting classify_pair(const Segment& s, std::uint32_t i, const Segment& t, std::uint32_t j,
+                      Contacts& c) {
   // Ring neighbours share an endpoint: unless they are collinear that is their only contact.
   if (s.a == t.a || s.a == t.b || s.b == t.a || s.b == t.b) {
     const Point64 t_other = (t.a == s.a || t.a == s.b) ? t.b : t.a;
-    if (orientation(s.a, s.b, t_other) != Orientation::kCollinear) return;
+    if (orientation(s.a, s.b, t_other) != Orientation::kCollinear) return Meeting::kSharedEndpoint;
   }
   const SegmentIntersection r = intersect(s, t);
     switch (r.relation) {
       case SegmentRelation::kDisjoint:
-        return;
+        return Meeting::kNone;
       case SegmentRelation::kTouching: {
         const Point64 p = round_to_grid(r.point);  // exact: touching points are endpoints
-        if ((p == s.a || p == s.b) && (p == t.a || p == t.b)) return;  // shared vertex
+        if ((p == s.a || p == s.b) && (p == t.a || p == t.b)) return Meeting::kSharedEndpoint;
         ++c.intersections;
         split_if_interior(c, i, s, p);
         split_if_interior(c, j, t, p);
-        return;
+        return Meeting::kOther;
       }
       case SegmentRelation::kOverlapping:
         ++c.intersections;
@@ -40,7 +40,7 @@ void classify_pair(const Segment& s, std::uint32_t i, const Segment& t, std::uin
           split_if_interior(c, i, s, p);
           split_if_interior(c, j, t, p);
         }
-        return;
+        return Meeting::kOther;
       case SegmentRelation::kCrossing:
         ++c.intersections;
         if (r.point.is_integer()) {
@@ -50,8 +50,9 @@ void classify_pair(const Segment& s, std::uint32_t i, const Segment& t, std::uin
         } else {
           c.hot.push_back(round_to_grid(r.point));
         }
-        return;
+        return Meeting::kOther;
     }
+  return Meeting::kOther;
 }
 
 Box64 segment_box(const Segment& s) {
@@ -60,10 +61,14 @@ Box64 segment_box(const Segment& s) {
   return b;
 }
 
-Contacts find_contacts(const std::vector<Segment>& segments, const std::vector<SweepBox>& sweep) {
+Contacts find_contacts(const std::vector<Segment>& segments, const std::vector<std::uint32_t>& next,
+                       const SegmentIndex& index, std::vector<bool>& touched) {
   Contacts c;
-  for_each_overlapping_pair(sweep, [&](std::uint32_t i, std::uint32_t j) {
-    classify_pair(segments[i], i, segments[j], j, c);
+  index.for_each_overlapping_pair([&](std::uint32_t i, std::uint32_t j) {
+    const Meeting m = classify_pair(segments[i], i, segments[j], j, c);
+    if (m == Meeting::kNone) return;
+    if (m == Meeting::kSharedEndpoint && (next[i] == j || next[j] == i)) return;
+    touched[i] = touched[j] = true;
   });
   return c;
 }

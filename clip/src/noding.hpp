@@ -19,15 +19,24 @@ struct Contacts {
   std::size_t intersections = 0;
 };
 
-struct SweepBox;
+class SegmentIndex;
 
-// Finds all contacts among `segments`, given their boxes sorted_for_sweep (box_sweep.hpp).
-// O(n log n + box-overlapping pairs).
-Contacts find_contacts(const std::vector<Segment>& segments, const std::vector<SweepBox>& sweep);
+// Finds all contacts among `segments` (candidates from `index`). touched[s] becomes true for
+// every segment that meets another one anywhere except ring neighbours (next[s]) at their one
+// shared endpoint: an untouched segment shares no point with anything else.
+// O(r log r + box-overlapping pairs) for r runs of the index.
+Contacts find_contacts(const std::vector<Segment>& segments, const std::vector<std::uint32_t>& next,
+                       const SegmentIndex& index, std::vector<bool>& touched);
+
+enum class Meeting : std::uint8_t {
+  kNone,            // disjoint
+  kSharedEndpoint,  // only a common endpoint of both
+  kOther,           // anything else (recorded in the contacts)
+};
 
 // Exact classification of one pair, adding what it finds to `c`.
-void classify_pair(const Segment& s, std::uint32_t i, const Segment& t, std::uint32_t j,
-                   Contacts& c);
+Meeting classify_pair(const Segment& s, std::uint32_t i, const Segment& t, std::uint32_t j,
+                      Contacts& c);
 
 // Box of a segment.
 Box64 segment_box(const Segment& s);

@@ -11,6 +11,7 @@
 #include "edgeland/kernel/point_in_polygon.hpp"
 #include "edgeland/kernel/predicates.hpp"
 #include "noding.hpp"
+#include "segment_index.hpp"
 
 namespace edgeland::detail {
 namespace {
@@ -46,6 +47,17 @@ Ring route_of(const Segment& seg, std::vector<Point64> stops) {
   return r;
 }
 
+// Whether s meets the closed unit square centred at p. Separating axes of a square and a segment:
+// x, y and the segment's normal; along the normal the square reaches (|dx| + |dy|) / 2.
+bool meets_closed_pixel(const Segment& s, Point64 p) {
+  if (std::min(s.a.x, s.b.x) > p.x + 1 || std::max(s.a.x, s.b.x) < p.x - 1 ||
+      std::min(s.a.y, s.b.y) > p.y + 1 || std::max(s.a.y, s.b.y) < p.y - 1)
+    return false;
+  const Int128 dx = s.b.x - s.a.x, dy = s.b.y - s.a.y;
+  const Int128 det = dx * (p.y - s.a.y) - dy * (p.x - s.a.x);
+  return 2 * (det < 0 ? -det : det) <= (dx < 0 ? -dx : dx) + (dy < 0 ? -dy : dy);
+}
+
 // Grows the hot set until it is closed:
 //  * every segment meeting a hot pixel off its centre is moved (routed through the centre);
 //  * stable rule: a vertex becomes hot when the route of a moved segment would jump over it,
@@ -55,26 +67,30 @@ Ring route_of(const Segment& seg, std::vector<Point64> stops) {
 //    what keeps far edges unchanged (locality);
 //  * classic rule (fallback): every vertex pixel a moved segment meets becomes hot, as in
 //    Guibas-Marimont snap rounding, whose theorem guarantees no new crossing.
+// Vertices are the segments' endpoints and the exact split points. Either rule can only pin a
+// vertex whose closed pixel the segment meets: the route's corners are centres of pixels the
+// segment meets, so the region between them lies within half a unit (in x and y) of the segment.
 // Each round only looks at what is new.
-void close_hot_set(const std::vector<Segment>& segs, const std::vector<SweepBox>& seg_sweep,
-                   const std::vector<Point64>& vertices, const std::vector<SweepBox>& vertex_sweep,
+void close_hot_set(const std::vector<Segment>& segs, const SegmentIndex& index,
+                   const std::vector<Point64>& split_points,
                    const std::vector<std::vector<Point64>>& splits_of, bool classic,
                    PointSet& is_hot, Closure& c, std::vector<Point64> fresh) {
   std::vector<std::vector<Point64>> hot_stops(segs.size());
   for (const auto& [s, h] : c.meets) hot_stops[s].push_back(c.hot[h]);
+  std::vector<SweepBox> split_sweep;
+  if (!split_points.empty()) split_sweep = sorted_for_sweep(pixel_boxes(split_points));
   while (!fresh.empty()) {
     const std::uint32_t base = static_cast<std::uint32_t>(c.hot.size());
     c.hot.insert(c.hot.end(), fresh.begin(), fresh.end());
     std::vector<std::uint32_t> changed;
-    for_each_overlapping_pair(sorted_for_sweep(pixel_boxes(fresh)), seg_sweep,
-                              [&](std::uint32_t h, std::uint32_t s) {
-                                const Point64 centre = fresh[h];
-                                if (!segment_meets_pixel(segs[s], centre)) return;
-                                c.meets.emplace_back(s, base + h);
-                                hot_stops[s].push_back(centre);
-                                if (!on_segment(centre, segs[s])) c.moved[s] = true;
-                                changed.push_back(s);
-                              });
+    index.query(pixel_boxes(fresh), [&](std::uint32_t h, std::uint32_t s) {
+      const Point64 centre = fresh[h];
+      if (!segment_meets_pixel(segs[s], centre)) return;
+      c.meets.emplace_back(s, base + h);
+      hot_stops[s].push_back(centre);
+      if (!on_segment(centre, segs[s])) c.moved[s] = true;
+      changed.push_back(s);
+    });
     fresh.clear();
     std::sort(changed.begin(), changed.end());
     changed.erase(std::unique(changed.begin(), changed.end()), changed.end());
@@ -86,24 +102,30 @@ void close_hot_set(const std::vector<Segment>& segs, const std::vector<SweepBox>
     std::vector<Ring> routes(changed.size());
     for (std::size_t k = 0; k < changed.size(); ++k) {
       const std::uint32_t s = changed[k];
-      boxes[k] = segment_box(segs[s]);
+      const Box64 b = index.box(s);
+      boxes[k] = {{b.min.x - 1, b.min.y - 1}, {b.max.x + 1, b.max.y + 1}};
       if (!classic) {
         std::vector<Point64> stops = hot_stops[s];
         stops.insert(stops.end(), splits_of[s].begin(), splits_of[s].end());
         routes[k] = route_of(segs[s], std::move(stops));
       }
     }
-    for_each_overlapping_pair(sorted_for_sweep(boxes), vertex_sweep,
-                              [&](std::uint32_t k, std::uint32_t v) {
-                                const Point64 p = vertices[v];
-                                if (is_hot.count(p)) return;
-                                const bool pin =
-                                    classic ? segment_meets_pixel(segs[changed[k]], p)
-                                            : locate(p, routes[k]) == PointLocation::kInside;
-                                if (!pin) return;
-                                is_hot.insert(p);
-                                fresh.push_back(p);
-                              });
+    auto consider = [&](std::uint32_t k, Point64 p) {
+      const Segment& seg = segs[changed[k]];
+      if (!meets_closed_pixel(seg, p) || is_hot.count(p)) return;
+      const bool pin = classic ? segment_meets_pixel(seg, p)
+                               : locate(p, routes[k]) == PointLocation::kInside;
+      if (!pin) return;
+      is_hot.insert(p);
+      fresh.push_back(p);
+    };
+    index.query(boxes, [&](std::uint32_t k, std::uint32_t t) {
+      consider(k, segs[t].a);
+      consider(k, segs[t].b);
+    });
+    if (!split_sweep.empty())
+      for_each_overlapping_pair(sorted_for_sweep(boxes), split_sweep,
+                                [&](std::uint32_t k, std::uint32_t v) { consider(k, split_points[v]); });
     std::sort(fresh.begin(), fresh.end());  // deterministic order, independent of hashing
   }
 }
@@ -138,7 +160,9 @@ std::vector<Fragment> route(const std::vector<Segment>& segs, const Closure& c,
 
 // Contacts between fragments of moved segments and all fragments, each pair once.
 Contacts recheck(const std::vector<Fragment>& frags, const std::vector<bool>& moved,
-                 std::size_t segment_count, const std::vector<SweepBox>& seg_sweep) {
+                 const std::vector<std::uint32_t>& next, const SegmentIndex& index,
+                 std::vector<bool>& touched) {
+  const std::size_t segment_count = next.size();
   std::vector<Box64> boxes;
   std::vector<std::uint32_t> which;
   std::vector<bool> is_moved(frags.size(), false);
@@ -160,50 +184,50 @@ Contacts recheck(const std::vector<Fragment>& frags, const std::vector<bool>& mo
     for (const Fragment& f : frags) ++first[f.parent + 1];
     for (std::size_t s = 0; s < segment_count; ++s) first[s + 1] += first[s];
     for (Box64& b : boxes) b = {{b.min.x - 2, b.min.y - 2}, {b.max.x + 2, b.max.y + 2}};
-    for_each_overlapping_pair(sorted_for_sweep(boxes), seg_sweep, [&](std::uint32_t k, std::uint32_t s) {
+    index.query(boxes, [&](std::uint32_t k, std::uint32_t s) {
       for (std::uint32_t g = first[s]; g < first[s + 1]; ++g) add(which[k], g);
     });
     std::sort(pairs.begin(), pairs.end());
     pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
   } else {
-    std::vector<Box64> all(frags.size());
-    for (std::size_t i = 0; i < frags.size(); ++i) all[i] = segment_box(frags[i].seg);
-    for_each_overlapping_pair(sorted_for_sweep(boxes), sorted_for_sweep(all),
-                              [&](std::uint32_t k, std::uint32_t g) { add(which[k], g); });
+    // Many moved fragments: index the fragments themselves; they follow their rings too.
+    const std::uint32_t n = static_cast<std::uint32_t>(frags.size());
+    std::vector<std::uint32_t> first_of(segment_count), fragment_next(n);
+    std::vector<Segment> pieces(n);
+    for (std::uint32_t i = n; i-- > 0;) first_of[frags[i].parent] = i;
+    for (std::uint32_t i = 0; i < n; ++i) {
+      pieces[i] = frags[i].seg;
+      fragment_next[i] = i + 1 < n && frags[i + 1].parent == frags[i].parent
+                             ? i + 1
+                             : first_of[next[frags[i].parent]];
+    }
+    SegmentIndex(pieces, fragment_next).for_each_overlapping_pair([&](std::uint32_t f, std::uint32_t g) {
+      if (is_moved[f] || is_moved[g]) pairs.emplace_back(std::min(f, g), std::max(f, g));
+    });
   }
   Contacts c;
-  for (const auto& [f, g] : pairs) classify_pair(frags[f].seg, f, frags[g].seg, g, c);
+  for (const auto& [f, g] : pairs)
+    if (classify_pair(frags[f].seg, f, frags[g].seg, g, c) != Meeting::kNone)
+      touched[frags[f].parent] = touched[frags[g].parent] = true;
   return c;
-}
-
-// Pixel boxes of points already in lexicographic (hence min-x) order.
-std::vector<SweepBox> sweep_of_sorted_points(const std::vector<Point64>& pts) {
-  std::vector<SweepBox> s(pts.size());
-  for (std::size_t i = 0; i < pts.size(); ++i)
-    s[i] = {pts[i].x - 1, pts[i].x + 1, pts[i].y - 1, pts[i].y + 1, static_cast<std::uint32_t>(i)};
-  return s;
 }
 
 }  // namespace
 
-std::vector<Fragment> snap_round(const std::vector<Segment>& segs, SnapStats& stats) {
-  std::vector<Box64> seg_boxes(segs.size());
-  for (std::size_t i = 0; i < segs.size(); ++i) seg_boxes[i] = segment_box(segs[i]);
-  const std::vector<SweepBox> seg_sweep = sorted_for_sweep(seg_boxes);
-  Contacts contacts = find_contacts(segs, seg_sweep);
+std::vector<Fragment> snap_round(const std::vector<Segment>& segs,
+                                 const std::vector<std::uint32_t>& next, SnapStats& stats) {
+  const SegmentIndex index(segs, next);
+  stats.touched.assign(segs.size(), false);
+  Contacts contacts = find_contacts(segs, next, index, stats.touched);
   stats.intersections = contacts.intersections;
   stats.moved_boxes.clear();
   // No crossing at a non-integer point: every contact is an exact split and nothing moves.
   if (contacts.hot.empty()) return route(segs, Closure{}, contacts.splits);
 
-  // Vertex pixels: input endpoints and exact split points.
-  std::vector<Point64> vertices;
-  vertices.reserve(2 * segs.size() + contacts.splits.size());
-  for (const Segment& s : segs) {
-    vertices.push_back(s.a);
-    vertices.push_back(s.b);
-  }
-  for (const auto& sp : contacts.splits) vertices.push_back(sp.second);
+  // Vertex pixels: the segments' endpoints (found through the index) and exact split points.
+  std::vector<Point64> split_points;
+  split_points.reserve(contacts.splits.size());
+  for (const auto& sp : contacts.splits) split_points.push_back(sp.second);
 
   PointSet is_hot;
   Closure closure;
@@ -234,20 +258,20 @@ std::vector<Fragment> snap_round(const std::vector<Segment>& segs, SnapStats& st
       is_hot.insert(fresh.begin(), fresh.end());
     }
     std::sort(fresh.begin(), fresh.end());
-    std::sort(vertices.begin(), vertices.end());
-    vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
-    close_hot_set(segs, seg_sweep, vertices, sweep_of_sorted_points(vertices), splits_of, classic,
-                  is_hot, closure, std::move(fresh));
+    std::sort(split_points.begin(), split_points.end());
+    split_points.erase(std::unique(split_points.begin(), split_points.end()), split_points.end());
+    close_hot_set(segs, index, split_points, splits_of, classic, is_hot, closure, std::move(fresh));
     fresh.clear();
+    for (const auto& m : closure.meets) stats.touched[m.first] = true;
     std::vector<Fragment> frags = route(segs, closure, contacts.splits);
     stats.rounds = round;
     stats.hot_pixels = closure.hot.size();
     stats.moved_boxes.clear();
-    for (std::size_t i = 0; i < segs.size(); ++i)
-      if (closure.moved[i]) stats.moved_boxes.push_back(seg_boxes[i]);
+    for (std::uint32_t i = 0; i < segs.size(); ++i)
+      if (closure.moved[i]) stats.moved_boxes.push_back(index.box(i));
 
     // Safety re-check: fragments of moved segments against everything, exactly.
-    Contacts again = recheck(frags, closure.moved, segs.size(), seg_sweep);
+    Contacts again = recheck(frags, closure.moved, next, index, stats.touched);
     if (again.hot.empty()) {
       if (again.splits.empty()) return frags;
       // Only exact integer splits remain (snapped fragments landing on vertices or overlapping
@@ -264,7 +288,7 @@ std::vector<Fragment> snap_round(const std::vector<Segment>& segs, SnapStats& st
     // run the closure again over the original segments.
     if (round >= kMaxRounds) throw std::logic_error("snap rounding did not converge");
     add_hot(again.hot);
-    for (const auto& sp : again.splits) vertices.push_back(sp.second);
+    for (const auto& sp : again.splits) split_points.push_back(sp.second);
   }
 }
 

@@ -22,10 +22,16 @@ struct SnapStats {
   std::size_t intersections = 0;
   std::size_t hot_pixels = 0;
   std::size_t rounds = 0;
+  // touched[s] is false only for input segments that yield themselves as their one fragment and
+  // share no point with any other fragment except their ring neighbours' at their common
+  // endpoints. The plane graph chains such segments (planar_graph.hpp).
+  std::vector<bool> touched;
 };
 
 // Fragments of every input segment, in input order; a segment that meets no hot pixel and has
-// no contact yields itself. Throws std::logic_error if the safety re-check does not converge.
-std::vector<Fragment> snap_round(const std::vector<Segment>& segments, SnapStats& stats);
+// no contact yields itself. next[s] is the segment following s along its ring.
+// Throws std::logic_error if the safety re-check does not converge.
+std::vector<Fragment> snap_round(const std::vector<Segment>& segments,
+                                 const std::vector<std::uint32_t>& next, SnapStats& stats);
 
 }  // namespace edgeland::detail

@@ -1,0 +1,94 @@
+#pragma once
+// Candidate search for noding and snap rounding: which segments' boxes overlap each other, or
+// overlap given query boxes.
+//
+// Consecutive segments of one ring that run monotonically in x and in y are grouped into runs of
+// at most kRunLength segments (Boost.Geometry calls them sections). A run's box is the box of its
+// two ends, so the sweep sorts runs, not segments: n / kRunLength items for a smooth ring. Two
+// segments of one run never have overlapping boxes unless they are consecutive (monotone:
+// box i ends where box i + 1 begins), and consecutive ones only share their common endpoint.
+// Between two runs whose boxes overlap, monotonicity lets a two-pointer walk visit exactly the
+// segment pairs whose x-ranges overlap. Spiky rings give runs of one or two segments and the
+// cost of a plain box sweep (box_sweep.hpp).
+#include <cstdint>
+#include <vector>
+
+#include "box_sweep.hpp"
+#include "edgeland/kernel/bbox.hpp"
+#include "edgeland/kernel/polygon.hpp"
+
+namespace edgeland::detail {
+
+class SegmentIndex {
+ public:
+  static constexpr std::uint32_t kRunLength = 16;
+
+  // next[s]: the segment that follows s along its ring (segments of a ring are consecutive).
+  SegmentIndex(const std::vector<Segment>& segments, const std::vector<std::uint32_t>& next);
+
+  // visit(i, j) once per unordered pair of distinct segments whose closed boxes overlap, except
+  // consecutive segments of one run (ring neighbours meeting only at their shared endpoint).
+  template <class F>
+  void for_each_overlapping_pair(F&& visit) const;
+
+  // visit(k, s) for every segment s whose closed box overlaps boxes[k].
+  template <class F>
+  void query(const std::vector<Box64>& boxes, F&& visit) const;
+
+  const Box64& box(std::uint32_t s) const { return boxes_[s]; }
+
+ private:
+  struct Run {
+    std::uint32_t first, last;  // segment ids, inclusive, consecutive along the ring
+    bool x_decreasing;          // walk last -> first to see x increase
+  };
+  // The k-th segment of run r in order of increasing x.
+  std::uint32_t at(const Run& r, std::uint32_t k) const {
+    return r.x_decreasing ? r.last - k : r.first + k;
+  }
+  static std::uint32_t size(const Run& r) { return r.last - r.first + 1; }
+  template <class F>
+  void pairs_between(const Run& r1, const Run& r2, F& visit) const;
+
+  std::vector<Box64> boxes_;
+  std::vector<Run> runs_;
+  std::vector<SweepBox> run_sweep_;  // run boxes, sorted_for_sweep
+};
+
+template <class F>
+void SegmentIndex::pairs_between(const Run& r1, const Run& r2, F& visit) const {
+  // Along a run in increasing-x order both ends of the segments' x-ranges are non-decreasing,
+  // so the segments of r2 overlapping one of r1 in x form a window that only moves forward.
+  const std::uint32_t n1 = size(r1), n2 = size(r2);
+  std::uint32_t from = 0;
+  for (std::uint32_t k1 = 0; k1 < n1; ++k1) {
+    const std::uint32_t s = at(r1, k1);
+    const Box64& bs = boxes_[s];
+    while (from < n2 && boxes_[at(r2, from)].max.x < bs.min.x) ++from;
+    for (std::uint32_t k2 = from; k2 < n2; ++k2) {
+      const std::uint32_t t = at(r2, k2);
+      const Box64& bt = boxes_[t];
+      if (bt.min.x > bs.max.x) break;
+      if (bt.min.y <= bs.max.y && bs.min.y <= bt.max.y) visit(s, t);
+    }
+  }
+}
+
+template <class F>
+void SegmentIndex::for_each_overlapping_pair(F&& visit) const {
+  detail::for_each_overlapping_pair(run_sweep_, [&](std::uint32_t a, std::uint32_t b) {
+    pairs_between(runs_[a], runs_[b], visit);
+  });
+}
+
+template <class F>
+void SegmentIndex::query(const std::vector<Box64>& boxes, F&& visit) const {
+  detail::for_each_overlapping_pair(sorted_for_sweep(boxes), run_sweep_,
+                                    [&](std::uint32_t k, std::uint32_t r) {
+                                      const Run& run = runs_[r];
+                                      for (std::uint32_t s = run.first; s <= run.last; ++s)
+                                        if (boxes_[s].overlaps(boxes[k])) visit(k, s);
+                                    });
+}
+
+}  // namespace edgeland::detail
