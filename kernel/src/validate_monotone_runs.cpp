@@ -42,8 +42,8 @@ bool box_inside(const Box& inner, const Box& outer) noexcept {
          outer.low.y <= inner.low.y && inner.high.y <= outer.high.y;
 }
 
-// Edges first .. first + count - 1 of one ring, monotone: x never moves against sx nor y
-// against sy (a sign of 0, a coordinate constant along the run, reads as +1).
+// Edges first .. first + count - 1 of one ring, monotone: x never moves against sx (+1 or -1)
+// nor y against sy.
 struct Run {
   Box box;  // of its two end vertices
   std::uint32_t ring;
@@ -82,59 +82,72 @@ Contact contact(Point64 a0, Point64 a1, Point64 b0, Point64 b1) noexcept {
   return {true, o1 != 0 && o2 != 0 && o3 != 0 && o4 != 0};
 }
 
+// Where a ring's runs start: a ring-local edge number per run, kept in a buffer of fixed
+// size. Writes past the end all go to its last slot, so the loop that cuts needs no branch;
+// `count` says how many runs were cut (more than fit when count >= size).
+struct RunStarts {
+  std::uint32_t* slot;
+  std::size_t size;  // >= 1
+  std::size_t count = 0;
+};
+
 // The local rules of one ring (>= 3 vertices, in range, no repeated vertex, no spike,
 // positive area) in one pass, which with kCut also cuts the ring into runs of at most `cap`
-// edges, appended to `runs` while it holds fewer than `most_runs` (so past that the runs are
-// incomplete, and the caller knows from the size). Returns whether the rules hold, and then
-// `view` holds the ring's box.
+// edges (recorded in `starts`). Returns whether the rules hold.
+//
+// A spike can only sit where a run is cut: the edge after it runs exactly against the edge
+// before it, so it turns back in x or in y. Inside a run the test is skipped. The loop keeps
+// little state (this pass is most of the cost on smooth input): no box, no previous vertex.
 template <bool kCut>
-bool scan_ring(const Ring& ring, std::uint32_t id, std::uint32_t cap, std::size_t most_runs,
-               std::vector<Run>& runs, RingView& view) {
+bool scan_ring(const Ring& ring, std::uint32_t cap, RunStarts& starts) {
   const std::size_t n = ring.size();
   if (n < 3 || n >= UINT32_MAX || !in_range(ring[n - 1])) return false;
+  const Point64* const v = ring.data();
   Int128 twice_area = 0;
-  Point64 prev = ring[n - 1];
-  Box box{prev, prev};
-  // The open run: edges first .. i - 1, from `start`, direction so far (sx, sy).
-  std::uint32_t first = 0, count = 0;
-  int sx = 0, sy = 0;
-  Point64 start = ring[0];
-  const auto close_run = [&](Point64 end) {
-    if (runs.size() >= most_runs) return;
-    runs.push_back({{{std::min(start.x, end.x), std::min(start.y, end.y)},
-                     {std::max(start.x, end.x), std::max(start.y, end.y)}},
-                    id, first, count, static_cast<std::int8_t>(sx), static_cast<std::int8_t>(sy)});
-  };
-  for (std::size_t i = 0; i < n; ++i) {
-    const Point64 at = ring[i], next = ring[i + 1 == n ? 0 : i + 1];
+  // The last nonzero sign of the edges' x and y steps so far, and the edges left until the
+  // next cut forced by the cap (cuts every `cap` edges, whatever other cuts fall between,
+  // so no run is longer; nothing in this loop waits on the previous cut).
+  int lx = 0, ly = 0;
+  std::uint32_t to_cap = 0;
+  // Kept in registers here (through `starts` every write would wait for the last).
+  std::uint32_t* const slot = starts.slot;
+  const std::size_t last_slot = starts.size - 1;
+  std::size_t cuts = starts.count;
+  // Edge i, from v[i] to `next`: whether the rules hold at v[i].
+  const auto edge = [&](std::size_t i, Point64 next) [[gnu::always_inline]] {
+    const Point64 at = v[i];
     if (!in_range(next) || at == next) return false;
-    const std::int64_t ux = coord_diff(prev.x, at.x), uy = coord_diff(prev.y, at.y);
     const std::int64_t vx = coord_diff(next.x, at.x), vy = coord_diff(next.y, at.y);
-    // A spike: both neighbours on one ray from the vertex.
-    if (cross_sign(ux, uy, vx, vy) == 0 && Int128(ux) * vx + Int128(uy) * vy > 0) return false;
+    bool check_spike = true;
+    if constexpr (kCut) {
+      // A run ends before an edge turning back against an earlier edge of the run: with
+      // lx, ly taken over the edges before the run too, a run's nonzero x steps all have
+      // one sign, and so do its y steps.
+      const int ex = (vx > 0) - (vx < 0), ey = (vy > 0) - (vy < 0);
+      const bool cut = (to_cap == 0) | (ex * lx < 0) | (ey * ly < 0);
+      slot[std::min(cuts, last_slot)] = static_cast<std::uint32_t>(i);
+      cuts += cut;
+      lx = ex != 0 ? ex : lx;
+      ly = ey != 0 ? ey : ly;
+      to_cap = to_cap == 0 ? cap - 1 : to_cap - 1;
+      check_spike = cut;
+    }
+    if (check_spike) {  // both neighbours on one ray from the vertex
+      const Point64 prev = v[i == 0 ? n - 1 : i - 1];
+      const std::int64_t ux = coord_diff(prev.x, at.x), uy = coord_diff(prev.y, at.y);
+      if (cross_sign(ux, uy, vx, vy) == 0 && Int128(ux) * vx + Int128(uy) * vy > 0) return false;
+    }
     // Shoelace: each term has two products below 2^62 (fits int64); the sum fits Int128.
     const std::int64_t term = arith::sub<std::int64_t>(arith::mul<std::int64_t>(at.x, next.y),
                                                        arith::mul<std::int64_t>(next.x, at.y));
     twice_area = arith::add<Int128>(twice_area, term);
-    box = {{std::min(box.low.x, at.x), std::min(box.low.y, at.y)},
-           {std::max(box.high.x, at.x), std::max(box.high.y, at.y)}};
-    if constexpr (kCut) {
-      const int ex = (vx > 0) - (vx < 0), ey = (vy > 0) - (vy < 0);
-      if (count == cap || ex * sx < 0 || ey * sy < 0) {  // edge i turns back: a new run
-        close_run(at);
-        first = static_cast<std::uint32_t>(i);
-        count = 0;
-        sx = sy = 0;
-        start = at;
-      }
-      if (sx == 0) sx = ex;
-      if (sy == 0) sy = ey;
-      ++count;
-    }
-    prev = at;
+    return true;
+  };
+  for (std::size_t i = 0; i + 1 < n; ++i) {
+    if (!edge(i, v[i + 1])) return false;
   }
-  if constexpr (kCut) close_run(ring[0]);
-  view = {ring.data(), static_cast<std::uint32_t>(n), box};
+  if (!edge(n - 1, v[0])) return false;
+  starts.count = cuts;
   return twice_area > 0;
 }
 
@@ -151,23 +164,56 @@ class RunSweep {
     const std::size_t min_run = options_.min_edges_per_run;
     if (edges < 4 * min_run * ring_count()) return RunVerdict::kNotTried;
     if (edges >= UINT32_MAX || ring_count() >= UINT32_MAX) return RunVerdict::kNotTried;
-    // More runs than this: too short on average, and the vertex sweep gets the input.
-    const std::size_t most_runs = min_run == 0 ? edges : edges / min_run;
-    runs_.reserve(most_runs);
+    // More runs than this: too short on average, and the vertex sweep gets the input. A set
+    // of several rings must promise twice as much: its rings may touch (pieces of one
+    // clipped landscape often share edges), and then the work here was for nothing.
+    const std::size_t per_run = ring_count() >= 2 ? 2 * min_run : min_run;
+    const std::size_t most_runs = per_run == 0 ? edges : edges / per_run;
+    std::vector<std::uint32_t> starts(most_runs + 1);
+    RunStarts cut{starts.data(), starts.size()};
     rings_.resize(ring_count());
+    std::vector<std::size_t> first_run(ring_count() + 1);
+    const std::uint32_t cap = std::max(options_.run_cap, 1u);
     for (std::size_t r = 0; r < ring_count(); ++r) {
-      if (!scan_ring<true>(ring(r), static_cast<std::uint32_t>(r), std::max(options_.run_cap, 1u),
-                           most_runs, runs_, rings_[r])) {
-        return RunVerdict::kInvalid;
+      first_run[r] = cut.count;
+      if (!scan_ring<true>(ring(r), cap, cut)) return RunVerdict::kInvalid;
+      rings_[r].vertex = ring(r).data();
+      rings_[r].size = static_cast<std::uint32_t>(ring(r).size());
+    }
+    if (cut.count > most_runs) return RunVerdict::kUndecided;
+    first_run[ring_count()] = cut.count;
+    runs_.reserve(cut.count);
+    for (std::size_t r = 0; r < ring_count(); ++r) {
+      for (std::size_t k = first_run[r]; k < first_run[r + 1]; ++k) {
+        const std::uint32_t end = k + 1 < first_run[r + 1] ? starts[k + 1] : rings_[r].size;
+        add_run(static_cast<std::uint32_t>(r), starts[k], end - starts[k]);
+      }
+      // The ring's box: that of its runs' boxes.
+      Box& box = rings_[r].box;
+      box = runs_[first_run[r]].box;
+      for (std::size_t k = first_run[r] + 1; k < first_run[r + 1]; ++k) {
+        const Box& b = runs_[k].box;
+        box = {{std::min(box.low.x, b.low.x), std::min(box.low.y, b.low.y)},
+               {std::max(box.high.x, b.high.x), std::max(box.high.y, b.high.y)}};
       }
     }
-    if (runs_.size() >= most_runs && min_run > 0) return RunVerdict::kUndecided;
     budget_ = std::size_t{options_.work_per_edge} * edges + 64;
     if (const RunVerdict v = sweep_runs(); v != RunVerdict::kValid) return v;
     return ring_count() >= 2 ? find_nesting() : RunVerdict::kValid;
   }
 
  private:
+  // Edges first .. first + count - 1 of ring r, a monotone run.
+  void add_run(std::uint32_t r, std::uint32_t first, std::uint32_t count) {
+    Run run{{}, r, first, count, 0, 0};
+    const Point64 a = vertex(run, 0), b = vertex(run, count);
+    run.box = {{std::min(a.x, b.x), std::min(a.y, b.y)}, {std::max(a.x, b.x), std::max(a.y, b.y)}};
+    // Along the run each coordinate only grows or only shrinks (or stays): its ends tell how.
+    run.sx = a.x <= b.x ? 1 : -1;
+    run.sy = a.y <= b.y ? 1 : -1;
+    runs_.push_back(run);
+  }
+
   // The sweep over run boxes by left side: every two runs whose boxes meet are paired once.
   RunVerdict sweep_runs() {
     const std::vector<Run> runs = sorted_by_left(runs_, [](const Run& r) { return r.box; });
@@ -318,9 +364,9 @@ RunVerdict sweep_monotone_runs(std::span<const Polygon> polygons,
 }
 
 bool local_rules_hold(const Ring& ring) {
-  std::vector<Run> no_runs;
-  RingView view{};
-  return scan_ring<false>(ring, 0, 1, 0, no_runs, view);
+  std::uint32_t unused = 0;
+  RunStarts no_runs{&unused, 1};
+  return scan_ring<false>(ring, 1, no_runs);
 }
 
 }  // namespace edgeland::detail

@@ -24,10 +24,10 @@ enum class RunVerdict : std::uint8_t {
 };
 
 struct RunSweepOptions {
-  std::uint32_t run_cap = 16;  // most edges in one run (>= 1)
+  std::uint32_t run_cap = 32;  // most edges in one run (>= 1)
   // When runs would average fewer edges than this, the vertex sweep is cheaper: not tried
   // when rings average fewer than 4 times this many edges, undecided when the runs cut turn
-  // out that short (spiky rings); 0 always sweeps.
+  // out that short (spiky rings), or half as long in a set of several rings; 0 always sweeps.
   std::uint32_t min_edges_per_run = 4;
   // Undecided once the box and edge tests exceed this many per edge (keeps the path O(n)
   // beyond its sort; a wide arrangement goes to the vertex sweep, O(n log n)).
