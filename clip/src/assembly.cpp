@@ -9,24 +9,24 @@
 namespace edgeland::detail {
 
 std::vector<std::vector<std::uint32_t>> split_at_repeated_vertices(
-    const std::vector<std::uint32_t>& walk, std::vector<std::int32_t>& position) {
+    const PlaneGraph& g, const std::vector<std::uint32_t>& walk,
+    std::vector<std::int32_t>& position) {
   std::vector<std::vector<std::uint32_t>> loops;
-  std::vector<std::uint32_t> stack;
-  for (std::uint32_t v : walk) {
+  std::vector<std::uint32_t> stack;  // half-edges; position[v]: index of the one leaving v
+  for (std::uint32_t h : walk) {
+    const std::uint32_t v = g.origin(h);
     if (position[v] >= 0) {
-      // v closes a loop: everything pushed since its first occurrence.
+      // v closes a loop: every half-edge pushed since v was first left.
       const std::size_t start = static_cast<std::size_t>(position[v]);
-      std::vector<std::uint32_t> loop(stack.begin() + static_cast<std::ptrdiff_t>(start), stack.end());
-      for (std::size_t i = start + 1; i < stack.size(); ++i) position[stack[i]] = -1;
-      stack.resize(start + 1);
-      if (loop.size() >= 3) loops.push_back(std::move(loop));
-      continue;
+      loops.emplace_back(stack.begin() + static_cast<std::ptrdiff_t>(start), stack.end());
+      for (std::size_t i = start; i < stack.size(); ++i) position[g.origin(stack[i])] = -1;
+      stack.resize(start);
     }
     position[v] = static_cast<std::int32_t>(stack.size());
-    stack.push_back(v);
+    stack.push_back(h);
   }
-  for (std::uint32_t v : stack) position[v] = -1;
-  if (stack.size() >= 3) loops.push_back(std::move(stack));
+  for (std::uint32_t h : stack) position[g.origin(h)] = -1;
+  if (!stack.empty()) loops.push_back(std::move(stack));
   return loops;
 }
 
@@ -42,7 +42,7 @@ std::vector<std::pair<FaceLabel, std::vector<std::uint32_t>>> trace_boundaries(
     std::uint32_t cur = start;
     do {
       used[cur] = true;
-      walk.push_back(g.origin(cur));
+      walk.push_back(cur);
       // Sharpest left turn: from the reversed edge, turn clockwise to the first edge that
       // bounds the same region.
       const std::uint32_t w = g.target(cur), b = g.around_begin[w];
@@ -79,9 +79,10 @@ std::vector<RegionRings> assemble(const PlaneGraph& g, const std::vector<SideSta
   for (const auto& [label, walk] : trace_boundaries(g, emitted)) {
     RegionRings& region = regions[label];
     region.label = label;
-    for (const auto& loop : split_at_repeated_vertices(walk, position)) {
-      Ring ring(loop.size());
-      for (std::size_t i = 0; i < loop.size(); ++i) ring[i] = g.vertices[loop[i]];
+    for (const auto& loop : split_at_repeated_vertices(g, walk, position)) {
+      Ring ring;
+      for (std::uint32_t h : loop) g.append_points(h, ring);
+      if (ring.size() < 3) continue;
       const Int128 area = twice_signed_area(ring);
       if (area > 0) region.outers.push_back(std::move(ring));
       else if (area < 0) region.holes.push_back(std::move(ring));

@@ -29,12 +29,14 @@ std::vector<RegionRings> assemble(const PlaneGraph& g, const std::vector<SideSta
                                   const LabelOf& label_of);
 
 // Closed walks along the half-edges with emitted[h] >= 0, each following the sharpest left
-// turn among half-edges of its own label. Returns (label, vertex walk) in a fixed order.
+// turn among half-edges of its own label. Returns (label, half-edge walk) in a fixed order.
 std::vector<std::pair<FaceLabel, std::vector<std::uint32_t>>> trace_boundaries(
     const PlaneGraph& g, const std::vector<FaceLabel>& emitted);
 
-// Splits a closed vertex walk at repeated vertices into simple loops (sizes >= 3 kept).
+// Splits a closed half-edge walk where it revisits a vertex (an origin) into loops that visit
+// each vertex once. scratch_position: one -1 per vertex, restored on return.
 std::vector<std::vector<std::uint32_t>> split_at_repeated_vertices(
-    const std::vector<std::uint32_t>& walk, std::vector<std::int32_t>& scratch_position);
+    const PlaneGraph& g, const std::vector<std::uint32_t>& walk,
+    std::vector<std::int32_t>& scratch_position);
 
 }  // namespace edgeland::detail

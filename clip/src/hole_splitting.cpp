@@ -193,7 +193,11 @@ std::vector<Ring> split_one(const Ring& outer, std::vector<const Ring*> holes, i
       polygon.push_back(1);
     }
   }
-  const PlaneGraph g = build_plane_graph(frags, channel, polygon);
+  // Every piece is its own segment, all touched: no chains here.
+  std::vector<std::uint32_t> next(channel.size());
+  for (std::uint32_t i = 0; i < next.size(); ++i) next[i] = i;
+  const PlaneGraph g =
+      build_plane_graph(frags, channel, polygon, next, std::vector<bool>(channel.size(), true));
   std::vector<FaceLabel> emitted(2 * g.edge_count(), -1);
   for (std::uint32_t e = 0; e < g.edge_count(); ++e)
     for (std::uint32_t k = g.mult_begin[e]; k < g.mult_begin[e + 1]; ++k)
@@ -201,9 +205,10 @@ std::vector<Ring> split_one(const Ring& outer, std::vector<const Ring*> holes, i
   std::vector<Ring> pieces, left_holes;
   std::vector<std::int32_t> position(g.vertices.size(), -1);
   for (const auto& walk : trace_boundaries(g, emitted)) {
-    for (const auto& loop : split_at_repeated_vertices(walk.second, position)) {
-      Ring ring(loop.size());
-      for (std::size_t i = 0; i < loop.size(); ++i) ring[i] = g.vertices[loop[i]];
+    for (const auto& loop : split_at_repeated_vertices(g, walk.second, position)) {
+      Ring ring;
+      for (std::uint32_t h : loop) g.append_points(h, ring);
+      if (ring.size() < 3) continue;
       (twice_signed_area(ring) > 0 ? pieces : left_holes).push_back(std::move(ring));
     }
   }

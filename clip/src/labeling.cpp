@@ -40,7 +40,7 @@ std::uint32_t around_count(const PlaneGraph& g, std::uint32_t v) {
 }
 
 Point64 direction(const PlaneGraph& g, std::uint32_t h) {
-  const Point64 o = g.vertices[g.origin(h)], t = g.vertices[g.target(h)];
+  const Point64 o = g.vertices[g.origin(h)], t = g.first_step(h);
   return {t.x - o.x, t.y - o.y};
 }
 
@@ -54,75 +54,139 @@ std::uint32_t sector_containing(const PlaneGraph& g, std::uint32_t v, Point64 d)
   return last_before == e ? e - 1 : last_before;
 }
 
-// Which edges span a given x: a segment tree over the distinct vertex x coordinates.
+// One straight piece of an edge's polyline: points i and i + 1 of edge e (from -> to order).
+struct Piece {
+  Point64 a, b;
+  std::uint32_t edge, index;
+  bool a_is_vertex, b_is_vertex;
+};
+
+std::vector<Piece> pieces_of(const PlaneGraph& g) {
+  std::vector<Piece> out;
+  out.reserve(g.edge_count() + g.interior.size());
+  for (std::uint32_t e = 0; e < g.edge_count(); ++e) {
+    Point64 at = g.vertices[g.from[e]];
+    const std::uint32_t m = g.interior_count(e);
+    for (std::uint32_t i = 0; i <= m; ++i) {
+      const Point64 nx = i < m ? g.interior[g.interior_begin[e] + i] : g.vertices[g.to[e]];
+      out.push_back({at, nx, e, i, i == 0, i == m});
+      at = nx;
+    }
+  }
+  return out;
+}
+
+// Which pieces span a given x: a segment tree over the distinct x coordinates of their ends.
 class XStabbing {
  public:
-  explicit XStabbing(const PlaneGraph& g) : g_(g) {
-    for (const Point64& p : g.vertices)
-      if (xs_.empty() || xs_.back() != p.x) xs_.push_back(p.x);
+  explicit XStabbing(const std::vector<Piece>& pieces) {
+    for (const Piece& p : pieces) {
+      xs_.push_back(p.a.x);
+      xs_.push_back(p.b.x);
+    }
+    std::sort(xs_.begin(), xs_.end());
+    xs_.erase(std::unique(xs_.begin(), xs_.end()), xs_.end());
     size_ = 1;
     while (size_ < 2 * xs_.size()) size_ <<= 1;
     nodes_.resize(2 * size_);
-    for (std::uint32_t e = 0; e < g.edge_count(); ++e)
-      insert(e, 2 * slot(g.vertices[g.from[e]].x), 2 * slot(g.vertices[g.to[e]].x));
+    for (std::uint32_t k = 0; k < pieces.size(); ++k) {
+      const std::size_t sa = slot(pieces[k].a.x), sb = slot(pieces[k].b.x);
+      insert(k, 2 * std::min(sa, sb), 2 * std::max(sa, sb));
+    }
   }
   template <class F>
   void for_each_spanning(std::int64_t x, F&& f) const {
     for (std::size_t n = size_ + 2 * slot(x); n >= 1; n >>= 1)
-      for (std::uint32_t e : nodes_[n]) f(e);
+      for (std::uint32_t k : nodes_[n]) f(k);
   }
 
  private:
   std::size_t slot(std::int64_t x) const {
     return static_cast<std::size_t>(std::lower_bound(xs_.begin(), xs_.end(), x) - xs_.begin());
   }
-  void insert(std::uint32_t e, std::size_t lo, std::size_t hi) {  // inclusive slots
+  void insert(std::uint32_t k, std::size_t lo, std::size_t hi) {  // inclusive slots
     for (std::size_t l = lo + size_, r = hi + size_ + 1; l < r; l >>= 1, r >>= 1) {
-      if (l & 1) nodes_[l++].push_back(e);
-      if (r & 1) nodes_[--r].push_back(e);
+      if (l & 1) nodes_[l++].push_back(k);
+      if (r & 1) nodes_[--r].push_back(k);
     }
   }
-  const PlaneGraph& g_;
   std::vector<std::int64_t> xs_;
   std::size_t size_ = 1;
   std::vector<std::vector<std::uint32_t>> nodes_;
 };
 
-// The highest feature of the labeled part of the graph directly below vertex p: an edge
-// interior or a vertex. Heights are compared exactly as fractions num / den, den > 0.
+// The highest feature of the labeled part of the graph directly below point p, and the state
+// just above it. Heights are compared exactly as fractions num / den, den > 0.
 struct Below {
   bool found = false;
-  bool is_vertex = false;
-  std::uint32_t id = 0;  // vertex id or edge id
+  SideState above;
   Int128 num = 0, den = 1;
 };
 
-Below find_below(const PlaneGraph& g, const XStabbing& stab, const std::vector<bool>& labeled,
-                 Point64 p) {
+// The state just above point q, where q is point `index` (0 < index <= interior count) of edge
+// e's polyline or, for index 0 or the last, a vertex: the side of the polyline that (0, 1)
+// points into at q.
+SideState state_above_point(const PlaneGraph& g, const std::vector<SideState>& left,
+                            const Piece& piece, bool at_a) {
+  if (at_a ? piece.a_is_vertex : piece.b_is_vertex) {
+    const std::uint32_t v = at_a ? g.from[piece.edge] : g.to[piece.edge];
+    return left[g.around[sector_containing(g, v, {0, 1})]];
+  }
+  // An interior point: its neighbours along the edge, from -> to.
+  const std::uint32_t e = piece.edge, i = at_a ? piece.index : piece.index + 1;
+  const Point64 q = at_a ? piece.a : piece.b;
+  const Point64 prev = i == 1 ? g.vertices[g.from[e]] : g.interior[g.interior_begin[e] + i - 2];
+  const Point64 nx = i == g.interior_count(e) ? g.vertices[g.to[e]] : g.interior[g.interior_begin[e] + i];
+  // Walking prev -> q -> nx, the left side at q is swept counter-clockwise from nx to prev.
+  const bool left_side = strictly_inside_ccw_sector({nx.x - q.x, nx.y - q.y},
+                                                    {prev.x - q.x, prev.y - q.y}, {0, 1});
+  return left[left_side ? 2 * e : 2 * e + 1];
+}
+
+Below find_below(const PlaneGraph& g, const std::vector<Piece>& pieces, const XStabbing& stab,
+                 const std::vector<bool>& labeled, const std::vector<SideState>& left, Point64 p) {
   Below best;
-  auto offer = [&](bool is_vertex, std::uint32_t id, Int128 num, Int128 den) {
+  const Piece* best_piece = nullptr;
+  int best_kind = 0;  // 1: end a, 2: end b, 3: interior of the piece
+  auto offer = [&](const Piece& piece, int kind, Int128 num, Int128 den) {
     if (best.found && num * best.den <= best.num * den) return;
-    best = {true, is_vertex, id, num, den};
+    best.found = true;
+    best.num = num;
+    best.den = den;
+    best_piece = &piece;
+    best_kind = kind;
   };
-  stab.for_each_spanning(p.x, [&](std::uint32_t e) {
-    if (!labeled[g.from[e]]) return;
-    const Point64 a = g.vertices[g.from[e]], b = g.vertices[g.to[e]];
-    if (a.x == b.x) {  // vertical: its top end (b) is the candidate
-      if (b.y < p.y) offer(true, g.to[e], b.y, 1);
+  stab.for_each_spanning(p.x, [&](std::uint32_t k) {
+    const Piece& piece = pieces[k];
+    if (!labeled[g.from[piece.edge]]) return;
+    const Point64 a = piece.a, b = piece.b;
+    if (a.x == b.x) {  // vertical: its top end is the candidate
+      const bool a_top = a.y > b.y;
+      const Point64 top = a_top ? a : b;
+      if (top.y < p.y) offer(piece, a_top ? 1 : 2, top.y, 1);
       return;
     }
     if (a.x == p.x) {
-      if (a.y < p.y) offer(true, g.from[e], a.y, 1);
+      if (a.y < p.y) offer(piece, 1, a.y, 1);
       return;
     }
     if (b.x == p.x) {
-      if (b.y < p.y) offer(true, g.to[e], b.y, 1);
+      if (b.y < p.y) offer(piece, 2, b.y, 1);
       return;
     }
-    if (orientation(a, b, p) != Orientation::kCounterClockwise) return;  // not below p
-    const Int128 dx = b.x - a.x;
-    offer(false, e, Int128(a.y) * dx + Int128(b.y - a.y) * (p.x - a.x), dx);
+    const Point64 lo = a.x < b.x ? a : b, hi = a.x < b.x ? b : a;
+    if (orientation(lo, hi, p) != Orientation::kCounterClockwise) return;  // not below p
+    const Int128 dx = hi.x - lo.x;
+    offer(piece, 3, Int128(lo.y) * dx + Int128(hi.y - lo.y) * (p.x - lo.x), dx);
   });
+  if (!best.found) return best;
+  if (best_kind == 3) {
+    // Running east (a -> b with a.x < b.x), the piece's left side is above it.
+    const std::uint32_t e = best_piece->edge;
+    best.above = left[best_piece->a.x < best_piece->b.x ? 2 * e : 2 * e + 1];
+  } else {
+    best.above = state_above_point(g, left, *best_piece, best_kind == 1);
+  }
   return best;
 }
 
@@ -139,6 +203,7 @@ std::vector<SideState> label_sides(const PlaneGraph& g, LabelMode mode) {
   std::vector<SideState> left(2 * g.edge_count(), empty_state(mode));
   std::vector<bool> visited(nv, false);
   std::unique_ptr<XStabbing> stab;
+  std::vector<Piece> pieces;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> queue;  // (vertex, known position)
   bool any_labeled = false;
 
@@ -147,13 +212,12 @@ std::vector<SideState> label_sides(const PlaneGraph& g, LabelMode mode) {
     // v0 is the smallest vertex of a new component: west of it lies its outer face.
     SideState base = empty_state(mode);
     if (any_labeled) {
-      if (!stab) stab = std::make_unique<XStabbing>(g);
-      const Below below = find_below(g, *stab, visited, g.vertices[v0]);
-      if (below.found && below.is_vertex) {
-        base = left[g.around[sector_containing(g, below.id, {0, 1})]];
-      } else if (below.found) {
-        base = left[2 * below.id];  // from -> to runs east: its left side is above
+      if (!stab) {
+        pieces = pieces_of(g);
+        stab = std::make_unique<XStabbing>(pieces);
       }
+      const Below below = find_below(g, pieces, *stab, visited, left, g.vertices[v0]);
+      if (below.found) base = below.above;
     }
     const std::uint32_t k0 = sector_containing(g, v0, {-1, 0});
     left[g.around[k0]] = base;

@@ -1,6 +1,12 @@
 #pragma once
 // The noded fragments as a plane graph: integer vertices, undirected edges with net
 // multiplicities per (channel, polygon), and half-edges sorted by angle around each vertex.
+//
+// An edge is a polyline. Fragments of untouched segments (SnapStats::touched: nothing else
+// meets them) are chained along their ring into one edge, so a long stretch of boundary that the
+// operation does not touch costs the later stages one edge, not one per segment. Chain interior
+// points meet nothing else, and every ring's lexicographically smallest vertex is a graph vertex,
+// so each connected component's smallest point is a graph vertex (labeling relies on it).
 #include <cstdint>
 #include <vector>
 
@@ -19,8 +25,13 @@ struct Multiplicity {
 struct PlaneGraph {
   std::vector<Point64> vertices;               // sorted, unique
   // Edge e joins from[e] < to[e] (vertex ids, lexicographic). Half-edge 2e runs from -> to,
-  // 2e + 1 runs to -> from; the twin of half-edge h is h ^ 1.
+  // 2e + 1 runs to -> from; the twin of half-edge h is h ^ 1. Two edges may join the same two
+  // vertices along different polylines.
   std::vector<std::uint32_t> from, to;
+  // Interior points of edge e in order from -> to:
+  // interior[interior_begin[e] .. interior_begin[e + 1]) (CSR, size edges + 1).
+  std::vector<std::uint32_t> interior_begin;
+  std::vector<Point64> interior;
   std::vector<std::uint32_t> mult_begin;       // CSR into mults, size edges + 1
   std::vector<Multiplicity> mults;
   // Outgoing half-edges of vertex v, counter-clockwise from angle 0:
@@ -31,11 +42,27 @@ struct PlaneGraph {
   std::size_t edge_count() const { return from.size(); }
   std::uint32_t origin(std::uint32_t h) const { return (h & 1) ? to[h >> 1] : from[h >> 1]; }
   std::uint32_t target(std::uint32_t h) const { return origin(h ^ 1); }
+  std::uint32_t interior_count(std::uint32_t e) const {
+    return interior_begin[e + 1] - interior_begin[e];
+  }
+  // The point after the origin along half-edge h (its direction at the origin).
+  Point64 first_step(std::uint32_t h) const {
+    const std::uint32_t e = h >> 1;
+    if (interior_count(e) == 0) return vertices[target(h)];
+    return (h & 1) ? interior[interior_begin[e + 1] - 1] : interior[interior_begin[e]];
+  }
+  // Appends the points of half-edge h from its origin up to, not including, its target.
+  void append_points(std::uint32_t h, std::vector<Point64>& out) const;
 };
 
-// `channel_of` / `polygon_of` give the tag of each input segment (Fragment::parent).
+// `channel_of` / `polygon_of` / `next` / `touched` describe each input segment
+// (Fragment::parent): its tag, the segment after it along its ring, and whether it is untouched
+// (SnapStats::touched; an untouched segment is its own single fragment).
+// O(f log f) for the f fragments of touched segments, plus O(n) for the rest.
 PlaneGraph build_plane_graph(const std::vector<Fragment>& fragments,
                              const std::vector<std::uint8_t>& channel_of,
-                             const std::vector<std::int32_t>& polygon_of);
+                             const std::vector<std::int32_t>& polygon_of,
+                             const std::vector<std::uint32_t>& next,
+                             const std::vector<bool>& touched);
 
 }  // namespace edgeland::detail
