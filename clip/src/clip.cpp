@@ -63,27 +63,19 @@ bool filled(FillRule rule, std::int32_t w) {
 }
 
 struct Pipeline {
-  std::vector<detail::TaggedSegment> edges;
+  detail::EdgeList edges;
   detail::LabelMode mode;
   detail::LabelOf label_of;
 };
 
 ClipResult run(const Pipeline& p, std::vector<Box64>* moved_boxes = nullptr) {
   ClipResult result;
-  std::vector<Segment> segs(p.edges.size());
-  std::vector<std::uint8_t> channel(p.edges.size());
-  std::vector<std::int32_t> polygon(p.edges.size());
-  std::vector<std::uint32_t> next(p.edges.size());
-  for (std::size_t i = 0; i < p.edges.size(); ++i) {
-    segs[i] = p.edges[i].seg;
-    channel[i] = p.edges[i].channel;
-    polygon[i] = p.edges[i].polygon;
-    next[i] = p.edges[i].next;
-  }
+  const std::vector<Segment>& segs = p.edges.segments;
+  const std::vector<std::uint32_t>& next = p.edges.next;
   detail::SnapStats snap;
   const auto fragments = detail::snap_round(segs, next, snap);
   const detail::PlaneGraph g =
-      detail::build_plane_graph(fragments, channel, polygon, next, snap.touched);
+      detail::build_plane_graph(fragments, p.edges.channel, p.edges.polygon, next, snap.touched);
   const auto left = detail::label_sides(g, p.mode);
   for (auto& region : detail::assemble(g, left, p.label_of)) {
     for (Ring& r : detail::split_holes(std::move(region.outers), std::move(region.holes),
@@ -118,16 +110,10 @@ ClipResult clip_near(ClipOp op, const PolygonSet& subject, const PolygonSet& cli
   }
   for (;;) {
     Pipeline p;
-    PolygonSet near;
-    std::vector<std::int32_t> index;
-    for (std::size_t i = 0; i < subject.size(); ++i)
-      if (included[i]) {
-        near.push_back(subject[i]);
-        index.push_back(static_cast<std::int32_t>(i));
-      }
-    detail::append_ring_edges(near, 0, true, p.edges);
-    for (auto& e : p.edges)
-      if (e.channel == 0) e.polygon = index[static_cast<std::size_t>(e.polygon)];
+    std::vector<std::uint32_t> near;
+    for (std::uint32_t i = 0; i < subject.size(); ++i)
+      if (included[i]) near.push_back(i);
+    detail::append_ring_edges(subject, 0, true, p.edges, &near);
     detail::append_ring_edges(clip_set, 1, true, p.edges);
     p.mode = detail::LabelMode::kOwner;
     p.label_of = [op](const SideState& s) { return op_label(op, s); };
@@ -281,14 +267,14 @@ ClipResult clip_to_box(const PolygonSet& set, const Box64& box, const ClipOption
   if (box.min.x == box.max.x || box.min.y == box.max.y) return {};
   // Members that cannot reach the box take no part; the rest go through the full pipeline,
   // so the result stays closed under repetition exactly like clip().
-  PolygonSet near;
-  for (const Polygon& p : set)
-    if (bounding_box(p)->overlaps(box)) near.push_back(p);
+  std::vector<std::uint32_t> near;
+  for (std::uint32_t i = 0; i < set.size(); ++i)
+    if (bounding_box(set[i])->overlaps(box)) near.push_back(i);
   const PolygonSet cell{{box.min, {box.max.x, box.min.y}, box.max, {box.min.x, box.max.y}}};
   return guarded(
       [&] {
         Pipeline p;
-        detail::append_ring_edges(near, 0, true, p.edges);
+        detail::append_ring_edges(set, 0, true, p.edges, &near);
         detail::append_ring_edges(cell, 1, true, p.edges);
         p.mode = detail::LabelMode::kOwner;
         p.label_of = [](const SideState& s) { return op_label(ClipOp::kIntersection, s); };

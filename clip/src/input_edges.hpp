@@ -1,5 +1,6 @@
 #pragma once
-// Edge collection: the operands as one list of directed, tagged integer segments.
+// Edge collection: the operands as one list of directed, tagged integer segments, kept as
+// parallel arrays (the later stages each read only some of them).
 #include <cstdint>
 #include <vector>
 
@@ -7,18 +8,20 @@
 
 namespace edgeland::detail {
 
-// A directed input edge. Its left side is the inside of `polygon` of operand `channel`
-// (for normalize: it adds +1 to the winding number on its left).
-struct TaggedSegment {
-  Segment seg;
-  std::uint8_t channel = 0;  // 0 = subject / normalize rings, 1 = clip operand
-  std::int32_t polygon = 0;  // index within its operand
-  std::uint32_t next = 0;    // index (in the same list) of the edge that follows along the ring
+// Edge i is segments[i], directed: its left side is the inside of polygon[i] of operand
+// channel[i] (for normalize: it adds +1 to the winding number on its left). next[i] is the edge
+// that follows it along its ring; the edges of a ring are consecutive.
+struct EdgeList {
+  std::vector<Segment> segments;
+  std::vector<std::uint8_t> channel;   // 0 = subject / normalize rings, 1 = clip operand
+  std::vector<std::int32_t> polygon;   // index within its operand
+  std::vector<std::uint32_t> next;
+  std::size_t size() const { return segments.size(); }
 };
 
-// Appends the edges of every ring, ring after ring, each ring's edges in order; zero-length
-// edges (repeated points) are skipped.
+// Appends the edges of rings[k] for every k in `which` (all rings when null), tagged with
+// polygon k (or 0 when !tag_polygons); zero-length edges (repeated points) are skipped.
 void append_ring_edges(const std::vector<Ring>& rings, std::uint8_t channel, bool tag_polygons,
-                       std::vector<TaggedSegment>& out);
+                       EdgeList& out, const std::vector<std::uint32_t>* which = nullptr);
 
 }  // namespace edgeland::detail

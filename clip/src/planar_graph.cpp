@@ -9,15 +9,30 @@
 namespace edgeland::detail {
 namespace {
 
+// A point as one 64-bit key with the same (lexicographic) order: every coordinate is within
+// kCoordBound = 2^31 - 1 (inputs are validated; snapped points round crossings of in-range
+// segments, and lie between their ends), so c + 2^31 fits in 32 bits. Sorting and searching
+// keys is several times faster than comparing points.
+std::uint64_t key_of(Point64 p) {
+  if (!in_range(p)) throw std::logic_error("plane graph: vertex out of range");
+  return (static_cast<std::uint64_t>(p.x + kCoordBound + 1) << 32) |
+         static_cast<std::uint64_t>(p.y + kCoordBound + 1);
+}
+
+Point64 point_of(std::uint64_t key) {
+  return {static_cast<std::int64_t>(key >> 32) - kCoordBound - 1,
+          static_cast<std::int64_t>(key & 0xffffffffu) - kCoordBound - 1};
+}
+
 struct Piece {
-  Point64 lo, hi;  // lo < hi
-  std::uint8_t channel;
+  std::uint32_t lo, hi;  // vertex ids, lo < hi
   std::int32_t polygon;
-  std::int32_t sign;  // +1 when the fragment runs lo -> hi
+  std::uint8_t channel;
+  std::int8_t sign;  // +1 when the fragment runs lo -> hi
 };
 
-std::uint32_t vertex_id(const std::vector<Point64>& vs, Point64 p) {
-  return static_cast<std::uint32_t>(std::lower_bound(vs.begin(), vs.end(), p) - vs.begin());
+std::uint32_t vertex_id(const std::vector<std::uint64_t>& keys, std::uint64_t k) {
+  return static_cast<std::uint32_t>(std::lower_bound(keys.begin(), keys.end(), k) - keys.begin());
 }
 
 }  // namespace
@@ -66,27 +81,45 @@ PlaneGraph build_plane_graph(const std::vector<Fragment>& fragments,
     b = e + 1;
   }
 
+  // Vertices: both ends of every fragment of a touched segment, and every chain's start (a
+  // chain's end is the start of the next chain or fragment). Sorting the ends once by key both
+  // numbers the vertices and tells every piece its end ids, with no search.
+  struct End {
+    std::uint64_t key;
+    std::uint32_t ref;  // 2 * piece + (1 for its hi end), or kChainStart
+  };
+  constexpr std::uint32_t kChainStart = 0xffffffffu;
   std::vector<Piece> pieces;
-  PlaneGraph g;
+  std::vector<End> ends;
   for (std::uint32_t s = 0; s < n; ++s) {
     if (!touched[s]) {
-      if (starts_chain[s]) g.vertices.push_back(piece_of(s).a);
+      if (starts_chain[s]) ends.push_back({key_of(piece_of(s).a), kChainStart});
       continue;
     }
     for (std::uint32_t k = first_fragment[s]; k < first_fragment[s + 1]; ++k) {
       const Fragment& f = fragments[k];
-      const bool forward = f.seg.a < f.seg.b;
-      pieces.push_back({forward ? f.seg.a : f.seg.b, forward ? f.seg.b : f.seg.a,
-                        channel_of[s], polygon_of[s], forward ? 1 : -1});
-      g.vertices.push_back(f.seg.a);
-      g.vertices.push_back(f.seg.b);
+      const std::uint64_t a = key_of(f.seg.a), b = key_of(f.seg.b);
+      const bool forward = a < b;
+      const std::uint32_t i = static_cast<std::uint32_t>(pieces.size());
+      pieces.push_back({0, 0, polygon_of[s], channel_of[s], static_cast<std::int8_t>(forward ? 1 : -1)});
+      ends.push_back({forward ? a : b, 2 * i});
+      ends.push_back({forward ? b : a, 2 * i + 1});
     }
   }
+  std::sort(ends.begin(), ends.end(), [](const End& x, const End& y) { return x.key < y.key; });
+  std::vector<std::uint64_t> keys;
+  for (const End& end : ends) {
+    if (keys.empty() || keys.back() != end.key) keys.push_back(end.key);
+    if (end.ref == kChainStart) continue;
+    Piece& piece = pieces[end.ref >> 1];
+    (end.ref & 1 ? piece.hi : piece.lo) = static_cast<std::uint32_t>(keys.size() - 1);
+  }
+  PlaneGraph g;
+  g.vertices.resize(keys.size());
+  for (std::size_t i = 0; i < keys.size(); ++i) g.vertices[i] = point_of(keys[i]);
   std::sort(pieces.begin(), pieces.end(), [](const Piece& x, const Piece& y) {
     return std::tie(x.lo, x.hi, x.channel, x.polygon) < std::tie(y.lo, y.hi, y.channel, y.polygon);
   });
-  std::sort(g.vertices.begin(), g.vertices.end());
-  g.vertices.erase(std::unique(g.vertices.begin(), g.vertices.end()), g.vertices.end());
 
   // Merge pieces with equal endpoints, summing multiplicities per (channel, polygon).
   g.mult_begin.push_back(0);
@@ -108,8 +141,8 @@ PlaneGraph build_plane_graph(const std::vector<Fragment>& fragments,
     if (g.mults.size() == first_mult) {
       ++g.cancelled_edges;
     } else {
-      g.from.push_back(vertex_id(g.vertices, pieces[i].lo));
-      g.to.push_back(vertex_id(g.vertices, pieces[i].hi));
+      g.from.push_back(pieces[i].lo);
+      g.to.push_back(pieces[i].hi);
       g.mult_begin.push_back(static_cast<std::uint32_t>(g.mults.size()));
       g.interior_begin.push_back(static_cast<std::uint32_t>(g.interior.size()));
     }
@@ -125,7 +158,8 @@ PlaneGraph build_plane_graph(const std::vector<Fragment>& fragments,
       g.interior.push_back(piece_of(t).a);
       last = t;
     }
-    std::uint32_t a = vertex_id(g.vertices, piece_of(s).a), b = vertex_id(g.vertices, piece_of(last).b);
+    std::uint32_t a = vertex_id(keys, key_of(piece_of(s).a)),
+                  b = vertex_id(keys, key_of(piece_of(last).b));
     if (a == b || b == g.vertices.size() || g.vertices[b] != piece_of(last).b)
       throw std::logic_error("plane graph: a chain does not end at a vertex");
     std::int32_t net = 1;
