@@ -33,13 +33,12 @@ struct Box {
 };
 
 bool boxes_meet(const Box& a, const Box& b) noexcept {
-  return a.low.x <= b.high.x && b.low.x <= a.high.x && a.low.y <= b.high.y &&
-         b.low.y <= a.high.y;
+  return a.low.x <= b.high.x && b.low.x <= a.high.x && a.low.y <= b.high.y && b.low.y <= a.high.y;
 }
 
 bool box_inside(const Box& inner, const Box& outer) noexcept {
-  return outer.low.x <= inner.low.x && inner.high.x <= outer.high.x &&
-         outer.low.y <= inner.low.y && inner.high.y <= outer.high.y;
+  return outer.low.x <= inner.low.x && inner.high.x <= outer.high.x && outer.low.y <= inner.low.y &&
+         inner.high.y <= outer.high.y;
 }
 
 // Edges first .. first + count - 1 of one ring, monotone: x never moves against sx (+1 or -1)
@@ -76,7 +75,8 @@ Contact contact(Point64 a0, Point64 a1, Point64 b0, Point64 b1) noexcept {
   const int o3 = orient_sign(b0, b1, a0), o4 = orient_sign(b0, b1, a1);
   if (o3 * o4 > 0) return {false, false};
   if (o1 == 0 && o2 == 0) {  // collinear: on one line, lexicographic order is order along it
-    return {std::max(std::min(a0, a1), std::min(b0, b1)) <= std::min(std::max(a0, a1), std::max(b0, b1)),
+    return {std::max(std::min(a0, a1), std::min(b0, b1)) <=
+                std::min(std::max(a0, a1), std::max(b0, b1)),
             false};
   }
   return {true, o1 != 0 && o2 != 0 && o3 != 0 && o4 != 0};
@@ -299,13 +299,19 @@ class RunSweep {
     std::uint32_t lo = 0, hi = r.count;
     while (lo < hi) {
       const std::uint32_t mid = lo + (hi - lo) / 2;
-      if (ends_short(mid)) lo = mid + 1; else hi = mid;
+      if (ends_short(mid))
+        lo = mid + 1;
+      else
+        hi = mid;
     }
     const std::uint32_t first = lo;
     hi = r.count;
     while (lo < hi) {
       const std::uint32_t mid = lo + (hi - lo) / 2;
-      if (starts_past(mid)) hi = mid; else lo = mid + 1;
+      if (starts_past(mid))
+        hi = mid;
+      else
+        lo = mid + 1;
     }
     return {first, lo};
   }

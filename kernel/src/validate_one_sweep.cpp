@@ -1,9 +1,9 @@
 // The fast acceptance path of validate() (validate_checks.hpp): the local rules of every ring
 // in O(n) and the sweep over monotone runs (validate_monotone_runs.hpp), which settle most
 // smooth inputs; then, for what they leave undecided, ONE sweep over the edges of all rings
-// together that checks strict simplicity and disjoint interiors at once. Events are vertices sorted by 64-bit keys
-// (validate_event_sort.hpp); the status is a sorted array of edge numbers, cut into blocks
-// when it grows wide (validate_status.hpp).
+// together that checks strict simplicity and disjoint interiors at once. Events are vertices
+// sorted by 64-bit keys (validate_event_sort.hpp); the status is a sorted array of edge
+// numbers, cut into blocks when it grows wide (validate_status.hpp).
 //
 // It only ever concludes "valid". At the first sign of trouble it gives up, and validate()
 // runs the reporting checks, which say exactly what is wrong; so reports never depend on it.

@@ -7,6 +7,8 @@
 // when every ring passes its local rules. Completeness, where the path promises it: a valid
 // input is kValid unless edges of two different rings meet (touching rings are left to the
 // vertex sweep) or the work budget runs out (unlimited here).
+#include "validate_monotone_runs.hpp"
+
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
@@ -18,7 +20,6 @@
 #include "edgeland/kernel/validate.hpp"
 #include "support/validate_bruteforce.hpp"
 #include "support/validate_generators.hpp"
-#include "validate_monotone_runs.hpp"
 
 namespace edgeland {
 namespace {
@@ -32,8 +33,8 @@ constexpr std::uint32_t kCaps[] = {1, 2, 3, 5, 32};
 RunVerdict run_verdict(const PolygonSet& set, std::uint32_t cap) {
   detail::RunSweepOptions options;
   options.run_cap = cap;
-  options.min_edges_per_run = 0;           // always sweep, however short the runs
-  options.work_per_edge = 1u << 30;        // never give up for work
+  options.min_edges_per_run = 0;     // always sweep, however short the runs
+  options.work_per_edge = 1u << 30;  // never give up for work
   return detail::sweep_monotone_runs(set, {}, options);
 }
 
@@ -270,7 +271,8 @@ Polygon integer_disc(std::int64_t r, Point64 center) {
     return s;
   };
   Polygon ring;
-  for (std::int64_t x = r; x >= -r; --x) ring.push_back({center.x + x, center.y + isqrt(r * r - x * x)});
+  for (std::int64_t x = r; x >= -r; --x)
+    ring.push_back({center.x + x, center.y + isqrt(r * r - x * x)});
   for (std::int64_t x = -r + 1; x < r; ++x) {
     ring.push_back({center.x + x, center.y - isqrt(r * r - x * x)});
   }
