@@ -279,6 +279,20 @@ Polygon integer_disc(std::int64_t r, Point64 center) {
   return ring;
 }
 
+TEST(ValidateRunSweep, HandsTouchingLargeRingsToTheVertexSweepWhichJudgesThem) {
+  // Default options, as validate() runs it: touching members are undecided, and the vertex
+  // sweep (told the local rules hold) must still accept a touch and reject an overlap.
+  const Polygon a = integer_disc(50, {0, 0});
+  const PolygonSet touching{a, integer_disc(50, {100, 0})};  // share the vertex (50 0)
+  EXPECT_EQ(detail::sweep_monotone_runs(touching, {}), RunVerdict::kUndecided);
+  EXPECT_TRUE(validate(touching).ok());
+  const PolygonSet twice{a, a};  // every edge shared in the same direction
+  EXPECT_EQ(detail::sweep_monotone_runs(twice, {}), RunVerdict::kUndecided);
+  const ValidationReport report = validate(twice);
+  ASSERT_FALSE(report.ok());
+  EXPECT_EQ(report.violations.front().rule, Rule::kOverlappingInteriors);
+}
+
 TEST(ValidateRunSweep, SettlesLargeSmoothRingsAloneAndAgreesWithValidate) {
   const Polygon a = integer_disc(5000, {0, 0}), b = integer_disc(3000, {9000, 2000});
   EXPECT_EQ(detail::sweep_monotone_runs(PolygonSet{a}, {}), RunVerdict::kValid);
