@@ -52,6 +52,7 @@ class Peer {
 
 // Factories, one per translation unit.
 std::unique_ptr<Peer> make_edgeland_peer();
+std::unique_ptr<Peer> make_edgeland_valid_peer();
 std::unique_ptr<Peer> make_boost_int64_peer();
 std::unique_ptr<Peer> make_boost_double_peer();
 std::unique_ptr<Peer> make_clipper1_peer();
@@ -59,7 +60,7 @@ std::unique_ptr<Peer> make_geos_peer();
 std::unique_ptr<Peer> make_cgal_epeck_peer();
 std::unique_ptr<Peer> make_cgal_epick_peer();
 
-// Every peer, edgeland first.
+// Every peer, edgeland (validating) first, then edgeland on ValidSets.
 std::vector<std::unique_ptr<Peer>> make_all_peers();
 
 }  // namespace edgeland::bench

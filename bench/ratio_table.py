@@ -9,7 +9,7 @@ import json
 import pathlib
 import sys
 
-PEERS = ["edgeland", "boost_int64", "boost_double", "clipper1", "geos", "cgal_epeck", "cgal_epick"]
+PEERS = ["edgeland", "edgeland_valid", "boost_int64", "boost_double", "clipper1", "geos", "cgal_epeck", "cgal_epick"]
 FAMILIES = ["smooth_intersection", "smooth_difference", "spiky_intersection",
             "spiky_difference", "checkerboard_union"]
 

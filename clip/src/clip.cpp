@@ -165,6 +165,43 @@ ClipResult guarded(F&& body, const ClipOptions& options, const std::string& what
   return r;
 }
 
+void require_valid_box(const Box64& box) {
+  if (!in_range(box.min) || !in_range(box.max) || box.min.x > box.max.x || box.min.y > box.max.y) {
+    Violation v;
+    v.rule = Rule::kCoordinateOutOfRange;
+    v.where = in_range(box.min) ? box.max : box.min;
+    throw InvalidInput(Operand::kClip, v);
+  }
+}
+
+// subject OP clip for operands known to be valid.
+ClipResult clip_of_valid(ClipOp op, const PolygonSet& subject, const PolygonSet& clip_set,
+                         const ClipOptions& options) {
+  return guarded(
+      [&] { return clip_near(op, subject, clip_set); },
+      options, op_name(op), [&] { return to_wkt(subject); }, [&] { return to_wkt(clip_set); });
+}
+
+ClipResult box_of_valid(const PolygonSet& set, const Box64& box, const ClipOptions& options) {
+  if (box.min.x == box.max.x || box.min.y == box.max.y) return {};
+  // Members that cannot reach the box take no part; the rest go through the full pipeline,
+  // so the result stays closed under repetition exactly like clip().
+  std::vector<std::uint32_t> near;
+  for (std::uint32_t i = 0; i < set.size(); ++i)
+    if (bounding_box(set[i])->overlaps(box)) near.push_back(i);
+  const PolygonSet cell{{box.min, {box.max.x, box.min.y}, box.max, {box.min.x, box.max.y}}};
+  return guarded(
+      [&] {
+        Pipeline p;
+        detail::append_ring_edges(set, 0, true, p.edges, &near);
+        detail::append_ring_edges(cell, 1, true, p.edges);
+        p.mode = detail::LabelMode::kOwner;
+        p.label_of = [](const SideState& s) { return op_label(ClipOp::kIntersection, s); };
+        return run(p);
+      },
+      options, "clip_to_box", [&] { return to_wkt(set); }, [&] { return to_wkt(cell); });
+}
+
 }  // namespace
 
 const char* op_name(ClipOp op) noexcept {
@@ -201,9 +238,29 @@ ClipResult clip(ClipOp op, const PolygonSet& subject, const PolygonSet& clip_set
                 const ClipOptions& options) {
   require_valid(subject, Operand::kSubject);
   require_valid(clip_set, Operand::kClip);
-  return guarded(
-      [&] { return clip_near(op, subject, clip_set); },
-      options, op_name(op), [&] { return to_wkt(subject); }, [&] { return to_wkt(clip_set); });
+  return clip_of_valid(op, subject, clip_set, options);
+}
+
+ValidSet::ValidSet(PolygonSet set, Operand which) : set_(std::move(set)) {
+  require_valid(set_, which);
+}
+
+// The one way library code makes a ValidSet without validating: from an operation's output.
+struct ValidSetFactory {
+  static ValidClipResult from(ClipResult r) {
+    return {ValidSet(std::move(r.polygons), ValidSet::Trusted{}), r.stats};
+  }
+};
+
+ValidClipResult clip(ClipOp op, const ValidSet& subject, const ValidSet& clip_set,
+                     const ClipOptions& options) {
+  return ValidSetFactory::from(
+      clip_of_valid(op, subject.polygons(), clip_set.polygons(), options));
+}
+
+ValidClipResult clip_to_box(const ValidSet& set, const Box64& box, const ClipOptions& options) {
+  require_valid_box(box);
+  return ValidSetFactory::from(box_of_valid(set.polygons(), box, options));
 }
 
 ClipResult normalize(const std::vector<Ring>& rings, FillRule rule, const ClipOptions& options) {
@@ -257,30 +314,9 @@ ClipResult import_polygons(const std::vector<std::vector<Ring>>& polygons,
 }
 
 ClipResult clip_to_box(const PolygonSet& set, const Box64& box, const ClipOptions& options) {
-  if (!in_range(box.min) || !in_range(box.max) || box.min.x > box.max.x || box.min.y > box.max.y) {
-    Violation v;
-    v.rule = Rule::kCoordinateOutOfRange;
-    v.where = in_range(box.min) ? box.max : box.min;
-    throw InvalidInput(Operand::kClip, v);
-  }
+  require_valid_box(box);
   require_valid(set, Operand::kSubject);
-  if (box.min.x == box.max.x || box.min.y == box.max.y) return {};
-  // Members that cannot reach the box take no part; the rest go through the full pipeline,
-  // so the result stays closed under repetition exactly like clip().
-  std::vector<std::uint32_t> near;
-  for (std::uint32_t i = 0; i < set.size(); ++i)
-    if (bounding_box(set[i])->overlaps(box)) near.push_back(i);
-  const PolygonSet cell{{box.min, {box.max.x, box.min.y}, box.max, {box.min.x, box.max.y}}};
-  return guarded(
-      [&] {
-        Pipeline p;
-        detail::append_ring_edges(set, 0, true, p.edges, &near);
-        detail::append_ring_edges(cell, 1, true, p.edges);
-        p.mode = detail::LabelMode::kOwner;
-        p.label_of = [](const SideState& s) { return op_label(ClipOp::kIntersection, s); };
-        return run(p);
-      },
-      options, "clip_to_box", [&] { return to_wkt(set); }, [&] { return to_wkt(cell); });
+  return box_of_valid(set, box, options);
 }
 
 }  // namespace edgeland

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <unordered_map>
 #include <unordered_set>
 #include <utility>
 
@@ -17,6 +18,8 @@ namespace edgeland::detail {
 namespace {
 
 using PointSet = std::unordered_set<Point64, Point64Hash>;
+// Points on the way of a few segments (most segments have none): segment -> points.
+using StopsOf = std::unordered_map<std::uint32_t, std::vector<Point64>>;
 
 // A box that contains the whole pixel of p (closed, integer corners).
 Box64 pixel_box(Point64 p) { return Box64{{p.x - 1, p.y - 1}, {p.x + 1, p.y + 1}}; }
@@ -73,9 +76,9 @@ bool meets_closed_pixel(const Segment& s, Point64 p) {
 // Each round only looks at what is new.
 void close_hot_set(const std::vector<Segment>& segs, const SegmentIndex& index,
                    const std::vector<Point64>& split_points,
-                   const std::vector<std::vector<Point64>>& splits_of, bool classic,
+                   const StopsOf& splits_of, bool classic,
                    PointSet& is_hot, Closure& c, std::vector<Point64> fresh) {
-  std::vector<std::vector<Point64>> hot_stops(segs.size());
+  StopsOf hot_stops;
   for (const auto& [s, h] : c.meets) hot_stops[s].push_back(c.hot[h]);
   std::vector<SweepBox> split_sweep;
   if (!split_points.empty()) split_sweep = sorted_for_sweep(pixel_boxes(split_points));
@@ -106,7 +109,8 @@ void close_hot_set(const std::vector<Segment>& segs, const SegmentIndex& index,
       boxes[k] = {{b.min.x - 1, b.min.y - 1}, {b.max.x + 1, b.max.y + 1}};
       if (!classic) {
         std::vector<Point64> stops = hot_stops[s];
-        stops.insert(stops.end(), splits_of[s].begin(), splits_of[s].end());
+        if (const auto it = splits_of.find(s); it != splits_of.end())
+          stops.insert(stops.end(), it->second.begin(), it->second.end());
         routes[k] = route_of(segs[s], std::move(stops));
       }
     }
@@ -239,7 +243,7 @@ std::vector<Fragment> snap_round(const std::vector<Segment>& segs,
   };
   add_hot(contacts.hot);
 
-  std::vector<std::vector<Point64>> splits_of(segs.size());
+  StopsOf splits_of;
   for (const auto& [s, p] : contacts.splits) splits_of[s].push_back(p);
 
   // The stable rule normally converges in one round. Should crossings survive it a few times,

@@ -1,0 +1,90 @@
+// ValidSet (clip.hpp): a set validated once, then carried from operation to operation without
+// re-validation. What must hold: it cannot be built from an invalid set; the ValidSet overloads
+// return exactly what the PolygonSet overloads return; and a long carving chain on ValidSets
+// stays valid at every step (checked mode re-validates each output, and so does the test).
+#include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
+
+#include <random>
+
+#include "checked_clip.hpp"
+#include "generators.hpp"
+#include "polygon_set_helpers.hpp"
+
+namespace edgeland::test {
+namespace {
+
+TEST(ValidSet, RefusesAnInvalidSetNamingTheOperand) {
+  // A bow tie: self-intersecting.
+  const PolygonSet bow_tie{{{0, 0}, {10, 10}, {10, 0}, {0, 10}}};
+  try {
+    ValidSet s(bow_tie, Operand::kClip);
+    FAIL() << "accepted " << to_wkt(s.polygons());
+  } catch (const InvalidInput& e) {
+    EXPECT_EQ(e.operand, Operand::kClip);
+    EXPECT_EQ(e.violation.rule, Rule::kSelfIntersection);
+  }
+  // Two overlapping squares.
+  const PolygonSet overlapping{{{0, 0}, {10, 0}, {10, 10}, {0, 10}},
+                               {{5, 5}, {15, 5}, {15, 15}, {5, 15}}};
+  EXPECT_THROW(ValidSet{overlapping}, InvalidInput);
+}
+
+TEST(ValidSet, KeepsTheSetItWasGiven) {
+  const PolygonSet s{{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{20, 0}, {30, 0}, {25, 9}}};
+  EXPECT_EQ(ValidSet(s).polygons(), s);
+  EXPECT_TRUE(ValidSet().polygons().empty());
+  EXPECT_EQ(ValidSet(s).release(), s);
+}
+
+RC_GTEST_PROP(ValidSetProperty, OverloadsGiveIdenticalResults, ()) {
+  const OperandPair p = *gen::operand_pair();
+  const ClipOp op = *rc::gen::element(ClipOp::kUnion, ClipOp::kIntersection,
+                                      ClipOp::kDifference, ClipOp::kXor);
+  const ClipResult plain = clip(op, p.a, p.b, ClipOptions{.checked = true});
+  const ValidClipResult valid =
+      clip(op, ValidSet(p.a), ValidSet(p.b, Operand::kClip), ClipOptions{.checked = true});
+  RC_ASSERT(valid.set.polygons() == plain.polygons);
+  RC_ASSERT(valid.stats.intersections == plain.stats.intersections);
+  RC_ASSERT(valid.stats.vertices_snapped == plain.stats.vertices_snapped);
+
+  const Box64 box{{-50, -40}, {60, 45}};
+  const ClipResult cut = clip_to_box(p.a, box, ClipOptions{.checked = true});
+  RC_ASSERT(clip_to_box(ValidSet(p.a), box, ClipOptions{.checked = true}).set.polygons() ==
+            cut.polygons);
+}
+
+TEST(ValidSet, ABoxOutsideTheRangeIsRefused) {
+  const ValidSet s(PolygonSet{{{0, 0}, {10, 0}, {10, 10}, {0, 10}}});
+  EXPECT_THROW(clip_to_box(s, Box64{{0, 0}, {kCoordBound + 1, 5}}), InvalidInput);
+  EXPECT_THROW(clip_to_box(s, Box64{{5, 0}, {0, 5}}), InvalidInput);
+}
+
+// The carving use: a square carved (and now and then refilled) by 300 random small polygons,
+// some overlapping earlier cuts, some crossing its border, each result the next subject, never
+// re-validated by the library. Every step must be valid and equal to the PolygonSet chain's.
+TEST(ValidSet, CarvingChainStaysValidWithoutRevalidation) {
+  std::mt19937_64 rng(7);
+  auto uniform = [&](std::int64_t lo, std::int64_t hi) {
+    return std::uniform_int_distribution<std::int64_t>(lo, hi)(rng);
+  };
+  ValidSet world(PolygonSet{{{0, 0}, {400, 0}, {400, 400}, {0, 400}}});
+  PolygonSet plain_world = world.polygons();
+  for (int step = 0; step < 300; ++step) {
+    const std::int64_t cx = uniform(-10, 410), cy = uniform(-10, 410), r = uniform(2, 25);
+    // A hexagon, convex and counter-clockwise: valid by construction.
+    const Polygon tool{{cx - r, cy}, {cx - r / 2, cy - r}, {cx + r / 2, cy - r},
+                       {cx + r, cy}, {cx + r / 2, cy + r}, {cx - r / 2, cy + r}};
+    const ClipOp op = step % 7 == 6 ? ClipOp::kUnion : ClipOp::kDifference;
+    ValidClipResult out = clip(op, world, ValidSet(PolygonSet{tool}, Operand::kClip),
+                             ClipOptions{.checked = true});
+    ASSERT_TRUE(validate(out.set.polygons()).ok()) << "step " << step;
+    plain_world = clip(op, plain_world, PolygonSet{tool}).polygons;
+    ASSERT_EQ(out.set.polygons(), plain_world) << "step " << step;
+    world = std::move(out.set);
+  }
+  EXPECT_GT(world.polygons().size(), 1u);  // the chain did carve
+}
+
+}  // namespace
+}  // namespace edgeland::test
