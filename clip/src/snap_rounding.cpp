@@ -1,17 +1,20 @@
 #include "snap_rounding.hpp"
 
 #include <algorithm>
+#include <memory>
 #include <stdexcept>
 #include <unordered_map>
 #include <unordered_set>
 #include <utility>
 
+#include "box_grid.hpp"
 #include "box_sweep.hpp"
 #include "edgeland/kernel/bbox.hpp"
 #include "edgeland/kernel/pixel.hpp"
 #include "edgeland/kernel/point_in_polygon.hpp"
 #include "edgeland/kernel/predicates.hpp"
 #include "noding.hpp"
+#include "point_grid.hpp"
 #include "segment_index.hpp"
 
 namespace edgeland::detail {
@@ -50,6 +53,10 @@ Ring route_of(const Segment& seg, std::vector<Point64> stops) {
   return r;
 }
 
+// Whether a query batch of `queries` against `segments` segments is better served by a grid
+// walk along every segment than by box queries into the segment index.
+bool many(std::size_t queries, std::size_t segments) { return queries > 64 && 8 * queries > segments; }
+
 // Whether s meets the closed unit square centred at p. Separating axes of a square and a segment:
 // x, y and the segment's normal; along the normal the square reaches (|dx| + |dy|) / 2.
 bool meets_closed_pixel(const Segment& s, Point64 p) {
@@ -82,18 +89,29 @@ void close_hot_set(const std::vector<Segment>& segs, const SegmentIndex& index,
   for (const auto& [s, h] : c.meets) hot_stops[s].push_back(c.hot[h]);
   std::vector<SweepBox> split_sweep;
   if (!split_points.empty()) split_sweep = sorted_for_sweep(pixel_boxes(split_points));
+  std::unique_ptr<PointGrid> vertex_grid;  // built when first needed
+  std::vector<Point64> vertex_points;
   while (!fresh.empty()) {
     const std::uint32_t base = static_cast<std::uint32_t>(c.hot.size());
     c.hot.insert(c.hot.end(), fresh.begin(), fresh.end());
     std::vector<std::uint32_t> changed;
-    index.query(pixel_boxes(fresh), [&](std::uint32_t h, std::uint32_t s) {
+    auto meet = [&](std::uint32_t h, std::uint32_t s) {
       const Point64 centre = fresh[h];
       if (!segment_meets_pixel(segs[s], centre)) return;
       c.meets.emplace_back(s, base + h);
       hot_stops[s].push_back(centre);
       if (!on_segment(centre, segs[s])) c.moved[s] = true;
       changed.push_back(s);
-    });
+    };
+    if (many(fresh.size(), segs.size())) {
+      // Many hot pixels (spiky inputs: long segments crossing everywhere): every segment
+      // looks for them along itself instead of every pixel scanning the segments over it.
+      const PointGrid grid(fresh);
+      for (std::uint32_t s = 0; s < segs.size(); ++s)
+        grid.for_each_near(segs[s], [&](std::uint32_t h) { meet(h, s); });
+    } else {
+      index.query(pixel_boxes(fresh), meet);
+    }
     fresh.clear();
     std::sort(changed.begin(), changed.end());
     changed.erase(std::unique(changed.begin(), changed.end()), changed.end());
@@ -123,13 +141,25 @@ void close_hot_set(const std::vector<Segment>& segs, const SegmentIndex& index,
       is_hot.insert(p);
       fresh.push_back(p);
     };
-    index.query(boxes, [&](std::uint32_t k, std::uint32_t t) {
-      consider(k, segs[t].a);
-      consider(k, segs[t].b);
-    });
-    if (!split_sweep.empty())
-      for_each_overlapping_pair(sorted_for_sweep(boxes), split_sweep,
-                                [&](std::uint32_t k, std::uint32_t v) { consider(k, split_points[v]); });
+    if (many(changed.size(), segs.size())) {
+      if (!vertex_grid) {
+        std::vector<Point64> vertices(split_points);
+        for (const Segment& seg : segs) vertices.push_back(seg.a);  // every end starts a segment
+        vertex_grid = std::make_unique<PointGrid>(vertices);
+        vertex_points = std::move(vertices);
+      }
+      for (std::uint32_t k = 0; k < changed.size(); ++k)
+        vertex_grid->for_each_near(segs[changed[k]],
+                                   [&](std::uint32_t v) { consider(k, vertex_points[v]); });
+    } else {
+      index.query(boxes, [&](std::uint32_t k, std::uint32_t t) {
+        consider(k, segs[t].a);
+        consider(k, segs[t].b);
+      });
+      if (!split_sweep.empty())
+        for_each_overlapping_pair(sorted_for_sweep(boxes), split_sweep,
+                                  [&](std::uint32_t k, std::uint32_t v) { consider(k, split_points[v]); });
+    }
     std::sort(fresh.begin(), fresh.end());  // deterministic order, independent of hashing
   }
 }
@@ -194,19 +224,12 @@ Contacts recheck(const std::vector<Fragment>& frags, const std::vector<bool>& mo
     std::sort(pairs.begin(), pairs.end());
     pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
   } else {
-    // Many moved fragments: index the fragments themselves; they follow their rings too.
-    const std::uint32_t n = static_cast<std::uint32_t>(frags.size());
-    std::vector<std::uint32_t> first_of(segment_count), fragment_next(n);
-    std::vector<Segment> pieces(n);
-    for (std::uint32_t i = n; i-- > 0;) first_of[frags[i].parent] = i;
-    for (std::uint32_t i = 0; i < n; ++i) {
-      pieces[i] = frags[i].seg;
-      fragment_next[i] = i + 1 < n && frags[i + 1].parent == frags[i].parent
-                             ? i + 1
-                             : first_of[next[frags[i].parent]];
-    }
-    SegmentIndex(pieces, fragment_next).for_each_overlapping_pair([&](std::uint32_t f, std::uint32_t g) {
-      if (is_moved[f] || is_moved[g]) pairs.emplace_back(std::min(f, g), std::max(f, g));
+    // Many moved fragments (spiky inputs: cut short at every crossing): a grid of all
+    // fragment boxes.
+    std::vector<Box64> all(frags.size());
+    for (std::size_t i = 0; i < frags.size(); ++i) all[i] = segment_box(frags[i].seg);
+    for_each_overlapping_pair_in_grid(all, [&](std::uint32_t f, std::uint32_t g) {
+      if (is_moved[f] || is_moved[g]) pairs.emplace_back(f, g);
     });
   }
   Contacts c;

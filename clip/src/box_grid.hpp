@@ -1,0 +1,64 @@
+#pragma once
+// Overlapping pairs of many short boxes spread over the plane (the fragments of spiky inputs,
+// after snap rounding has cut them at every crossing): a uniform grid, each box in the cells it
+// covers, each overlapping pair reported once, by the cell that holds the lower-left corner of
+// the two boxes' intersection (both boxes cover that cell). A sweep over x would compare every
+// box with all boxes spanning its x, which for long spiky inputs is most of them.
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+#include "edgeland/kernel/bbox.hpp"
+#include "edgeland/kernel/int128.hpp"
+
+namespace edgeland::detail {
+
+// Calls visit(i, j), i < j, once for every pair of closed boxes that overlap.
+template <class F>
+void for_each_overlapping_pair_in_grid(const std::vector<Box64>& boxes, F&& visit) {
+  const std::size_t n = boxes.size();
+  if (n < 2) return;
+  Box64 all = boxes[0];
+  Int128 extent = 0;
+  for (const Box64& b : boxes) {
+    all.expand(b);
+    extent += std::max(b.max.x - b.min.x, b.max.y - b.min.y);
+  }
+  // Cells about as large as a typical box, and never many more cells than boxes.
+  const Int128 w = all.max.x - all.min.x + 1, h = all.max.y - all.min.y + 1;
+  std::int64_t cell = std::max<std::int64_t>(1, static_cast<std::int64_t>(extent / static_cast<Int128>(n)));
+  while (((w + cell - 1) / cell) * ((h + cell - 1) / cell) > 4 * static_cast<Int128>(n) + 16)
+    cell *= 2;
+  const std::int64_t rows = static_cast<std::int64_t>((h + cell - 1) / cell);
+  auto column = [&](std::int64_t x) { return (x - all.min.x) / cell; };
+  auto row = [&](std::int64_t y) { return (y - all.min.y) / cell; };
+  const std::size_t cells = static_cast<std::size_t>(column(all.max.x) + 1) * static_cast<std::size_t>(rows);
+
+  std::vector<std::uint32_t> begin(cells + 1, 0);
+  auto for_cells = [&](const Box64& b, auto&& f) {
+    for (std::int64_t c = column(b.min.x); c <= column(b.max.x); ++c)
+      for (std::int64_t r = row(b.min.y); r <= row(b.max.y); ++r)
+        f(static_cast<std::size_t>(c * rows + r));
+  };
+  for (const Box64& b : boxes) for_cells(b, [&](std::size_t k) { ++begin[k + 1]; });
+  for (std::size_t k = 1; k <= cells; ++k) begin[k] += begin[k - 1];
+  std::vector<std::uint32_t> items(begin[cells]);
+  std::vector<std::uint32_t> fill(begin.begin(), begin.end() - 1);
+  for (std::uint32_t i = 0; i < n; ++i) for_cells(boxes[i], [&](std::size_t k) { items[fill[k]++] = i; });
+
+  for (std::size_t k = 0; k < cells; ++k) {
+    const std::int64_t c = static_cast<std::int64_t>(k) / rows, r = static_cast<std::int64_t>(k) % rows;
+    for (std::uint32_t x = begin[k]; x < begin[k + 1]; ++x) {
+      const Box64& bi = boxes[items[x]];
+      for (std::uint32_t y = x + 1; y < begin[k + 1]; ++y) {
+        const Box64& bj = boxes[items[y]];
+        if (!bi.overlaps(bj)) continue;
+        if (column(std::max(bi.min.x, bj.min.x)) != c || row(std::max(bi.min.y, bj.min.y)) != r)
+          continue;  // reported by the cell of the intersection's lower-left corner
+        visit(std::min(items[x], items[y]), std::max(items[x], items[y]));
+      }
+    }
+  }
+}
+
+}  // namespace edgeland::detail
