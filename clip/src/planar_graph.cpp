@@ -5,6 +5,7 @@
 #include <tuple>
 
 #include "edgeland/kernel/angle.hpp"
+#include "radix_sort.hpp"
 
 namespace edgeland::detail {
 namespace {
@@ -106,7 +107,7 @@ PlaneGraph build_plane_graph(const std::vector<Fragment>& fragments,
       ends.push_back({forward ? b : a, 2 * i + 1});
     }
   }
-  std::sort(ends.begin(), ends.end(), [](const End& x, const End& y) { return x.key < y.key; });
+  radix_sort(ends, [](const End& e) { return e.key; });
   std::vector<std::uint64_t> keys;
   for (const End& end : ends) {
     if (keys.empty() || keys.back() != end.key) keys.push_back(end.key);
@@ -117,9 +118,20 @@ PlaneGraph build_plane_graph(const std::vector<Fragment>& fragments,
   PlaneGraph g;
   g.vertices.resize(keys.size());
   for (std::size_t i = 0; i < keys.size(); ++i) g.vertices[i] = point_of(keys[i]);
-  std::sort(pieces.begin(), pieces.end(), [](const Piece& x, const Piece& y) {
-    return std::tie(x.lo, x.hi, x.channel, x.polygon) < std::tie(y.lo, y.hi, y.channel, y.polygon);
-  });
+  // By (lo, hi), then (channel, polygon): pieces come in segment order, which is already
+  // (channel, polygon) order for clip's operands, and the sort is stable; a group that is not
+  // (hole splitting's bridges) is put in order on its own.
+  radix_sort(pieces, [](const Piece& p) { return std::uint64_t{p.lo} << 32 | p.hi; });
+  auto tag_less = [](const Piece& x, const Piece& y) {
+    return std::tie(x.channel, x.polygon) < std::tie(y.channel, y.polygon);
+  };
+  for (std::size_t i = 0; i < pieces.size();) {
+    std::size_t j = i + 1;
+    while (j < pieces.size() && pieces[j].lo == pieces[i].lo && pieces[j].hi == pieces[i].hi) ++j;
+    if (!std::is_sorted(pieces.begin() + i, pieces.begin() + j, tag_less))
+      std::stable_sort(pieces.begin() + i, pieces.begin() + j, tag_less);
+    i = j;
+  }
 
   // Merge pieces with equal endpoints, summing multiplicities per (channel, polygon).
   g.mult_begin.push_back(0);

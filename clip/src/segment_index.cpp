@@ -10,11 +10,7 @@ int sign(std::int64_t v) { return (v > 0) - (v < 0); }
 SegmentIndex::SegmentIndex(const std::vector<Segment>& segments,
                            const std::vector<std::uint32_t>& next) {
   const std::uint32_t n = static_cast<std::uint32_t>(segments.size());
-  boxes_.resize(n);
-  for (std::uint32_t s = 0; s < n; ++s) {
-    boxes_[s] = {segments[s].a, segments[s].a};
-    boxes_[s].expand(segments[s].b);
-  }
+  segments_ = &segments;
   // Greedy runs: extend while the next segment follows along the ring and keeps the run's
   // x and y directions (a zero component agrees with either).
   for (std::uint32_t s = 0; s < n;) {
@@ -31,12 +27,12 @@ SegmentIndex::SegmentIndex(const std::vector<Segment>& segments,
     runs_.push_back({s, last, dx < 0});
     s = last + 1;
   }
-  std::vector<Box64> run_boxes(runs_.size());
+  run_boxes_.resize(runs_.size());
   for (std::size_t r = 0; r < runs_.size(); ++r) {
-    run_boxes[r] = {segments[runs_[r].first].a, segments[runs_[r].first].a};
-    run_boxes[r].expand(segments[runs_[r].last].b);
+    run_boxes_[r] = {segments[runs_[r].first].a, segments[runs_[r].first].a};
+    run_boxes_[r].expand(segments[runs_[r].last].b);
   }
-  run_sweep_ = sorted_for_sweep(run_boxes);
+  run_sweep_ = sorted_for_sweep(run_boxes_);
 }
 
 }  // namespace edgeland::detail

@@ -10,9 +10,11 @@
 // Between two runs whose boxes overlap, monotonicity lets a two-pointer walk visit exactly the
 // segment pairs whose x-ranges overlap. Spiky rings give runs of one or two segments and the
 // cost of a plain box sweep (box_sweep.hpp).
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
+#include "box_grid.hpp"
 #include "box_sweep.hpp"
 #include "edgeland/kernel/bbox.hpp"
 #include "edgeland/kernel/polygon.hpp"
@@ -22,8 +24,10 @@ namespace edgeland::detail {
 class SegmentIndex {
  public:
   static constexpr std::uint32_t kRunLength = 16;
+  static constexpr std::size_t kGridFrom = 256;  // runs
 
   // next[s]: the segment that follows s along its ring (segments of a ring are consecutive).
+  // Keeps a reference to `segments`, which must outlive the index.
   SegmentIndex(const std::vector<Segment>& segments, const std::vector<std::uint32_t>& next);
 
   // visit(i, j) once per unordered pair of distinct segments whose closed boxes overlap, except
@@ -35,7 +39,11 @@ class SegmentIndex {
   template <class F>
   void query(const std::vector<Box64>& boxes, F&& visit) const;
 
-  const Box64& box(std::uint32_t s) const { return boxes_[s]; }
+  Box64 box(std::uint32_t s) const {
+    const Segment& g = (*segments_)[s];
+    return {{std::min(g.a.x, g.b.x), std::min(g.a.y, g.b.y)},
+            {std::max(g.a.x, g.b.x), std::max(g.a.y, g.b.y)}};
+  }
 
  private:
   struct Run {
@@ -50,8 +58,9 @@ class SegmentIndex {
   template <class F>
   void pairs_between(const Run& r1, const Run& r2, F& visit) const;
 
-  std::vector<Box64> boxes_;
+  const std::vector<Segment>* segments_;  // boxes are computed, not stored: less memory traffic
   std::vector<Run> runs_;
+  std::vector<Box64> run_boxes_;
   std::vector<SweepBox> run_sweep_;  // run boxes, sorted_for_sweep
 };
 
@@ -63,11 +72,11 @@ void SegmentIndex::pairs_between(const Run& r1, const Run& r2, F& visit) const {
   std::uint32_t from = 0;
   for (std::uint32_t k1 = 0; k1 < n1; ++k1) {
     const std::uint32_t s = at(r1, k1);
-    const Box64& bs = boxes_[s];
-    while (from < n2 && boxes_[at(r2, from)].max.x < bs.min.x) ++from;
+    const Box64 bs = box(s);
+    while (from < n2 && box(at(r2, from)).max.x < bs.min.x) ++from;
     for (std::uint32_t k2 = from; k2 < n2; ++k2) {
       const std::uint32_t t = at(r2, k2);
-      const Box64& bt = boxes_[t];
+      const Box64 bt = box(t);
       if (bt.min.x > bs.max.x) break;
       if (bt.min.y <= bs.max.y && bs.min.y <= bt.max.y) visit(s, t);
     }
@@ -76,9 +85,13 @@ void SegmentIndex::pairs_between(const Run& r1, const Run& r2, F& visit) const {
 
 template <class F>
 void SegmentIndex::for_each_overlapping_pair(F&& visit) const {
-  detail::for_each_overlapping_pair(run_sweep_, [&](std::uint32_t a, std::uint32_t b) {
-    pairs_between(runs_[a], runs_[b], visit);
-  });
+  auto between = [&](std::uint32_t a, std::uint32_t b) { pairs_between(runs_[a], runs_[b], visit); };
+  // Many runs: a grid, whose cost follows the boxes' local density; the sweep compares each
+  // run with every run spanning its x, which on grid-like inputs is a whole column of them.
+  if (runs_.size() > kGridFrom)
+    for_each_overlapping_pair_in_grid(run_boxes_, between);
+  else
+    detail::for_each_overlapping_pair(run_sweep_, between);
 }
 
 template <class F>
@@ -87,7 +100,7 @@ void SegmentIndex::query(const std::vector<Box64>& boxes, F&& visit) const {
                                     [&](std::uint32_t k, std::uint32_t r) {
                                       const Run& run = runs_[r];
                                       for (std::uint32_t s = run.first; s <= run.last; ++s)
-                                        if (boxes_[s].overlaps(boxes[k])) visit(k, s);
+                                        if (box(s).overlaps(boxes[k])) visit(k, s);
                                     });
 }
 
