@@ -9,11 +9,13 @@
 #include <vector>
 
 #include "edgeland/kernel/bbox.hpp"
+#include "box_sweep.hpp"
 #include "edgeland/kernel/int128.hpp"
 
 namespace edgeland::detail {
 
-// Calls visit(i, j), i < j, once for every pair of closed boxes that overlap.
+// Calls visit(i, j), i < j, once for every pair of closed boxes that overlap. Falls back to the
+// sweep of box_sweep.hpp when the boxes are too uneven for a grid.
 template <class F>
 void for_each_overlapping_pair_in_grid(const std::vector<Box64>& boxes, F&& visit) {
   const std::size_t n = boxes.size();
@@ -34,6 +36,15 @@ void for_each_overlapping_pair_in_grid(const std::vector<Box64>& boxes, F&& visi
   auto row = [&](std::int64_t y) { return (y - all.min.y) / cell; };
   const std::size_t cells = static_cast<std::size_t>(column(all.max.x) + 1) * static_cast<std::size_t>(rows);
 
+  // A few huge boxes among many small ones would fill every cell: past 32 cells per box on
+  // average, the sweep is the better tool.
+  Int128 entries = 0;
+  for (const Box64& b : boxes)
+    entries += Int128(column(b.max.x) - column(b.min.x) + 1) * (row(b.max.y) - row(b.min.y) + 1);
+  if (entries > 32 * static_cast<Int128>(n)) {
+    for_each_overlapping_pair(sorted_for_sweep(boxes), visit);
+    return;
+  }
   std::vector<std::uint32_t> begin(cells + 1, 0);
   auto for_cells = [&](const Box64& b, auto&& f) {
     for (std::int64_t c = column(b.min.x); c <= column(b.max.x); ++c)

@@ -1,0 +1,167 @@
+// The clipper's candidate searches (clip/src: segment_index, box_grid, point_grid) against
+// brute force. They only propose pairs and points for the exact tests, so what matters is that
+// they never miss one (a missed pair is a missed intersection) and that pairs come once.
+// Generated inputs mix tiny, long and huge boxes, zero-width ones, shared coordinates and both
+// ends of the coordinate range.
+#include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
+
+#include <algorithm>
+#include <set>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+#include "box_grid.hpp"
+#include "edgeland/kernel/point.hpp"
+#include "point_grid.hpp"
+#include "segment_index.hpp"
+
+namespace edgeland::detail {
+namespace {
+
+rc::Gen<std::int64_t> coordinate() {
+  return rc::gen::oneOf(rc::gen::inRange<std::int64_t>(-20, 21),
+                        rc::gen::inRange<std::int64_t>(-kCoordBound, kCoordBound + 1),
+                        rc::gen::element(-kCoordBound, kCoordBound, std::int64_t{0}));
+}
+
+rc::Gen<Point64> point() {
+  return rc::gen::apply([](std::int64_t x, std::int64_t y) { return Point64{x, y}; }, coordinate(),
+                        coordinate());
+}
+
+rc::Gen<Box64> box() {
+  return rc::gen::apply(
+      [](Point64 a, Point64 b) {
+        return Box64{{std::min(a.x, b.x), std::min(a.y, b.y)}, {std::max(a.x, b.x), std::max(a.y, b.y)}};
+      },
+      point(), point());
+}
+
+using Pairs = std::vector<std::pair<std::uint32_t, std::uint32_t>>;
+
+RC_GTEST_PROP(BoxGrid, ReportsEveryOverlappingPairExactlyOnce, ()) {
+  const auto boxes = *rc::gen::container<std::vector<Box64>>(box());
+  Pairs expected, got;
+  for (std::uint32_t i = 0; i < boxes.size(); ++i)
+    for (std::uint32_t j = i + 1; j < boxes.size(); ++j)
+      if (boxes[i].overlaps(boxes[j])) expected.emplace_back(i, j);
+  for_each_overlapping_pair_in_grid(boxes, [&](std::uint32_t i, std::uint32_t j) {
+    RC_ASSERT(i < j);
+    got.emplace_back(i, j);
+  });
+  std::sort(got.begin(), got.end());
+  RC_ASSERT(got == expected);  // sorted, so a duplicate would show as an extra element
+}
+
+// Many small boxes in a patch (the grid's own case, not its fallback to the sweep).
+RC_GTEST_PROP(BoxGrid, ReportsEveryPairAmongManySmallBoxes, ()) {
+  const auto corners = *rc::gen::container<std::vector<Point64>>(
+      rc::gen::apply([](std::int64_t x, std::int64_t y) { return Point64{x, y}; },
+                     rc::gen::inRange<std::int64_t>(-500, 500), rc::gen::inRange<std::int64_t>(-500, 500)));
+  std::vector<Box64> boxes;
+  for (std::size_t i = 0; i < corners.size(); ++i) {
+    const std::int64_t w = static_cast<std::int64_t>(i * 7 % 31), h = static_cast<std::int64_t>(i * 13 % 23);
+    boxes.push_back({corners[i], {corners[i].x + w, corners[i].y + h}});
+  }
+  Pairs expected, got;
+  for (std::uint32_t i = 0; i < boxes.size(); ++i)
+    for (std::uint32_t j = i + 1; j < boxes.size(); ++j)
+      if (boxes[i].overlaps(boxes[j])) expected.emplace_back(i, j);
+  for_each_overlapping_pair_in_grid(boxes, [&](std::uint32_t i, std::uint32_t j) { got.emplace_back(i, j); });
+  std::sort(got.begin(), got.end());
+  RC_ASSERT(got == expected);
+}
+
+RC_GTEST_PROP(PointGrid, FindsEveryPointWithinOneUnitOfASegment, ()) {
+  // Half the cases on a small patch with many points: cells of a unit or two, where the
+  // one-unit margins decide.
+  const bool small = *rc::gen::arbitrary<bool>();
+  const auto small_point = rc::gen::apply([](std::int64_t x, std::int64_t y) { return Point64{x, y}; },
+                                          rc::gen::inRange<std::int64_t>(-10, 11),
+                                          rc::gen::inRange<std::int64_t>(-10, 11));
+  const Point64 a = small ? *small_point : *point(), b = small ? *small_point : *point();
+  const Segment s{a, b};
+  // Points anywhere, and points a unit or two off the segment (where the margins matter).
+  auto points = small ? *rc::gen::container<std::vector<Point64>>(300, small_point)
+                      : *rc::gen::container<std::vector<Point64>>(point());
+  const auto offsets = *rc::gen::container<std::vector<std::tuple<int, int, int>>>(
+      rc::gen::tuple(rc::gen::inRange(0, 17), rc::gen::inRange(-2, 3), rc::gen::inRange(-2, 3)));
+  for (const auto& [k, ox, oy] : offsets) {
+    const Point64 on{a.x + static_cast<std::int64_t>(Int128(b.x - a.x) * k / 16),
+                     a.y + static_cast<std::int64_t>(Int128(b.y - a.y) * k / 16)};
+    const Point64 p{on.x + ox, on.y + oy};
+    if (in_range(p)) points.push_back(p);
+  }
+  std::set<std::uint32_t> found;
+  PointGrid(points).for_each_near(s, [&](std::uint32_t k) {
+    RC_ASSERT(found.insert(k).second);  // each point at most once
+  });
+  // Exact: p is within L-infinity distance 1 of s iff the square [p - 1, p + 1]^2 meets s
+  // (separating axes: x, y and the segment's normal).
+  for (std::uint32_t k = 0; k < points.size(); ++k) {
+    const Point64 p = points[k];
+    const bool in_box = std::min(a.x, b.x) <= p.x + 1 && std::max(a.x, b.x) >= p.x - 1 &&
+                        std::min(a.y, b.y) <= p.y + 1 && std::max(a.y, b.y) >= p.y - 1;
+    const Int128 dx = b.x - a.x, dy = b.y - a.y;
+    const Int128 det = dx * (p.y - a.y) - dy * (p.x - a.x);
+    const bool near = in_box && (det < 0 ? -det : det) <= (dx < 0 ? -dx : dx) + (dy < 0 ? -dy : dy);
+    if (near) RC_ASSERT(found.count(k) == 1u);
+  }
+}
+
+// Rings of random points (any shape: self-crossing, repeated directions) as the index sees them.
+RC_GTEST_PROP(SegmentIndex, ProposesEveryBoxOverlappingPairButRunNeighbours, ()) {
+  const auto ring_sizes = *rc::gen::container<std::vector<int>>(rc::gen::inRange(2, 40));
+  std::vector<Segment> segs;
+  std::vector<std::uint32_t> next;
+  for (int size : ring_sizes) {
+    std::vector<Point64> pts = *rc::gen::container<std::vector<Point64>>(
+        static_cast<std::size_t>(size), rc::gen::oneOf(point(), rc::gen::apply([](std::int64_t x, std::int64_t y) {
+                                               return Point64{x, y};
+                                             }, rc::gen::inRange<std::int64_t>(0, 8),
+                                             rc::gen::inRange<std::int64_t>(0, 8))));
+    pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
+    while (pts.size() > 1 && pts.front() == pts.back()) pts.pop_back();
+    if (pts.size() < 2) continue;
+    const std::uint32_t first = static_cast<std::uint32_t>(segs.size());
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+      segs.push_back({pts[i], pts[(i + 1) % pts.size()]});
+      next.push_back(static_cast<std::uint32_t>(segs.size()));
+    }
+    next.back() = first;
+  }
+  const SegmentIndex index(segs, next);
+  std::set<std::pair<std::uint32_t, std::uint32_t>> got;
+  index.for_each_overlapping_pair([&](std::uint32_t i, std::uint32_t j) {
+    RC_ASSERT(i != j);
+    RC_ASSERT(got.insert({std::min(i, j), std::max(i, j)}).second);  // once
+  });
+  for (std::uint32_t i = 0; i < segs.size(); ++i)
+    for (std::uint32_t j = i + 1; j < segs.size(); ++j) {
+      if (!index.box(i).overlaps(index.box(j)) || got.count({i, j})) continue;
+      // Left out: only consecutive segments of one run, which meet at one shared endpoint.
+      RC_ASSERT(next[i] == j || next[j] == i);
+      const Segment& s = segs[i];
+      const Segment& t = segs[j];
+      const Point64 shared = next[i] == j ? s.b : t.b;
+      RC_ASSERT((shared == s.a || shared == s.b) && (shared == t.a || shared == t.b));
+      // Same direction in x and y (a monotone run): nothing else in common.
+      auto sign = [](std::int64_t v) { return (v > 0) - (v < 0); };
+      const Segment& u = next[i] == j ? s : t;
+      const Segment& w = next[i] == j ? t : s;
+      RC_ASSERT(sign(u.b.x - u.a.x) * sign(w.b.x - w.a.x) >= 0);
+      RC_ASSERT(sign(u.b.y - u.a.y) * sign(w.b.y - w.a.y) >= 0);
+    }
+  // Box queries: every segment whose box overlaps a query box.
+  const auto queries = *rc::gen::container<std::vector<Box64>>(box());
+  std::set<std::pair<std::uint32_t, std::uint32_t>> hits;
+  index.query(queries, [&](std::uint32_t k, std::uint32_t s) { hits.insert({k, s}); });
+  for (std::uint32_t k = 0; k < queries.size(); ++k)
+    for (std::uint32_t s = 0; s < segs.size(); ++s)
+      RC_ASSERT(hits.count({k, s}) == (queries[k].overlaps(index.box(s)) ? 1u : 0u));
+}
+
+}  // namespace
+}  // namespace edgeland::detail
