@@ -75,7 +75,8 @@ ClipResult run(const Pipeline& p, std::vector<Box64>* moved_boxes = nullptr) {
   detail::SnapStats snap;
   const auto fragments = detail::snap_round(segs, next, snap);
   const detail::PlaneGraph g =
-      detail::build_plane_graph(fragments, p.edges.channel, p.edges.polygon, next, snap.touched);
+      detail::build_plane_graph(segs, fragments, p.edges.channel, p.edges.polygon, next,
+                                snap.touched);
   const auto left = detail::label_sides(g, p.mode);
   for (auto& region : detail::assemble(g, left, p.label_of)) {
     for (Ring& r : detail::split_holes(std::move(region.outers), std::move(region.holes),

@@ -49,17 +49,23 @@ void PlaneGraph::append_points(std::uint32_t h, std::vector<Point64>& out) const
                interior.begin() + interior_begin[e + 1]);
 }
 
-PlaneGraph build_plane_graph(const std::vector<Fragment>& fragments,
+PlaneGraph build_plane_graph(const std::vector<Segment>& segments,
+                             const std::vector<Fragment>& fragments,
                              const std::vector<std::uint8_t>& channel_of,
                              const std::vector<std::int32_t>& polygon_of,
                              const std::vector<std::uint32_t>& next,
                              const std::vector<bool>& touched) {
   const std::uint32_t n = static_cast<std::uint32_t>(next.size());
-  // Fragments come in segment order, at least one per segment; an untouched segment has one.
+  // Listed fragments come in segment order; a segment with none listed is its own fragment
+  // (always so for an untouched one).
   std::vector<std::uint32_t> first_fragment(n + 1, 0);
   for (const Fragment& f : fragments) ++first_fragment[f.parent + 1];
   for (std::uint32_t s = 0; s < n; ++s) first_fragment[s + 1] += first_fragment[s];
-  auto piece_of = [&](std::uint32_t s) -> const Segment& { return fragments[first_fragment[s]].seg; };
+  auto listed = [&](std::uint32_t s) { return first_fragment[s] != first_fragment[s + 1]; };
+  // The first fragment of segment s (for an untouched one, the segment).
+  auto piece_of = [&](std::uint32_t s) -> const Segment& {
+    return listed(s) ? fragments[first_fragment[s]].seg : segments[s];
+  };
 
   // Where chains of untouched segments start: after a touched segment, at the ring's smallest
   // vertex, and, for a ring nothing touches, also halfway round (no edge may be a loop).
@@ -97,9 +103,10 @@ PlaneGraph build_plane_graph(const std::vector<Fragment>& fragments,
       if (starts_chain[s]) ends.push_back({key_of(piece_of(s).a), kChainStart});
       continue;
     }
-    for (std::uint32_t k = first_fragment[s]; k < first_fragment[s + 1]; ++k) {
-      const Fragment& f = fragments[k];
-      const std::uint64_t a = key_of(f.seg.a), b = key_of(f.seg.b);
+    const std::uint32_t count = listed(s) ? first_fragment[s + 1] - first_fragment[s] : 1;
+    for (std::uint32_t k = 0; k < count; ++k) {
+      const Segment& f = listed(s) ? fragments[first_fragment[s] + k].seg : segments[s];
+      const std::uint64_t a = key_of(f.a), b = key_of(f.b);
       const bool forward = a < b;
       const std::uint32_t i = static_cast<std::uint32_t>(pieces.size());
       pieces.push_back({0, 0, polygon_of[s], channel_of[s], static_cast<std::int8_t>(forward ? 1 : -1)});

@@ -55,11 +55,13 @@ struct PlaneGraph {
   void append_points(std::uint32_t h, std::vector<Point64>& out) const;
 };
 
-// `channel_of` / `polygon_of` / `next` / `touched` describe each input segment
-// (Fragment::parent): its tag, the segment after it along its ring, and whether it is untouched
+// `fragments` lists the fragments of some segments (snap_round); a segment with none listed is
+// its own single fragment. `channel_of` / `polygon_of` / `next` / `touched` describe each input
+// segment: its tag, the segment after it along its ring, and whether it is untouched
 // (SnapStats::touched; an untouched segment is its own single fragment).
-// O(f log f) for the f fragments of touched segments, plus O(n) for the rest.
-PlaneGraph build_plane_graph(const std::vector<Fragment>& fragments,
+// O(f) for the f fragments of touched segments (radix sorts), plus O(n) for the rest.
+PlaneGraph build_plane_graph(const std::vector<Segment>& segments,
+                             const std::vector<Fragment>& fragments,
                              const std::vector<std::uint8_t>& channel_of,
                              const std::vector<std::int32_t>& polygon_of,
                              const std::vector<std::uint32_t>& next,

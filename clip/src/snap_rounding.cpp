@@ -164,7 +164,8 @@ void close_hot_set(const std::vector<Segment>& segs, const SegmentIndex& index,
   }
 }
 
-// Routes every segment through its split points and the centres of the hot pixels it meets.
+// Routes every segment that has stops (split points, centres of hot pixels it meets) through
+// them, in order along it. Segments without stops are their own fragment and are not listed.
 std::vector<Fragment> route(const std::vector<Segment>& segs, const Closure& c,
                             const std::vector<std::pair<std::uint32_t, Point64>>& splits) {
   std::vector<std::pair<std::uint32_t, Point64>> stops = splits;
@@ -177,9 +178,9 @@ std::vector<Fragment> route(const std::vector<Segment>& segs, const Closure& c,
     return x.second < y.second;
   });
   std::vector<Fragment> out;
-  out.reserve(segs.size() + stops.size());
-  std::size_t k = 0;
-  for (std::uint32_t s = 0; s < segs.size(); ++s) {
+  out.reserve(2 * stops.size());
+  for (std::size_t k = 0; k < stops.size();) {
+    const std::uint32_t s = stops[k].first;
     Point64 at = segs[s].a;
     for (; k < stops.size() && stops[k].first == s; ++k) {
       const Point64 p = stops[k].second;
@@ -187,56 +188,116 @@ std::vector<Fragment> route(const std::vector<Segment>& segs, const Closure& c,
       out.push_back({{at, p}, s});
       at = p;
     }
-    if (at != segs[s].b) out.push_back({{at, segs[s].b}, s});
+    out.push_back({{at, segs[s].b}, s});
   }
   return out;
 }
 
-// Contacts between fragments of moved segments and all fragments, each pair once.
-Contacts recheck(const std::vector<Fragment>& frags, const std::vector<bool>& moved,
-                 const std::vector<std::uint32_t>& next, const SegmentIndex& index,
-                 std::vector<bool>& touched) {
-  const std::size_t segment_count = next.size();
+// All fragments: the listed ones (ids 0 .. F-1) and, for every segment s without listed
+// fragments, the segment itself (id F + s).
+class AllFragments {
+ public:
+  AllFragments(const std::vector<Segment>& segs, const std::vector<Fragment>& listed)
+      : segs_(segs), listed_(listed), first_(segs.size() + 1, 0) {
+    for (const Fragment& f : listed) ++first_[f.parent + 1];
+    for (std::size_t s = 0; s < segs.size(); ++s) first_[s + 1] += first_[s];
+  }
+  std::uint32_t listed_count() const { return static_cast<std::uint32_t>(listed_.size()); }
+  std::uint32_t id_bound() const { return listed_count() + static_cast<std::uint32_t>(segs_.size()); }
+  bool has_listed(std::uint32_t s) const { return first_[s] != first_[s + 1]; }
+  const Segment& seg(std::uint32_t id) const {
+    return id < listed_count() ? listed_[id].seg : segs_[id - listed_count()];
+  }
+  std::uint32_t parent(std::uint32_t id) const {
+    return id < listed_count() ? listed_[id].parent : id - listed_count();
+  }
+  template <class F>
+  void for_each_of(std::uint32_t s, F&& f) const {
+    if (!has_listed(s)) return f(listed_count() + s);
+    for (std::uint32_t g = first_[s]; g < first_[s + 1]; ++g) f(g);
+  }
+  // How many fragments there are in all.
+  std::size_t count() const {
+    std::size_t unlisted = 0;
+    for (std::size_t s = 0; s < segs_.size(); ++s) unlisted += !has_listed(static_cast<std::uint32_t>(s));
+    return listed_.size() + unlisted;
+  }
+
+ private:
+  const std::vector<Segment>& segs_;
+  const std::vector<Fragment>& listed_;
+  std::vector<std::uint32_t> first_;
+};
+
+// Contacts between fragments of moved segments and all fragments, each pair once. Split
+// points are reported by fragment id (AllFragments).
+Contacts recheck(const AllFragments& all, const std::vector<bool>& moved,
+                 const SegmentIndex& index, std::size_t segment_count, std::vector<bool>& touched) {
   std::vector<Box64> boxes;
   std::vector<std::uint32_t> which;
-  std::vector<bool> is_moved(frags.size(), false);
-  for (std::uint32_t i = 0; i < frags.size(); ++i) {
-    if (!moved[frags[i].parent]) continue;
-    boxes.push_back(segment_box(frags[i].seg));
+  std::vector<bool> is_moved(all.listed_count(), false);  // moved segments are always listed
+  for (std::uint32_t i = 0; i < all.listed_count(); ++i) {
+    if (!moved[all.parent(i)]) continue;
+    boxes.push_back(segment_box(all.seg(i)));
     which.push_back(i);
     is_moved[i] = true;
   }
+  auto moved_id = [&](std::uint32_t id) { return id < all.listed_count() && is_moved[id]; };
   std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
   auto add = [&](std::uint32_t f, std::uint32_t g) {
-    if (f == g || (is_moved[g] && g < f)) return;  // a moved pair is seen from both sides
+    if (f == g || (moved_id(g) && g < f)) return;  // a moved pair is seen from both sides
     pairs.emplace_back(std::min(f, g), std::max(f, g));
   };
-  if (8 * which.size() < frags.size() && frags.size() < 2 * segment_count) {
-    // Few moved fragments and few splits: reuse the segments' sweep order. Every fragment lies
-    // within one unit of its segment's box (grow the query boxes by 2 to be safe).
-    std::vector<std::uint32_t> first(segment_count + 1, 0);
-    for (const Fragment& f : frags) ++first[f.parent + 1];
-    for (std::size_t s = 0; s < segment_count; ++s) first[s + 1] += first[s];
+  const std::size_t total = all.count();
+  if (8 * which.size() < total && total < 2 * segment_count) {
+    // Few moved fragments and few splits: query the segment index. Every fragment lies within
+    // one unit of its segment's box (grow the query boxes by 2 to be safe).
     for (Box64& b : boxes) b = {{b.min.x - 2, b.min.y - 2}, {b.max.x + 2, b.max.y + 2}};
     index.query(boxes, [&](std::uint32_t k, std::uint32_t s) {
-      for (std::uint32_t g = first[s]; g < first[s + 1]; ++g) add(which[k], g);
+      all.for_each_of(s, [&](std::uint32_t g) { add(which[k], g); });
     });
     std::sort(pairs.begin(), pairs.end());
     pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
   } else {
     // Many moved fragments (spiky inputs: cut short at every crossing): a grid of all
     // fragment boxes.
-    std::vector<Box64> all(frags.size());
-    for (std::size_t i = 0; i < frags.size(); ++i) all[i] = segment_box(frags[i].seg);
-    for_each_overlapping_pair_in_grid(all, [&](std::uint32_t f, std::uint32_t g) {
-      if (is_moved[f] || is_moved[g]) pairs.emplace_back(f, g);
+    std::vector<std::uint32_t> ids;
+    std::vector<Box64> all_boxes;
+    for (std::uint32_t s = 0; s < segment_count; ++s)
+      all.for_each_of(s, [&](std::uint32_t id) {
+        ids.push_back(id);
+        all_boxes.push_back(segment_box(all.seg(id)));
+      });
+    for_each_overlapping_pair_in_grid(all_boxes, [&](std::uint32_t i, std::uint32_t j) {
+      if (moved_id(ids[i]) || moved_id(ids[j])) pairs.emplace_back(ids[i], ids[j]);
     });
   }
   Contacts c;
   for (const auto& [f, g] : pairs)
-    if (classify_pair(frags[f].seg, f, frags[g].seg, g, c) != Meeting::kNone)
-      touched[frags[f].parent] = touched[frags[g].parent] = true;
+    if (classify_pair(all.seg(f), f, all.seg(g), g, c) != Meeting::kNone)
+      touched[all.parent(f)] = touched[all.parent(g)] = true;
   return c;
+}
+
+// The listed fragments after cutting fragments (by AllFragments id) at exact split points.
+std::vector<Fragment> split_fragments(const AllFragments& all, std::size_t segment_count,
+                                      const std::vector<std::pair<std::uint32_t, Point64>>& splits) {
+  std::vector<Segment> pieces(all.id_bound());
+  for (std::uint32_t id = 0; id < all.id_bound(); ++id) pieces[id] = all.seg(id);
+  const std::vector<Fragment> cut = route(pieces, Closure{}, splits);  // by piece id
+  std::vector<std::uint32_t> first(all.id_bound() + 1, 0);
+  for (const Fragment& f : cut) ++first[f.parent + 1];
+  for (std::size_t id = 0; id < all.id_bound(); ++id) first[id + 1] += first[id];
+  std::vector<Fragment> out;
+  for (std::uint32_t s = 0; s < segment_count; ++s)
+    all.for_each_of(s, [&](std::uint32_t id) {
+      if (first[id] == first[id + 1]) {
+        if (id < all.listed_count()) out.push_back({all.seg(id), s});
+        return;
+      }
+      for (std::uint32_t k = first[id]; k < first[id + 1]; ++k) out.push_back({cut[k].seg, s});
+    });
+  return out;
 }
 
 }  // namespace
@@ -298,18 +359,13 @@ std::vector<Fragment> snap_round(const std::vector<Segment>& segs,
       if (closure.moved[i]) stats.moved_boxes.push_back(index.box(i));
 
     // Safety re-check: fragments of moved segments against everything, exactly.
-    Contacts again = recheck(frags, closure.moved, next, index, stats.touched);
+    const AllFragments all(segs, frags);
+    Contacts again = recheck(all, closure.moved, index, segs.size(), stats.touched);
     if (again.hot.empty()) {
       if (again.splits.empty()) return frags;
       // Only exact integer splits remain (snapped fragments landing on vertices or overlapping
       // collinearly): split and finish; nothing moves.
-      std::vector<Segment> pieces(frags.size());
-      for (std::size_t i = 0; i < frags.size(); ++i) pieces[i] = frags[i].seg;
-      std::vector<Fragment> out;
-      std::vector<Fragment> split = route(pieces, Closure{}, again.splits);
-      out.reserve(split.size());
-      for (const Fragment& f : split) out.push_back({f.seg, frags[f.parent].parent});
-      return out;
+      return split_fragments(all, segs.size(), again.splits);
     }
     // A crossing survived: snap rounding's guarantee was violated; make its pixel hot and
     // run the closure again over the original segments.

@@ -28,8 +28,10 @@ struct SnapStats {
   std::vector<bool> touched;
 };
 
-// Fragments of every input segment, in input order; a segment that meets no hot pixel and has
-// no contact yields itself. next[s] is the segment following s along its ring.
+// The fragments of the segments that snap rounding cuts or moves, in input order (each such
+// segment's fragments run from its start to its end). Every other segment is its own single
+// fragment and is not listed: on smooth inputs that is nearly all of them.
+// next[s] is the segment following s along its ring.
 // Throws std::logic_error if the safety re-check does not converge.
 std::vector<Fragment> snap_round(const std::vector<Segment>& segments,
                                  const std::vector<std::uint32_t>& next, SnapStats& stats);
