@@ -76,8 +76,13 @@ PlaneGraph build_plane_graph(const std::vector<Segment>& segments,
     const std::uint32_t len = e - b + 1;
     std::uint32_t smallest = b;
     bool all_untouched = true;
+    Point64 least = piece_of(b).a;
     for (std::uint32_t s = b; s <= e; ++s) {
-      if (piece_of(s).a < piece_of(smallest).a) smallest = s;
+      const Point64 start = piece_of(s).a;
+      if (start < least) {
+        least = start;
+        smallest = s;
+      }
       all_untouched = all_untouched && !touched[s];
     }
     for (std::uint32_t s = b; s <= e; ++s) {
