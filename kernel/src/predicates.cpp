@@ -86,13 +86,15 @@ SegmentIntersection point_against_segment(Point64 p, const Segment& t) noexcept 
 SegmentIntersection intersect(const Segment& s, const Segment& t) noexcept {
   if (s.a == s.b) return point_against_segment(s.a, t);
   if (t.a == t.b) return point_against_segment(t.a, s);
+  SegmentIntersection r;
+  // Most pairs a clipper asks about are disjoint: reject on the first side test that allows it.
   const int o1 = sign(orient_det(s.a, s.b, t.a));
   const int o2 = sign(orient_det(s.a, s.b, t.b));
+  if (o1 * o2 > 0) return r;  // t strictly on one side of the line of s
+  if (o1 == 0 && o2 == 0) return collinear_intersection(s, t);
   const int o3 = sign(orient_det(t.a, t.b, s.a));
   const int o4 = sign(orient_det(t.a, t.b, s.b));
-  SegmentIntersection r;
-  if (o1 == 0 && o2 == 0) return collinear_intersection(s, t);
-  if (o1 * o2 > 0 || o3 * o4 > 0) return r;
+  if (o3 * o4 > 0) return r;
   // From here the lines cross at exactly one point, which lies on both closed segments.
   if (o1 == 0 || o2 == 0 || o3 == 0 || o4 == 0) {
     r.relation = SegmentRelation::kTouching;
