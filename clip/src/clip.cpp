@@ -101,7 +101,10 @@ Box64 grown(Box64 b, std::int64_t by) {
 // where it was). Left-out polygons are unaffected by the operation: kept as they are, or dropped
 // by an intersection. If rounding moved a segment near a left-out polygon, that polygon is
 // brought in and the operation re-run; the included set only grows, so this terminates.
-ClipResult clip_near(ClipOp op, const PolygonSet& subject, const PolygonSet& clip_set) {
+// subject_canonical: the subject is in canonical form (an earlier result), so left-out polygons
+// are copied as they are and merged into the sorted result.
+ClipResult clip_near(ClipOp op, const PolygonSet& subject, const PolygonSet& clip_set,
+                     bool subject_canonical) {
   std::vector<Box64> boxes(subject.size());
   for (std::size_t i = 0; i < subject.size(); ++i) boxes[i] = *bounding_box(subject[i]);
   std::vector<bool> included(subject.size(), false);
@@ -133,9 +136,14 @@ ClipResult clip_near(ClipOp op, const PolygonSet& subject, const PolygonSet& cli
       if (!included[left_out_index[k]]) included[left_out_index[k]] = grew = true;
     });
     if (grew) continue;
-    if (op != ClipOp::kIntersection)
-      for (std::size_t i : left_out_index) r.polygons.push_back(detail::canonical_ring(subject[i]));
-    std::sort(r.polygons.begin(), r.polygons.end());
+    if (op == ClipOp::kIntersection) return r;
+    const auto computed = static_cast<std::ptrdiff_t>(r.polygons.size());
+    for (std::size_t i : left_out_index)
+      r.polygons.push_back(subject_canonical ? subject[i] : detail::canonical_ring(subject[i]));
+    if (subject_canonical)  // both parts already sorted
+      std::inplace_merge(r.polygons.begin(), r.polygons.begin() + computed, r.polygons.end());
+    else
+      std::sort(r.polygons.begin(), r.polygons.end());
     return r;
   }
 }
@@ -177,9 +185,9 @@ void require_valid_box(const Box64& box) {
 
 // subject OP clip for operands known to be valid.
 ClipResult clip_of_valid(ClipOp op, const PolygonSet& subject, const PolygonSet& clip_set,
-                         const ClipOptions& options) {
+                         const ClipOptions& options, bool subject_canonical = false) {
   return guarded(
-      [&] { return clip_near(op, subject, clip_set); },
+      [&] { return clip_near(op, subject, clip_set, subject_canonical); },
       options, op_name(op), [&] { return to_wkt(subject); }, [&] { return to_wkt(clip_set); });
 }
 
@@ -249,14 +257,17 @@ ValidSet::ValidSet(PolygonSet set, Operand which) : set_(std::move(set)) {
 // The one way library code makes a ValidSet without validating: from an operation's output.
 struct ValidSetFactory {
   static ValidClipResult from(ClipResult r) {
-    return {ValidSet(std::move(r.polygons), ValidSet::Trusted{}), r.stats};
+    ValidSet set(std::move(r.polygons), ValidSet::Trusted{});
+    set.canonical_ = true;  // every output is in canonical form (clip.hpp)
+    return {std::move(set), r.stats};
   }
+  static bool canonical(const ValidSet& s) { return s.canonical_; }
 };
 
 ValidClipResult clip(ClipOp op, const ValidSet& subject, const ValidSet& clip_set,
                      const ClipOptions& options) {
-  return ValidSetFactory::from(
-      clip_of_valid(op, subject.polygons(), clip_set.polygons(), options));
+  return ValidSetFactory::from(clip_of_valid(op, subject.polygons(), clip_set.polygons(), options,
+                                             ValidSetFactory::canonical(subject)));
 }
 
 ValidClipResult clip_to_box(const ValidSet& set, const Box64& box, const ClipOptions& options) {

@@ -143,7 +143,9 @@ SideState state_above_point(const PlaneGraph& g, const std::vector<SideState>& l
   return left[left_side ? 2 * e : 2 * e + 1];
 }
 
-Below find_below(const PlaneGraph& g, const std::vector<Piece>& pieces, const XStabbing& stab,
+// `stab` may be null: then every piece is looked at (cheaper than building the tree for a few
+// queries).
+Below find_below(const PlaneGraph& g, const std::vector<Piece>& pieces, const XStabbing* stab,
                  const std::vector<bool>& labeled, const std::vector<SideState>& left, Point64 p) {
   Below best;
   const Piece* best_piece = nullptr;
@@ -156,7 +158,7 @@ Below find_below(const PlaneGraph& g, const std::vector<Piece>& pieces, const XS
     best_piece = &piece;
     best_kind = kind;
   };
-  stab.for_each_spanning(p.x, [&](std::uint32_t k) {
+  auto consider = [&](std::uint32_t k) {
     const Piece& piece = pieces[k];
     if (!labeled[g.from[piece.edge]]) return;
     const Point64 a = piece.a, b = piece.b;
@@ -178,7 +180,14 @@ Below find_below(const PlaneGraph& g, const std::vector<Piece>& pieces, const XS
     if (orientation(lo, hi, p) != Orientation::kCounterClockwise) return;  // not below p
     const Int128 dx = hi.x - lo.x;
     offer(piece, 3, Int128(lo.y) * dx + Int128(hi.y - lo.y) * (p.x - lo.x), dx);
-  });
+  };
+  if (stab) {
+    stab->for_each_spanning(p.x, consider);
+  } else {
+    for (std::uint32_t k = 0; k < pieces.size(); ++k)
+      if (std::min(pieces[k].a.x, pieces[k].b.x) <= p.x && p.x <= std::max(pieces[k].a.x, pieces[k].b.x))
+        consider(k);
+  }
   if (!best.found) return best;
   if (best_kind == 3) {
     // Running east (a -> b with a.x < b.x), the piece's left side is above it.
@@ -204,6 +213,8 @@ std::vector<SideState> label_sides(const PlaneGraph& g, LabelMode mode) {
   std::vector<bool> visited(nv, false);
   std::unique_ptr<XStabbing> stab;
   std::vector<Piece> pieces;
+  constexpr int kScansBeforeTree = 4;
+  int located = 0;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> queue;  // (vertex, known position)
   bool any_labeled = false;
 
@@ -212,11 +223,11 @@ std::vector<SideState> label_sides(const PlaneGraph& g, LabelMode mode) {
     // v0 is the smallest vertex of a new component: west of it lies its outer face.
     SideState base = empty_state(mode);
     if (any_labeled) {
-      if (!stab) {
-        pieces = pieces_of(g);
-        stab = std::make_unique<XStabbing>(pieces);
-      }
-      const Below below = find_below(g, pieces, *stab, visited, left, g.vertices[v0]);
+      // A few components are located by scanning every piece; from the fifth on, a segment
+      // tree pays for itself.
+      if (pieces.empty()) pieces = pieces_of(g);
+      if (!stab && ++located > kScansBeforeTree) stab = std::make_unique<XStabbing>(pieces);
+      const Below below = find_below(g, pieces, stab.get(), visited, left, g.vertices[v0]);
       if (below.found) base = below.above;
     }
     const std::uint32_t k0 = sector_containing(g, v0, {-1, 0});

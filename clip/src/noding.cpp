@@ -17,6 +17,12 @@ void split_if_interior(Contacts& c, std::uint32_t seg, const Segment& s, Point64
 
 Meeting classify_pair(const Segment& s, std::uint32_t i, const Segment& t, std::uint32_t j,
                       Contacts& c) {
+  // The same segment twice (shared edges of neighbouring polygons, the common case in a
+  // partition): an overlap whose ends are both segments' ends, so nothing to split.
+  if ((s.a == t.b && s.b == t.a) || (s.a == t.a && s.b == t.b)) {
+    ++c.intersections;
+    return Meeting::kOther;
+  }
   // Ring neighbours share an endpoint: unless they are collinear that is their only contact.
   if (s.a == t.a || s.a == t.b || s.b == t.a || s.b == t.b) {
     const Point64 t_other = (t.a == s.a || t.a == s.b) ? t.b : t.a;

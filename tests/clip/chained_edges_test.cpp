@@ -103,6 +103,15 @@ TEST(ChainedEdges, UntouchedRingInsideAnotherOperandsUntouchedRing) {
   expect_all_ops_exact(a, {around});
 }
 
+// Labeling scans every piece for the first four components it must locate and builds a
+// segment tree from the fifth on: twelve untouched squares, some inside the valley, some
+// outside it, some above its top vertex, take both paths.
+TEST(ChainedEdges, ManyUntouchedComponentsAreLocatedBothWays) {
+  PolygonSet squares;
+  for (std::int64_t k = 0; k < 12; ++k) squares.push_back(square(10 + 16 * k, 120 + 37 * k, 6));
+  expect_all_ops_exact({valley()}, squares);
+}
+
 TEST(ChainedEdges, RingsTouchedInOneSpotKeepLongChainsOnEitherSide) {
   // A triangle crossing one bottom edge of the valley; a square touching the valley's top at a
   // single vertex; a square sharing part of the valley's right side.

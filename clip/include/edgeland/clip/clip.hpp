@@ -96,6 +96,7 @@ class EDGELAND_EXPORT ValidSet {
   ValidSet(PolygonSet set, Trusted) noexcept : set_(std::move(set)) {}
   friend struct ValidSetFactory;
   PolygonSet set_;
+  bool canonical_ = false;  // in canonical form (an operation's output)
 };
 
 struct ValidClipResult {
