@@ -166,15 +166,16 @@ PolygonSet shape_to_set(const WktGeometry& shape, const ClipOptions& options) {
 void EvolvingSet::apply(const Step& step, const ClipOptions& options) {
   PolygonSet operand = shape_to_set(step.shape, options);
   if (step.kind == StepKind::kSet) {
-    current_ = std::move(operand);
+    current_ = ValidSet(std::move(operand));
     return;
   }
   apply(op_of(step.kind), operand, options);
 }
 
 ClipStats EvolvingSet::apply(ClipOp op, const PolygonSet& operand, const ClipOptions& options) {
-  ClipResult result = clip(op, current_, operand, options);  // throws before any change
-  current_ = std::move(result.polygons);
+  ValidClipResult result =
+      clip(op, current_, ValidSet(operand, Operand::kClip), options);  // throws before any change
+  current_ = std::move(result.set);
   return result.stats;
 }
 

@@ -83,10 +83,13 @@ ParsedLog parse_log(std::string_view text);
 // InternalError from import_polygons only.
 PolygonSet shape_to_set(const WktGeometry& shape, const ClipOptions& options = {});
 
-// One polygon set changed in place by a sequence of steps.
+// One polygon set changed in place by a sequence of steps. Kept as a ValidSet: the set is
+// validated when it is assigned, not again on every step (a long log costs each step's change,
+// not a validation of the whole set).
 class EvolvingSet {
  public:
   EvolvingSet() = default;
+  // Throws InvalidInput if `initial` is not a valid set.
   explicit EvolvingSet(PolygonSet initial) : current_(std::move(initial)) {}
 
   // Applies one step. Strong guarantee: if it throws (InvalidInput, InternalError, ...) the
@@ -94,12 +97,13 @@ class EvolvingSet {
   void apply(const Step& step, const ClipOptions& options = {});
   // current := current OP operand (operand must be valid, else InvalidInput).
   ClipStats apply(ClipOp op, const PolygonSet& operand, const ClipOptions& options = {});
-  void assign(PolygonSet set) { current_ = std::move(set); }
+  // Throws InvalidInput (and keeps the set) if `set` is not valid.
+  void assign(PolygonSet set) { current_ = ValidSet(std::move(set)); }
 
-  const PolygonSet& current() const noexcept { return current_; }
+  const PolygonSet& current() const noexcept { return current_.polygons(); }
 
  private:
-  PolygonSet current_;
+  ValidSet current_;
 };
 
 // Records operations as log text. Typical use in a game: keep one EditLog per evolving set,
