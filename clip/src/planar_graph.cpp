@@ -92,6 +92,19 @@ PlaneGraph build_plane_graph(const std::vector<Segment>& segments,
     if (all_untouched) starts_chain[b + (smallest - b + len / 2) % len] = true;
     b = e + 1;
   }
+  // A chain's smallest point must be one of its ends, so that every connected component's
+  // smallest point is a graph vertex (labeling starts each component there, west of it). The
+  // ring's smallest vertex alone does not ensure it: it may belong only to pieces that cancel
+  // (a spike folded back onto itself), leaving a chain's interior point the smallest.
+  for (std::uint32_t s = 0; s < n; ++s) {
+    if (!starts_chain[s]) continue;
+    std::uint32_t least = s, last = s;
+    for (std::uint32_t t = next[s]; !touched[t] && !starts_chain[t]; t = next[t]) {
+      if (piece_of(t).a < piece_of(least).a) least = t;
+      last = t;
+    }
+    if (least != s && piece_of(least).a < piece_of(last).b) starts_chain[least] = true;
+  }
 
   // Vertices: both ends of every fragment of a touched segment, and every chain's start (a
   // chain's end is the start of the next chain or fragment). Sorting the ends once by key both

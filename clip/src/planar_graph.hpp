@@ -5,8 +5,9 @@
 // An edge is a polyline. Fragments of untouched segments (SnapStats::touched: nothing else
 // meets them) are chained along their ring into one edge, so a long stretch of boundary that the
 // operation does not touch costs the later stages one edge, not one per segment. Chain interior
-// points meet nothing else, and every ring's lexicographically smallest vertex is a graph vertex,
-// so each connected component's smallest point is a graph vertex (labeling relies on it).
+// points meet nothing else, and no chain has an interior point smaller (lexicographically) than
+// both its ends, so each connected component's smallest point is a graph vertex (labeling
+// relies on it).
 #include <cstdint>
 #include <vector>
 

@@ -83,5 +83,40 @@ TEST(ClipLocalityRegression, EdgeTouchedByAnotherMembersVertexMaySplitThere) {
             "");
 }
 
+// fuzz/campaign clip_sequence (tests/regress/clip_sequence/849b25e4...): a ring whose smallest
+// vertex (-64 -64) is the tip of a spike folded back onto itself. The spike's two edges cancel,
+// so the smallest point left is an interior point of a chain of untouched edges; the labeling
+// started west of a vertex that was not the component's smallest and threw (or, for
+// kPositive, returned nothing). What remains is the quadrilateral (63 19) (64 21) (63 20)
+// (62 19), counter-clockwise, winding +1, twice-area 2; the spike adds no area.
+TEST(NormalizeRegression, RingWhoseSmallestVertexIsOnACancelledSpike) {
+  const std::vector<Ring> rings{{{63, 19}, {64, 21}, {-64, -64}, {64, 21}, {63, 20}, {62, 19}, {62, 19}},
+                                {{62, 19}, {62, 19}, {62, 19}}};
+  for (FillRule rule : {FillRule::kEvenOdd, FillRule::kNonZero, FillRule::kPositive,
+                        FillRule::kNegative}) {
+    const Outcome o = run_normalize(rings, rule);
+    ASSERT_TRUE(o.ok()) << o.error;
+    EXPECT_EQ(twice_area(o.result->polygons), rule == FillRule::kNegative ? Int128(0) : Int128(2))
+        << fill_rule_name(rule);
+  }
+}
+
+// The clip-operand counterpart: a needle whose smallest vertex is its far tip (its long edges
+// stay untouched chains from there) cut across its wide end, against the exact reference.
+TEST(ClipRegression, NeedleWhoseTipIsItsSmallestVertex) {
+  const PolygonSet a = parse_wkt("POLYGON ((-64 -64, 63 20, 64 21, -64 -64))");
+  const PolygonSet b = parse_wkt("POLYGON ((60 15, 70 15, 70 25, 60 25, 60 15))");
+  for (ClipOp op : {ClipOp::kUnion, ClipOp::kIntersection, ClipOp::kDifference, ClipOp::kXor}) {
+    for (bool swapped : {false, true}) {
+      const PolygonSet& s = swapped ? b : a;
+      const PolygonSet& c = swapped ? a : b;
+      const Outcome o = run_clip(op, s, c);
+      ASSERT_TRUE(o.ok()) << o.error;
+      const ContractReport r = check_clip(op, s, c, *o.result);
+      EXPECT_TRUE(r.ok()) << r.failure;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace edgeland::test
