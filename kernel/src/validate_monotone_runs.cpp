@@ -24,6 +24,7 @@
 #include "edgeland/kernel/point_in_polygon.hpp"
 #include "validate_event_sort.hpp"
 #include "validate_exact.hpp"
+#include "validate_selection.hpp"
 
 namespace edgeland::detail {
 namespace {
@@ -344,13 +345,8 @@ class RunSweep {
     return RunVerdict::kValid;
   }
 
-  // The rings swept: polygons_[members_[r]] for r < members_.size(), or all of polygons_.
-  std::size_t ring_count() const noexcept {
-    return members_.empty() ? polygons_.size() : members_.size();
-  }
-  const Polygon& ring(std::size_t r) const noexcept {
-    return polygons_[members_.empty() ? r : members_[r]];
-  }
+  std::size_t ring_count() const noexcept { return selected_count(polygons_, members_); }
+  const Polygon& ring(std::size_t r) const noexcept { return selected_ring(polygons_, members_, r); }
 
   std::span<const Polygon> polygons_;
   std::span<const std::size_t> members_;

@@ -32,6 +32,7 @@
 #include "validate_checks.hpp"
 #include "validate_event_sort.hpp"
 #include "validate_exact.hpp"
+#include "validate_selection.hpp"
 #include "validate_monotone_runs.hpp"
 #include "validate_status.hpp"
 
@@ -355,13 +356,8 @@ class OneSweep {
     return !contact(edges_[a], edges_[b]).crossing;
   }
 
-  // The rings swept: polygons_[members_[r]] for r < members_.size(), or all of polygons_.
-  std::size_t ring_count() const noexcept {
-    return members_.empty() ? polygons_.size() : members_.size();
-  }
-  const Polygon& ring(std::size_t r) const noexcept {
-    return polygons_[members_.empty() ? r : members_[r]];
-  }
+  std::size_t ring_count() const noexcept { return selected_count(polygons_, members_); }
+  const Polygon& ring(std::size_t r) const noexcept { return selected_ring(polygons_, members_, r); }
 
   std::span<const Polygon> polygons_;
   std::span<const std::size_t> members_;

@@ -6,8 +6,7 @@
 // side. Every result is checked against the exact CGAL reference (accuracy_contract.hpp).
 #include <gtest/gtest.h>
 
-#include "accuracy_contract.hpp"
-#include "checked_clip.hpp"
+#include "all_ops_check.hpp"
 #include "polygon_set_helpers.hpp"
 
 namespace edgeland::test {
@@ -40,21 +39,6 @@ Polygon staircase() {
 
 Polygon square(std::int64_t x, std::int64_t y, std::int64_t side) {
   return {{x, y}, {x + side, y}, {x + side, y + side}, {x, y + side}};
-}
-
-void expect_all_ops_exact(const PolygonSet& a, const PolygonSet& b) {
-  ASSERT_TRUE(validate(a).ok()) << to_wkt(a);
-  ASSERT_TRUE(validate(b).ok()) << to_wkt(b);
-  for (ClipOp op : {ClipOp::kUnion, ClipOp::kIntersection, ClipOp::kDifference, ClipOp::kXor}) {
-    for (bool swapped : {false, true}) {
-      const PolygonSet& s = swapped ? b : a;
-      const PolygonSet& c = swapped ? a : b;
-      const Outcome o = run_clip(op, s, c);
-      ASSERT_TRUE(o.ok()) << o.error;
-      const ContractReport r = check_clip(op, s, c, *o.result);
-      EXPECT_TRUE(r.ok()) << r.failure;
-    }
-  }
 }
 
 TEST(ChainedEdges, ComponentDirectlyAboveAChainVertex) {
