@@ -19,6 +19,7 @@
 
 #include "edgeland/kernel/validate.hpp"
 #include "support/validate_bruteforce.hpp"
+#include "edgeland/kernel/wkt_writer.hpp"
 #include "support/validate_generators.hpp"
 
 namespace edgeland {
@@ -183,46 +184,24 @@ RC_GTEST_PROP(ValidateRunSweep, KeepsItsPromisesAtTheCoordinateBound, ()) {
 
 // --- bounded-exhaustive -----------------------------------------------------------------
 
-std::vector<Point64> grid(std::int64_t w, std::int64_t h) {
-  std::vector<Point64> out;
-  for (std::int64_t y = 0; y < h; ++y)
-    for (std::int64_t x = 0; x < w; ++x) out.push_back({x, y});
-  return out;
-}
+using testing::grid_points;
 
 TEST(ValidateRunSweepExhaustive, EveryRingOfFiveVerticesOnA3x3Grid) {
   // 9^5 rings: folds, touching, collinear overlaps and crossings at every run cut.
-  const std::vector<Point64> g = grid(3, 3);
+  const std::vector<Point64> g = grid_points(3, 3);
   std::size_t valid = 0;
-  for (const Point64 a : g)
-    for (const Point64 b : g)
-      for (const Point64 c : g)
-        for (const Point64 d : g)
-          for (const Point64 e : g) {
-            const PolygonSet set{{a, b, c, d, e}};
-            for (const std::uint32_t cap : {1u, 2u, 32u}) {
-              ASSERT_EQ(broken_promise(set, cap), "")
-                  << a.x << a.y << ' ' << b.x << b.y << ' ' << c.x << c.y << ' ' << d.x << d.y
-                  << ' ' << e.x << e.y;
-            }
-            valid += run_verdict(set, 32) == RunVerdict::kValid;
-          }
+  testing::for_each_ring(g, 5, [&](const Ring& ring) {
+    if (::testing::Test::HasFailure()) return;  // the first failure is enough
+    const PolygonSet set{ring};
+    for (const std::uint32_t cap : {1u, 2u, 32u}) EXPECT_EQ(broken_promise(set, cap), "") << to_wkt(set);
+    valid += run_verdict(set, 32) == RunVerdict::kValid;
+  });
   EXPECT_GT(valid, 0u);
 }
 
 TEST(ValidateRunSweepExhaustive, EveryPairOfTrianglesOnA3x3Grid) {
   // Nesting, shared edges both ways, shared vertices, vertices on edges, crossings.
-  std::vector<Polygon> triangles;
-  const std::vector<Point64> g = grid(3, 3);
-  for (std::size_t i = 0; i < g.size(); ++i)
-    for (std::size_t j = i + 1; j < g.size(); ++j)
-      for (std::size_t k = j + 1; k < g.size(); ++k) {
-        Polygon t{g[i], g[j], g[k]};
-        const __int128 area = orient(t[0], t[1], t[2]);
-        if (area == 0) continue;
-        if (area < 0) std::swap(t[1], t[2]);
-        triangles.push_back(t);
-      }
+  const std::vector<Polygon> triangles = testing::grid_triangles(3, 3);
   ASSERT_EQ(triangles.size(), 76u);  // 84 triples less 8 collinear ones
   for (const Polygon& s : triangles)
     for (const Polygon& t : triangles)

@@ -251,16 +251,10 @@ RC_GTEST_PROP(ValidateSweepVsBruteForce, GridSetsSpanningTheWholeRange, ()) {
 
 // --- bounded-exhaustive cross-checks ------------------------------------------------------
 
-// The points of the grid [0, w) x [0, h), row by row.
-std::vector<Point64> grid(std::int64_t w, std::int64_t h) {
-  std::vector<Point64> out;
-  for (std::int64_t y = 0; y < h; ++y)
-    for (std::int64_t x = 0; x < w; ++x) out.push_back({x, y});
-  return out;
-}
+using testing::grid_points;
 
 TEST(ValidateExhaustive, EveryRingOfFourVerticesOnA3x3Grid) {
-  const std::vector<Point64> g = grid(3, 3);
+  const std::vector<Point64> g = grid_points(3, 3);
   std::size_t rings = 0, valid = 0;
   for (const Point64 a : g)
     for (const Point64 b : g)
@@ -276,36 +270,17 @@ TEST(ValidateExhaustive, EveryRingOfFourVerticesOnA3x3Grid) {
 }
 
 TEST(ValidateExhaustive, EveryRingOfFiveVerticesOnA3x2Grid) {
-  const std::vector<Point64> g = grid(3, 2);
+  const std::vector<Point64> g = grid_points(3, 2);
   std::size_t rings = 0;
-  for (const Point64 a : g)
-    for (const Point64 b : g)
-      for (const Point64 c : g)
-        for (const Point64 d : g)
-          for (const Point64 e : g) {
-            const PolygonSet set{{a, b, c, d, e}};
-            ASSERT_EQ(disagreement(turned(set, false)), "");
-            ++rings;
-          }
+  testing::for_each_ring(g, 5, [&](const Ring& ring) {
+    if (::testing::Test::HasFailure()) return;  // the first failure is enough
+    EXPECT_EQ(disagreement(turned(PolygonSet{ring}, false)), "");
+    ++rings;
+  });
   EXPECT_EQ(rings, 7776u);
 }
 
-// All counter-clockwise triangles with area on the grid [0, w) x [0, h).
-std::vector<Polygon> grid_triangles(std::int64_t w, std::int64_t h) {
-  const std::vector<Point64> g = grid(w, h);
-  std::vector<Polygon> triangles;
-  for (std::size_t i = 0; i < g.size(); ++i)
-    for (std::size_t j = i + 1; j < g.size(); ++j)
-      for (std::size_t k = j + 1; k < g.size(); ++k) {
-        Polygon t{g[i], g[j], g[k]};
-        const __int128 area = __int128(t[1].x - t[0].x) * (t[2].y - t[0].y) -
-                              __int128(t[1].y - t[0].y) * (t[2].x - t[0].x);
-        if (area == 0) continue;
-        if (area < 0) std::swap(t[1], t[2]);
-        triangles.push_back(t);
-      }
-  return triangles;
-}
+using testing::grid_triangles;
 
 TEST(ValidateExhaustive, EveryPairOfTrianglesOnA3x3Grid) {
   // Each triangle against every one, itself included: nesting, shared edges both ways, shared

@@ -98,4 +98,43 @@ PolygonSet random_grid_set(Draw& draw, int cells, std::int64_t cell, Point64 ori
   return set;
 }
 
+// The points of the grid [0, w) x [0, h), row by row (for bounded-exhaustive checks).
+inline std::vector<Point64> grid_points(std::int64_t w, std::int64_t h) {
+  std::vector<Point64> out;
+  for (std::int64_t y = 0; y < h; ++y)
+    for (std::int64_t x = 0; x < w; ++x) out.push_back({x, y});
+  return out;
+}
+
+// All counter-clockwise triangles with area on the grid [0, w) x [0, h).
+inline std::vector<Polygon> grid_triangles(std::int64_t w, std::int64_t h) {
+  const std::vector<Point64> g = grid_points(w, h);
+  std::vector<Polygon> triangles;
+  for (std::size_t i = 0; i < g.size(); ++i)
+    for (std::size_t j = i + 1; j < g.size(); ++j)
+      for (std::size_t k = j + 1; k < g.size(); ++k) {
+        Polygon t{g[i], g[j], g[k]};
+        const __int128 area = __int128(t[1].x - t[0].x) * (t[2].y - t[0].y) -
+                              __int128(t[1].y - t[0].y) * (t[2].x - t[0].x);
+        if (area == 0) continue;
+        if (area < 0) std::swap(t[1], t[2]);
+        triangles.push_back(t);
+      }
+  return triangles;
+}
+
+// Calls f(ring) for each of the g.size()^k rings of k vertices taken from g (repeats allowed).
+template <class F>
+void for_each_ring(const std::vector<Point64>& g, std::size_t k, F&& f) {
+  Ring ring(k);
+  std::vector<std::size_t> at(k, 0);
+  while (true) {
+    for (std::size_t i = 0; i < k; ++i) ring[i] = g[at[i]];
+    f(ring);
+    std::size_t i = k;
+    while (i > 0 && ++at[i - 1] == g.size()) at[--i] = 0;
+    if (i == 0) return;
+  }
+}
+
 }  // namespace edgeland::testing
