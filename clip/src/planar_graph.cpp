@@ -67,8 +67,8 @@ PlaneGraph build_plane_graph(const std::vector<Segment>& segments,
     return listed(s) ? fragments[first_fragment[s]].seg : segments[s];
   };
 
-  // Where chains of untouched segments start: after a touched segment, at the ring's smallest
-  // vertex, and, for a ring nothing touches, also halfway round (no edge may be a loop).
+  // Where chains of untouched segments start: after a touched segment; in a ring nothing
+  // touches, at its smallest vertex and halfway round (no edge may be a loop).
   std::vector<bool> starts_chain(n, false);
   for (std::uint32_t b = 0; b < n;) {
     std::uint32_t e = b;
@@ -87,15 +87,18 @@ PlaneGraph build_plane_graph(const std::vector<Segment>& segments,
     }
     for (std::uint32_t s = b; s <= e; ++s) {
       const std::uint32_t prev = s == b ? e : s - 1;
-      if (!touched[s] && (touched[prev] || s == smallest)) starts_chain[s] = true;
+      if (!touched[s] && touched[prev]) starts_chain[s] = true;
     }
-    if (all_untouched) starts_chain[b + (smallest - b + len / 2) % len] = true;
+    if (all_untouched) {
+      starts_chain[smallest] = true;
+      starts_chain[b + (smallest - b + len / 2) % len] = true;
+    }
     b = e + 1;
   }
   // A chain's smallest point must be one of its ends, so that every connected component's
-  // smallest point is a graph vertex (labeling starts each component there, west of it). The
-  // ring's smallest vertex alone does not ensure it: it may belong only to pieces that cancel
-  // (a spike folded back onto itself), leaving a chain's interior point the smallest.
+  // smallest point is a graph vertex (labeling starts each component there, west of it). Ring
+  // minima would not do: the ring's smallest vertex may belong only to pieces that cancel (a
+  // spike folded back onto itself), leaving a chain's interior point the smallest.
   for (std::uint32_t s = 0; s < n; ++s) {
     if (!starts_chain[s]) continue;
     std::uint32_t least = s, last = s;
