@@ -62,8 +62,18 @@ bool filled(FillRule rule, std::int32_t w) {
   return false;
 }
 
+// The operands' edges go into a buffer each thread keeps: at 10^5 vertices the edge list is
+// megabytes, and allocating it afresh for every operation costs page faults each time (the
+// allocator hands blocks that large back to the system when they are freed). The buffer keeps
+// the capacity of the thread's largest operation.
+detail::EdgeList& edge_buffer() {
+  thread_local detail::EdgeList buffer;
+  buffer.clear();
+  return buffer;
+}
+
 struct Pipeline {
-  detail::EdgeList edges;
+  detail::EdgeList& edges = edge_buffer();
   detail::LabelMode mode;
   detail::LabelOf label_of;
 };

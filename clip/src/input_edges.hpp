@@ -17,6 +17,12 @@ struct EdgeList {
   std::vector<std::int32_t> polygon;   // index within its operand
   std::vector<std::uint32_t> next;
   std::size_t size() const { return segments.size(); }
+  void clear() {
+    segments.clear();
+    channel.clear();
+    polygon.clear();
+    next.clear();
+  }
 };
 
 // Appends the edges of rings[k] for every k in `which` (all rings when null), tagged with

@@ -39,14 +39,17 @@ std::uint32_t vertex_id(const std::vector<std::uint64_t>& keys, std::uint64_t k)
 }  // namespace
 
 void PlaneGraph::append_points(std::uint32_t h, std::vector<Point64>& out) const {
-  const std::uint32_t e = h >> 1;
+  const std::uint32_t e = h >> 1, m = interior_count(e);
   out.push_back(vertices[origin(h)]);
-  if (h & 1)
-    out.insert(out.end(), interior.rbegin() + (interior.size() - interior_begin[e + 1]),
-               interior.rbegin() + (interior.size() - interior_begin[e]));
-  else
-    out.insert(out.end(), interior.begin() + interior_begin[e],
-               interior.begin() + interior_begin[e + 1]);
+  if (m == 0) return;
+  // Walk the chain's segments in ring order, forwards or backwards as h requires.
+  const Chain& c = chain[e];
+  const bool forward_in_ring = ((h & 1) != 0) == c.reversed;
+  std::uint32_t at = c.first - c.ring_begin;  // ring position of the chain's first segment
+  for (std::uint32_t i = 0; i < m; ++i) {
+    const std::uint32_t k = forward_in_ring ? i + 1 : m - i;
+    out.push_back((*segments)[c.ring_begin + (at + k) % c.ring_len].a);
+  }
 }
 
 PlaneGraph build_plane_graph(const std::vector<Segment>& segments,
@@ -162,8 +165,8 @@ PlaneGraph build_plane_graph(const std::vector<Segment>& segments,
   }
 
   // Merge pieces with equal endpoints, summing multiplicities per (channel, polygon).
+  g.segments = &segments;
   g.mult_begin.push_back(0);
-  g.interior_begin.push_back(0);
   for (std::size_t i = 0; i < pieces.size();) {
     std::size_t j = i;
     const std::size_t first_mult = g.mults.size();
@@ -184,35 +187,43 @@ PlaneGraph build_plane_graph(const std::vector<Segment>& segments,
       g.from.push_back(pieces[i].lo);
       g.to.push_back(pieces[i].hi);
       g.mult_begin.push_back(static_cast<std::uint32_t>(g.mults.size()));
-      g.interior_begin.push_back(static_cast<std::uint32_t>(g.interior.size()));
+      g.chain.emplace_back();
     }
     i = j;
   }
 
   // Chains: nothing else meets an untouched segment, so no other edge can coincide with one.
-  for (std::uint32_t s = 0; s < n; ++s) {
-    if (!starts_chain[s]) continue;
-    const std::size_t mark = g.interior.size();
-    std::uint32_t last = s;
-    for (std::uint32_t t = next[s]; !touched[t] && !starts_chain[t]; t = next[t]) {
-      g.interior.push_back(piece_of(t).a);
-      last = t;
+  for (std::uint32_t ring = 0; ring < n;) {
+    std::uint32_t ring_end = ring;
+    while (next[ring_end] == ring_end + 1) ++ring_end;
+    for (std::uint32_t s = ring; s <= ring_end; ++s) {
+      if (!starts_chain[s]) continue;
+      PlaneGraph::Chain c;
+      c.first = s;
+      c.ring_begin = ring;
+      c.ring_len = ring_end - ring + 1;
+      std::uint32_t last = s;
+      for (std::uint32_t t = next[s]; !touched[t] && !starts_chain[t]; t = next[t]) {
+        last = t;
+        ++c.count;
+      }
+      std::uint32_t a = vertex_id(keys, key_of(piece_of(s).a)),
+                    b = vertex_id(keys, key_of(piece_of(last).b));
+      if (a == b || b == g.vertices.size() || g.vertices[b] != piece_of(last).b)
+        throw std::logic_error("plane graph: a chain does not end at a vertex");
+      std::int32_t net = 1;
+      if (b < a) {
+        std::swap(a, b);
+        c.reversed = true;
+        net = -1;
+      }
+      g.from.push_back(a);
+      g.to.push_back(b);
+      g.mults.push_back({channel_of[s], polygon_of[s], net});
+      g.mult_begin.push_back(static_cast<std::uint32_t>(g.mults.size()));
+      g.chain.push_back(c);
     }
-    std::uint32_t a = vertex_id(keys, key_of(piece_of(s).a)),
-                  b = vertex_id(keys, key_of(piece_of(last).b));
-    if (a == b || b == g.vertices.size() || g.vertices[b] != piece_of(last).b)
-      throw std::logic_error("plane graph: a chain does not end at a vertex");
-    std::int32_t net = 1;
-    if (b < a) {
-      std::swap(a, b);
-      std::reverse(g.interior.begin() + static_cast<std::ptrdiff_t>(mark), g.interior.end());
-      net = -1;
-    }
-    g.from.push_back(a);
-    g.to.push_back(b);
-    g.mults.push_back({channel_of[s], polygon_of[s], net});
-    g.mult_begin.push_back(static_cast<std::uint32_t>(g.mults.size()));
-    g.interior_begin.push_back(static_cast<std::uint32_t>(g.interior.size()));
+    ring = ring_end + 1;
   }
 
   // Half-edges around each vertex, sorted by the angle of their first step.

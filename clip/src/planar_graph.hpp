@@ -29,10 +29,16 @@ struct PlaneGraph {
   // 2e + 1 runs to -> from; the twin of half-edge h is h ^ 1. Two edges may join the same two
   // vertices along different polylines.
   std::vector<std::uint32_t> from, to;
-  // Interior points of edge e in order from -> to:
-  // interior[interior_begin[e] .. interior_begin[e + 1]) (CSR, size edges + 1).
-  std::vector<std::uint32_t> interior_begin;
-  std::vector<Point64> interior;
+  // Interior points of a chain edge are read from the input segments, not copied: the points
+  // of edge e are the starts of chain[e].count segments after chain[e].first along its ring
+  // (ring [ring_begin, ring_begin + ring_len) of the segment list), in from -> to order unless
+  // `reversed`. A fragment edge has count 0.
+  struct Chain {
+    std::uint32_t first = 0, count = 0, ring_begin = 0, ring_len = 1;
+    bool reversed = false;
+  };
+  std::vector<Chain> chain;
+  const std::vector<Segment>* segments = nullptr;
   std::vector<std::uint32_t> mult_begin;       // CSR into mults, size edges + 1
   std::vector<Multiplicity> mults;
   // Outgoing half-edges of vertex v, counter-clockwise from angle 0:
@@ -43,14 +49,18 @@ struct PlaneGraph {
   std::size_t edge_count() const { return from.size(); }
   std::uint32_t origin(std::uint32_t h) const { return (h & 1) ? to[h >> 1] : from[h >> 1]; }
   std::uint32_t target(std::uint32_t h) const { return origin(h ^ 1); }
-  std::uint32_t interior_count(std::uint32_t e) const {
-    return interior_begin[e + 1] - interior_begin[e];
+  std::uint32_t interior_count(std::uint32_t e) const { return chain[e].count; }
+  // Interior point i (0-based, from -> to) of edge e.
+  Point64 interior_point(std::uint32_t e, std::uint32_t i) const {
+    const Chain& c = chain[e];
+    const std::uint32_t k = c.reversed ? c.count - i : i + 1;  // segments after `first`
+    return (*segments)[c.ring_begin + (c.first - c.ring_begin + k) % c.ring_len].a;
   }
   // The point after the origin along half-edge h (its direction at the origin).
   Point64 first_step(std::uint32_t h) const {
     const std::uint32_t e = h >> 1;
     if (interior_count(e) == 0) return vertices[target(h)];
-    return (h & 1) ? interior[interior_begin[e + 1] - 1] : interior[interior_begin[e]];
+    return interior_point(e, (h & 1) ? interior_count(e) - 1 : 0);
   }
   // Appends the points of half-edge h from its origin up to, not including, its target.
   void append_points(std::uint32_t h, std::vector<Point64>& out) const;
