@@ -28,6 +28,7 @@
 
 #include "edgeland/clip/clip.hpp"
 #include "edgeland/kernel/validate.hpp"
+#include "splitmix64.hpp"
 
 namespace {
 
@@ -36,20 +37,7 @@ using edgeland::Point64;
 using edgeland::Polygon;
 using edgeland::PolygonSet;
 
-// Deterministic integers (the same sequence on every platform).
-class SplitMix64 {
- public:
-  explicit SplitMix64(std::uint64_t seed) : state_(seed) {}
-  std::uint64_t next() {
-    std::uint64_t z = (state_ += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-  }
-
- private:
-  std::uint64_t state_;
-};
+using edgeland::bench::SplitMix64;  // deterministic on every platform
 
 // n vertices at angles 2 pi i / n and radius radius(angle) around `center`, repeated
 // points dropped.

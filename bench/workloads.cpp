@@ -5,6 +5,7 @@
 #include <string>
 
 #include "edgeland/kernel/validate.hpp"
+#include "splitmix64.hpp"
 
 namespace edgeland::bench {
 namespace {
@@ -12,22 +13,7 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kStarRadius = 1.0e7;
 
-// splitmix64: a fixed, portable generator (std:: distributions differ between libraries).
-class Random {
- public:
-  explicit Random(std::uint64_t seed) : state_(seed) {}
-  std::uint64_t next() {
-    std::uint64_t z = (state_ += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-  }
-  // Uniform in [0, 1).
-  double unit() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
-
- private:
-  std::uint64_t state_;
-};
+using Random = SplitMix64;
 
 Point64 polar(double cx, double cy, double r, double angle) {
   return {std::llround(cx + r * std::cos(angle)), std::llround(cy + r * std::sin(angle))};
