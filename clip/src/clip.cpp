@@ -76,6 +76,7 @@ struct Pipeline {
   detail::EdgeList& edges = edge_buffer();
   detail::LabelMode mode;
   detail::LabelOf label_of;
+  bool simple_rings = true;  // validated operands; normalize's rings may cross themselves
 };
 
 ClipResult run(const Pipeline& p, std::vector<Box64>* moved_boxes = nullptr) {
@@ -83,7 +84,7 @@ ClipResult run(const Pipeline& p, std::vector<Box64>* moved_boxes = nullptr) {
   const std::vector<Segment>& segs = p.edges.segments;
   const std::vector<std::uint32_t>& next = p.edges.next;
   detail::SnapStats snap;
-  const auto fragments = detail::snap_round(segs, next, snap);
+  const auto fragments = detail::snap_round(segs, next, p.simple_rings, snap);
   const detail::PlaneGraph g =
       detail::build_plane_graph(segs, fragments, p.edges.channel, p.edges.polygon, next,
                                 snap.touched);
@@ -300,6 +301,7 @@ ClipResult normalize(const std::vector<Ring>& rings, FillRule rule, const ClipOp
       [&] {
         Pipeline p;
         detail::append_ring_edges(rings, 0, false, p.edges);
+        p.simple_rings = false;
         p.mode = detail::LabelMode::kWinding;
         p.label_of = [rule](const SideState& s) -> FaceLabel { return filled(rule, s.s[0]) ? 0 : -1; };
         return run(p);

@@ -2,12 +2,16 @@
 
 #include <algorithm>
 
+#include "segment_grid.hpp"
 #include "segment_index.hpp"
 #include "edgeland/kernel/bbox.hpp"
 #include "edgeland/kernel/predicates.hpp"
 
 namespace edgeland::detail {
 namespace {
+
+constexpr std::size_t kGridWalkFrom = 64;                  // segments
+constexpr std::size_t kGridWalkBelowRunLengthX16 = 16 * 3;  // runs shorter than 3 segments
 
 void split_if_interior(Contacts& c, std::uint32_t seg, const Segment& s, Point64 p) {
   if (p != s.a && p != s.b) c.splits.emplace_back(seg, p);
@@ -68,14 +72,29 @@ Box64 segment_box(const Segment& s) {
 }
 
 Contacts find_contacts(const std::vector<Segment>& segments, const std::vector<std::uint32_t>& next,
-                       const SegmentIndex& index, std::vector<bool>& touched) {
+                       const SegmentIndex& index, bool simple_rings, std::vector<bool>& touched) {
   Contacts c;
-  index.for_each_overlapping_pair([&](std::uint32_t i, std::uint32_t j) {
+  auto visit = [&](std::uint32_t i, std::uint32_t j) {
     const Meeting m = classify_pair(segments[i], i, segments[j], j, c);
     if (m == Meeting::kNone) return;
     if (m == Meeting::kSharedEndpoint && (next[i] == j || next[j] == i)) return;
     touched[i] = touched[j] = true;
-  });
+  };
+  // Short runs (spiky or zigzag rings) leave the run index little to group, and long diagonal
+  // segments make box overlap a weak filter: walk the segments through a grid instead.
+  if (segments.size() >= kGridWalkFrom && index.run_length_x16() < kGridWalkBelowRunLengthX16) {
+    std::vector<std::uint32_t> ring_of(simple_rings ? segments.size() : 0);
+    for (std::uint32_t s = 0, ring = 0; s < ring_of.size(); ++s) {
+      if (s > 0 && next[s - 1] != s) ring = s;  // rings occupy consecutive ids
+      ring_of[s] = ring;
+    }
+    SegmentGrid(segments).for_each_candidate_pair([&](std::uint32_t i, std::uint32_t j) {
+      if (simple_rings && ring_of[i] == ring_of[j]) return;
+      if (boxes_overlap(segments[i], segments[j])) visit(i, j);
+    });
+  } else {
+    index.for_each_overlapping_pair(visit, simple_rings);
+  }
   return c;
 }
 

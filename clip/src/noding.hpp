@@ -24,9 +24,11 @@ class SegmentIndex;
 // Finds all contacts among `segments` (candidates from `index`). touched[s] becomes true for
 // every segment that meets another one anywhere except ring neighbours (next[s]) at their one
 // shared endpoint: an untouched segment shares no point with anything else.
-// O(r log r + box-overlapping pairs) for r runs of the index.
+// simple_rings: every ring is strictly simple (validated operands), so two segments of one ring
+// meet only as neighbours at their shared endpoint and such pairs are not tested at all.
+// O(r log r + candidate pairs) for r runs of the index.
 Contacts find_contacts(const std::vector<Segment>& segments, const std::vector<std::uint32_t>& next,
-                       const SegmentIndex& index, std::vector<bool>& touched);
+                       const SegmentIndex& index, bool simple_rings, std::vector<bool>& touched);
 
 enum class Meeting : std::uint8_t {
   kNone,            // disjoint

@@ -13,7 +13,9 @@ SegmentIndex::SegmentIndex(const std::vector<Segment>& segments,
   segments_ = &segments;
   // Greedy runs: extend while the next segment follows along the ring and keeps the run's
   // x and y directions (a zero component agrees with either).
+  std::uint32_t ring = 0;
   for (std::uint32_t s = 0; s < n;) {
+    if (s > 0 && next[s - 1] != s) ring = s;  // rings occupy consecutive ids
     int dx = sign(segments[s].b.x - segments[s].a.x), dy = sign(segments[s].b.y - segments[s].a.y);
     std::uint32_t last = s;
     while (last + 1 < n && next[last] == last + 1 && last + 1 - s < kRunLength) {
@@ -24,7 +26,7 @@ SegmentIndex::SegmentIndex(const std::vector<Segment>& segments,
       if (dy == 0) dy = ty;
       ++last;
     }
-    runs_.push_back({s, last, dx < 0});
+    runs_.push_back({s, last, ring, dx < 0});
     s = last + 1;
   }
   run_boxes_.resize(runs_.size());

@@ -31,13 +31,21 @@ class SegmentIndex {
   SegmentIndex(const std::vector<Segment>& segments, const std::vector<std::uint32_t>& next);
 
   // visit(i, j) once per unordered pair of distinct segments whose closed boxes overlap, except
-  // consecutive segments of one run (ring neighbours meeting only at their shared endpoint).
+  // consecutive segments of one run (ring neighbours meeting only at their shared endpoint),
+  // and with across_rings_only, except every pair from one ring (the caller knows its rings are
+  // simple: two segments of one ring meet only as neighbours, at their shared endpoint).
   template <class F>
-  void for_each_overlapping_pair(F&& visit) const;
+  void for_each_overlapping_pair(F&& visit, bool across_rings_only = false) const;
 
   // visit(k, s) for every segment s whose closed box overlaps boxes[k].
   template <class F>
   void query(const std::vector<Box64>& boxes, F&& visit) const;
+
+  // Segments per run on average, times 16 (an integer: the caller's choice of search only
+  // needs a rough figure).
+  std::size_t run_length_x16() const {
+    return runs_.empty() ? 0 : 16 * segments_->size() / runs_.size();
+  }
 
   Box64 box(std::uint32_t s) const {
     const Segment& g = (*segments_)[s];
@@ -48,6 +56,7 @@ class SegmentIndex {
  private:
   struct Run {
     std::uint32_t first, last;  // segment ids, inclusive, consecutive along the ring
+    std::uint32_t ring;         // the first segment of its ring
     bool x_decreasing;          // walk last -> first to see x increase
   };
   // The k-th segment of run r in order of increasing x.
@@ -84,8 +93,11 @@ void SegmentIndex::pairs_between(const Run& r1, const Run& r2, F& visit) const {
 }
 
 template <class F>
-void SegmentIndex::for_each_overlapping_pair(F&& visit) const {
-  auto between = [&](std::uint32_t a, std::uint32_t b) { pairs_between(runs_[a], runs_[b], visit); };
+void SegmentIndex::for_each_overlapping_pair(F&& visit, bool across_rings_only) const {
+  auto between = [&](std::uint32_t a, std::uint32_t b) {
+    if (across_rings_only && runs_[a].ring == runs_[b].ring) return;
+    pairs_between(runs_[a], runs_[b], visit);
+  };
   // Many runs: a grid, whose cost follows the boxes' local density; the sweep compares each
   // run with every run spanning its x, which on grid-like inputs is a whole column of them.
   if (runs_.size() > kGridFrom)

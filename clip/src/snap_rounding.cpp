@@ -15,6 +15,7 @@
 #include "edgeland/kernel/predicates.hpp"
 #include "noding.hpp"
 #include "point_grid.hpp"
+#include "segment_grid.hpp"
 #include "segment_index.hpp"
 
 namespace edgeland::detail {
@@ -259,17 +260,18 @@ Contacts recheck(const AllFragments& all, const std::vector<bool>& moved,
     std::sort(pairs.begin(), pairs.end());
     pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
   } else {
-    // Many moved fragments (spiky inputs: cut short at every crossing): a grid of all
-    // fragment boxes.
+    // Many moved fragments (spiky inputs: cut short at every crossing): every fragment walked
+    // through a grid (segment_grid.hpp).
     std::vector<std::uint32_t> ids;
-    std::vector<Box64> all_boxes;
+    std::vector<Segment> all_segments;
     for (std::uint32_t s = 0; s < segment_count; ++s)
       all.for_each_of(s, [&](std::uint32_t id) {
         ids.push_back(id);
-        all_boxes.push_back(segment_box(all.seg(id)));
+        all_segments.push_back(all.seg(id));
       });
-    for_each_overlapping_pair_in_grid(all_boxes, [&](std::uint32_t i, std::uint32_t j) {
-      if (moved_id(ids[i]) || moved_id(ids[j])) pairs.emplace_back(ids[i], ids[j]);
+    SegmentGrid(all_segments).for_each_candidate_pair([&](std::uint32_t i, std::uint32_t j) {
+      if ((moved_id(ids[i]) || moved_id(ids[j])) && boxes_overlap(all_segments[i], all_segments[j]))
+        pairs.emplace_back(ids[i], ids[j]);
     });
   }
   Contacts c;
@@ -303,10 +305,11 @@ std::vector<Fragment> split_fragments(const AllFragments& all, std::size_t segme
 }  // namespace
 
 std::vector<Fragment> snap_round(const std::vector<Segment>& segs,
-                                 const std::vector<std::uint32_t>& next, SnapStats& stats) {
+                                 const std::vector<std::uint32_t>& next, bool simple_rings,
+                                 SnapStats& stats) {
   const SegmentIndex index(segs, next);
   stats.touched.assign(segs.size(), false);
-  Contacts contacts = find_contacts(segs, next, index, stats.touched);
+  Contacts contacts = find_contacts(segs, next, index, simple_rings, stats.touched);
   stats.intersections = contacts.intersections;
   stats.moved_boxes.clear();
   // No crossing at a non-integer point: every contact is an exact split and nothing moves.

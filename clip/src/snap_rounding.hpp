@@ -31,9 +31,11 @@ struct SnapStats {
 // The fragments of the segments that snap rounding cuts or moves, in input order (each such
 // segment's fragments run from its start to its end). Every other segment is its own single
 // fragment and is not listed: on smooth inputs that is nearly all of them.
-// next[s] is the segment following s along its ring.
+// next[s] is the segment following s along its ring. simple_rings: every ring is strictly simple
+// (validated operands; normalize's rings are not), which spares the noding pairs within a ring.
 // Throws std::logic_error if the safety re-check does not converge.
 std::vector<Fragment> snap_round(const std::vector<Segment>& segments,
-                                 const std::vector<std::uint32_t>& next, SnapStats& stats);
+                                 const std::vector<std::uint32_t>& next, bool simple_rings,
+                                 SnapStats& stats);
 
 }  // namespace edgeland::detail

@@ -1,4 +1,4 @@
-// The clipper's candidate searches (clip/src: segment_index, box_grid, point_grid) against
+// The clipper's candidate searches (clip/src: segment_index, segment_grid, box_grid, point_grid) against
 // brute force. They only propose pairs and points for the exact tests, so what matters is that
 // they never miss one (a missed pair is a missed intersection) and that pairs come once.
 // Generated inputs mix tiny, long and huge boxes, zero-width ones, shared coordinates and both
@@ -15,6 +15,8 @@
 #include "box_grid.hpp"
 #include "edgeland/kernel/point.hpp"
 #include "point_grid.hpp"
+#include "edgeland/kernel/predicates.hpp"
+#include "segment_grid.hpp"
 #include "segment_index.hpp"
 
 namespace edgeland::detail {
@@ -161,6 +163,73 @@ RC_GTEST_PROP(SegmentIndex, ProposesEveryBoxOverlappingPairButRunNeighbours, ())
   for (std::uint32_t k = 0; k < queries.size(); ++k)
     for (std::uint32_t s = 0; s < segs.size(); ++s)
       RC_ASSERT(hits.count({k, s}) == (queries[k].overlaps(index.box(s)) ? 1u : 0u));
+}
+
+// Long segments in every direction on a small patch (cells of a unit or two, where a meeting on
+// a cell line or corner decides) or over the whole range: every pair that shares a point is
+// proposed, and no pair twice.
+RC_GTEST_PROP(SegmentGrid, ProposesEveryMeetingPairOnce, ()) {
+  const bool small = *rc::gen::arbitrary<bool>();
+  const auto small_point = rc::gen::apply([](std::int64_t x, std::int64_t y) { return Point64{x, y}; },
+                                          rc::gen::inRange<std::int64_t>(-12, 13),
+                                          rc::gen::inRange<std::int64_t>(-12, 13));
+  const auto end = small ? small_point : rc::gen::oneOf(point(), small_point);
+  const auto segs = *rc::gen::container<std::vector<Segment>>(
+      small ? 200 : *rc::gen::inRange<std::size_t>(0, 60),
+      rc::gen::apply([](Point64 a, Point64 b) { return Segment{a, b}; }, end, end));
+  const SegmentGrid grid(segs);
+  std::set<std::pair<std::uint32_t, std::uint32_t>> got;
+  grid.for_each_candidate_pair([&](std::uint32_t i, std::uint32_t j) {
+    RC_ASSERT(i < j);
+    RC_ASSERT(got.insert({i, j}).second);
+  });
+  for (std::uint32_t i = 0; i < segs.size(); ++i)
+    for (std::uint32_t j = i + 1; j < segs.size(); ++j)
+      if (intersect(segs[i], segs[j]).relation != SegmentRelation::kDisjoint)
+        RC_ASSERT(got.count({i, j}) == 1u);
+  // Long diagonal segments do not fill the grid the way their boxes would.
+  if (small) RC_ASSERT(grid.entries() <= 60 * segs.size());
+}
+
+// Validated operands' rings are simple: the index can leave out every pair within one ring.
+TEST(SegmentIndex, AcrossRingsOnlyLeavesOutExactlyThePairsOfOneRing) {
+  // Two overlapping zigzag rings (many short runs) and a square crossing both.
+  std::vector<Segment> segs;
+  std::vector<std::uint32_t> next;
+  std::vector<std::uint32_t> ring_of;
+  auto add_ring = [&](const std::vector<Point64>& pts) {
+    const std::uint32_t first = static_cast<std::uint32_t>(segs.size());
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+      segs.push_back({pts[i], pts[(i + 1) % pts.size()]});
+      next.push_back(static_cast<std::uint32_t>(segs.size()));
+      ring_of.push_back(first);
+    }
+    next.back() = first;
+  };
+  std::vector<Point64> zig, zag;
+  for (std::int64_t x = 0; x <= 40; x += 2) zig.push_back({x, x % 4 == 0 ? 0 : 6});
+  zig.push_back({40, -10});
+  zig.push_back({0, -10});
+  for (std::int64_t x = 1; x <= 41; x += 2) zag.push_back({x, x % 4 == 1 ? 1 : 7});
+  zag.push_back({41, 20});
+  zag.push_back({1, 20});
+  add_ring(zig);
+  add_ring(zag);
+  add_ring({{-5, -5}, {50, -5}, {50, 3}, {-5, 3}});
+  const SegmentIndex index(segs, next);
+  std::set<std::pair<std::uint32_t, std::uint32_t>> all, across;
+  index.for_each_overlapping_pair([&](std::uint32_t i, std::uint32_t j) { all.insert({std::min(i, j), std::max(i, j)}); });
+  index.for_each_overlapping_pair(
+      [&](std::uint32_t i, std::uint32_t j) { across.insert({std::min(i, j), std::max(i, j)}); }, true);
+  std::size_t same_ring = 0;
+  for (const auto& pair : all) {
+    const bool same = ring_of[pair.first] == ring_of[pair.second];
+    same_ring += same;
+    EXPECT_EQ(across.count(pair), same ? 0u : 1u);
+  }
+  EXPECT_EQ(across.size() + same_ring, all.size());
+  EXPECT_GT(same_ring, 0u);
+  EXPECT_GT(across.size(), 0u);
 }
 
 }  // namespace

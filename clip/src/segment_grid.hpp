@@ -1,0 +1,117 @@
+#pragma once
+// Pairs of segments that may share a point, when the segments are long and run in every
+// direction (spiky inputs, and their fragments after snap rounding). Boxes filter such segments
+// badly: a diagonal segment's box grows with the square of its length, and the boxes of n long
+// spikes overlap about n^2 / 4 times while the spikes cross far less often. Here each segment is
+// registered only in the grid cells its points lie in (a walk along it, column by column), so a
+// candidate pair is two segments passing through a common cell.
+//
+// Why no meeting is missed: cell (c, r) is the closed square [x0 + c * side, x0 + (c + 1) * side]
+// x [y0 + r * side, y0 + (r + 1) * side]. A point P of a segment lies in the cell
+// (floor((P.x - x0) / side), floor((P.y - y0) / side)), and the walk registers the segment there:
+// it visits every column between its ends' columns, and in each column the rows from the floor
+// of the lowest to the floor of the highest y the segment's line takes over the column's closed
+// x-range clipped to the segment (y is monotone along the segment, so floor(P.y) lies between
+// them). Two segments sharing a point therefore share that point's cell. All arithmetic is exact (128-bit where products can exceed 64 bits).
+//
+// Cost: the walk is O(cells crossed) per segment, and a pair is tested in each cell it shares
+// (reported once); cells are sized for one to four per segment.
+#include <algorithm>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+#include "edgeland/kernel/int128.hpp"
+#include "edgeland/kernel/polygon.hpp"
+
+namespace edgeland::detail {
+
+// Whether the closed boxes of s and t overlap: the cheap test before an exact one.
+inline bool boxes_overlap(const Segment& s, const Segment& t) {
+  return std::max(std::min(s.a.x, s.b.x), std::min(t.a.x, t.b.x)) <=
+             std::min(std::max(s.a.x, s.b.x), std::max(t.a.x, t.b.x)) &&
+         std::max(std::min(s.a.y, s.b.y), std::min(t.a.y, t.b.y)) <=
+             std::min(std::max(s.a.y, s.b.y), std::max(t.a.y, t.b.y));
+}
+
+class SegmentGrid {
+ public:
+  // Keeps no reference to `segments`.
+  explicit SegmentGrid(const std::vector<Segment>& segments);
+
+  // visit(i, j), i < j, exactly once for every pair of segments registered in a common cell;
+  // this includes every pair of segments that share a point.
+  template <class F>
+  void for_each_candidate_pair(F&& visit) const;
+
+  // Number of (segment, cell) registrations: the size of the structure, for tests.
+  std::size_t entries() const { return items_.size(); }
+
+ private:
+  // f(cell index) for every cell the walk registers s in, each cell once.
+  template <class F>
+  void for_each_cell(const Segment& s, F&& f) const;
+  // Lays the grid out with square cells of the given side over the segments' bounding box.
+  void set_side(std::int64_t side);
+
+  std::int64_t min_x_ = 0, min_y_ = 0, max_x_ = 0, max_y_ = 0;
+  std::int64_t side_ = 1, columns_ = 0, rows_ = 0;
+  std::vector<std::uint32_t> cell_begin_;  // CSR over cells: items_ of cell k, ascending ids
+  std::vector<std::uint32_t> items_;       // segment ids
+  struct Slot {
+    std::uint32_t at, cell_end;  // a segment's place in items_, and the end of its cell there
+  };
+  std::vector<std::uint32_t> slot_begin_;  // CSR over segments: the slots of segment i
+  std::vector<Slot> slots_;
+};
+
+template <class F>
+void SegmentGrid::for_each_cell(const Segment& s, F&& f) const {
+  const Point64 a = s.a.x <= s.b.x ? s.a : s.b, b = s.a.x <= s.b.x ? s.b : s.a;
+  const std::int64_t seg_lo = std::min(a.y, b.y), seg_hi = std::max(a.y, b.y);
+  auto row = [&](std::int64_t y) { return (y - min_y_) / side_; };
+  const std::int64_t c0 = (a.x - min_x_) / side_, c1 = (b.x - min_x_) / side_;
+  const Int128 dx = b.x - a.x, dy = b.y - a.y;
+  // floor of the line's y at integer x (dx > 0).
+  auto y_floor = [&](std::int64_t x) {
+    const Int128 num = Int128(a.y) * dx + dy * (x - a.x);
+    constexpr Int128 kSmall = Int128(1) << 62;
+    if (num > -kSmall && num < kSmall) {  // 64-bit division is many times faster
+      const std::int64_t n = static_cast<std::int64_t>(num), d = static_cast<std::int64_t>(dx);
+      return n / d - (n % d != 0 && n < 0 ? 1 : 0);
+    }
+    const Int128 q = num / dx;
+    return static_cast<std::int64_t>(num % dx != 0 && num < 0 ? q - 1 : q);
+  };
+  for (std::int64_t c = c0; c <= c1; ++c) {
+    std::int64_t lo = seg_lo, hi = seg_hi;
+    if (dx != 0) {
+      const std::int64_t cx0 = min_x_ + c * side_;
+      const std::int64_t from = std::max(cx0, a.x), to = std::min(cx0 + side_, b.x);
+      const std::int64_t y0 = y_floor(from), y1 = y_floor(to);
+      lo = std::max(seg_lo, std::min(y0, y1));
+      hi = std::min(seg_hi, std::max(y0, y1));
+    }
+    for (std::int64_t r = row(lo); r <= row(hi); ++r) f(static_cast<std::size_t>(c * rows_ + r));
+  }
+}
+
+template <class F>
+void SegmentGrid::for_each_candidate_pair(F&& visit) const {
+  // Items of a cell are in increasing id order, so the partners of i with a larger id follow
+  // its own slot; a stamp per segment drops partners already met in an earlier common cell.
+  std::vector<std::uint32_t> stamp(slot_begin_.empty() ? 0 : slot_begin_.size() - 1,
+                                   std::numeric_limits<std::uint32_t>::max());
+  for (std::uint32_t i = 0; i + 1 < slot_begin_.size(); ++i) {
+    for (std::uint32_t k = slot_begin_[i]; k < slot_begin_[i + 1]; ++k) {
+      for (std::uint32_t x = slots_[k].at + 1; x < slots_[k].cell_end; ++x) {
+        const std::uint32_t j = items_[x];
+        if (stamp[j] == i) continue;
+        stamp[j] = i;
+        visit(i, j);
+      }
+    }
+  }
+}
+
+}  // namespace edgeland::detail
