@@ -9,14 +9,15 @@ namespace edgeland::detail {
 Ring canonical_ring(Ring ring) {
   // Drop vertices that lie on the straight line through their neighbours. In a simple ring
   // with nonzero area a collinear vertex is a straight continuation, never a fold-back.
-  Ring out;
-  out.reserve(ring.size());
-  for (Point64 p : ring) {
-    while (out.size() >= 2 &&
-           orientation(out[out.size() - 2], out.back(), p) == Orientation::kCollinear)
-      out.pop_back();
-    out.push_back(p);
+  // In place: the kept prefix [0, w) never overtakes the point being read.
+  Ring& out = ring;
+  std::size_t w = 0;
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    const Point64 p = out[i];
+    while (w >= 2 && orientation(out[w - 2], out[w - 1], p) == Orientation::kCollinear) --w;
+    out[w++] = p;
   }
+  out.resize(w);
   // The seam: the first and last vertices may be collinear with their wrap-around neighbours.
   bool changed = true;
   while (changed && out.size() > 3) {
@@ -31,7 +32,7 @@ Ring canonical_ring(Ring ring) {
     }
   }
   std::rotate(out.begin(), std::min_element(out.begin(), out.end()), out.end());
-  return out;
+  return ring;
 }
 
 void canonicalize(PolygonSet& set) {

@@ -65,52 +65,81 @@ PlaneGraph build_plane_graph(const std::vector<Segment>& segments,
   for (const Fragment& f : fragments) ++first_fragment[f.parent + 1];
   for (std::uint32_t s = 0; s < n; ++s) first_fragment[s + 1] += first_fragment[s];
   auto listed = [&](std::uint32_t s) { return first_fragment[s] != first_fragment[s + 1]; };
-  // The first fragment of segment s (for an untouched one, the segment).
-  auto piece_of = [&](std::uint32_t s) -> const Segment& {
-    return listed(s) ? fragments[first_fragment[s]].seg : segments[s];
-  };
 
-  // Where chains of untouched segments start: after a touched segment; in a ring nothing
-  // touches, at its smallest vertex and halfway round (no edge may be a loop).
-  std::vector<bool> starts_chain(n, false);
+  // Chains of untouched segments (their points are read from `segments`: an untouched segment
+  // is never listed), found in one pass per ring. A chain starts after a touched segment; in a
+  // ring nothing touches, at its smallest vertex and halfway round (no edge may be a loop).
+  // A chain's smallest point must be one of its ends, so that every connected component's
+  // smallest point is a graph vertex (labeling starts each component there, west of it). Ring
+  // minima would not do: the ring's smallest vertex may belong only to pieces that cancel (a
+  // spike folded back onto itself), leaving a chain's interior point the smallest. So a chain
+  // whose least point is interior and below its end is cut there.
+  std::vector<PlaneGraph::Chain> spans;
+  std::vector<std::uint32_t> touched_ids;
   for (std::uint32_t b = 0; b < n;) {
     std::uint32_t e = b;
     while (next[e] == e + 1) ++e;  // the ring occupies [b, e], next[e] == b
     const std::uint32_t len = e - b + 1;
-    std::uint32_t smallest = b;
-    bool all_untouched = true;
-    Point64 least = piece_of(b).a;
-    for (std::uint32_t s = b; s <= e; ++s) {
-      const Point64 start = piece_of(s).a;
-      if (start < least) {
-        least = start;
-        smallest = s;
+    std::size_t ring_touched = 0;
+    for (std::uint32_t s = b; s <= e; ++s)
+      if (touched[s]) {
+        touched_ids.push_back(s);
+        ++ring_touched;
       }
-      all_untouched = all_untouched && !touched[s];
-    }
-    for (std::uint32_t s = b; s <= e; ++s) {
-      const std::uint32_t prev = s == b ? e : s - 1;
-      if (!touched[s] && touched[prev]) starts_chain[s] = true;
-    }
-    if (all_untouched) {
-      starts_chain[smallest] = true;
-      starts_chain[b + (smallest - b + len / 2) % len] = true;
+    auto span = [&](std::uint32_t pos, std::uint32_t segs) {  // segs segments from ring position pos
+      PlaneGraph::Chain c;
+      c.first = b + pos % len;
+      c.count = segs - 1;
+      c.ring_begin = b;
+      c.ring_len = len;
+      spans.push_back(c);
+    };
+    if (ring_touched == 0) {
+      std::uint32_t smallest = 0;
+      for (std::uint32_t k = 1; k < len; ++k)
+        if (segments[b + k].a < segments[b + smallest].a) smallest = k;
+      span(smallest, len / 2);
+      span(smallest + len / 2, len - len / 2);
+    } else {
+      // Every gap between consecutive touched segments (cyclically) is a chain: at most two
+      // contiguous ranges of ids, scanned for their least start point.
+      const std::size_t t_end = touched_ids.size(), t_begin = t_end - ring_touched;
+      for (std::size_t i = t_begin; i < t_end; ++i) {
+        const std::uint32_t after = touched_ids[i] + 1;
+        const bool wraps = i + 1 == t_end;
+        const std::uint32_t upto = wraps ? e + 1 : touched_ids[i + 1];  // first range [after, upto)
+        const std::uint32_t rest = wraps ? touched_ids[t_begin] - b : 0;  // then [b, b + rest)
+        const std::uint32_t segs = (upto - after) + rest;
+        if (segs == 0) continue;
+        // Offsets in chain order; the least start point, first occurrence.
+        std::uint32_t least = 0;
+        Point64 least_point = segments[after < upto ? after : b].a;
+        for (std::uint32_t t = after; t < upto; ++t)
+          if (segments[t].a < least_point) {
+            least_point = segments[t].a;
+            least = t - after;
+          }
+        for (std::uint32_t t = b; t < b + rest; ++t)
+          if (segments[t].a < least_point) {
+            least_point = segments[t].a;
+            least = (upto - after) + (t - b);
+          }
+        const std::uint32_t from = after - b;  // ring position of the chain's first segment
+        const Point64 chain_end = segments[rest > 0 ? b + rest - 1 : upto - 1].b;
+        if (least != 0 && least_point < chain_end) {
+          span(from, least);
+          span(from + least, segs - least);
+        } else {
+          span(from, segs);
+        }
+      }
     }
     b = e + 1;
   }
-  // A chain's smallest point must be one of its ends, so that every connected component's
-  // smallest point is a graph vertex (labeling starts each component there, west of it). Ring
-  // minima would not do: the ring's smallest vertex may belong only to pieces that cancel (a
-  // spike folded back onto itself), leaving a chain's interior point the smallest.
-  for (std::uint32_t s = 0; s < n; ++s) {
-    if (!starts_chain[s]) continue;
-    std::uint32_t least = s, last = s;
-    for (std::uint32_t t = next[s]; !touched[t] && !starts_chain[t]; t = next[t]) {
-      if (piece_of(t).a < piece_of(least).a) least = t;
-      last = t;
-    }
-    if (least != s && piece_of(least).a < piece_of(last).b) starts_chain[least] = true;
-  }
+  // Chains in the order of their first segment (as every graph edge list is built in segment
+  // order: deterministic and independent of where the walks began).
+  std::sort(spans.begin(), spans.end(),
+            [](const PlaneGraph::Chain& x, const PlaneGraph::Chain& y) { return x.first < y.first; });
 
   // Vertices: both ends of every fragment of a touched segment, and every chain's start (a
   // chain's end is the start of the next chain or fragment). Sorting the ends once by key both
@@ -122,11 +151,8 @@ PlaneGraph build_plane_graph(const std::vector<Segment>& segments,
   constexpr std::uint32_t kChainStart = 0xffffffffu;
   std::vector<Piece> pieces;
   std::vector<End> ends;
-  for (std::uint32_t s = 0; s < n; ++s) {
-    if (!touched[s]) {
-      if (starts_chain[s]) ends.push_back({key_of(piece_of(s).a), kChainStart});
-      continue;
-    }
+  for (const PlaneGraph::Chain& c : spans) ends.push_back({key_of(segments[c.first].a), kChainStart});
+  for (const std::uint32_t s : touched_ids) {
     const std::uint32_t count = listed(s) ? first_fragment[s + 1] - first_fragment[s] : 1;
     for (std::uint32_t k = 0; k < count; ++k) {
       const Segment& f = listed(s) ? fragments[first_fragment[s] + k].seg : segments[s];
@@ -193,37 +219,23 @@ PlaneGraph build_plane_graph(const std::vector<Segment>& segments,
   }
 
   // Chains: nothing else meets an untouched segment, so no other edge can coincide with one.
-  for (std::uint32_t ring = 0; ring < n;) {
-    std::uint32_t ring_end = ring;
-    while (next[ring_end] == ring_end + 1) ++ring_end;
-    for (std::uint32_t s = ring; s <= ring_end; ++s) {
-      if (!starts_chain[s]) continue;
-      PlaneGraph::Chain c;
-      c.first = s;
-      c.ring_begin = ring;
-      c.ring_len = ring_end - ring + 1;
-      std::uint32_t last = s;
-      for (std::uint32_t t = next[s]; !touched[t] && !starts_chain[t]; t = next[t]) {
-        last = t;
-        ++c.count;
-      }
-      std::uint32_t a = vertex_id(keys, key_of(piece_of(s).a)),
-                    b = vertex_id(keys, key_of(piece_of(last).b));
-      if (a == b || b == g.vertices.size() || g.vertices[b] != piece_of(last).b)
-        throw std::logic_error("plane graph: a chain does not end at a vertex");
-      std::int32_t net = 1;
-      if (b < a) {
-        std::swap(a, b);
-        c.reversed = true;
-        net = -1;
-      }
-      g.from.push_back(a);
-      g.to.push_back(b);
-      g.mults.push_back({channel_of[s], polygon_of[s], net});
-      g.mult_begin.push_back(static_cast<std::uint32_t>(g.mults.size()));
-      g.chain.push_back(c);
+  for (PlaneGraph::Chain c : spans) {
+    const Point64 from = segments[c.first].a;
+    const Point64 to = segments[c.ring_begin + (c.first - c.ring_begin + c.count) % c.ring_len].b;
+    std::uint32_t a = vertex_id(keys, key_of(from)), b = vertex_id(keys, key_of(to));
+    if (a == b || b == g.vertices.size() || g.vertices[b] != to)
+      throw std::logic_error("plane graph: a chain does not end at a vertex");
+    std::int32_t net = 1;
+    if (b < a) {
+      std::swap(a, b);
+      c.reversed = true;
+      net = -1;
     }
-    ring = ring_end + 1;
+    g.from.push_back(a);
+    g.to.push_back(b);
+    g.mults.push_back({channel_of[c.first], polygon_of[c.first], net});
+    g.mult_begin.push_back(static_cast<std::uint32_t>(g.mults.size()));
+    g.chain.push_back(c);
   }
 
   // Half-edges around each vertex, sorted by the angle of their first step.

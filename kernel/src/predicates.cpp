@@ -20,14 +20,6 @@ Int128 along(Point64 a, Point64 b, Point64 p) noexcept {
 
 }  // namespace
 
-Int128 orient_det(Point64 a, Point64 b, Point64 c) noexcept {
-  return formulas::orient<W>(a.x, a.y, b.x, b.y, c.x, c.y).v;
-}
-
-Orientation orientation(Point64 a, Point64 b, Point64 c) noexcept {
-  return static_cast<Orientation>(sign(orient_det(a, b, c)));
-}
-
 int dot_sign(Point64 a, Point64 b, Point64 c) noexcept { return sign(along(a, b, c)); }
 
 bool on_segment(Point64 p, const Segment& s) noexcept {
