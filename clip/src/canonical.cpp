@@ -31,8 +31,15 @@ Ring canonical_ring(Ring ring) {
       changed = true;
     }
   }
-  std::rotate(out.begin(), std::min_element(out.begin(), out.end()), out.end());
-  return ring;
+  // Start at the least vertex. Two block copies into a new ring: std::rotate swaps element by
+  // element, several times slower on rings of thousands of vertices.
+  const auto least = std::min_element(out.begin(), out.end());
+  if (least == out.begin()) return ring;
+  Ring rotated;
+  rotated.reserve(out.size());
+  rotated.insert(rotated.end(), least, out.end());
+  rotated.insert(rotated.end(), out.begin(), least);
+  return rotated;
 }
 
 void canonicalize(PolygonSet& set) {

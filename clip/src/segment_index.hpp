@@ -23,7 +23,10 @@ namespace edgeland::detail {
 
 class SegmentIndex {
  public:
-  static constexpr std::uint32_t kRunLength = 16;
+  // Longer runs mean fewer boxes to sort and pair; the two-pointer walk keeps pairs inside
+  // overlapping runs cheap. Smooth stars (10^3 to 10^5 vertices) ran fastest at 64 of
+  // 16 / 32 / 64 / 128; the carving workload did not notice.
+  static constexpr std::uint32_t kRunLength = 64;
   static constexpr std::size_t kGridFrom = 256;  // runs
 
   // next[s]: the segment that follows s along its ring (segments of a ring are consecutive).
