@@ -83,12 +83,17 @@ void SegmentGrid::for_each_cell(const Segment& s, F&& f) const {
     const Int128 q = num / dx;
     return static_cast<std::int64_t>(num % dx != 0 && num < 0 ? q - 1 : q);
   };
+  // Adjacent columns share their boundary x: the line's y there is computed once.
+  std::int64_t carried_x = a.x, carried_y = a.y;
   for (std::int64_t c = c0; c <= c1; ++c) {
     std::int64_t lo = seg_lo, hi = seg_hi;
     if (dx != 0) {
       const std::int64_t cx0 = min_x_ + c * side_;
       const std::int64_t from = std::max(cx0, a.x), to = std::min(cx0 + side_, b.x);
-      const std::int64_t y0 = y_floor(from), y1 = y_floor(to);
+      const std::int64_t y0 = from == carried_x ? carried_y : y_floor(from);
+      const std::int64_t y1 = to == b.x ? b.y : y_floor(to);
+      carried_x = to;
+      carried_y = y1;
       lo = std::max(seg_lo, std::min(y0, y1));
       hi = std::min(seg_hi, std::max(y0, y1));
     }

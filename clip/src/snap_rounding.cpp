@@ -244,26 +244,34 @@ Contacts recheck(const AllFragments& all, const std::vector<bool>& moved,
     is_moved[i] = true;
   }
   auto moved_id = [&](std::uint32_t id) { return id < all.listed_count() && is_moved[id]; };
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
-  auto add = [&](std::uint32_t f, std::uint32_t g) {
-    if (f == g || (moved_id(g) && g < f)) return;  // a moved pair is seen from both sides
-    pairs.emplace_back(std::min(f, g), std::max(f, g));
+  Contacts c;
+  auto check = [&](std::uint32_t f, std::uint32_t g) {
+    if (classify_pair(all.seg(f), f, all.seg(g), g, c) != Meeting::kNone)
+      touched[all.parent(f)] = touched[all.parent(g)] = true;
   };
   const std::size_t total = all.count();
   if (8 * which.size() < total && total < 2 * segment_count) {
     // Few moved fragments and few splits: query the segment index. Every fragment lies within
     // one unit of its segment's box (grow the query boxes by 2 to be safe).
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+    auto add = [&](std::uint32_t f, std::uint32_t g) {
+      if (f == g || (moved_id(g) && g < f)) return;  // a moved pair is seen from both sides
+      pairs.emplace_back(std::min(f, g), std::max(f, g));
+    };
     for (Box64& b : boxes) b = {{b.min.x - 2, b.min.y - 2}, {b.max.x + 2, b.max.y + 2}};
     index.query(boxes, [&](std::uint32_t k, std::uint32_t s) {
       all.for_each_of(s, [&](std::uint32_t g) { add(which[k], g); });
     });
     std::sort(pairs.begin(), pairs.end());
     pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+    for (const auto& [f, g] : pairs) check(f, g);
   } else {
     // Many moved fragments (spiky inputs: cut short at every crossing): every fragment walked
-    // through a grid (segment_grid.hpp).
+    // through a grid (segment_grid.hpp), which proposes each pair once.
     std::vector<std::uint32_t> ids;
     std::vector<Segment> all_segments;
+    ids.reserve(total);
+    all_segments.reserve(total);
     for (std::uint32_t s = 0; s < segment_count; ++s)
       all.for_each_of(s, [&](std::uint32_t id) {
         ids.push_back(id);
@@ -271,13 +279,9 @@ Contacts recheck(const AllFragments& all, const std::vector<bool>& moved,
       });
     SegmentGrid(all_segments).for_each_candidate_pair([&](std::uint32_t i, std::uint32_t j) {
       if ((moved_id(ids[i]) || moved_id(ids[j])) && boxes_overlap(all_segments[i], all_segments[j]))
-        pairs.emplace_back(ids[i], ids[j]);
+        check(ids[i], ids[j]);
     });
   }
-  Contacts c;
-  for (const auto& [f, g] : pairs)
-    if (classify_pair(all.seg(f), f, all.seg(g), g, c) != Meeting::kNone)
-      touched[all.parent(f)] = touched[all.parent(g)] = true;
   return c;
 }
 
