@@ -1,6 +1,8 @@
 #include "canonical.hpp"
 
 #include <algorithm>
+#include <cstdint>
+#include <vector>
 
 #include "edgeland/kernel/predicates.hpp"
 
@@ -44,7 +46,23 @@ Ring canonical_ring(Ring ring) {
 
 void canonicalize(PolygonSet& set) {
   for (Polygon& p : set) p = canonical_ring(std::move(p));
-  std::sort(set.begin(), set.end());
+  // Sorted by first (least) vertex, which polygons share only when they touch there: the
+  // comparisons read one point kept next to its index, not two rings through their pointers.
+  struct Key {
+    Point64 first;
+    std::uint32_t index;
+  };
+  std::vector<Key> keys(set.size());
+  for (std::uint32_t i = 0; i < keys.size(); ++i)
+    keys[i] = {set[i].empty() ? Point64{} : set[i].front(), i};
+  std::sort(keys.begin(), keys.end(), [&](const Key& x, const Key& y) {
+    const bool decided = x.first != y.first && !set[x.index].empty() && !set[y.index].empty();
+    return decided ? x.first < y.first : set[x.index] < set[y.index];  // = lexicographic
+  });
+  PolygonSet sorted;
+  sorted.reserve(set.size());
+  for (const Key& k : keys) sorted.push_back(std::move(set[k.index]));
+  set.swap(sorted);
 }
 
 }  // namespace edgeland::detail

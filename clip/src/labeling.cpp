@@ -239,9 +239,11 @@ std::vector<SideState> label_sides(const PlaneGraph& g, LabelMode mode) {
       queue.pop_back();
       const std::uint32_t b = g.around_begin[w], n = around_count(g, w);
       // Rotate counter-clockwise from the known sector, crossing one half-edge at a time.
-      for (std::uint32_t i = 1; i < n; ++i) {
-        const std::uint32_t prev = b + (k - b + i - 1) % n, cur = b + (k - b + i) % n;
+      // (Positions wrap by a compare, not %: a division per step was a quarter of labeling.)
+      for (std::uint32_t i = 1, prev = k; i < n; ++i) {
+        const std::uint32_t cur = prev + 1 == b + n ? b : prev + 1;
         left[g.around[cur]] = cross(g, mode, left[g.around[prev]], g.around[cur]);
+        prev = cur;
       }
       // Carry each side along its edge: the left of h is the right of its twin.
       for (std::uint32_t i = 0; i < n; ++i) {
@@ -249,7 +251,8 @@ std::vector<SideState> label_sides(const PlaneGraph& g, LabelMode mode) {
         if (visited[x]) continue;
         visited[x] = true;
         const std::uint32_t bx = g.around_begin[x], nx = around_count(g, x);
-        const std::uint32_t before = bx + (g.position_of[twin] - bx + nx - 1) % nx;
+        const std::uint32_t at = g.position_of[twin];
+        const std::uint32_t before = at == bx ? bx + nx - 1 : at - 1;
         left[g.around[before]] = left[h];
         queue.emplace_back(x, before);
       }

@@ -151,6 +151,11 @@ PlaneGraph build_plane_graph(const std::vector<Segment>& segments,
   constexpr std::uint32_t kChainStart = 0xffffffffu;
   std::vector<Piece> pieces;
   std::vector<End> ends;
+  std::size_t piece_count = 0;
+  for (const std::uint32_t s : touched_ids)
+    piece_count += listed(s) ? first_fragment[s + 1] - first_fragment[s] : 1;
+  pieces.reserve(piece_count);
+  ends.reserve(2 * piece_count + spans.size());
   for (const PlaneGraph::Chain& c : spans) ends.push_back({key_of(segments[c.first].a), kChainStart});
   for (const std::uint32_t s : touched_ids) {
     const std::uint32_t count = listed(s) ? first_fragment[s + 1] - first_fragment[s] : 1;
@@ -166,6 +171,7 @@ PlaneGraph build_plane_graph(const std::vector<Segment>& segments,
   }
   radix_sort(ends, [](const End& e) { return e.key; });
   std::vector<std::uint64_t> keys;
+  keys.reserve(ends.size());
   for (const End& end : ends) {
     if (keys.empty() || keys.back() != end.key) keys.push_back(end.key);
     if (end.ref == kChainStart) continue;
@@ -173,6 +179,12 @@ PlaneGraph build_plane_graph(const std::vector<Segment>& segments,
     (end.ref & 1 ? piece.hi : piece.lo) = static_cast<std::uint32_t>(keys.size() - 1);
   }
   PlaneGraph g;
+  const std::size_t edge_bound = pieces.size() + spans.size();
+  g.from.reserve(edge_bound);
+  g.to.reserve(edge_bound);
+  g.chain.reserve(edge_bound);
+  g.mult_begin.reserve(edge_bound + 1);
+  g.mults.reserve(edge_bound);
   g.vertices.resize(keys.size());
   for (std::size_t i = 0; i < keys.size(); ++i) g.vertices[i] = point_of(keys[i]);
   // By (lo, hi), then (channel, polygon): pieces come in segment order, which is already

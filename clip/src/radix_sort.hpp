@@ -12,7 +12,7 @@ namespace edgeland::detail {
 
 template <class T, class KeyOf>
 void radix_sort(std::vector<T>& v, KeyOf key_of) {
-  if (v.size() < 1024) {  // counting 2048 buckets per pass would dominate
+  if (v.size() < 4096) {  // counting 2048 buckets per pass would dominate
     std::stable_sort(v.begin(), v.end(),
                      [&](const T& a, const T& b) { return key_of(a) < key_of(b); });
     return;

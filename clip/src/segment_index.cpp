@@ -34,7 +34,6 @@ SegmentIndex::SegmentIndex(const std::vector<Segment>& segments,
     run_boxes_[r] = {segments[runs_[r].first].a, segments[runs_[r].first].a};
     run_boxes_[r].expand(segments[runs_[r].last].b);
   }
-  run_sweep_ = sorted_for_sweep(run_boxes_);
 }
 
 }  // namespace edgeland::detail

@@ -73,7 +73,13 @@ class SegmentIndex {
   const std::vector<Segment>* segments_;  // boxes are computed, not stored: less memory traffic
   std::vector<Run> runs_;
   std::vector<Box64> run_boxes_;
-  std::vector<SweepBox> run_sweep_;  // run boxes, sorted_for_sweep
+  // Run boxes, sorted_for_sweep; sorted on first use (noding through the segment grid and
+  // inputs without hot pixels never need them).
+  const std::vector<SweepBox>& run_sweep() const {
+    if (run_sweep_.size() != run_boxes_.size()) run_sweep_ = sorted_for_sweep(run_boxes_);
+    return run_sweep_;
+  }
+  mutable std::vector<SweepBox> run_sweep_;
 };
 
 template <class F>
@@ -106,17 +112,30 @@ void SegmentIndex::for_each_overlapping_pair(F&& visit, bool across_rings_only) 
   if (runs_.size() > kGridFrom)
     for_each_overlapping_pair_in_grid(run_boxes_, between);
   else
-    detail::for_each_overlapping_pair(run_sweep_, between);
+    detail::for_each_overlapping_pair(run_sweep(), between);
 }
 
 template <class F>
 void SegmentIndex::query(const std::vector<Box64>& boxes, F&& visit) const {
-  detail::for_each_overlapping_pair(sorted_for_sweep(boxes), run_sweep_,
-                                    [&](std::uint32_t k, std::uint32_t r) {
-                                      const Run& run = runs_[r];
-                                      for (std::uint32_t s = run.first; s <= run.last; ++s)
-                                        if (box(s).overlaps(boxes[k])) visit(k, s);
-                                    });
+  detail::for_each_overlapping_pair(
+      sorted_for_sweep(boxes), run_sweep(), [&](std::uint32_t k, std::uint32_t r) {
+        // Along the run in increasing-x order the segments' x-ranges only move right: skip by
+        // binary search to the first that reaches the query box, stop at the first past it.
+        const Run& run = runs_[r];
+        const Box64& q = boxes[k];
+        std::uint32_t lo = 0, hi = size(run);
+        while (lo < hi) {
+          const std::uint32_t mid = (lo + hi) / 2;
+          if (box(at(run, mid)).max.x < q.min.x) lo = mid + 1;
+          else hi = mid;
+        }
+        for (std::uint32_t i = lo; i < size(run); ++i) {
+          const std::uint32_t s = at(run, i);
+          const Box64 b = box(s);
+          if (b.min.x > q.max.x) break;
+          if (b.overlaps(q)) visit(k, s);
+        }
+      });
 }
 
 }  // namespace edgeland::detail

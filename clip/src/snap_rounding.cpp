@@ -15,6 +15,7 @@
 #include "edgeland/kernel/predicates.hpp"
 #include "noding.hpp"
 #include "point_grid.hpp"
+#include "radix_sort.hpp"
 #include "segment_grid.hpp"
 #include "segment_index.hpp"
 
@@ -171,13 +172,22 @@ std::vector<Fragment> route(const std::vector<Segment>& segs, const Closure& c,
                             const std::vector<std::pair<std::uint32_t, Point64>>& splits) {
   std::vector<std::pair<std::uint32_t, Point64>> stops = splits;
   for (const auto& [s, h] : c.meets) stops.emplace_back(s, c.hot[h]);
-  std::sort(stops.begin(), stops.end(), [&](const auto& x, const auto& y) {
-    if (x.first != y.first) return x.first < y.first;
-    const Segment& s = segs[x.first];
-    const Int128 px = projection(s, x.second), py = projection(s, y.second);
-    if (px != py) return px < py;
-    return x.second < y.second;
-  });
+  // By segment (radix), then along each segment: most segments have one or two stops.
+  radix_sort(stops, [](const auto& x) { return std::uint64_t{x.first}; });
+  for (std::size_t i = 0; i < stops.size();) {
+    std::size_t j = i + 1;
+    while (j < stops.size() && stops[j].first == stops[i].first) ++j;
+    if (j - i > 1) {
+      const Segment& s = segs[stops[i].first];
+      std::sort(stops.begin() + static_cast<std::ptrdiff_t>(i),
+                stops.begin() + static_cast<std::ptrdiff_t>(j), [&](const auto& x, const auto& y) {
+                  const Int128 px = projection(s, x.second), py = projection(s, y.second);
+                  if (px != py) return px < py;
+                  return x.second < y.second;
+                });
+    }
+    i = j;
+  }
   std::vector<Fragment> out;
   out.reserve(2 * stops.size());
   for (std::size_t k = 0; k < stops.size();) {
