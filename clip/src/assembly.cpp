@@ -49,8 +49,9 @@ std::vector<std::pair<FaceLabel, std::vector<std::uint32_t>>> trace_boundaries(
       const std::uint32_t n = g.around_begin[w + 1] - b;
       const std::uint32_t k = g.position_of[cur ^ 1] - b;
       std::uint32_t next = cur;
-      for (std::uint32_t i = 1; i <= n; ++i) {
-        const std::uint32_t h = g.around[b + (k + n - i) % n];
+      for (std::uint32_t i = 1, at = k; i <= n; ++i) {
+        at = at == 0 ? n - 1 : at - 1;  // clockwise, wrapping without a division
+        const std::uint32_t h = g.around[b + at];
         if (emitted[h] == label) {
           next = h;
           break;

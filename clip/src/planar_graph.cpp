@@ -45,10 +45,22 @@ void PlaneGraph::append_points(std::uint32_t h, std::vector<Point64>& out) const
   // Walk the chain's segments in ring order, forwards or backwards as h requires.
   const Chain& c = chain[e];
   const bool forward_in_ring = ((h & 1) != 0) == c.reversed;
-  std::uint32_t at = c.first - c.ring_begin;  // ring position of the chain's first segment
-  for (std::uint32_t i = 0; i < m; ++i) {
-    const std::uint32_t k = forward_in_ring ? i + 1 : m - i;
-    out.push_back((*segments)[c.ring_begin + (at + k) % c.ring_len].a);
+  // The interior points are the starts of the chain's segments 1 .. m, which lie in at most two
+  // contiguous stretches of the ring (it may wrap once): copied as such, no index arithmetic
+  // per point.
+  const std::vector<Segment>& segs = *segments;
+  const std::uint32_t at = c.first - c.ring_begin + 1;  // ring position of segment 1
+  const std::uint32_t first_part = std::min(m, c.ring_len - std::min(at, c.ring_len));
+  const std::uint32_t p0 = c.ring_begin + (at < c.ring_len ? at : at - c.ring_len);
+  const std::size_t base = out.size();
+  out.resize(base + m);
+  Point64* dst = out.data() + base;
+  if (forward_in_ring) {
+    for (std::uint32_t i = 0; i < first_part; ++i) dst[i] = segs[p0 + i].a;
+    for (std::uint32_t i = first_part; i < m; ++i) dst[i] = segs[c.ring_begin + (i - first_part)].a;
+  } else {
+    for (std::uint32_t i = 0; i < first_part; ++i) dst[m - 1 - i] = segs[p0 + i].a;
+    for (std::uint32_t i = first_part; i < m; ++i) dst[m - 1 - i] = segs[c.ring_begin + (i - first_part)].a;
   }
 }
 

@@ -20,6 +20,7 @@ PointGrid::PointGrid(const std::vector<Point64>& points) {
   while (Int128(side) * side * n < w * h) side *= 2;
   cell_ = side;
   while (((w + cell_ - 1) / cell_) * ((h + cell_ - 1) / cell_) > 2 * n + 16) cell_ *= 2;
+  while ((std::int64_t{1} << shift_) < cell_) ++shift_;
   columns_ = static_cast<std::int64_t>((w + cell_ - 1) / cell_);
   rows_ = static_cast<std::int64_t>((h + cell_ - 1) / cell_);
   cell_begin_.assign(static_cast<std::size_t>(columns_ * rows_) + 1, 0);

@@ -23,12 +23,14 @@ class PointGrid {
   void for_each_near(const Segment& s, F&& visit) const;
 
  private:
-  std::int64_t column_of(std::int64_t x) const { return (x - min_x_) / cell_; }
-  std::int64_t row_of(std::int64_t y) const { return (y - min_y_) / cell_; }
+  // x >= min_x_ and y >= min_y_ (callers clamp): shifts, as cell_ is a power of two.
+  std::int64_t column_of(std::int64_t x) const { return (x - min_x_) >> shift_; }
+  std::int64_t row_of(std::int64_t y) const { return (y - min_y_) >> shift_; }
   template <class F>
   void visit_column(std::int64_t c, std::int64_t y_lo, std::int64_t y_hi, F& visit) const;
 
   std::int64_t min_x_ = 0, min_y_ = 0, cell_ = 1, columns_ = 0, rows_ = 0;
+  int shift_ = 0;  // cell_ == 2^shift_
   std::vector<std::uint32_t> cell_begin_;  // CSR: points of cell (c, r) at index c * rows_ + r
   std::vector<std::uint32_t> items_;
 };

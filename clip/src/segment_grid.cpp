@@ -4,8 +4,10 @@ namespace edgeland::detail {
 
 void SegmentGrid::set_side(std::int64_t side) {
   side_ = side;
-  columns_ = (max_x_ - min_x_) / side_ + 1;
-  rows_ = (max_y_ - min_y_) / side_ + 1;
+  shift_ = 0;
+  while ((std::int64_t{1} << shift_) < side_) ++shift_;
+  columns_ = ((max_x_ - min_x_) >> shift_) + 1;
+  rows_ = ((max_y_ - min_y_) >> shift_) + 1;
 }
 
 SegmentGrid::SegmentGrid(const std::vector<Segment>& segments) {

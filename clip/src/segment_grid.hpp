@@ -56,6 +56,7 @@ class SegmentGrid {
 
   std::int64_t min_x_ = 0, min_y_ = 0, max_x_ = 0, max_y_ = 0;
   std::int64_t side_ = 1, columns_ = 0, rows_ = 0;
+  int shift_ = 0;  // side_ == 2^shift_: cells are found by shifts, not divisions
   std::vector<std::uint32_t> cell_begin_;  // CSR over cells: items_ of cell k, ascending ids
   std::vector<std::uint32_t> items_;       // segment ids
   struct Slot {
@@ -69,8 +70,8 @@ template <class F>
 void SegmentGrid::for_each_cell(const Segment& s, F&& f) const {
   const Point64 a = s.a.x <= s.b.x ? s.a : s.b, b = s.a.x <= s.b.x ? s.b : s.a;
   const std::int64_t seg_lo = std::min(a.y, b.y), seg_hi = std::max(a.y, b.y);
-  auto row = [&](std::int64_t y) { return (y - min_y_) / side_; };
-  const std::int64_t c0 = (a.x - min_x_) / side_, c1 = (b.x - min_x_) / side_;
+  auto row = [&](std::int64_t y) { return (y - min_y_) >> shift_; };  // y >= min_y_
+  const std::int64_t c0 = (a.x - min_x_) >> shift_, c1 = (b.x - min_x_) >> shift_;
   const Int128 dx = b.x - a.x, dy = b.y - a.y;
   // floor of the line's y at integer x (dx > 0).
   auto y_floor = [&](std::int64_t x) {
