@@ -1,7 +1,6 @@
 #include "assembly.hpp"
 
 #include <algorithm>
-#include <map>
 #include <stdexcept>
 
 #include "edgeland/kernel/area.hpp"
@@ -75,23 +74,48 @@ std::vector<RegionRings> assemble(const PlaneGraph& g, const std::vector<SideSta
     emitted[2 * e] = l;
     emitted[2 * e + 1] = r;
   }
-  std::map<FaceLabel, RegionRings> regions;
+  // Rings are collected flat with their label, then grouped by label in increasing order (what
+  // a map from label to region would give, without a node and two vectors per region).
+  struct Traced {
+    FaceLabel label;
+    bool outer;
+    Ring ring;
+  };
+  std::vector<Traced> traced;
   std::vector<std::int32_t> position(g.vertices.size(), -1);
+  auto add_loop = [&](FaceLabel label, const std::uint32_t* first, const std::uint32_t* last) {
+    Ring ring;
+    for (const std::uint32_t* h = first; h != last; ++h) g.append_points(*h, ring);
+    if (ring.size() < 3) return;
+    const Int128 area = twice_signed_area(ring);
+    if (area != 0) traced.push_back({label, area > 0, std::move(ring)});
+  };
   for (const auto& [label, walk] : trace_boundaries(g, emitted)) {
-    RegionRings& region = regions[label];
-    region.label = label;
-    for (const auto& loop : split_at_repeated_vertices(g, walk, position)) {
-      Ring ring;
-      for (std::uint32_t h : loop) g.append_points(h, ring);
-      if (ring.size() < 3) continue;
-      const Int128 area = twice_signed_area(ring);
-      if (area > 0) region.outers.push_back(std::move(ring));
-      else if (area < 0) region.holes.push_back(std::move(ring));
+    // Most walks visit every vertex once: then the walk is the loop, with nothing to split.
+    bool repeated = false;
+    for (std::uint32_t h : walk) {
+      std::int32_t& at = position[g.origin(h)];
+      if (at >= 0) repeated = true;
+      at = 0;
     }
+    for (std::uint32_t h : walk) position[g.origin(h)] = -1;
+    if (!repeated) {
+      add_loop(label, walk.data(), walk.data() + walk.size());
+      continue;
+    }
+    for (const auto& loop : split_at_repeated_vertices(g, walk, position))
+      add_loop(label, loop.data(), loop.data() + loop.size());
   }
+  std::stable_sort(traced.begin(), traced.end(),
+                   [](const Traced& x, const Traced& y) { return x.label < y.label; });
   std::vector<RegionRings> out;
-  out.reserve(regions.size());
-  for (auto& [label, region] : regions) out.push_back(std::move(region));
+  for (Traced& t : traced) {
+    if (out.empty() || out.back().label != t.label) {
+      out.emplace_back();
+      out.back().label = t.label;
+    }
+    (t.outer ? out.back().outers : out.back().holes).push_back(std::move(t.ring));
+  }
   return out;
 }
 

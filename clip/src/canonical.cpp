@@ -33,10 +33,15 @@ Ring canonical_ring(Ring ring) {
       changed = true;
     }
   }
-  // Start at the least vertex. Two block copies into a new ring: std::rotate swaps element by
-  // element, several times slower on rings of thousands of vertices.
+  // Start at the least vertex. Small rings rotate in place; large ones take two block copies
+  // into a new ring (std::rotate swaps element by element, several times slower on rings of
+  // thousands of vertices, while an allocation per small ring costs more than its rotation).
   const auto least = std::min_element(out.begin(), out.end());
   if (least == out.begin()) return ring;
+  if (out.size() <= 256) {
+    std::rotate(out.begin(), least, out.end());
+    return ring;
+  }
   Ring rotated;
   rotated.reserve(out.size());
   rotated.insert(rotated.end(), least, out.end());

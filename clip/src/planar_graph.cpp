@@ -88,6 +88,7 @@ PlaneGraph build_plane_graph(const std::vector<Segment>& segments,
   // whose least point is interior and below its end is cut there.
   std::vector<PlaneGraph::Chain> spans;
   std::vector<std::uint32_t> touched_ids;
+  touched_ids.reserve(n);
   for (std::uint32_t b = 0; b < n;) {
     std::uint32_t e = b;
     while (next[e] == e + 1) ++e;  // the ring occupies [b, e], next[e] == b
