@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <memory>
 #include <stdexcept>
-#include <unordered_map>
 #include <unordered_set>
 #include <utility>
 
@@ -23,8 +22,26 @@ namespace edgeland::detail {
 namespace {
 
 using PointSet = std::unordered_set<Point64, Point64Hash>;
-// Points on the way of a few segments (most segments have none): segment -> points.
-using StopsOf = std::unordered_map<std::uint32_t, std::vector<Point64>>;
+
+// Points on the way of segments, grouped by segment (CSR: one array, no allocation per segment).
+class StopsOf {
+ public:
+  StopsOf(std::size_t segments, const std::vector<std::pair<std::uint32_t, Point64>>& stops)
+      : begin_(segments + 1, 0), points_(stops.size()) {
+    for (const auto& st : stops) ++begin_[st.first + 1];
+    for (std::size_t k = 1; k < begin_.size(); ++k) begin_[k] += begin_[k - 1];
+    std::vector<std::uint32_t> fill(begin_.begin(), begin_.end() - 1);
+    for (const auto& [s, p] : stops) points_[fill[s]++] = p;
+  }
+  // Appends the points of segment s to out.
+  void append(std::uint32_t s, std::vector<Point64>& out) const {
+    out.insert(out.end(), points_.begin() + begin_[s], points_.begin() + begin_[s + 1]);
+  }
+
+ private:
+  std::vector<std::uint32_t> begin_;
+  std::vector<Point64> points_;
+};
 
 // A box that contains the whole pixel of p (closed, integer corners).
 Box64 pixel_box(Point64 p) { return Box64{{p.x - 1, p.y - 1}, {p.x + 1, p.y + 1}}; }
@@ -87,8 +104,6 @@ void close_hot_set(const std::vector<Segment>& segs, const SegmentIndex& index,
                    const std::vector<Point64>& split_points,
                    const StopsOf& splits_of, bool classic,
                    PointSet& is_hot, Closure& c, std::vector<Point64> fresh) {
-  StopsOf hot_stops;
-  for (const auto& [s, h] : c.meets) hot_stops[s].push_back(c.hot[h]);
   std::vector<SweepBox> split_sweep;
   if (!split_points.empty()) split_sweep = sorted_for_sweep(pixel_boxes(split_points));
   std::unique_ptr<PointGrid> vertex_grid;  // built when first needed
@@ -101,7 +116,6 @@ void close_hot_set(const std::vector<Segment>& segs, const SegmentIndex& index,
       const Point64 centre = fresh[h];
       if (!segment_meets_pixel(segs[s], centre)) return;
       c.meets.emplace_back(s, base + h);
-      hot_stops[s].push_back(centre);
       if (!on_segment(centre, segs[s])) c.moved[s] = true;
       changed.push_back(s);
     };
@@ -123,14 +137,20 @@ void close_hot_set(const std::vector<Segment>& segs, const SegmentIndex& index,
     if (changed.empty()) break;
     std::vector<Box64> boxes(changed.size());
     std::vector<Ring> routes(changed.size());
+    std::vector<std::pair<std::uint32_t, Point64>> met;  // every hot centre met so far, by segment
+    if (!classic) {
+      met.reserve(c.meets.size());
+      for (const auto& [s, h] : c.meets) met.emplace_back(s, c.hot[h]);
+    }
+    const StopsOf hot_stops(classic ? 0 : segs.size(), met);
     for (std::size_t k = 0; k < changed.size(); ++k) {
       const std::uint32_t s = changed[k];
       const Box64 b = index.box(s);
       boxes[k] = {{b.min.x - 1, b.min.y - 1}, {b.max.x + 1, b.max.y + 1}};
       if (!classic) {
-        std::vector<Point64> stops = hot_stops[s];
-        if (const auto it = splits_of.find(s); it != splits_of.end())
-          stops.insert(stops.end(), it->second.begin(), it->second.end());
+        std::vector<Point64> stops;
+        hot_stops.append(s, stops);
+        splits_of.append(s, stops);
         routes[k] = route_of(segs[s], std::move(stops));
       }
     }
@@ -344,8 +364,7 @@ std::vector<Fragment> snap_round(const std::vector<Segment>& segs,
   };
   add_hot(contacts.hot);
 
-  StopsOf splits_of;
-  for (const auto& [s, p] : contacts.splits) splits_of[s].push_back(p);
+  const StopsOf splits_of(segs.size(), contacts.splits);
 
   // The stable rule normally converges in one round. Should crossings survive it a few times,
   // switch to the classic closure, for which snap rounding's theorem rules them out.
