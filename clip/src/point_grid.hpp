@@ -10,6 +10,7 @@
 
 #include "edgeland/kernel/int128.hpp"
 #include "edgeland/kernel/polygon.hpp"
+#include "line_floor.hpp"
 
 namespace edgeland::detail {
 
@@ -57,17 +58,7 @@ void PointGrid::for_each_near(const Segment& s, F&& visit) const {
   if (x_hi < min_x_) return;
   const std::int64_t c0 = column_of(x_lo), c1 = std::min(columns_ - 1, column_of(x_hi));
   const Int128 dx = b.x - a.x, dy = b.y - a.y;
-  // floor / ceil of y on the segment's line at x (dx > 0).
-  auto y_floor = [&](std::int64_t x) {
-    const Int128 num = Int128(a.y) * dx + dy * (x - a.x);
-    constexpr Int128 kSmall = Int128(1) << 62;
-    if (num > -kSmall && num < kSmall) {  // 64-bit division is many times faster
-      const std::int64_t n = static_cast<std::int64_t>(num), d = static_cast<std::int64_t>(dx);
-      return n / d - (n % d != 0 && n < 0 ? 1 : 0);
-    }
-    const Int128 q = num / dx;
-    return static_cast<std::int64_t>(num % dx != 0 && num < 0 ? q - 1 : q);
-  };
+  auto y_floor = [&](std::int64_t x) { return line_y_floor(a, dx, dy, x); };
   for (std::int64_t c = c0; c <= c1; ++c) {
     if (dx == 0) {
       visit_column(c, std::min(a.y, b.y) - 1, std::max(a.y, b.y) + 1, visit);

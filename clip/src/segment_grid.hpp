@@ -23,6 +23,7 @@
 
 #include "edgeland/kernel/int128.hpp"
 #include "edgeland/kernel/polygon.hpp"
+#include "line_floor.hpp"
 
 namespace edgeland::detail {
 
@@ -73,17 +74,7 @@ void SegmentGrid::for_each_cell(const Segment& s, F&& f) const {
   auto row = [&](std::int64_t y) { return (y - min_y_) >> shift_; };  // y >= min_y_
   const std::int64_t c0 = (a.x - min_x_) >> shift_, c1 = (b.x - min_x_) >> shift_;
   const Int128 dx = b.x - a.x, dy = b.y - a.y;
-  // floor of the line's y at integer x (dx > 0).
-  auto y_floor = [&](std::int64_t x) {
-    const Int128 num = Int128(a.y) * dx + dy * (x - a.x);
-    constexpr Int128 kSmall = Int128(1) << 62;
-    if (num > -kSmall && num < kSmall) {  // 64-bit division is many times faster
-      const std::int64_t n = static_cast<std::int64_t>(num), d = static_cast<std::int64_t>(dx);
-      return n / d - (n % d != 0 && n < 0 ? 1 : 0);
-    }
-    const Int128 q = num / dx;
-    return static_cast<std::int64_t>(num % dx != 0 && num < 0 ? q - 1 : q);
-  };
+  auto y_floor = [&](std::int64_t x) { return line_y_floor(a, dx, dy, x); };
   // Adjacent columns share their boundary x: the line's y there is computed once.
   std::int64_t carried_x = a.x, carried_y = a.y;
   for (std::int64_t c = c0; c <= c1; ++c) {
