@@ -264,12 +264,10 @@ class AllFragments {
 // points are reported by fragment id (AllFragments).
 Contacts recheck(const AllFragments& all, const std::vector<bool>& moved,
                  const SegmentIndex& index, std::size_t segment_count, std::vector<bool>& touched) {
-  std::vector<Box64> boxes;
   std::vector<std::uint32_t> which;
   std::vector<bool> is_moved(all.listed_count(), false);  // moved segments are always listed
   for (std::uint32_t i = 0; i < all.listed_count(); ++i) {
     if (!moved[all.parent(i)]) continue;
-    boxes.push_back(segment_box(all.seg(i)));
     which.push_back(i);
     is_moved[i] = true;
   }
@@ -288,7 +286,11 @@ Contacts recheck(const AllFragments& all, const std::vector<bool>& moved,
       if (f == g || (moved_id(g) && g < f)) return;  // a moved pair is seen from both sides
       pairs.emplace_back(std::min(f, g), std::max(f, g));
     };
-    for (Box64& b : boxes) b = {{b.min.x - 2, b.min.y - 2}, {b.max.x + 2, b.max.y + 2}};
+    std::vector<Box64> boxes(which.size());
+    for (std::size_t k = 0; k < which.size(); ++k) {
+      const Box64 b = segment_box(all.seg(which[k]));
+      boxes[k] = {{b.min.x - 2, b.min.y - 2}, {b.max.x + 2, b.max.y + 2}};
+    }
     index.query(boxes, [&](std::uint32_t k, std::uint32_t s) {
       all.for_each_of(s, [&](std::uint32_t g) { add(which[k], g); });
     });
