@@ -260,10 +260,40 @@ class AllFragments {
   std::vector<std::uint32_t> first_;
 };
 
+// Segments whose route may differ from the route classic snap rounding would give them if every
+// vertex pixel were hot too: those meeting the closed pixel of a vertex that is neither hot nor on
+// them. Every other segment's route is exactly that classic route: it already passes through
+// its own ends and split points and through every hot pixel it meets (clip/README.md, "Which
+// fragment pairs the re-check tests").
+std::vector<bool> off_classic_routes(const std::vector<Segment>& segs,
+                                     const std::vector<std::pair<std::uint32_t, Point64>>& splits,
+                                     const PointSet& is_hot) {
+  std::vector<Point64> loose;  // vertices that are not hot
+  loose.reserve(segs.size() + splits.size());
+  for (const Segment& s : segs)
+    if (!is_hot.count(s.a)) loose.push_back(s.a);  // every end starts a segment
+  for (const auto& sp : splits)
+    if (!is_hot.count(sp.second)) loose.push_back(sp.second);
+  std::sort(loose.begin(), loose.end());
+  loose.erase(std::unique(loose.begin(), loose.end()), loose.end());
+  std::vector<bool> off(segs.size(), false);
+  if (loose.empty()) return off;
+  const PointGrid grid(loose);
+  for (std::uint32_t s = 0; s < segs.size(); ++s)
+    grid.for_each_near(segs[s], [&](std::uint32_t v) {
+      if (!off[s] && meets_closed_pixel(segs[s], loose[v]) && !on_segment(loose[v], segs[s]))
+        off[s] = true;
+    });
+  return off;
+}
+
 // Contacts between fragments of moved segments and all fragments, each pair once. Split
-// points are reported by fragment id (AllFragments).
+// points are reported by fragment id (AllFragments). off_classic() computes off_classic_routes
+// when the pairs are many enough to be worth filtering.
+template <class OffClassic>
 Contacts recheck(const AllFragments& all, const std::vector<bool>& moved,
-                 const SegmentIndex& index, std::size_t segment_count, std::vector<bool>& touched) {
+                 const SegmentIndex& index, std::size_t segment_count, std::vector<bool>& touched,
+                 OffClassic&& off_classic) {
   std::vector<std::uint32_t> which;
   std::vector<bool> is_moved(all.listed_count(), false);  // moved segments are always listed
   for (std::uint32_t i = 0; i < all.listed_count(); ++i) {
@@ -298,8 +328,11 @@ Contacts recheck(const AllFragments& all, const std::vector<bool>& moved,
     pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
     for (const auto& [f, g] : pairs) check(f, g);
   } else {
-    // Many moved fragments (spiky inputs: cut short at every crossing): every fragment walked
-    // through a grid (segment_grid.hpp), which proposes each pair once.
+    // Many moved fragments (spiky inputs: cut short at every crossing). Only pairs with a
+    // fragment off its classic route can meet other than at shared ends (README); every
+    // fragment is walked through a grid (segment_grid.hpp), which proposes each pair once.
+    const std::vector<bool> off = off_classic();
+    if (std::find(off.begin(), off.end(), true) == off.end()) return c;
     std::vector<std::uint32_t> ids;
     std::vector<Segment> all_segments;
     ids.reserve(total);
@@ -310,7 +343,8 @@ Contacts recheck(const AllFragments& all, const std::vector<bool>& moved,
         all_segments.push_back(all.seg(id));
       });
     SegmentGrid(all_segments).for_each_candidate_pair([&](std::uint32_t i, std::uint32_t j) {
-      if ((moved_id(ids[i]) || moved_id(ids[j])) && boxes_overlap(all_segments[i], all_segments[j]))
+      if ((moved_id(ids[i]) || moved_id(ids[j])) && (off[all.parent(ids[i])] || off[all.parent(ids[j])]) &&
+          boxes_overlap(all_segments[i], all_segments[j]))
         check(ids[i], ids[j]);
     });
   }
@@ -398,7 +432,8 @@ std::vector<Fragment> snap_round(const std::vector<Segment>& segs,
 
     // Safety re-check: fragments of moved segments against everything, exactly.
     const AllFragments all(segs, frags);
-    Contacts again = recheck(all, closure.moved, index, segs.size(), stats.touched);
+    Contacts again = recheck(all, closure.moved, index, segs.size(), stats.touched,
+                             [&] { return off_classic_routes(segs, contacts.splits, is_hot); });
     if (again.hot.empty()) {
       if (again.splits.empty()) return frags;
       // Only exact integer splits remain (snapped fragments landing on vertices or overlapping
