@@ -8,11 +8,12 @@
 namespace edgeland::detail {
 
 std::vector<std::vector<std::uint32_t>> split_at_repeated_vertices(
-    const PlaneGraph& g, const std::vector<std::uint32_t>& walk,
+    const PlaneGraph& g, const std::uint32_t* first, const std::uint32_t* last,
     std::vector<std::int32_t>& position) {
   std::vector<std::vector<std::uint32_t>> loops;
   std::vector<std::uint32_t> stack;  // half-edges; position[v]: index of the one leaving v
-  for (std::uint32_t h : walk) {
+  for (const std::uint32_t* it = first; it != last; ++it) {
+    const std::uint32_t h = *it;
     const std::uint32_t v = g.origin(h);
     if (position[v] >= 0) {
       // v closes a loop: every half-edge pushed since v was first left.
@@ -29,19 +30,26 @@ std::vector<std::vector<std::uint32_t>> split_at_repeated_vertices(
   return loops;
 }
 
-std::vector<std::pair<FaceLabel, std::vector<std::uint32_t>>> trace_boundaries(
-    const PlaneGraph& g, const std::vector<FaceLabel>& emitted) {
+Ring ring_along(const PlaneGraph& g, const std::uint32_t* first, const std::uint32_t* last) {
+  std::size_t points = 0;
+  for (const std::uint32_t* h = first; h != last; ++h) points += 1 + g.interior_count(*h >> 1);
+  Ring ring;
+  ring.reserve(points);
+  for (const std::uint32_t* h = first; h != last; ++h) g.append_points(*h, ring);
+  return ring;
+}
+
+BoundaryWalks trace_boundaries(const PlaneGraph& g, const std::vector<FaceLabel>& emitted) {
   const std::size_t nh = emitted.size();
-  std::vector<std::pair<FaceLabel, std::vector<std::uint32_t>>> walks;
+  BoundaryWalks walks;
   std::vector<bool> used(nh, false);
   for (std::uint32_t start = 0; start < nh; ++start) {
     const FaceLabel label = emitted[start];
     if (label < 0 || used[start]) continue;
-    std::vector<std::uint32_t> walk;
     std::uint32_t cur = start;
     do {
       used[cur] = true;
-      walk.push_back(cur);
+      walks.half_edges.push_back(cur);
       // Sharpest left turn: from the reversed edge, turn clockwise to the first edge that
       // bounds the same region.
       const std::uint32_t w = g.target(cur), b = g.around_begin[w];
@@ -60,7 +68,8 @@ std::vector<std::pair<FaceLabel, std::vector<std::uint32_t>>> trace_boundaries(
         throw std::logic_error("assembly: region boundary does not close");
       cur = next;
     } while (cur != start);
-    walks.emplace_back(label, std::move(walk));
+    walks.label.push_back(label);
+    walks.begin.push_back(static_cast<std::uint32_t>(walks.half_edges.size()));
   }
   return walks;
 }
@@ -84,27 +93,29 @@ std::vector<RegionRings> assemble(const PlaneGraph& g, const std::vector<SideSta
   std::vector<Traced> traced;
   std::vector<std::int32_t> position(g.vertices.size(), -1);
   auto add_loop = [&](FaceLabel label, const std::uint32_t* first, const std::uint32_t* last) {
-    Ring ring;
-    for (const std::uint32_t* h = first; h != last; ++h) g.append_points(*h, ring);
+    Ring ring = ring_along(g, first, last);
     if (ring.size() < 3) return;
     const Int128 area = twice_signed_area(ring);
     if (area != 0) traced.push_back({label, area > 0, std::move(ring)});
   };
-  for (const auto& [label, walk] : trace_boundaries(g, emitted)) {
+  const BoundaryWalks walks = trace_boundaries(g, emitted);
+  traced.reserve(walks.size());
+  for (std::size_t w = 0; w < walks.size(); ++w) {
+    const std::uint32_t *first = walks.first(w), *last = walks.last(w);
     // Most walks visit every vertex once: then the walk is the loop, with nothing to split.
     bool repeated = false;
-    for (std::uint32_t h : walk) {
-      std::int32_t& at = position[g.origin(h)];
+    for (const std::uint32_t* h = first; h != last; ++h) {
+      std::int32_t& at = position[g.origin(*h)];
       if (at >= 0) repeated = true;
       at = 0;
     }
-    for (std::uint32_t h : walk) position[g.origin(h)] = -1;
+    for (const std::uint32_t* h = first; h != last; ++h) position[g.origin(*h)] = -1;
     if (!repeated) {
-      add_loop(label, walk.data(), walk.data() + walk.size());
+      add_loop(walks.label[w], first, last);
       continue;
     }
-    for (const auto& loop : split_at_repeated_vertices(g, walk, position))
-      add_loop(label, loop.data(), loop.data() + loop.size());
+    for (const auto& loop : split_at_repeated_vertices(g, first, last, position))
+      add_loop(walks.label[w], loop.data(), loop.data() + loop.size());
   }
   std::stable_sort(traced.begin(), traced.end(),
                    [](const Traced& x, const Traced& y) { return x.label < y.label; });

@@ -29,14 +29,25 @@ std::vector<RegionRings> assemble(const PlaneGraph& g, const std::vector<SideSta
                                   const LabelOf& label_of);
 
 // Closed walks along the half-edges with emitted[h] >= 0, each following the sharpest left
-// turn among half-edges of its own label. Returns (label, half-edge walk) in a fixed order.
-std::vector<std::pair<FaceLabel, std::vector<std::uint32_t>>> trace_boundaries(
-    const PlaneGraph& g, const std::vector<FaceLabel>& emitted);
+// turn among half-edges of its own label, in a fixed order. Flat: walk i is
+// half_edges[begin[i] .. begin[i + 1]) with label[i] (one allocation per array, not per walk).
+struct BoundaryWalks {
+  std::vector<FaceLabel> label;
+  std::vector<std::uint32_t> begin{0};
+  std::vector<std::uint32_t> half_edges;
+  std::size_t size() const { return label.size(); }
+  const std::uint32_t* first(std::size_t i) const { return half_edges.data() + begin[i]; }
+  const std::uint32_t* last(std::size_t i) const { return half_edges.data() + begin[i + 1]; }
+};
+BoundaryWalks trace_boundaries(const PlaneGraph& g, const std::vector<FaceLabel>& emitted);
 
-// Splits a closed half-edge walk where it revisits a vertex (an origin) into loops that visit
-// each vertex once. scratch_position: one -1 per vertex, restored on return.
+// Splits the closed half-edge walk [first, last) where it revisits a vertex (an origin) into
+// loops that visit each vertex once. scratch_position: one -1 per vertex, restored on return.
 std::vector<std::vector<std::uint32_t>> split_at_repeated_vertices(
-    const PlaneGraph& g, const std::vector<std::uint32_t>& walk,
+    const PlaneGraph& g, const std::uint32_t* first, const std::uint32_t* last,
     std::vector<std::int32_t>& scratch_position);
+
+// The ring of points along the half-edges [first, last), allocated once at its final size.
+Ring ring_along(const PlaneGraph& g, const std::uint32_t* first, const std::uint32_t* last);
 
 }  // namespace edgeland::detail

@@ -206,10 +206,10 @@ std::vector<Ring> split_one(const Ring& outer, std::vector<const Ring*> holes, i
       emitted[2 * e + (g.mults[k].net > 0 ? 0 : 1)] = 0;
   std::vector<Ring> pieces, left_holes;
   std::vector<std::int32_t> position(g.vertices.size(), -1);
-  for (const auto& walk : trace_boundaries(g, emitted)) {
-    for (const auto& loop : split_at_repeated_vertices(g, walk.second, position)) {
-      Ring ring;
-      for (std::uint32_t h : loop) g.append_points(h, ring);
+  const BoundaryWalks walks = trace_boundaries(g, emitted);
+  for (std::size_t w = 0; w < walks.size(); ++w) {
+    for (const auto& loop : split_at_repeated_vertices(g, walks.first(w), walks.last(w), position)) {
+      Ring ring = ring_along(g, loop.data(), loop.data() + loop.size());
       if (ring.size() < 3) continue;
       (twice_signed_area(ring) > 0 ? pieces : left_holes).push_back(std::move(ring));
     }
