@@ -32,6 +32,22 @@ Meeting classify_pair(const Segment& s, std::uint32_t i, const Segment& t, std::
     const Point64 t_other = (t.a == s.a || t.a == s.b) ? t.b : t.a;
     if (orientation(s.a, s.b, t_other) != Orientation::kCollinear) return Meeting::kSharedEndpoint;
   }
+  // Perpendicular axis-parallel segments (tiles, boxes, cell cuts) cross at an integer point,
+  // the vertical one's x and the horizontal one's y, when each passes strictly between the
+  // other's ends: the common case of rectilinear inputs, without the rational construction.
+  const bool s_flat = s.a.y == s.b.y, t_flat = t.a.y == t.b.y;
+  if ((s_flat && t.a.x == t.b.x) || (t_flat && s.a.x == s.b.x)) {
+    const Segment& h = s_flat ? s : t;
+    const Segment& v = s_flat ? t : s;
+    const Point64 p{v.a.x, h.a.y};
+    if (std::min(h.a.x, h.b.x) < p.x && p.x < std::max(h.a.x, h.b.x) &&
+        std::min(v.a.y, v.b.y) < p.y && p.y < std::max(v.a.y, v.b.y)) {
+      ++c.intersections;
+      c.splits.emplace_back(i, p);
+      c.splits.emplace_back(j, p);
+      return Meeting::kOther;
+    }
+  }
   const SegmentIntersection r = intersect(s, t);
     switch (r.relation) {
       case SegmentRelation::kDisjoint:
@@ -52,15 +68,18 @@ Meeting classify_pair(const Segment& s, std::uint32_t i, const Segment& t, std::
         }
         return Meeting::kOther;
       case SegmentRelation::kCrossing:
+      {
         ++c.intersections;
-        if (r.point.is_integer()) {
-          const Point64 p = round_to_grid(r.point);
+        // Rounded once; the point is an integer exactly when the rounding is exact.
+        const Point64 p = round_to_grid(r.point);
+        if (Int128(p.x) * r.point.den == r.point.x_num && Int128(p.y) * r.point.den == r.point.y_num) {
           c.splits.emplace_back(i, p);
           c.splits.emplace_back(j, p);
         } else {
-          c.hot.push_back(round_to_grid(r.point));
+          c.hot.push_back(p);
         }
         return Meeting::kOther;
+      }
     }
   return Meeting::kOther;
 }
