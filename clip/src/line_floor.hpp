@@ -1,6 +1,6 @@
 #pragma once
 // The floor of a segment's line's y at an integer x, exactly: what the grid walks along
-// segments (point_grid.hpp, segment_grid.hpp) ask for each column boundary they cross.
+// segments (segment_grid.hpp) asks for each column boundary it crosses.
 #include <cstdint>
 
 #include "edgeland/kernel/int128.hpp"

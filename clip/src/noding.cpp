@@ -91,7 +91,8 @@ Box64 segment_box(const Segment& s) {
 }
 
 Contacts find_contacts(const std::vector<Segment>& segments, const std::vector<std::uint32_t>& next,
-                       const SegmentIndex& index, bool simple_rings, std::vector<bool>& touched) {
+                       const SegmentIndex& index, bool simple_rings, std::vector<bool>& touched,
+                       std::unique_ptr<SegmentGrid>* grid) {
   Contacts c;
   auto visit = [&](std::uint32_t i, std::uint32_t j) {
     const Meeting m = classify_pair(segments[i], i, segments[j], j, c);
@@ -107,10 +108,12 @@ Contacts find_contacts(const std::vector<Segment>& segments, const std::vector<s
       if (s > 0 && next[s - 1] != s) ring = s;  // rings occupy consecutive ids
       ring_of[s] = ring;
     }
-    SegmentGrid(segments).for_each_candidate_pair([&](std::uint32_t i, std::uint32_t j) {
+    auto walked = std::make_unique<SegmentGrid>(segments);
+    walked->for_each_candidate_pair([&](std::uint32_t i, std::uint32_t j) {
       if (simple_rings && ring_of[i] == ring_of[j]) return;
       if (boxes_overlap(segments[i], segments[j])) visit(i, j);
     });
+    if (grid) *grid = std::move(walked);
   } else {
     index.for_each_overlapping_pair(visit, simple_rings);
   }

@@ -2,6 +2,7 @@
 // Noding (thesis 3.3): every contact between segments, found exactly.
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -20,6 +21,7 @@ struct Contacts {
 };
 
 class SegmentIndex;
+class SegmentGrid;
 
 // Finds all contacts among `segments` (candidates from `index`). touched[s] becomes true for
 // every segment that meets another one anywhere except ring neighbours (next[s]) at their one
@@ -27,8 +29,11 @@ class SegmentIndex;
 // simple_rings: every ring is strictly simple (validated operands), so two segments of one ring
 // meet only as neighbours at their shared endpoint and such pairs are not tested at all.
 // O(r log r + candidate pairs) for r runs of the index.
+// When it walks the segments through a SegmentGrid (short runs: spiky inputs) and `grid` is not
+// null, the grid is handed out there for snap rounding's point queries.
 Contacts find_contacts(const std::vector<Segment>& segments, const std::vector<std::uint32_t>& next,
-                       const SegmentIndex& index, bool simple_rings, std::vector<bool>& touched);
+                       const SegmentIndex& index, bool simple_rings, std::vector<bool>& touched,
+                       std::unique_ptr<SegmentGrid>* grid = nullptr);
 
 enum class Meeting : std::uint8_t {
   kNone,            // disjoint

@@ -21,6 +21,7 @@
 #include <limits>
 #include <vector>
 
+#include "edgeland/kernel/bbox.hpp"
 #include "edgeland/kernel/int128.hpp"
 #include "edgeland/kernel/polygon.hpp"
 #include "line_floor.hpp"
@@ -44,6 +45,12 @@ class SegmentGrid {
   // this includes every pair of segments that share a point.
   template <class F>
   void for_each_candidate_pair(F&& visit) const;
+
+  // visit(i) for every segment registered in a cell that meets the closed box b: this includes
+  // every segment with a point in b. A segment registered in several such cells is visited once
+  // per cell (callers dedupe).
+  template <class F>
+  void for_each_in_box(const Box64& b, F&& visit) const;
 
   // Number of (segment, cell) registrations: the size of the structure, for tests.
   std::size_t entries() const { return items_.size(); }
@@ -91,6 +98,22 @@ void SegmentGrid::for_each_cell(const Segment& s, F&& f) const {
     }
     for (std::int64_t r = row(lo); r <= row(hi); ++r) f(static_cast<std::size_t>(c * rows_ + r));
   }
+}
+
+template <class F>
+void SegmentGrid::for_each_in_box(const Box64& b, F&& visit) const {
+  if (items_.empty() || b.max.x < min_x_ || b.max.y < min_y_ || b.min.x > max_x_ || b.min.y > max_y_)
+    return;
+  // Points of b outside the grid's extent belong to no segment; the rest lie in these cells.
+  const std::int64_t c0 = (std::max(b.min.x, min_x_) - min_x_) >> shift_;
+  const std::int64_t c1 = (std::min(b.max.x, max_x_) - min_x_) >> shift_;
+  const std::int64_t r0 = (std::max(b.min.y, min_y_) - min_y_) >> shift_;
+  const std::int64_t r1 = (std::min(b.max.y, max_y_) - min_y_) >> shift_;
+  for (std::int64_t c = c0; c <= c1; ++c)
+    for (std::int64_t r = r0; r <= r1; ++r) {
+      const std::size_t cell = static_cast<std::size_t>(c * rows_ + r);
+      for (std::uint32_t x = cell_begin_[cell]; x < cell_begin_[cell + 1]; ++x) visit(items_[x]);
+    }
 }
 
 template <class F>

@@ -13,7 +13,6 @@
 #include "edgeland/kernel/point_in_polygon.hpp"
 #include "edgeland/kernel/predicates.hpp"
 #include "noding.hpp"
-#include "point_grid.hpp"
 #include "radix_sort.hpp"
 #include "segment_grid.hpp"
 #include "segment_index.hpp"
@@ -87,6 +86,40 @@ bool meets_closed_pixel(const Segment& s, Point64 p) {
   return 2 * (det < 0 ? -det : det) <= (dx < 0 ? -dx : dx) + (dy < 0 ? -dy : dy);
 }
 
+// The input segments near a point, found through a SegmentGrid of the input (find_contacts
+// hands its own over on spiky inputs; otherwise it is built on first use). With many hot pixels
+// or moved segments, asking at each point is far cheaper than walking every long segment
+// through a grid of points: a point's cells hold a few dozen segments, while a spike crosses
+// hundreds of point cells.
+class SegmentsNear {
+ public:
+  explicit SegmentsNear(const std::vector<Segment>& segs) : segs_(segs) {}
+  std::unique_ptr<SegmentGrid>& grid() { return grid_; }
+  // visit(s) once for every segment with a point within L-infinity distance 1 of p (and for
+  // some farther ones: callers test exactly).
+  template <class F>
+  void for_each(Point64 p, F&& visit) {
+    if (!grid_) grid_ = std::make_unique<SegmentGrid>(segs_);
+    if (stamp_.empty() || token_ == kUnstamped - 1) {
+      stamp_.assign(segs_.size(), kUnstamped);
+      token_ = 0;
+    }
+    const std::uint32_t token = ++token_;
+    grid_->for_each_in_box(Box64{{p.x - 1, p.y - 1}, {p.x + 1, p.y + 1}}, [&](std::uint32_t s) {
+      if (stamp_[s] == token) return;
+      stamp_[s] = token;
+      visit(s);
+    });
+  }
+
+ private:
+  static constexpr std::uint32_t kUnstamped = 0xffffffffu;
+  const std::vector<Segment>& segs_;
+  std::unique_ptr<SegmentGrid> grid_;
+  std::vector<std::uint32_t> stamp_;
+  std::uint32_t token_ = 0;
+};
+
 // Grows the hot set until it is closed:
 //  * every segment meeting a hot pixel off its centre is moved (routed through the centre);
 //  * stable rule: a vertex becomes hot when the route of a moved segment would jump over it,
@@ -100,14 +133,14 @@ bool meets_closed_pixel(const Segment& s, Point64 p) {
 // vertex whose closed pixel the segment meets: the route's corners are centres of pixels the
 // segment meets, so the region between them lies within half a unit (in x and y) of the segment.
 // Each round only looks at what is new.
-void close_hot_set(const std::vector<Segment>& segs, const SegmentIndex& index,
+void close_hot_set(const std::vector<Segment>& segs, const SegmentIndex& index, SegmentsNear& near,
                    const std::vector<Point64>& split_points,
                    const StopsOf& splits_of, bool classic,
                    PointSet& is_hot, Closure& c, std::vector<Point64> fresh) {
   std::vector<SweepBox> split_sweep;
   if (!split_points.empty()) split_sweep = sorted_for_sweep(pixel_boxes(split_points));
-  std::unique_ptr<PointGrid> vertex_grid;  // built when first needed
-  std::vector<Point64> vertex_points;
+  std::vector<std::uint32_t> slot;  // segment -> its place in `changed`, or kNoSlot
+  constexpr std::uint32_t kNoSlot = 0xffffffffu;
   while (!fresh.empty()) {
     const std::uint32_t base = static_cast<std::uint32_t>(c.hot.size());
     c.hot.insert(c.hot.end(), fresh.begin(), fresh.end());
@@ -120,11 +153,10 @@ void close_hot_set(const std::vector<Segment>& segs, const SegmentIndex& index,
       changed.push_back(s);
     };
     if (many(fresh.size(), segs.size())) {
-      // Many hot pixels (spiky inputs: long segments crossing everywhere): every segment
-      // looks for them along itself instead of every pixel scanning the segments over it.
-      const PointGrid grid(fresh);
-      for (std::uint32_t s = 0; s < segs.size(); ++s)
-        grid.for_each_near(segs[s], [&](std::uint32_t h) { meet(h, s); });
+      // Many hot pixels (spiky inputs: long segments crossing everywhere, whose boxes cover
+      // half the input): each pixel asks the segment grid for the segments through its cells.
+      for (std::uint32_t h = 0; h < fresh.size(); ++h)
+        near.for_each(fresh[h], [&](std::uint32_t s) { meet(h, s); });
     } else {
       index.query(pixel_boxes(fresh), meet);
     }
@@ -164,15 +196,16 @@ void close_hot_set(const std::vector<Segment>& segs, const SegmentIndex& index,
       fresh.push_back(p);
     };
     if (many(changed.size(), segs.size())) {
-      if (!vertex_grid) {
-        std::vector<Point64> vertices(split_points);
-        for (const Segment& seg : segs) vertices.push_back(seg.a);  // every end starts a segment
-        vertex_grid = std::make_unique<PointGrid>(vertices);
-        vertex_points = std::move(vertices);
-      }
-      for (std::uint32_t k = 0; k < changed.size(); ++k)
-        vertex_grid->for_each_near(segs[changed[k]],
-                                   [&](std::uint32_t v) { consider(k, vertex_points[v]); });
+      // Every vertex asks for the changed segments near it.
+      slot.assign(segs.size(), kNoSlot);
+      for (std::uint32_t k = 0; k < changed.size(); ++k) slot[changed[k]] = k;
+      auto at_vertex = [&](Point64 p) {
+        near.for_each(p, [&](std::uint32_t s) {
+          if (slot[s] != kNoSlot) consider(slot[s], p);
+        });
+      };
+      for (const Segment& seg : segs) at_vertex(seg.a);  // every end starts a segment
+      for (Point64 p : split_points) at_vertex(p);
     } else {
       index.query(boxes, [&](std::uint32_t k, std::uint32_t t) {
         consider(k, segs[t].a);
@@ -265,7 +298,7 @@ class AllFragments {
 // them. Every other segment's route is exactly that classic route: it already passes through
 // its own ends and split points and through every hot pixel it meets (clip/README.md, "Which
 // fragment pairs the re-check tests").
-std::vector<bool> off_classic_routes(const std::vector<Segment>& segs,
+std::vector<bool> off_classic_routes(const std::vector<Segment>& segs, SegmentsNear& near,
                                      const std::vector<std::pair<std::uint32_t, Point64>>& splits,
                                      const PointSet& is_hot) {
   std::vector<Point64> loose;  // vertices that are not hot
@@ -277,12 +310,9 @@ std::vector<bool> off_classic_routes(const std::vector<Segment>& segs,
   std::sort(loose.begin(), loose.end());
   loose.erase(std::unique(loose.begin(), loose.end()), loose.end());
   std::vector<bool> off(segs.size(), false);
-  if (loose.empty()) return off;
-  const PointGrid grid(loose);
-  for (std::uint32_t s = 0; s < segs.size(); ++s)
-    grid.for_each_near(segs[s], [&](std::uint32_t v) {
-      if (!off[s] && meets_closed_pixel(segs[s], loose[v]) && !on_segment(loose[v], segs[s]))
-        off[s] = true;
+  for (Point64 p : loose)
+    near.for_each(p, [&](std::uint32_t s) {
+      if (!off[s] && meets_closed_pixel(segs[s], p) && !on_segment(p, segs[s])) off[s] = true;
     });
   return off;
 }
@@ -379,7 +409,8 @@ std::vector<Fragment> snap_round(const std::vector<Segment>& segs,
                                  SnapStats& stats) {
   const SegmentIndex index(segs, next);
   stats.touched.assign(segs.size(), false);
-  Contacts contacts = find_contacts(segs, next, index, simple_rings, stats.touched);
+  SegmentsNear near(segs);
+  Contacts contacts = find_contacts(segs, next, index, simple_rings, stats.touched, &near.grid());
   stats.intersections = contacts.intersections;
   stats.moved_boxes.clear();
   // No crossing at a non-integer point: every contact is an exact split and nothing moves.
@@ -420,7 +451,7 @@ std::vector<Fragment> snap_round(const std::vector<Segment>& segs,
     std::sort(fresh.begin(), fresh.end());
     std::sort(split_points.begin(), split_points.end());
     split_points.erase(std::unique(split_points.begin(), split_points.end()), split_points.end());
-    close_hot_set(segs, index, split_points, splits_of, classic, is_hot, closure, std::move(fresh));
+    close_hot_set(segs, index, near, split_points, splits_of, classic, is_hot, closure, std::move(fresh));
     fresh.clear();
     for (const auto& m : closure.meets) stats.touched[m.first] = true;
     std::vector<Fragment> frags = route(segs, closure, contacts.splits);
@@ -433,7 +464,7 @@ std::vector<Fragment> snap_round(const std::vector<Segment>& segs,
     // Safety re-check: fragments of moved segments against everything, exactly.
     const AllFragments all(segs, frags);
     Contacts again = recheck(all, closure.moved, index, segs.size(), stats.touched,
-                             [&] { return off_classic_routes(segs, contacts.splits, is_hot); });
+                             [&] { return off_classic_routes(segs, near, contacts.splits, is_hot); });
     if (again.hot.empty()) {
       if (again.splits.empty()) return frags;
       // Only exact integer splits remain (snapped fragments landing on vertices or overlapping

@@ -1,8 +1,8 @@
 // Inputs with hundreds of crossings: two spiky star polygons (random points in angular order
 // around two nearby centres), so that long spikes of one cross many spikes of the other. These
-// take the paths snap rounding uses only for many hot pixels (clip/src/point_grid.hpp: every
-// segment looks for the hot pixels and vertices along itself; box_grid.hpp: the re-check of
-// moved fragments), which small property-test inputs never reach. Every result is checked
+// take the paths snap rounding uses only for many hot pixels (clip/src/segment_grid.hpp: every
+// hot pixel and vertex asks the grid for the segments near it; the re-check of moved fragments
+// walks them through a grid of their own), which small property-test inputs rarely reach. Every result is checked
 // against the exact CGAL reference (accuracy_contract.hpp).
 #include <gtest/gtest.h>
 

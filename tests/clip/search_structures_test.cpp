@@ -1,4 +1,4 @@
-// The clipper's candidate searches (clip/src: segment_index, segment_grid, box_grid, point_grid) against
+// The clipper's candidate searches (clip/src: segment_index, segment_grid, box_grid) against
 // brute force. They only propose pairs and points for the exact tests, so what matters is that
 // they never miss one (a missed pair is a missed intersection) and that pairs come once.
 // Generated inputs mix tiny, long and huge boxes, zero-width ones, shared coordinates and both
@@ -14,7 +14,6 @@
 
 #include "box_grid.hpp"
 #include "edgeland/kernel/point.hpp"
-#include "point_grid.hpp"
 #include "edgeland/kernel/predicates.hpp"
 #include "segment_grid.hpp"
 #include "segment_index.hpp"
@@ -76,44 +75,6 @@ RC_GTEST_PROP(BoxGrid, ReportsEveryPairAmongManySmallBoxes, ()) {
   RC_ASSERT(got == expected);
 }
 
-RC_GTEST_PROP(PointGrid, FindsEveryPointWithinOneUnitOfASegment, ()) {
-  // Half the cases on a small patch with many points: cells of a unit or two, where the
-  // one-unit margins decide.
-  const bool small = *rc::gen::arbitrary<bool>();
-  const auto small_point = rc::gen::apply([](std::int64_t x, std::int64_t y) { return Point64{x, y}; },
-                                          rc::gen::inRange<std::int64_t>(-10, 11),
-                                          rc::gen::inRange<std::int64_t>(-10, 11));
-  const Point64 a = small ? *small_point : *point(), b = small ? *small_point : *point();
-  const Segment s{a, b};
-  // Points anywhere, and points a unit or two off the segment (where the margins matter).
-  auto points = small ? *rc::gen::container<std::vector<Point64>>(300, small_point)
-                      : *rc::gen::container<std::vector<Point64>>(point());
-  const auto offsets = *rc::gen::container<std::vector<std::tuple<int, int, int>>>(
-      rc::gen::tuple(rc::gen::inRange(0, 17), rc::gen::inRange(-2, 3), rc::gen::inRange(-2, 3)));
-  for (const auto& [k, ox, oy] : offsets) {
-    const Point64 on{a.x + static_cast<std::int64_t>(Int128(b.x - a.x) * k / 16),
-                     a.y + static_cast<std::int64_t>(Int128(b.y - a.y) * k / 16)};
-    const Point64 p{on.x + ox, on.y + oy};
-    if (in_range(p)) points.push_back(p);
-  }
-  std::set<std::uint32_t> found;
-  PointGrid(points).for_each_near(s, [&](std::uint32_t k) {
-    RC_ASSERT(found.insert(k).second);  // each point at most once
-  });
-  // Exact: p is within L-infinity distance 1 of s iff the square [p - 1, p + 1]^2 meets s
-  // (separating axes: x, y and the segment's normal).
-  for (std::uint32_t k = 0; k < points.size(); ++k) {
-    const Point64 p = points[k];
-    const bool in_box = std::min(a.x, b.x) <= p.x + 1 && std::max(a.x, b.x) >= p.x - 1 &&
-                        std::min(a.y, b.y) <= p.y + 1 && std::max(a.y, b.y) >= p.y - 1;
-    const Int128 dx = b.x - a.x, dy = b.y - a.y;
-    const Int128 det = dx * (p.y - a.y) - dy * (p.x - a.x);
-    const bool near = in_box && (det < 0 ? -det : det) <= (dx < 0 ? -dx : dx) + (dy < 0 ? -dy : dy);
-    if (near) RC_ASSERT(found.count(k) == 1u);
-  }
-}
-
-// Rings of random points (any shape: self-crossing, repeated directions) as the index sees them.
 RC_GTEST_PROP(SegmentIndex, ProposesEveryBoxOverlappingPairButRunNeighbours, ()) {
   const auto ring_sizes = *rc::gen::container<std::vector<int>>(rc::gen::inRange(2, 40));
   std::vector<Segment> segs;
@@ -189,6 +150,42 @@ RC_GTEST_PROP(SegmentGrid, ProposesEveryMeetingPairOnce, ()) {
         RC_ASSERT(got.count({i, j}) == 1u);
   // Long diagonal segments do not fill the grid the way their boxes would.
   if (small) RC_ASSERT(grid.entries() <= 60 * segs.size());
+}
+
+// Whether segment s has a point in the closed box b (exact, by its corners and sides).
+bool meets_box(const Segment& s, const Box64& b) {
+  if (b.contains(s.a) || b.contains(s.b)) return true;
+  const Point64 c[4] = {b.min, {b.max.x, b.min.y}, b.max, {b.min.x, b.max.y}};
+  for (int k = 0; k < 4; ++k)
+    if (intersect(s, Segment{c[k], c[(k + 1) % 4]}).relation != SegmentRelation::kDisjoint) return true;
+  return false;
+}
+
+// Snap rounding asks the grid for the segments near a point (a box of side 2 around it): every
+// segment with a point in the box is visited, also for boxes reaching past the grid's extent.
+RC_GTEST_PROP(SegmentGrid, BoxQueryVisitsEverySegmentMeetingTheBox, ()) {
+  const bool small = *rc::gen::arbitrary<bool>();
+  const auto small_point = rc::gen::apply([](std::int64_t x, std::int64_t y) { return Point64{x, y}; },
+                                          rc::gen::inRange<std::int64_t>(-12, 13),
+                                          rc::gen::inRange<std::int64_t>(-12, 13));
+  const auto end = small ? small_point : rc::gen::oneOf(point(), small_point);
+  const auto segs = *rc::gen::container<std::vector<Segment>>(
+      small ? 100 : *rc::gen::inRange<std::size_t>(0, 60),
+      rc::gen::apply([](Point64 a, Point64 b) { return Segment{a, b}; }, end, end));
+  const SegmentGrid grid(segs);
+  const auto queries = *rc::gen::container<std::vector<Box64>>(
+      20, rc::gen::oneOf(rc::gen::apply([](Point64 p) { return Box64{{p.x - 1, p.y - 1}, {p.x + 1, p.y + 1}}; },
+                                        rc::gen::oneOf(small_point, point())),
+                         box()));
+  for (const Box64& q : queries) {
+    std::set<std::uint32_t> visited;
+    grid.for_each_in_box(q, [&](std::uint32_t s) {
+      RC_ASSERT(s < segs.size());
+      visited.insert(s);
+    });
+    for (std::uint32_t s = 0; s < segs.size(); ++s)
+      if (meets_box(segs[s], q)) RC_ASSERT(visited.count(s) == 1u);
+  }
 }
 
 // Validated operands' rings are simple: the index can leave out every pair within one ring.
