@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <memory>
 #include <stdexcept>
-#include <unordered_set>
 #include <utility>
 
 #include "box_grid.hpp"
@@ -13,14 +12,13 @@
 #include "edgeland/kernel/point_in_polygon.hpp"
 #include "edgeland/kernel/predicates.hpp"
 #include "noding.hpp"
+#include "point_set.hpp"
 #include "radix_sort.hpp"
 #include "segment_grid.hpp"
 #include "segment_index.hpp"
 
 namespace edgeland::detail {
 namespace {
-
-using PointSet = std::unordered_set<Point64, Point64Hash>;
 
 // Points on the way of segments, grouped by segment (CSR: one array, no allocation per segment).
 class StopsOf {
@@ -161,8 +159,16 @@ void close_hot_set(const std::vector<Segment>& segs, const SegmentIndex& index, 
       index.query(pixel_boxes(fresh), meet);
     }
     fresh.clear();
-    std::sort(changed.begin(), changed.end());
-    changed.erase(std::unique(changed.begin(), changed.end()), changed.end());
+    if (changed.size() > segs.size()) {  // many meetings: mark and list in order, no sort
+      std::vector<bool> met_now(segs.size(), false);
+      for (std::uint32_t s : changed) met_now[s] = true;
+      changed.clear();
+      for (std::uint32_t s = 0; s < segs.size(); ++s)
+        if (met_now[s]) changed.push_back(s);
+    } else {
+      std::sort(changed.begin(), changed.end());
+      changed.erase(std::unique(changed.begin(), changed.end()), changed.end());
+    }
     changed.erase(std::remove_if(changed.begin(), changed.end(),
                                  [&](std::uint32_t s) { return !c.moved[s]; }),
                   changed.end());
@@ -188,7 +194,7 @@ void close_hot_set(const std::vector<Segment>& segs, const SegmentIndex& index, 
     }
     auto consider = [&](std::uint32_t k, Point64 p) {
       const Segment& seg = segs[changed[k]];
-      if (!meets_closed_pixel(seg, p) || is_hot.count(p)) return;
+      if (!meets_closed_pixel(seg, p) || is_hot.contains(p)) return;
       const bool pin = classic ? segment_meets_pixel(seg, p)
                                : locate(p, routes[k]) == PointLocation::kInside;
       if (!pin) return;
@@ -304,9 +310,9 @@ std::vector<bool> off_classic_routes(const std::vector<Segment>& segs, SegmentsN
   std::vector<Point64> loose;  // vertices that are not hot
   loose.reserve(segs.size() + splits.size());
   for (const Segment& s : segs)
-    if (!is_hot.count(s.a)) loose.push_back(s.a);  // every end starts a segment
+    if (!is_hot.contains(s.a)) loose.push_back(s.a);  // every end starts a segment
   for (const auto& sp : splits)
-    if (!is_hot.count(sp.second)) loose.push_back(sp.second);
+    if (!is_hot.contains(sp.second)) loose.push_back(sp.second);
   std::sort(loose.begin(), loose.end());
   loose.erase(std::unique(loose.begin(), loose.end()), loose.end());
   std::vector<bool> off(segs.size(), false);
@@ -427,7 +433,7 @@ std::vector<Fragment> snap_round(const std::vector<Segment>& segs,
   std::vector<Point64> fresh;
   auto add_hot = [&](const std::vector<Point64>& pts) {
     for (Point64 p : pts)
-      if (is_hot.insert(p).second) fresh.push_back(p);
+      if (is_hot.insert(p)) fresh.push_back(p);
   };
   add_hot(contacts.hot);
 
@@ -446,7 +452,7 @@ std::vector<Fragment> snap_round(const std::vector<Segment>& segs,
       closure = Closure{};
       closure.moved.assign(segs.size(), false);
       is_hot.clear();
-      is_hot.insert(fresh.begin(), fresh.end());
+      for (Point64 p : fresh) is_hot.insert(p);
     }
     std::sort(fresh.begin(), fresh.end());
     std::sort(split_points.begin(), split_points.end());

@@ -15,6 +15,7 @@
 #include "box_grid.hpp"
 #include "edgeland/kernel/point.hpp"
 #include "edgeland/kernel/predicates.hpp"
+#include "point_set.hpp"
 #include "segment_grid.hpp"
 #include "segment_index.hpp"
 
@@ -186,6 +187,28 @@ RC_GTEST_PROP(SegmentGrid, BoxQueryVisitsEverySegmentMeetingTheBox, ()) {
     for (std::uint32_t s = 0; s < segs.size(); ++s)
       if (meets_box(segs[s], q)) RC_ASSERT(visited.count(s) == 1u);
   }
+}
+
+// The hot-pixel set against std::set: inserts report novelty, membership survives growth and
+// clear() empties it. Points are few distinct ones (many repeats) or spread over the range.
+RC_GTEST_PROP(PointSet, AgreesWithStdSet, ()) {
+  const auto small_point = rc::gen::apply([](std::int64_t x, std::int64_t y) { return Point64{x, y}; },
+                                          rc::gen::inRange<std::int64_t>(-5, 6),
+                                          rc::gen::inRange<std::int64_t>(-5, 6));
+  const auto pts = *rc::gen::container<std::vector<Point64>>(rc::gen::oneOf(small_point, point()));
+  PointSet set;
+  std::set<Point64> reference;
+  for (std::size_t k = 0; k < pts.size(); ++k) {
+    if (k == pts.size() / 2 && *rc::gen::arbitrary<bool>()) {
+      set.clear();
+      reference.clear();
+    }
+    RC_ASSERT(set.insert(pts[k]) == reference.insert(pts[k]).second);
+    RC_ASSERT(set.size() == reference.size());
+  }
+  for (const Point64 p : pts) RC_ASSERT(set.contains(p) == (reference.count(p) == 1));
+  RC_ASSERT(!set.contains(Point64{kCoordBound, -kCoordBound}) ||
+            reference.count(Point64{kCoordBound, -kCoordBound}) == 1);
 }
 
 // Validated operands' rings are simple: the index can leave out every pair within one ring.
