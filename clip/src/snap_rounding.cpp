@@ -93,6 +93,7 @@ class SegmentsNear {
  public:
   explicit SegmentsNear(const std::vector<Segment>& segs) : segs_(segs) {}
   std::unique_ptr<SegmentGrid>& grid() { return grid_; }
+  bool has_grid() const { return grid_ != nullptr; }
   // visit(s) once for every segment with a point within L-infinity distance 1 of p (and for
   // some farther ones: callers test exactly).
   template <class F>
@@ -150,7 +151,7 @@ void close_hot_set(const std::vector<Segment>& segs, const SegmentIndex& index, 
       if (!on_segment(centre, segs[s])) c.moved[s] = true;
       changed.push_back(s);
     };
-    if (many(fresh.size(), segs.size())) {
+    if (near.has_grid() || many(fresh.size(), segs.size())) {
       // Many hot pixels (spiky inputs: long segments crossing everywhere, whose boxes cover
       // half the input): each pixel asks the segment grid for the segments through its cells.
       for (std::uint32_t h = 0; h < fresh.size(); ++h)
@@ -201,7 +202,7 @@ void close_hot_set(const std::vector<Segment>& segs, const SegmentIndex& index, 
       is_hot.insert(p);
       fresh.push_back(p);
     };
-    if (many(changed.size(), segs.size())) {
+    if (near.has_grid() || many(changed.size(), segs.size())) {
       // Every vertex asks for the changed segments near it.
       slot.assign(segs.size(), kNoSlot);
       for (std::uint32_t k = 0; k < changed.size(); ++k) slot[changed[k]] = k;
@@ -329,7 +330,7 @@ std::vector<bool> off_classic_routes(const std::vector<Segment>& segs, SegmentsN
 template <class OffClassic>
 Contacts recheck(const AllFragments& all, const std::vector<bool>& moved,
                  const SegmentIndex& index, std::size_t segment_count, std::vector<bool>& touched,
-                 OffClassic&& off_classic) {
+                 bool off_classic_is_cheap, OffClassic&& off_classic) {
   std::vector<std::uint32_t> which;
   std::vector<bool> is_moved(all.listed_count(), false);  // moved segments are always listed
   for (std::uint32_t i = 0; i < all.listed_count(); ++i) {
@@ -346,10 +347,18 @@ Contacts recheck(const AllFragments& all, const std::vector<bool>& moved,
   const std::size_t total = all.count();
   if (8 * which.size() < total && total < 2 * segment_count) {
     // Few moved fragments and few splits: query the segment index. Every fragment lies within
-    // one unit of its segment's box (grow the query boxes by 2 to be safe).
+    // one unit of its segment's box (grow the query boxes by 2 to be safe). When the segments
+    // near a point are cheap to find (a segment grid exists), pairs on their classic routes
+    // are left out as below.
+    std::vector<bool> off;
+    if (off_classic_is_cheap) {
+      off = off_classic();
+      if (std::find(off.begin(), off.end(), true) == off.end()) return c;
+    }
     std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
     auto add = [&](std::uint32_t f, std::uint32_t g) {
       if (f == g || (moved_id(g) && g < f)) return;  // a moved pair is seen from both sides
+      if (!off.empty() && !off[all.parent(f)] && !off[all.parent(g)]) return;
       pairs.emplace_back(std::min(f, g), std::max(f, g));
     };
     std::vector<Box64> boxes(which.size());
@@ -469,7 +478,7 @@ std::vector<Fragment> snap_round(const std::vector<Segment>& segs,
 
     // Safety re-check: fragments of moved segments against everything, exactly.
     const AllFragments all(segs, frags);
-    Contacts again = recheck(all, closure.moved, index, segs.size(), stats.touched,
+    Contacts again = recheck(all, closure.moved, index, segs.size(), stats.touched, near.has_grid(),
                              [&] { return off_classic_routes(segs, near, contacts.splits, is_hot); });
     if (again.hot.empty()) {
       if (again.splits.empty()) return frags;
