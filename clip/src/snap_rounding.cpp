@@ -53,6 +53,10 @@ struct Closure {
   std::vector<Point64> hot;                                      // all hot pixel centres
   std::vector<std::pair<std::uint32_t, std::uint32_t>> meets;    // (segment, hot index)
   std::vector<bool> moved;
+  // (segment, vertex) for every vertex (end or split point) not on the segment whose closed pixel
+  // the segment meets; complete once a grid pass over all vertices has run (off_classic_routes).
+  std::vector<std::pair<std::uint32_t, Point64>> near_vertex;
+  bool near_vertex_complete = false;
 };
 
 // The polyline a segment is routed along: its ends, its exact split points and the centres of
@@ -193,26 +197,35 @@ void close_hot_set(const std::vector<Segment>& segs, const SegmentIndex& index, 
         routes[k] = route_of(segs[s], std::move(stops));
       }
     }
-    auto consider = [&](std::uint32_t k, Point64 p) {
-      const Segment& seg = segs[changed[k]];
-      if (!meets_closed_pixel(seg, p) || is_hot.contains(p)) return;
-      const bool pin = classic ? segment_meets_pixel(seg, p)
+    // Vertex p, whose closed pixel changed segment k meets: pinned if the rule says so.
+    auto pin_if_needed = [&](std::uint32_t k, Point64 p) {
+      if (is_hot.contains(p)) return;
+      const bool pin = classic ? segment_meets_pixel(segs[changed[k]], p)
                                : locate(p, routes[k]) == PointLocation::kInside;
       if (!pin) return;
       is_hot.insert(p);
       fresh.push_back(p);
     };
+    auto consider = [&](std::uint32_t k, Point64 p) {
+      if (meets_closed_pixel(segs[changed[k]], p)) pin_if_needed(k, p);
+    };
     if (near.has_grid() || many(changed.size(), segs.size())) {
       // Every vertex asks for the changed segments near it.
       slot.assign(segs.size(), kNoSlot);
       for (std::uint32_t k = 0; k < changed.size(); ++k) slot[changed[k]] = k;
+      // The first such pass also records which segments pass near which vertices, for the
+      // re-check (off_classic_routes), at the price of one more exact test per candidate.
+      const bool record = !c.near_vertex_complete;
       auto at_vertex = [&](Point64 p) {
         near.for_each(p, [&](std::uint32_t s) {
-          if (slot[s] != kNoSlot) consider(slot[s], p);
+          if ((slot[s] == kNoSlot && !record) || !meets_closed_pixel(segs[s], p)) return;
+          if (record && !on_segment(p, segs[s])) c.near_vertex.emplace_back(s, p);
+          if (slot[s] != kNoSlot) pin_if_needed(slot[s], p);
         });
       };
       for (const Segment& seg : segs) at_vertex(seg.a);  // every end starts a segment
       for (Point64 p : split_points) at_vertex(p);
+      c.near_vertex_complete = true;
     } else {
       index.query(boxes, [&](std::uint32_t k, std::uint32_t t) {
         consider(k, segs[t].a);
@@ -304,10 +317,17 @@ class AllFragments {
 // vertex pixel were hot too: those meeting the closed pixel of a vertex that is neither hot nor on
 // them. Every other segment's route is exactly that classic route: it already passes through
 // its own ends and split points and through every hot pixel it meets (clip/README.md, "Which
-// fragment pairs the re-check tests").
+// fragment pairs the re-check tests"). Read from the closure's record when it has a complete
+// one (its vertices include every end and split point), found through `near` otherwise.
 std::vector<bool> off_classic_routes(const std::vector<Segment>& segs, SegmentsNear& near,
                                      const std::vector<std::pair<std::uint32_t, Point64>>& splits,
-                                     const PointSet& is_hot) {
+                                     const PointSet& is_hot, const Closure& closure) {
+  if (closure.near_vertex_complete) {
+    std::vector<bool> off(segs.size(), false);
+    for (const auto& [s, p] : closure.near_vertex)
+      if (!is_hot.contains(p)) off[s] = true;
+    return off;
+  }
   std::vector<Point64> loose;  // vertices that are not hot
   loose.reserve(segs.size() + splits.size());
   for (const Segment& s : segs)
@@ -479,7 +499,7 @@ std::vector<Fragment> snap_round(const std::vector<Segment>& segs,
     // Safety re-check: fragments of moved segments against everything, exactly.
     const AllFragments all(segs, frags);
     Contacts again = recheck(all, closure.moved, index, segs.size(), stats.touched, near.has_grid(),
-                             [&] { return off_classic_routes(segs, near, contacts.splits, is_hot); });
+                             [&] { return off_classic_routes(segs, near, contacts.splits, is_hot, closure); });
     if (again.hot.empty()) {
       if (again.splits.empty()) return frags;
       // Only exact integer splits remain (snapped fragments landing on vertices or overlapping
