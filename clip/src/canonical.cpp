@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <stdexcept>
 #include <vector>
 
 #include "edgeland/kernel/predicates.hpp"
@@ -52,17 +53,23 @@ Ring canonical_ring(Ring ring) {
 void canonicalize(PolygonSet& set) {
   for (Polygon& p : set) p = canonical_ring(std::move(p));
   // Sorted by first (least) vertex, which polygons share only when they touch there: the
-  // comparisons read one point kept next to its index, not two rings through their pointers.
+  // comparisons read one 64-bit key kept next to the index (the point, shifted into unsigned
+  // 32-bit halves: order-preserving for in-range coordinates; 0 for an empty ring, which sorts
+  // first as lexicographic order wants), not two rings through their pointers.
   struct Key {
-    Point64 first;
+    std::uint64_t first;
     std::uint32_t index;
   };
+  auto key_of = [](const Polygon& p) -> std::uint64_t {
+    if (p.empty()) return 0;
+    if (!in_range(p.front())) throw std::logic_error("canonicalize: vertex out of range");
+    return (static_cast<std::uint64_t>(p.front().x + kCoordBound + 1) << 32) |
+           static_cast<std::uint64_t>(p.front().y + kCoordBound + 1);
+  };
   std::vector<Key> keys(set.size());
-  for (std::uint32_t i = 0; i < keys.size(); ++i)
-    keys[i] = {set[i].empty() ? Point64{} : set[i].front(), i};
+  for (std::uint32_t i = 0; i < keys.size(); ++i) keys[i] = {key_of(set[i]), i};
   std::sort(keys.begin(), keys.end(), [&](const Key& x, const Key& y) {
-    const bool decided = x.first != y.first && !set[x.index].empty() && !set[y.index].empty();
-    return decided ? x.first < y.first : set[x.index] < set[y.index];  // = lexicographic
+    return x.first != y.first ? x.first < y.first : set[x.index] < set[y.index];
   });
   PolygonSet sorted;
   sorted.reserve(set.size());

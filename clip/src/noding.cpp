@@ -53,7 +53,8 @@ Meeting classify_pair(const Segment& s, std::uint32_t i, const Segment& t, std::
       case SegmentRelation::kDisjoint:
         return Meeting::kNone;
       case SegmentRelation::kTouching: {
-        const Point64 p = round_to_grid(r.point);  // exact: touching points are endpoints
+        // Touching points are endpoints: den is 1 (no 128-bit division needed).
+        const Point64 p{static_cast<std::int64_t>(r.point.x_num), static_cast<std::int64_t>(r.point.y_num)};
         if ((p == s.a || p == s.b) && (p == t.a || p == t.b)) return Meeting::kSharedEndpoint;
         ++c.intersections;
         split_if_interior(c, i, s, p);
