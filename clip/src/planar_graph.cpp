@@ -1,6 +1,7 @@
 #include "planar_graph.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <stdexcept>
 #include <tuple>
 
@@ -202,7 +203,9 @@ PlaneGraph build_plane_graph(const std::vector<Segment>& segments,
   // By (lo, hi), then (channel, polygon): pieces come in segment order, which is already
   // (channel, polygon) order for clip's operands, and the sort is stable; a group that is not
   // (hole splitting's bridges) is put in order on its own.
-  radix_sort(pieces, [](const Piece& p) { return std::uint64_t{p.lo} << 32 | p.hi; });
+  // (lo, hi) packed just wide enough for the vertex ids: fewer radix passes than 32-bit halves.
+  const int id_bits = std::bit_width(keys.size());
+  radix_sort(pieces, [id_bits](const Piece& p) { return std::uint64_t{p.lo} << id_bits | p.hi; });
   auto tag_less = [](const Piece& x, const Piece& y) {
     return std::tie(x.channel, x.polygon) < std::tie(y.channel, y.polygon);
   };
