@@ -204,7 +204,7 @@ PlaneGraph build_plane_graph(const std::vector<Segment>& segments,
   // (channel, polygon) order for clip's operands, and the sort is stable; a group that is not
   // (hole splitting's bridges) is put in order on its own.
   // (lo, hi) packed just wide enough for the vertex ids: fewer radix passes than 32-bit halves.
-  const int id_bits = std::bit_width(keys.size());
+  const auto id_bits = static_cast<int>(std::bit_width(keys.size()));
   radix_sort(pieces, [id_bits](const Piece& p) { return std::uint64_t{p.lo} << id_bits | p.hi; });
   auto tag_less = [](const Piece& x, const Piece& y) {
     return std::tie(x.channel, x.polygon) < std::tie(y.channel, y.polygon);
