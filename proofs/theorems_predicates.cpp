@@ -32,6 +32,18 @@ std::vector<Theorem> predicate_theorems() {
                  const PointTripleInputs in = point_triple_inputs(p);
                  formulas::orient<SymInt>(in.ax, in.ay, in.bx, in.by, in.cx, in.cy);
                }});
+  t.push_back({"orient_differences_int64",
+               "b - a and c - a of orient_widening (orient_det) fit int64 for in-range points",
+               64, [](Prover& p) {
+                 const PointTripleInputs in = point_triple_inputs(p);
+                 formulas::orient_differences<SymInt>(in.ax, in.ay, in.bx, in.by, in.cx, in.cy);
+               }});
+  t.push_back({"orient_widening_int128",
+               "orient_widening (orient_det): its products and result fit Int128",
+               128, [](Prover& p) {
+                 const PointTripleInputs in = point_triple_inputs(p);
+                 formulas::orient_widening<SymInt, SymInt>(in.ax, in.ay, in.bx, in.by, in.cx, in.cy);
+               }});
   t.push_back({"dot_from_int128", "dot_from(a, b, c) (dot_sign, along) never overflows Int128",
                128, [](Prover& p) {
                  const PointTripleInputs in = point_triple_inputs(p);

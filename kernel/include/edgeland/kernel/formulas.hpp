@@ -21,6 +21,27 @@ constexpr W orient(W ax, W ay, W bx, W by, W cx, W cy) {
   return cross(bx - ax, by - ay, cx - ax, cy - ay);
 }
 
+// orient() in two number types: the coordinate differences in D, the products and their
+// difference in W (constructible from D). With D = 64-bit (differences of in-range coordinates
+// fit it: theorem orient_differences_int64) each product is one widening 64 x 64 -> 128-bit
+// multiply, about three times faster than orient() computed wholly in 128 bits; the value is
+// the same (theorem orient_widening_int128 bounds the products and the result).
+template <class D>
+struct OrientDifferences {
+  D bx, by, cx, cy;  // b - a and c - a
+};
+
+template <class D>
+constexpr OrientDifferences<D> orient_differences(D ax, D ay, D bx, D by, D cx, D cy) {
+  return {bx - ax, by - ay, cx - ax, cy - ay};
+}
+
+template <class D, class W>
+constexpr W orient_widening(D ax, D ay, D bx, D by, D cx, D cy) {
+  const OrientDifferences<D> d = orient_differences(ax, ay, bx, by, cx, cy);
+  return cross(W(d.bx), W(d.by), W(d.cx), W(d.cy));
+}
+
 // Dot product of (b - a) and (c - a): sign tells whether c projects before, onto or past a.
 template <class W>
 constexpr W dot_from(W ax, W ay, W bx, W by, W cx, W cy) {

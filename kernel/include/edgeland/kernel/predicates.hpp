@@ -19,7 +19,8 @@ enum class Orientation : std::int8_t { kClockwise = -1, kCollinear = 0, kCounter
 // Twice the signed area of triangle abc (exact). Inline: the clipper asks it millions of times
 // per operation, and a call costs as much as the 128-bit arithmetic.
 inline Int128 orient_det(Point64 a, Point64 b, Point64 c) noexcept {
-  return formulas::orient<arith::Checked<Int128>>(a.x, a.y, b.x, b.y, c.x, c.y).v;
+  using D = arith::Checked<std::int64_t>;
+  return formulas::orient_widening<D, arith::Checked<Int128>>(a.x, a.y, b.x, b.y, c.x, c.y).v;
 }
 // Which side of the directed line a->b the point c lies on (CCW = left).
 inline Orientation orientation(Point64 a, Point64 b, Point64 c) noexcept {
