@@ -49,6 +49,12 @@ std::vector<Theorem> predicate_theorems() {
                  const PointTripleInputs in = point_triple_inputs(p);
                  formulas::dot_from<SymInt>(in.ax, in.ay, in.bx, in.by, in.cx, in.cy);
                }});
+  t.push_back({"dot_widening_int128",
+               "dot_widening (dot_sign, along, projection): its products and sum fit Int128",
+               128, [](Prover& p) {
+                 const PointTripleInputs in = point_triple_inputs(p);
+                 formulas::dot_widening<SymInt, SymInt>(in.ax, in.ay, in.bx, in.by, in.cx, in.cy);
+               }});
   t.push_back({"line_intersection_int128",
                "line_intersection: x_num, y_num, den and all their intermediates fit Int128",
                128, [](Prover& p) { intersect_lines(segment_pair_inputs(p)); }});

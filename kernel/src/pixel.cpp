@@ -68,7 +68,7 @@ bool segment_meets_pixel(const Segment& s, Point64 c) noexcept {
 }
 
 Int128 projection(const Segment& s, Point64 p) noexcept {
-  return formulas::dot_from<W>(s.a.x, s.a.y, s.b.x, s.b.y, p.x, p.y).v;
+  return formulas::dot_widening<arith::Checked<std::int64_t>, W>(s.a.x, s.a.y, s.b.x, s.b.y, p.x, p.y).v;
 }
 
 }  // namespace edgeland

@@ -15,7 +15,7 @@ constexpr int sign(Int128 v) noexcept { return (v > 0) - (v < 0); }
 
 // Position of p along the segment direction a->b, used to order collinear points.
 Int128 along(Point64 a, Point64 b, Point64 p) noexcept {
-  return formulas::dot_from<W>(a.x, a.y, b.x, b.y, p.x, p.y).v;
+  return formulas::dot_widening<arith::Checked<std::int64_t>, W>(a.x, a.y, b.x, b.y, p.x, p.y).v;
 }
 
 }  // namespace

@@ -48,6 +48,14 @@ constexpr W dot_from(W ax, W ay, W bx, W by, W cx, W cy) {
   return (bx - ax) * (cx - ax) + (by - ay) * (cy - ay);
 }
 
+// dot_from() with the differences in D and the products in W, as orient_widening (theorems
+// orient_differences_int64 for the differences, dot_widening_int128 for the rest).
+template <class D, class W>
+constexpr W dot_widening(D ax, D ay, D bx, D by, D cx, D cy) {
+  const OrientDifferences<D> d = orient_differences(ax, ay, bx, by, cx, cy);
+  return W(d.bx) * W(d.cx) + W(d.by) * W(d.cy);
+}
+
 // Exact intersection of the lines through segments p0->p1 and q0->q1 as homogeneous
 // coordinates (x_num / den, y_num / den). den == 0 means parallel lines.
 template <class W>
