@@ -178,36 +178,39 @@ void close_hot_set(const std::vector<Segment>& segs, const SegmentIndex& index, 
                                  [&](std::uint32_t s) { return !c.moved[s]; }),
                   changed.end());
     if (changed.empty()) break;
-    std::vector<Box64> boxes(changed.size());
+    // Routes are built when first asked for: a vertex on the segment itself (its ends, its
+    // split points) lies on the boundary of the region between segment and route, never
+    // strictly inside, so on spiky inputs most moved segments never need theirs.
+    std::unique_ptr<StopsOf> hot_stops;  // every hot centre met so far, by segment
     std::vector<Ring> routes(changed.size());
-    std::vector<std::pair<std::uint32_t, Point64>> met;  // every hot centre met so far, by segment
-    if (!classic) {
-      met.reserve(c.meets.size());
-      for (const auto& [s, h] : c.meets) met.emplace_back(s, c.hot[h]);
-    }
-    const StopsOf hot_stops(classic ? 0 : segs.size(), met);
-    for (std::size_t k = 0; k < changed.size(); ++k) {
-      const std::uint32_t s = changed[k];
-      const Box64 b = index.box(s);
-      boxes[k] = {{b.min.x - 1, b.min.y - 1}, {b.max.x + 1, b.max.y + 1}};
-      if (!classic) {
+    auto route = [&](std::uint32_t k) -> const Ring& {
+      if (routes[k].empty()) {
+        if (!hot_stops) {
+          std::vector<std::pair<std::uint32_t, Point64>> met;
+          met.reserve(c.meets.size());
+          for (const auto& [s, h] : c.meets) met.emplace_back(s, c.hot[h]);
+          hot_stops = std::make_unique<StopsOf>(segs.size(), met);
+        }
         std::vector<Point64> stops;
-        hot_stops.append(s, stops);
-        splits_of.append(s, stops);
-        routes[k] = route_of(segs[s], std::move(stops));
+        hot_stops->append(changed[k], stops);
+        splits_of.append(changed[k], stops);
+        routes[k] = route_of(segs[changed[k]], std::move(stops));
       }
-    }
-    // Vertex p, whose closed pixel changed segment k meets: pinned if the rule says so.
-    auto pin_if_needed = [&](std::uint32_t k, Point64 p) {
-      if (is_hot.contains(p)) return;
+      return routes[k];
+    };
+    // Vertex p, whose closed pixel changed segment k meets (`on`: p lies on the segment):
+    // pinned if the rule says so.
+    auto pin_if_needed = [&](std::uint32_t k, Point64 p, bool on) {
+      if ((!classic && on) || is_hot.contains(p)) return;
       const bool pin = classic ? segment_meets_pixel(segs[changed[k]], p)
-                               : locate(p, routes[k]) == PointLocation::kInside;
+                               : locate(p, route(k)) == PointLocation::kInside;
       if (!pin) return;
       is_hot.insert(p);
       fresh.push_back(p);
     };
     auto consider = [&](std::uint32_t k, Point64 p) {
-      if (meets_closed_pixel(segs[changed[k]], p)) pin_if_needed(k, p);
+      const Segment& seg = segs[changed[k]];
+      if (meets_closed_pixel(seg, p)) pin_if_needed(k, p, on_segment(p, seg));
     };
     if (near.has_grid() || many(changed.size(), segs.size())) {
       // Every vertex asks for the changed segments near it.
@@ -219,14 +222,20 @@ void close_hot_set(const std::vector<Segment>& segs, const SegmentIndex& index, 
       auto at_vertex = [&](Point64 p) {
         near.for_each(p, [&](std::uint32_t s) {
           if ((slot[s] == kNoSlot && !record) || !meets_closed_pixel(segs[s], p)) return;
-          if (record && !on_segment(p, segs[s])) c.near_vertex.emplace_back(s, p);
-          if (slot[s] != kNoSlot) pin_if_needed(slot[s], p);
+          const bool on = on_segment(p, segs[s]);
+          if (record && !on) c.near_vertex.emplace_back(s, p);
+          if (slot[s] != kNoSlot) pin_if_needed(slot[s], p, on);
         });
       };
       for (const Segment& seg : segs) at_vertex(seg.a);  // every end starts a segment
       for (Point64 p : split_points) at_vertex(p);
       c.near_vertex_complete = true;
     } else {
+      std::vector<Box64> boxes(changed.size());
+      for (std::size_t k = 0; k < changed.size(); ++k) {
+        const Box64 b = index.box(changed[k]);
+        boxes[k] = {{b.min.x - 1, b.min.y - 1}, {b.max.x + 1, b.max.y + 1}};
+      }
       index.query(boxes, [&](std::uint32_t k, std::uint32_t t) {
         consider(k, segs[t].a);
         consider(k, segs[t].b);
