@@ -4,6 +4,7 @@
 // spiky inputs. Membership only, so iteration order (which would depend on hashing) is never
 // exposed: results cannot depend on it.
 #include <cstddef>
+#include <algorithm>
 #include <cstdint>
 #include <limits>
 #include <vector>
@@ -34,6 +35,17 @@ class PointSet {
     }
   }
   std::size_t size() const { return size_; }
+  // Room for `count` points without growing.
+  void reserve(std::size_t count) {
+    std::size_t want = 16;
+    while (want < 2 * count) want *= 2;
+    if (want <= slots_.size()) return;
+    std::vector<Point64> old(want, kEmpty);
+    old.swap(slots_);
+    size_ = 0;
+    for (Point64 p : old)
+      if (p != kEmpty) insert(p);
+  }
   void clear() {
     slots_.assign(slots_.size(), kEmpty);
     size_ = 0;
@@ -44,13 +56,7 @@ class PointSet {
   static constexpr Point64 kEmpty{std::numeric_limits<std::int64_t>::min(),
                                   std::numeric_limits<std::int64_t>::min()};
   std::size_t home(Point64 p) const { return Point64Hash{}(p) & (slots_.size() - 1); }
-  void grow() {
-    std::vector<Point64> old(std::max<std::size_t>(16, 2 * slots_.size()), kEmpty);
-    old.swap(slots_);
-    size_ = 0;
-    for (Point64 p : old)
-      if (p != kEmpty) insert(p);
-  }
+  void grow() { reserve(std::max<std::size_t>(8, slots_.size())); }
   std::vector<Point64> slots_;  // a power of two in size, at most half full
   std::size_t size_ = 0;
 };

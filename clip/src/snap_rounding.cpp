@@ -466,6 +466,7 @@ std::vector<Fragment> snap_round(const std::vector<Segment>& segs,
   for (const auto& sp : contacts.splits) split_points.push_back(sp.second);
 
   PointSet is_hot;
+  is_hot.reserve(2 * contacts.hot.size());
   Closure closure;
   closure.moved.assign(segs.size(), false);
   std::vector<Point64> fresh;
