@@ -212,8 +212,9 @@ void close_hot_set(const std::vector<Segment>& segs, const SegmentIndex& index, 
       const Segment& seg = segs[changed[k]];
       if (meets_closed_pixel(seg, p)) pin_if_needed(k, p, on_segment(p, seg));
     };
-    if (near.has_grid() || many(changed.size(), segs.size())) {
-      // Every vertex asks for the changed segments near it.
+    if (many(changed.size(), segs.size())) {
+      // Every vertex asks for the changed segments near it (a pass over all vertices: only
+      // when the changed segments are many; a few are served by box queries below).
       slot.assign(segs.size(), kNoSlot);
       for (std::uint32_t k = 0; k < changed.size(); ++k) slot[changed[k]] = k;
       // The first such pass also records which segments pass near which vertices, for the
@@ -359,7 +360,7 @@ std::vector<bool> off_classic_routes(const std::vector<Segment>& segs, SegmentsN
 template <class OffClassic>
 Contacts recheck(const AllFragments& all, const std::vector<bool>& moved,
                  const SegmentIndex& index, std::size_t segment_count, std::vector<bool>& touched,
-                 bool off_classic_is_cheap, OffClassic&& off_classic) {
+                 bool off_classic_is_known, OffClassic&& off_classic) {
   std::vector<std::uint32_t> which;
   std::vector<bool> is_moved(all.listed_count(), false);  // moved segments are always listed
   for (std::uint32_t i = 0; i < all.listed_count(); ++i) {
@@ -376,11 +377,11 @@ Contacts recheck(const AllFragments& all, const std::vector<bool>& moved,
   const std::size_t total = all.count();
   if (8 * which.size() < total && total < 2 * segment_count) {
     // Few moved fragments and few splits: query the segment index. Every fragment lies within
-    // one unit of its segment's box (grow the query boxes by 2 to be safe). When the segments
-    // near a point are cheap to find (a segment grid exists), pairs on their classic routes
-    // are left out as below.
+    // one unit of its segment's box (grow the query boxes by 2 to be safe). When the closure
+    // already recorded which segments pass near which vertices, pairs on their classic routes
+    // are left out as below (finding that out afresh would cost a pass over all vertices).
     std::vector<bool> off;
-    if (off_classic_is_cheap) {
+    if (off_classic_is_known) {
       off = off_classic();
       if (std::find(off.begin(), off.end(), true) == off.end()) return c;
     }
@@ -508,7 +509,8 @@ std::vector<Fragment> snap_round(const std::vector<Segment>& segs,
 
     // Safety re-check: fragments of moved segments against everything, exactly.
     const AllFragments all(segs, frags);
-    Contacts again = recheck(all, closure.moved, index, segs.size(), stats.touched, near.has_grid(),
+    Contacts again = recheck(all, closure.moved, index, segs.size(), stats.touched,
+                             closure.near_vertex_complete,
                              [&] { return off_classic_routes(segs, near, contacts.splits, is_hot, closure); });
     if (again.hot.empty()) {
       if (again.splits.empty()) return frags;
