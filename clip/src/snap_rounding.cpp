@@ -157,7 +157,8 @@ void close_hot_set(const std::vector<Segment>& segs, const SegmentIndex& index, 
     };
     if (near.has_grid() || many(fresh.size(), segs.size())) {
       // Many hot pixels (spiky inputs: long segments crossing everywhere, whose boxes cover
-      // half the input): each pixel asks the segment grid for the segments through its cells.
+      // half the input), or a segment grid noding already built: each pixel asks the grid
+      // for the segments through its cells.
       for (std::uint32_t h = 0; h < fresh.size(); ++h)
         near.for_each(fresh[h], [&](std::uint32_t s) { meet(h, s); });
     } else {
@@ -355,8 +356,10 @@ std::vector<bool> off_classic_routes(const std::vector<Segment>& segs, SegmentsN
 }
 
 // Contacts between fragments of moved segments and all fragments, each pair once. Split
-// points are reported by fragment id (AllFragments). off_classic() computes off_classic_routes
-// when the pairs are many enough to be worth filtering.
+// points are reported by fragment id (AllFragments). Pairs of two fragments on their classic
+// routes are left out (README): off_classic() returns off_classic_routes, which is asked for
+// on the grid path, and on the box path only when off_classic_is_known (the closure recorded
+// it, so it costs no pass over all vertices).
 template <class OffClassic>
 Contacts recheck(const AllFragments& all, const std::vector<bool>& moved,
                  const SegmentIndex& index, std::size_t segment_count, std::vector<bool>& touched,
@@ -507,7 +510,8 @@ std::vector<Fragment> snap_round(const std::vector<Segment>& segs,
     for (std::uint32_t i = 0; i < segs.size(); ++i)
       if (closure.moved[i]) stats.moved_boxes.push_back(index.box(i));
 
-    // Safety re-check: fragments of moved segments against everything, exactly.
+    // Safety re-check: fragments of moved segments against everything they may meet that the
+    // snap-rounding theorem does not already cover, exactly.
     const AllFragments all(segs, frags);
     Contacts again = recheck(all, closure.moved, index, segs.size(), stats.touched,
                              closure.near_vertex_complete,
