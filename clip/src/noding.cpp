@@ -68,8 +68,7 @@ Meeting classify_pair(const Segment& s, std::uint32_t i, const Segment& t, std::
           split_if_interior(c, j, t, p);
         }
         return Meeting::kOther;
-      case SegmentRelation::kCrossing:
-      {
+      case SegmentRelation::kCrossing: {
         ++c.intersections;
         // Rounded once; the point is an integer exactly when the rounding is exact.
         const Point64 p = round_to_grid(r.point);
