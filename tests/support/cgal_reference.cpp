@@ -135,13 +135,72 @@ ExactRegion ExactRegion::of_rational_polygons(const std::vector<std::vector<QPoi
   return ExactRegion(std::make_shared<const Impl>(std::move(s)));
 }
 
+namespace {
+
+void apply_in_place(CSet& r, ClipOp op, const CSet& other) {
+  switch (op) {
+    case ClipOp::kUnion: r.join(other); break;
+    case ClipOp::kIntersection: r.intersection(other); break;
+    case ClipOp::kDifference: r.difference(other); break;
+    case ClipOp::kXor: r.symmetric_difference(other); break;
+  }
+}
+
+// The same region in a set built afresh from its polygons with holes (a new arrangement).
+CSet rebuilt(const std::vector<CPolygonWithHoles>& parts) {
+  CSet s;
+  if (!parts.empty()) s.join(parts.begin(), parts.end());
+  return s;
+}
+
+// A op B computed one part of A (and for xor, of B) at a time, each against the other whole
+// set, the results joined: intersection and difference distribute over the disjoint parts, and
+// xor = (A - B) + (B - A). A different arrangement for each piece.
+CSet part_by_part(ClipOp op, const std::vector<CPolygonWithHoles>& a,
+                  const std::vector<CPolygonWithHoles>& b) {
+  if (op == ClipOp::kUnion) {
+    std::vector<CPolygonWithHoles> all(a);
+    all.insert(all.end(), b.begin(), b.end());
+    return rebuilt(all);
+  }
+  const CSet whole_b = rebuilt(b);
+  auto each = [](const std::vector<CPolygonWithHoles>& parts, ClipOp part_op, const CSet& other,
+                 std::vector<CPolygonWithHoles>& out) {
+    for (const CPolygonWithHoles& p : parts) {
+      CSet piece;
+      piece.insert(p);
+      apply_in_place(piece, part_op, other);
+      piece.polygons_with_holes(std::back_inserter(out));
+    }
+  };
+  std::vector<CPolygonWithHoles> out;
+  if (op == ClipOp::kXor) {
+    each(a, ClipOp::kDifference, whole_b, out);
+    each(b, ClipOp::kDifference, rebuilt(a), out);
+  } else {
+    each(a, op, whole_b, out);
+  }
+  return rebuilt(out);
+}
+
+}  // namespace
+
 ExactRegion ExactRegion::apply(ClipOp op, const ExactRegion& other) const {
   CSet r = impl_->set;
-  switch (op) {
-    case ClipOp::kUnion: r.join(other.impl_->set); break;
-    case ClipOp::kIntersection: r.intersection(other.impl_->set); break;
-    case ClipOp::kDifference: r.difference(other.impl_->set); break;
-    case ClipOp::kXor: r.symmetric_difference(other.impl_->set); break;
+  try {
+    apply_in_place(r, op, other.impl_->set);
+  } catch (const CGAL::Precondition_exception&) {
+    // CGAL 5.5's Boolean operations on a set carried through many operations can fail the
+    // arrangement precondition "number_of_outer_ccbs() == 1" (cf. CGAL issue #644) although
+    // the region is valid; seen after a few hundred steps of the closure chain, with this
+    // session's and earlier edgeland alike. The same operation on sets rebuilt from their
+    // polygons with holes succeeds; should it not, the exception propagates.
+    try {
+      r = rebuilt(impl_->parts);
+      apply_in_place(r, op, rebuilt(other.impl_->parts));
+    } catch (const CGAL::Precondition_exception&) {
+      r = part_by_part(op, impl_->parts, other.impl_->parts);
+    }
   }
   return ExactRegion(std::make_shared<const Impl>(std::move(r)));
 }
