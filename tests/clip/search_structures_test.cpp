@@ -130,15 +130,24 @@ RC_GTEST_PROP(SegmentIndex, ProposesEveryBoxOverlappingPairButRunNeighbours, ())
 // Long segments in every direction on a small patch (cells of a unit or two, where a meeting on
 // a cell line or corner decides) or over the whole range: every pair that shares a point is
 // proposed, and no pair twice.
+// A point of the small patch [-12, 12]^2.
+rc::Gen<Point64> patch_point() {
+  return rc::gen::apply([](std::int64_t x, std::int64_t y) { return Point64{x, y}; },
+                        rc::gen::inRange<std::int64_t>(-12, 13), rc::gen::inRange<std::int64_t>(-12, 13));
+}
+
+// `small`: `crowded` segments on the patch; otherwise up to 60 with ends on the patch or
+// anywhere in the range.
+std::vector<Segment> grid_segments(bool small, std::size_t crowded) {
+  const auto end = small ? patch_point() : rc::gen::oneOf(point(), patch_point());
+  return *rc::gen::container<std::vector<Segment>>(
+      small ? crowded : *rc::gen::inRange<std::size_t>(0, 60),
+      rc::gen::apply([](Point64 a, Point64 b) { return Segment{a, b}; }, end, end));
+}
+
 RC_GTEST_PROP(SegmentGrid, ProposesEveryMeetingPairOnce, ()) {
   const bool small = *rc::gen::arbitrary<bool>();
-  const auto small_point = rc::gen::apply([](std::int64_t x, std::int64_t y) { return Point64{x, y}; },
-                                          rc::gen::inRange<std::int64_t>(-12, 13),
-                                          rc::gen::inRange<std::int64_t>(-12, 13));
-  const auto end = small ? small_point : rc::gen::oneOf(point(), small_point);
-  const auto segs = *rc::gen::container<std::vector<Segment>>(
-      small ? 200 : *rc::gen::inRange<std::size_t>(0, 60),
-      rc::gen::apply([](Point64 a, Point64 b) { return Segment{a, b}; }, end, end));
+  const std::vector<Segment> segs = grid_segments(small, 200);
   const SegmentGrid grid(segs);
   std::set<std::pair<std::uint32_t, std::uint32_t>> got;
   grid.for_each_candidate_pair([&](std::uint32_t i, std::uint32_t j) {
@@ -165,18 +174,11 @@ bool meets_box(const Segment& s, const Box64& b) {
 // Snap rounding asks the grid for the segments near a point (a box of side 2 around it): every
 // segment with a point in the box is visited, also for boxes reaching past the grid's extent.
 RC_GTEST_PROP(SegmentGrid, BoxQueryVisitsEverySegmentMeetingTheBox, ()) {
-  const bool small = *rc::gen::arbitrary<bool>();
-  const auto small_point = rc::gen::apply([](std::int64_t x, std::int64_t y) { return Point64{x, y}; },
-                                          rc::gen::inRange<std::int64_t>(-12, 13),
-                                          rc::gen::inRange<std::int64_t>(-12, 13));
-  const auto end = small ? small_point : rc::gen::oneOf(point(), small_point);
-  const auto segs = *rc::gen::container<std::vector<Segment>>(
-      small ? 100 : *rc::gen::inRange<std::size_t>(0, 60),
-      rc::gen::apply([](Point64 a, Point64 b) { return Segment{a, b}; }, end, end));
+  const std::vector<Segment> segs = grid_segments(*rc::gen::arbitrary<bool>(), 100);
   const SegmentGrid grid(segs);
   const auto queries = *rc::gen::container<std::vector<Box64>>(
       20, rc::gen::oneOf(rc::gen::apply([](Point64 p) { return Box64{{p.x - 1, p.y - 1}, {p.x + 1, p.y + 1}}; },
-                                        rc::gen::oneOf(small_point, point())),
+                                        rc::gen::oneOf(patch_point(), point())),
                          box()));
   for (const Box64& q : queries) {
     std::set<std::uint32_t> visited;
