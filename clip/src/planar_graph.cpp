@@ -33,10 +33,6 @@ struct Piece {
   std::int8_t sign;  // +1 when the fragment runs lo -> hi
 };
 
-std::uint32_t vertex_id(const std::vector<std::uint64_t>& keys, std::uint64_t k) {
-  return static_cast<std::uint32_t>(std::lower_bound(keys.begin(), keys.end(), k) - keys.begin());
-}
-
 }  // namespace
 
 void PlaneGraph::append_points(std::uint32_t h, std::vector<Point64>& out) const {
@@ -154,42 +150,81 @@ PlaneGraph build_plane_graph(const std::vector<Segment>& segments,
   std::sort(spans.begin(), spans.end(),
             [](const PlaneGraph::Chain& x, const PlaneGraph::Chain& y) { return x.first < y.first; });
 
-  // Vertices: both ends of every fragment of a touched segment, and every chain's start (a
-  // chain's end is the start of the next chain or fragment). Sorting the ends once by key both
-  // numbers the vertices and tells every piece its end ids, with no search.
-  struct End {
+  // Vertices. A piece (fragment of a touched segment) ends where the next one along its ring
+  // starts: the next fragment of its segment, or the first piece or chain of the next segment
+  // (snap rounding never moves an input vertex, so a segment's fragments run from its start to
+  // its end). So the starts of pieces and chains are all the vertex occurrences, and sorting
+  // them once by key both numbers the vertices and gives every piece and chain its end ids,
+  // with half the keys of sorting both ends and no search.
+  struct Start {
     std::uint64_t key;
-    std::uint32_t ref;  // 2 * piece + (1 for its hi end), or kChainStart
+    std::uint32_t occurrence;  // index into occurrence_vertex
   };
-  constexpr std::uint32_t kChainStart = 0xffffffffu;
+  constexpr std::uint32_t kNone = 0xffffffffu;
+  std::vector<std::uint32_t> first_occurrence(n, kNone);  // of segment s's start
+  std::vector<std::uint32_t> own_end;  // of segment s, when its ring successor starts elsewhere
   std::vector<Piece> pieces;
-  std::vector<End> ends;
+  std::vector<Start> starts;
   std::size_t piece_count = 0;
   for (const std::uint32_t s : touched_ids)
     piece_count += listed(s) ? first_fragment[s + 1] - first_fragment[s] : 1;
   pieces.reserve(piece_count);
-  ends.reserve(2 * piece_count + spans.size());
-  for (const PlaneGraph::Chain& c : spans) ends.push_back({key_of(segments[c.first].a), kChainStart});
+  starts.reserve(piece_count + spans.size());
+  for (const PlaneGraph::Chain& c : spans) {
+    first_occurrence[c.first] = static_cast<std::uint32_t>(starts.size());
+    starts.push_back({key_of(segments[c.first].a), static_cast<std::uint32_t>(starts.size())});
+  }
+  // Piece i starts at occurrence piece_base + i.
+  const auto piece_base = static_cast<std::uint32_t>(starts.size());
   for (const std::uint32_t s : touched_ids) {
+    first_occurrence[s] = static_cast<std::uint32_t>(starts.size());
     const std::uint32_t count = listed(s) ? first_fragment[s + 1] - first_fragment[s] : 1;
     for (std::uint32_t k = 0; k < count; ++k) {
       const Segment& f = listed(s) ? fragments[first_fragment[s] + k].seg : segments[s];
-      const std::uint64_t a = key_of(f.a), b = key_of(f.b);
-      const bool forward = a < b;
-      const std::uint32_t i = static_cast<std::uint32_t>(pieces.size());
-      pieces.push_back({0, 0, polygon_of[s], channel_of[s], static_cast<std::int8_t>(forward ? 1 : -1)});
-      ends.push_back({forward ? a : b, 2 * i});
-      ends.push_back({forward ? b : a, 2 * i + 1});
+      const Point64 expected_start = k == 0 ? segments[s].a : fragments[first_fragment[s] + k - 1].seg.b;
+      const Point64 expected_end = k + 1 == count ? segments[s].b : f.b;
+      if (f.a != expected_start || f.b != expected_end)
+        throw std::logic_error("plane graph: the fragments of a segment do not run end to end");
+      starts.push_back({key_of(f.a), static_cast<std::uint32_t>(starts.size())});
+      // The direction (sign) is set once the end ids are known.
+      pieces.push_back({0, 0, polygon_of[s], channel_of[s], 0});
     }
   }
-  radix_sort(ends, [](const End& e) { return e.key; });
+  // Segments that are not in rings (hole splitting's pieces) end where nothing starts.
+  for (const std::uint32_t s : touched_ids)
+    if (segments[next[s]].a != segments[s].b) {
+      if (own_end.empty()) own_end.assign(n, kNone);
+      own_end[s] = static_cast<std::uint32_t>(starts.size());
+      starts.push_back({key_of(segments[s].b), static_cast<std::uint32_t>(starts.size())});
+    }
+  radix_sort(starts, [](const Start& x) { return x.key; });
   std::vector<std::uint64_t> keys;
-  keys.reserve(ends.size());
-  for (const End& end : ends) {
-    if (keys.empty() || keys.back() != end.key) keys.push_back(end.key);
-    if (end.ref == kChainStart) continue;
-    Piece& piece = pieces[end.ref >> 1];
-    (end.ref & 1 ? piece.hi : piece.lo) = static_cast<std::uint32_t>(keys.size() - 1);
+  keys.reserve(starts.size());
+  std::vector<std::uint32_t> occurrence_vertex(starts.size());
+  for (const Start& st : starts) {
+    if (keys.empty() || keys.back() != st.key) keys.push_back(st.key);
+    occurrence_vertex[st.occurrence] = static_cast<std::uint32_t>(keys.size() - 1);
+  }
+  // The vertex where segment s ends: where the segment after it along its ring starts.
+  auto end_vertex = [&](std::uint32_t s) {
+    const std::uint32_t o =
+        own_end.empty() || own_end[s] == kNone ? first_occurrence[next[s]] : own_end[s];
+    if (o == kNone) throw std::logic_error("plane graph: a segment ends inside a chain");
+    return occurrence_vertex[o];
+  };
+  {
+    std::uint32_t i = 0;
+    for (const std::uint32_t s : touched_ids) {
+      const std::uint32_t count = listed(s) ? first_fragment[s + 1] - first_fragment[s] : 1;
+      for (std::uint32_t k = 0; k < count; ++k, ++i) {
+        const std::uint32_t a = occurrence_vertex[piece_base + i];
+        const std::uint32_t b = k + 1 == count ? end_vertex(s) : occurrence_vertex[piece_base + i + 1];
+        Piece& piece = pieces[i];
+        piece.sign = a < b ? 1 : -1;
+        piece.lo = std::min(a, b);
+        piece.hi = std::max(a, b);
+      }
+    }
   }
   PlaneGraph g;
   const std::size_t edge_bound = pieces.size() + spans.size();
@@ -203,9 +238,32 @@ PlaneGraph build_plane_graph(const std::vector<Segment>& segments,
   // By (lo, hi), then (channel, polygon): pieces come in segment order, which is already
   // (channel, polygon) order for clip's operands, and the sort is stable; a group that is not
   // (hole splitting's bridges) is put in order on its own.
-  // (lo, hi) packed just wide enough for the vertex ids: fewer radix passes than 32-bit halves.
-  const auto id_bits = static_cast<int>(std::bit_width(keys.size()));
-  radix_sort(pieces, [id_bits](const Piece& p) { return std::uint64_t{p.lo} << id_bits | p.hi; });
+  // A counting sort by lo (one pass: ids are small), then by hi within each lo, stably: a
+  // vertex is the lower end of few pieces, so those runs are short.
+  {
+    std::vector<std::uint32_t> at(keys.size() + 1, 0);
+    for (const Piece& p : pieces) ++at[p.lo + 1];
+    for (std::size_t v = 1; v < at.size(); ++v) at[v] += at[v - 1];
+    std::vector<Piece> by_lo(pieces.size());
+    for (const Piece& p : pieces) by_lo[at[p.lo]++] = p;
+    pieces.swap(by_lo);
+    auto hi_less = [](const Piece& x, const Piece& y) { return x.hi < y.hi; };
+    for (std::size_t i = 0; i < pieces.size();) {
+      std::size_t j = i + 1;
+      while (j < pieces.size() && pieces[j].lo == pieces[i].lo) ++j;
+      if (j - i > 16) {
+        std::stable_sort(pieces.begin() + i, pieces.begin() + j, hi_less);
+      } else {
+        for (std::size_t k = i + 1; k < j; ++k) {
+          const Piece x = pieces[k];
+          std::size_t m = k;
+          for (; m > i && hi_less(x, pieces[m - 1]); --m) pieces[m] = pieces[m - 1];
+          pieces[m] = x;
+        }
+      }
+      i = j;
+    }
+  }
   auto tag_less = [](const Piece& x, const Piece& y) {
     return std::tie(x.channel, x.polygon) < std::tie(y.channel, y.polygon);
   };
@@ -247,11 +305,9 @@ PlaneGraph build_plane_graph(const std::vector<Segment>& segments,
 
   // Chains: nothing else meets an untouched segment, so no other edge can coincide with one.
   for (PlaneGraph::Chain c : spans) {
-    const Point64 from = segments[c.first].a;
-    const Point64 to = segments[c.ring_begin + (c.first - c.ring_begin + c.count) % c.ring_len].b;
-    std::uint32_t a = vertex_id(keys, key_of(from)), b = vertex_id(keys, key_of(to));
-    if (a == b || b == g.vertices.size() || g.vertices[b] != to)
-      throw std::logic_error("plane graph: a chain does not end at a vertex");
+    const std::uint32_t last = c.ring_begin + (c.first - c.ring_begin + c.count) % c.ring_len;
+    std::uint32_t a = occurrence_vertex[first_occurrence[c.first]], b = end_vertex(last);
+    if (a == b) throw std::logic_error("plane graph: a chain is a loop");
     std::int32_t net = 1;
     if (b < a) {
       std::swap(a, b);
@@ -265,24 +321,47 @@ PlaneGraph build_plane_graph(const std::vector<Segment>& segments,
     g.chain.push_back(c);
   }
 
-  // Half-edges around each vertex, sorted by the angle of their first step.
+  // Half-edges around each vertex, sorted by the angle of their first step. Each half-edge's
+  // direction is read once (first_step walks chain indirections); most vertices have two to
+  // four half-edges, which an insertion sort orders with fewer comparisons than std::sort.
   const std::size_t nv = g.vertices.size(), nh = 2 * g.edge_count();
   g.around_begin.assign(nv + 1, 0);
-  for (std::uint32_t h = 0; h < nh; ++h) ++g.around_begin[g.origin(h) + 1];
+  for (std::size_t e = 0; e < g.edge_count(); ++e) {
+    ++g.around_begin[g.from[e] + 1];
+    ++g.around_begin[g.to[e] + 1];
+  }
   for (std::size_t v = 0; v < nv; ++v) g.around_begin[v + 1] += g.around_begin[v];
+  struct Out {
+    Point64 d;  // direction of the first step
+    std::uint32_t h;
+  };
+  std::vector<Out> out(nh);
+  {
+    std::vector<std::uint32_t> fill(g.around_begin.begin(), g.around_begin.end() - 1);
+    for (std::uint32_t h = 0; h < nh; ++h) {
+      const Point64 o = g.vertices[g.origin(h)], t = g.first_step(h);
+      out[fill[g.origin(h)]++] = {{t.x - o.x, t.y - o.y}, h};
+    }
+  }
+  auto before = [](const Out& x, const Out& y) { return angle_less(x.d, y.d); };
   g.around.resize(nh);
-  std::vector<std::uint32_t> fill(g.around_begin.begin(), g.around_begin.end() - 1);
-  for (std::uint32_t h = 0; h < nh; ++h) g.around[fill[g.origin(h)]++] = h;
   g.position_of.resize(nh);
   for (std::size_t v = 0; v < nv; ++v) {
-    const Point64 o = g.vertices[v];
-    auto first = g.around.begin() + g.around_begin[v], last = g.around.begin() + g.around_begin[v + 1];
-    std::sort(first, last, [&](std::uint32_t h1, std::uint32_t h2) {
-      const Point64 a = g.first_step(h1), b = g.first_step(h2);
-      return angle_less({a.x - o.x, a.y - o.y}, {b.x - o.x, b.y - o.y});
-    });
-    for (std::uint32_t k = g.around_begin[v]; k < g.around_begin[v + 1]; ++k)
-      g.position_of[g.around[k]] = k;
+    const std::uint32_t b = g.around_begin[v], e = g.around_begin[v + 1];
+    if (e - b > 8) {
+      std::sort(out.begin() + b, out.begin() + e, before);
+    } else {
+      for (std::uint32_t i = b + 1; i < e; ++i) {
+        const Out x = out[i];
+        std::uint32_t j = i;
+        for (; j > b && before(x, out[j - 1]); --j) out[j] = out[j - 1];
+        out[j] = x;
+      }
+    }
+    for (std::uint32_t k = b; k < e; ++k) {
+      g.around[k] = out[k].h;
+      g.position_of[out[k].h] = k;
+    }
   }
   return g;
 }
