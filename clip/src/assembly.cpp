@@ -74,8 +74,8 @@ BoundaryWalks trace_boundaries(const PlaneGraph& g, const std::vector<FaceLabel>
   return walks;
 }
 
-std::vector<RegionRings> assemble(const PlaneGraph& g, const std::vector<SideState>& left,
-                                  const LabelOf& label_of) {
+Assembled assemble(const PlaneGraph& g, const std::vector<SideState>& left,
+                   const LabelOf& label_of) {
   std::vector<FaceLabel> emitted(2 * g.edge_count(), -1);
   for (std::uint32_t e = 0; e < g.edge_count(); ++e) {
     const FaceLabel l = label_of(left[2 * e]), r = label_of(left[2 * e + 1]);
@@ -83,23 +83,28 @@ std::vector<RegionRings> assemble(const PlaneGraph& g, const std::vector<SideSta
     emitted[2 * e] = l;
     emitted[2 * e + 1] = r;
   }
-  // Rings are collected flat with their label, then grouped by label in increasing order (what
-  // a map from label to region would give, without a node and two vectors per region).
-  struct Traced {
-    FaceLabel label;
-    bool outer;
-    Ring ring;
-  };
-  std::vector<Traced> traced;
+  // Rings are collected flat with their label. Only when there are holes are they grouped by
+  // label (in increasing order, what a map from label to region would give): most results have
+  // none, and then every ring is an output polygon as it stands, with no region per label.
+  Assembled out;
+  std::vector<FaceLabel> ring_label;
+  std::vector<bool> outer;
+  std::size_t holes = 0;
   std::vector<std::int32_t> position(g.vertices.size(), -1);
   auto add_loop = [&](FaceLabel label, const std::uint32_t* first, const std::uint32_t* last) {
     Ring ring = ring_along(g, first, last);
     if (ring.size() < 3) return;
     const Int128 area = twice_signed_area(ring);
-    if (area != 0) traced.push_back({label, area > 0, std::move(ring)});
+    if (area == 0) return;
+    out.rings.push_back(std::move(ring));
+    ring_label.push_back(label);
+    outer.push_back(area > 0);
+    if (area < 0) ++holes;
   };
   const BoundaryWalks walks = trace_boundaries(g, emitted);
-  traced.reserve(walks.size());
+  out.rings.reserve(walks.size());
+  ring_label.reserve(walks.size());
+  outer.reserve(walks.size());
   for (std::size_t w = 0; w < walks.size(); ++w) {
     const std::uint32_t *first = walks.first(w), *last = walks.last(w);
     // Most walks visit every vertex once: then the walk is the loop, with nothing to split.
@@ -117,16 +122,29 @@ std::vector<RegionRings> assemble(const PlaneGraph& g, const std::vector<SideSta
     for (const auto& loop : split_at_repeated_vertices(g, first, last, position))
       add_loop(walks.label[w], loop.data(), loop.data() + loop.size());
   }
-  std::stable_sort(traced.begin(), traced.end(),
-                   [](const Traced& x, const Traced& y) { return x.label < y.label; });
-  std::vector<RegionRings> out;
-  for (Traced& t : traced) {
-    if (out.empty() || out.back().label != t.label) {
-      out.emplace_back();
-      out.back().label = t.label;
+  if (holes == 0) return out;
+  // Regions with holes move to out.holed; the rest of the rings stay, in their order.
+  std::vector<std::uint32_t> order(out.rings.size());
+  for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::uint32_t x, std::uint32_t y) { return ring_label[x] < ring_label[y]; });
+  std::vector<Ring> kept;
+  for (std::size_t i = 0; i < order.size();) {
+    std::size_t j = i;
+    bool with_holes = false;
+    for (; j < order.size() && ring_label[order[j]] == ring_label[order[i]]; ++j)
+      with_holes = with_holes || !outer[order[j]];
+    if (!with_holes) {
+      for (std::size_t k = i; k < j; ++k) kept.push_back(std::move(out.rings[order[k]]));
+    } else {
+      RegionRings& region = out.holed.emplace_back();
+      region.label = ring_label[order[i]];
+      for (std::size_t k = i; k < j; ++k)
+        (outer[order[k]] ? region.outers : region.holes).push_back(std::move(out.rings[order[k]]));
     }
-    (t.outer ? out.back().outers : out.back().holes).push_back(std::move(t.ring));
+    i = j;
   }
+  out.rings = std::move(kept);
   return out;
 }
 

@@ -23,10 +23,16 @@ struct RegionRings {
   std::vector<Ring> holes;   // clockwise
 };
 
-// Regions sorted by label. Loops that revisit a vertex are split there, so every ring is a
-// simple closed polyline of graph edges.
-std::vector<RegionRings> assemble(const PlaneGraph& g, const std::vector<SideState>& left,
-                                  const LabelOf& label_of);
+// The assembled result: the rings of regions without holes, each a counter-clockwise output
+// polygon as it stands, and the regions with holes (sorted by label) for hole splitting. Loops
+// that revisit a vertex are split there, so every ring is a simple closed polyline of graph
+// edges.
+struct Assembled {
+  std::vector<Ring> rings;
+  std::vector<RegionRings> holed;
+};
+Assembled assemble(const PlaneGraph& g, const std::vector<SideState>& left,
+                   const LabelOf& label_of);
 
 // Closed walks along the half-edges with emitted[h] >= 0, each following the sharpest left
 // turn among half-edges of its own label, in a fixed order. Flat: walk i is

@@ -89,7 +89,9 @@ ClipResult run(const Pipeline& p, std::vector<Box64>* moved_boxes = nullptr) {
       detail::build_plane_graph(segs, fragments, p.edges.channel, p.edges.polygon, next,
                                 snap.touched);
   const auto left = detail::label_sides(g, p.mode);
-  for (auto& region : detail::assemble(g, left, p.label_of)) {
+  detail::Assembled assembled = detail::assemble(g, left, p.label_of);
+  result.polygons = std::move(assembled.rings);
+  for (auto& region : assembled.holed) {
     for (Ring& r : detail::split_holes(std::move(region.outers), std::move(region.holes),
                                        result.stats.holes_split))
       result.polygons.push_back(std::move(r));
