@@ -10,6 +10,7 @@ namespace edgeland::detail {
 
 // floor(a.y + dy * (x - a.x) / dx) for dx > 0 (the line through a with direction (dx, dy)).
 inline std::int64_t line_y_floor(Point64 a, Int128 dx, Int128 dy, std::int64_t x) {
+  if (dy == 0) return a.y;  // horizontal (tiles, boxes, cell cuts): no division
   const Int128 num = Int128(a.y) * dx + dy * (x - a.x);
   constexpr Int128 kSmall = Int128(1) << 62;
   if (num > -kSmall && num < kSmall) {  // 64-bit division is many times faster

@@ -228,16 +228,9 @@ PlaneGraph build_plane_graph(const std::vector<Segment>& segments,
   }
   PlaneGraph g;
   const std::size_t edge_bound = pieces.size() + spans.size();
-  g.from.reserve(edge_bound);
-  g.to.reserve(edge_bound);
   g.chain.reserve(edge_bound);
-  g.mult_begin.reserve(edge_bound + 1);
-  g.mults.reserve(edge_bound);
   g.vertices.resize(keys.size());
   for (std::size_t i = 0; i < keys.size(); ++i) g.vertices[i] = point_of(keys[i]);
-  // By (lo, hi), then (channel, polygon): pieces come in segment order, which is already
-  // (channel, polygon) order for clip's operands, and the sort is stable; a group that is not
-  // (hole splitting's bridges) is put in order on its own.
   // A counting sort by lo (one pass: ids are small), then by hi within each lo, stably: a
   // vertex is the lower end of few pieces, so those runs are short.
   {
@@ -264,44 +257,54 @@ PlaneGraph build_plane_graph(const std::vector<Segment>& segments,
       i = j;
     }
   }
+  // Merge pieces with equal endpoints, summing multiplicities per (channel, polygon). Most
+  // edges have one piece: written straight out. In a larger group the pieces come in segment
+  // order, which is already (channel, polygon) order for clip's operands (the sorts are
+  // stable); one that is not (hole splitting's bridges) is put in order first.
   auto tag_less = [](const Piece& x, const Piece& y) {
     return std::tie(x.channel, x.polygon) < std::tie(y.channel, y.polygon);
   };
-  for (std::size_t i = 0; i < pieces.size();) {
-    std::size_t j = i + 1;
-    while (j < pieces.size() && pieces[j].lo == pieces[i].lo && pieces[j].hi == pieces[i].hi) ++j;
-    if (!std::is_sorted(pieces.begin() + i, pieces.begin() + j, tag_less))
-      std::stable_sort(pieces.begin() + i, pieces.begin() + j, tag_less);
-    i = j;
-  }
-
-  // Merge pieces with equal endpoints, summing multiplicities per (channel, polygon).
+  // Written by index into arrays sized for the most edges there can be, then trimmed: one
+  // store per field instead of a capacity check per push.
   g.segments = &segments;
-  g.mult_begin.push_back(0);
-  for (std::size_t i = 0; i < pieces.size();) {
-    std::size_t j = i;
-    const std::size_t first_mult = g.mults.size();
-    while (j < pieces.size() && pieces[j].lo == pieces[i].lo && pieces[j].hi == pieces[i].hi) {
-      std::size_t k = j;
-      std::int32_t net = 0;
-      while (k < pieces.size() && pieces[k].lo == pieces[j].lo && pieces[k].hi == pieces[j].hi &&
-             pieces[k].channel == pieces[j].channel && pieces[k].polygon == pieces[j].polygon) {
-        net += pieces[k].sign;
-        ++k;
-      }
-      if (net != 0) g.mults.push_back({pieces[j].channel, pieces[j].polygon, net});
-      j = k;
-    }
-    if (g.mults.size() == first_mult) {
+  g.from.resize(edge_bound);
+  g.to.resize(edge_bound);
+  g.mult_begin.resize(edge_bound + 1);
+  g.mults.resize(edge_bound);
+  g.mult_begin[0] = 0;
+  std::uint32_t edges = 0, mult_count = 0;
+  auto close_edge = [&](std::uint32_t lo, std::uint32_t hi, std::uint32_t first_mult) {
+    if (mult_count == first_mult) {
       ++g.cancelled_edges;
-    } else {
-      g.from.push_back(pieces[i].lo);
-      g.to.push_back(pieces[i].hi);
-      g.mult_begin.push_back(static_cast<std::uint32_t>(g.mults.size()));
-      g.chain.emplace_back();
+      return;
     }
+    g.from[edges] = lo;
+    g.to[edges] = hi;
+    g.mult_begin[++edges] = mult_count;
+  };
+  for (std::size_t i = 0; i < pieces.size();) {
+    const std::uint32_t lo = pieces[i].lo, hi = pieces[i].hi;
+    std::size_t j = i + 1;
+    while (j < pieces.size() && pieces[j].lo == lo && pieces[j].hi == hi) ++j;
+    const std::uint32_t first_mult = mult_count;
+    if (j == i + 1) {
+      g.mults[mult_count++] = {pieces[i].channel, pieces[i].polygon, pieces[i].sign};
+    } else {
+      if (!std::is_sorted(pieces.begin() + i, pieces.begin() + j, tag_less))
+        std::stable_sort(pieces.begin() + i, pieces.begin() + j, tag_less);
+      for (std::size_t k = i; k < j;) {
+        std::size_t m = k;
+        std::int32_t net = 0;
+        for (; m < j && pieces[m].channel == pieces[k].channel && pieces[m].polygon == pieces[k].polygon; ++m)
+          net += pieces[m].sign;
+        if (net != 0) g.mults[mult_count++] = {pieces[k].channel, pieces[k].polygon, net};
+        k = m;
+      }
+    }
+    close_edge(lo, hi, first_mult);
     i = j;
   }
+  g.chain.resize(edges);  // fragment edges: count 0
 
   // Chains: nothing else meets an untouched segment, so no other edge can coincide with one.
   for (PlaneGraph::Chain c : spans) {
@@ -314,12 +317,14 @@ PlaneGraph build_plane_graph(const std::vector<Segment>& segments,
       c.reversed = true;
       net = -1;
     }
-    g.from.push_back(a);
-    g.to.push_back(b);
-    g.mults.push_back({channel_of[c.first], polygon_of[c.first], net});
-    g.mult_begin.push_back(static_cast<std::uint32_t>(g.mults.size()));
+    g.mults[mult_count++] = {channel_of[c.first], polygon_of[c.first], net};
+    close_edge(a, b, mult_count - 1);
     g.chain.push_back(c);
   }
+  g.from.resize(edges);
+  g.to.resize(edges);
+  g.mult_begin.resize(edges + 1);
+  g.mults.resize(mult_count);
 
   // Half-edges around each vertex, sorted by the angle of their first step. Each half-edge's
   // direction is read once (first_step walks chain indirections); most vertices have two to

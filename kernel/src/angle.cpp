@@ -5,18 +5,11 @@
 namespace edgeland {
 namespace {
 
-bool lower_half(Point64 d) { return d.y < 0 || (d.y == 0 && d.x < 0); }
 bool same_direction(Point64 a, Point64 b) {
   return orientation({0, 0}, a, b) == Orientation::kCollinear && dot_sign({0, 0}, a, b) > 0;
 }
 
 }  // namespace
-
-bool angle_less(Point64 d1, Point64 d2) noexcept {
-  const bool l1 = lower_half(d1), l2 = lower_half(d2);
-  if (l1 != l2) return l2;
-  return orientation({0, 0}, d1, d2) == Orientation::kCounterClockwise;
-}
 
 bool strictly_inside_ccw_sector(Point64 from, Point64 to, Point64 d) noexcept {
   if (same_direction(d, from) || same_direction(d, to)) return false;
