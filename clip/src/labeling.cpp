@@ -10,29 +10,39 @@
 namespace edgeland::detail {
 namespace {
 
-// Crossing half-edge h from its right side to its left side.
+// The owner of one channel after crossing, from the right, the edge's multiplicities of that
+// channel in [first, last) (net counted along the half-edge crossed).
+std::int32_t owner_after(const PlaneGraph& g, std::int32_t dir, std::uint8_t channel,
+                         std::int32_t owner, std::uint32_t first, std::uint32_t last) {
+  std::int32_t entering = -1;
+  bool leaves_current = false;
+  for (std::uint32_t k = first; k < last; ++k) {
+    const Multiplicity& m = g.mults[k];
+    if (m.channel != channel) continue;
+    const std::int32_t net = dir * m.net;
+    if (net > 0 && entering < 0) entering = m.polygon;  // mults are sorted by polygon
+    if (net < 0 && m.polygon == owner) leaves_current = true;
+  }
+  return entering >= 0 ? entering : leaves_current ? -1 : owner;
+}
+
+// Crossing half-edge h from its right side to its left side. The two channels are kept in
+// separate locals and the state built once at the end: writing one 4-byte half of the state
+// and then reading it whole defeats store forwarding, which made this line most of labeling.
 SideState cross(const PlaneGraph& g, LabelMode mode, SideState s, std::uint32_t h) {
   const std::uint32_t e = h >> 1;
   const std::int32_t dir = (h & 1) ? -1 : 1;
+  const std::uint32_t first = g.mult_begin[e], last = g.mult_begin[e + 1];
+  std::int32_t s0 = s.s[0], s1 = s.s[1];
   if (mode == LabelMode::kWinding) {
-    for (std::uint32_t k = g.mult_begin[e]; k < g.mult_begin[e + 1]; ++k)
-      s.s[0] += dir * g.mults[k].net;
-    return s;
+    for (std::uint32_t k = first; k < last; ++k) s0 += dir * g.mults[k].net;
+  } else {
+    s0 = owner_after(g, dir, 0, s0, first, last);
+    s1 = owner_after(g, dir, 1, s1, first, last);
   }
-  for (std::uint8_t c = 0; c < 2; ++c) {
-    std::int32_t entering = -1;
-    bool leaves_current = false;
-    for (std::uint32_t k = g.mult_begin[e]; k < g.mult_begin[e + 1]; ++k) {
-      const Multiplicity& m = g.mults[k];
-      if (m.channel != c) continue;
-      const std::int32_t net = dir * m.net;
-      if (net > 0 && entering < 0) entering = m.polygon;  // mults are sorted by polygon
-      if (net < 0 && m.polygon == s.s[c]) leaves_current = true;
-    }
-    if (entering >= 0) s.s[c] = entering;
-    else if (leaves_current) s.s[c] = -1;
-  }
-  return s;
+  SideState out;
+  out.s = {s0, s1};
+  return out;
 }
 
 std::uint32_t around_count(const PlaneGraph& g, std::uint32_t v) {

@@ -343,9 +343,14 @@ PlaneGraph build_plane_graph(const std::vector<Segment>& segments,
   std::vector<Out> out(nh);
   {
     std::vector<std::uint32_t> fill(g.around_begin.begin(), g.around_begin.end() - 1);
-    for (std::uint32_t h = 0; h < nh; ++h) {
-      const Point64 o = g.vertices[g.origin(h)], t = g.first_step(h);
-      out[fill[g.origin(h)]++] = {{t.x - o.x, t.y - o.y}, h};
+    for (std::uint32_t e = 0; e < g.edge_count(); ++e) {
+      const std::uint32_t a = g.from[e], b = g.to[e];
+      const Point64 pa = g.vertices[a], pb = g.vertices[b];
+      const std::uint32_t m = g.chain[e].count;
+      const Point64 step_a = m == 0 ? pb : g.interior_point(e, 0);
+      const Point64 step_b = m == 0 ? pa : g.interior_point(e, m - 1);
+      out[fill[a]++] = {{step_a.x - pa.x, step_a.y - pa.y}, 2 * e};
+      out[fill[b]++] = {{step_b.x - pb.x, step_b.y - pb.y}, 2 * e + 1};
     }
   }
   auto before = [](const Out& x, const Out& y) { return angle_less(x.d, y.d); };
