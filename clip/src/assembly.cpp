@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "edgeland/kernel/area.hpp"
+#include "thread_buffer.hpp"
 
 namespace edgeland::detail {
 
@@ -42,7 +43,8 @@ Ring ring_along(const PlaneGraph& g, const std::uint32_t* first, const std::uint
 BoundaryWalks trace_boundaries(const PlaneGraph& g, const std::vector<FaceLabel>& emitted) {
   const std::size_t nh = emitted.size();
   BoundaryWalks walks;
-  std::vector<bool> used(nh, false);
+  auto& used = thread_buffer<struct UsedBuffer, bool>();
+  used.assign(nh, false);
   for (std::uint32_t start = 0; start < nh; ++start) {
     const FaceLabel label = emitted[start];
     if (label < 0 || used[start]) continue;
@@ -76,7 +78,8 @@ BoundaryWalks trace_boundaries(const PlaneGraph& g, const std::vector<FaceLabel>
 
 Assembled assemble(const PlaneGraph& g, const std::vector<SideState>& left,
                    const LabelOf& label_of) {
-  std::vector<FaceLabel> emitted(2 * g.edge_count(), -1);
+  auto& emitted = thread_buffer<struct EmittedBuffer, FaceLabel>();
+  emitted.assign(2 * g.edge_count(), -1);
   for (std::uint32_t e = 0; e < g.edge_count(); ++e) {
     const FaceLabel l = label_of(left[2 * e]), r = label_of(left[2 * e + 1]);
     if (l == r) continue;
@@ -90,7 +93,8 @@ Assembled assemble(const PlaneGraph& g, const std::vector<SideState>& left,
   std::vector<FaceLabel> ring_label;
   std::vector<bool> outer;
   std::size_t holes = 0;
-  std::vector<std::int32_t> position(g.vertices.size(), -1);
+  auto& position = thread_buffer<struct PositionBuffer, std::int32_t>();
+  position.assign(g.vertices.size(), -1);
   auto add_loop = [&](FaceLabel label, const std::uint32_t* first, const std::uint32_t* last) {
     Ring ring = ring_along(g, first, last);
     if (ring.size() < 3) return;

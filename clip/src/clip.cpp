@@ -85,10 +85,12 @@ ClipResult run(const Pipeline& p, std::vector<Box64>* moved_boxes = nullptr) {
   const std::vector<std::uint32_t>& next = p.edges.next;
   detail::SnapStats snap;
   const auto fragments = detail::snap_round(segs, next, p.simple_rings, snap);
-  const detail::PlaneGraph g =
-      detail::build_plane_graph(segs, fragments, p.edges.channel, p.edges.polygon, next,
-                                snap.touched);
-  const auto left = detail::label_sides(g, p.mode);
+  // The graph and the labels live in per-thread buffers (thread_buffer.hpp says why).
+  thread_local detail::PlaneGraph g;
+  thread_local std::vector<SideState> left;
+  detail::build_plane_graph(segs, fragments, p.edges.channel, p.edges.polygon, next,
+                            snap.touched, g);
+  detail::label_sides(g, p.mode, left);
   detail::Assembled assembled = detail::assemble(g, left, p.label_of);
   result.polygons = std::move(assembled.rings);
   for (auto& region : assembled.holed) {

@@ -6,6 +6,7 @@
 
 #include "edgeland/kernel/angle.hpp"
 #include "edgeland/kernel/predicates.hpp"
+#include "thread_buffer.hpp"
 
 namespace edgeland::detail {
 namespace {
@@ -218,14 +219,22 @@ SideState empty_state(LabelMode mode) {
 }
 
 std::vector<SideState> label_sides(const PlaneGraph& g, LabelMode mode) {
+  std::vector<SideState> left;
+  label_sides(g, mode, left);
+  return left;
+}
+
+void label_sides(const PlaneGraph& g, LabelMode mode, std::vector<SideState>& left) {
   const std::size_t nv = g.vertices.size();
-  std::vector<SideState> left(2 * g.edge_count(), empty_state(mode));
-  std::vector<bool> visited(nv, false);
+  left.assign(2 * g.edge_count(), empty_state(mode));
+  auto& visited = thread_buffer<struct VisitedBuffer, bool>();
+  visited.assign(nv, false);
   std::unique_ptr<XStabbing> stab;
   std::vector<Piece> pieces;
   constexpr int kScansBeforeTree = 4;
   int located = 0;
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> queue;  // (vertex, known position)
+  // (vertex, known position)
+  auto& queue = thread_buffer<struct QueueBuffer, std::pair<std::uint32_t, std::uint32_t>>();
   bool any_labeled = false;
 
   for (std::uint32_t v0 = 0; v0 < nv; ++v0) {
@@ -269,7 +278,6 @@ std::vector<SideState> label_sides(const PlaneGraph& g, LabelMode mode) {
     }
     any_labeled = true;
   }
-  return left;
 }
 
 }  // namespace edgeland::detail

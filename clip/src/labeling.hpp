@@ -24,5 +24,7 @@ SideState empty_state(LabelMode mode);
 
 // left_state[h] for every half-edge h. O(m log m).
 std::vector<SideState> label_sides(const PlaneGraph& g, LabelMode mode);
+// The same into `left`, reusing its capacity.
+void label_sides(const PlaneGraph& g, LabelMode mode, std::vector<SideState>& left);
 
 }  // namespace edgeland::detail

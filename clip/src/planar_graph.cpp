@@ -7,6 +7,7 @@
 
 #include "edgeland/kernel/angle.hpp"
 #include "radix_sort.hpp"
+#include "thread_buffer.hpp"
 
 namespace edgeland::detail {
 namespace {
@@ -66,10 +67,22 @@ PlaneGraph build_plane_graph(const std::vector<Segment>& segments,
                              const std::vector<std::int32_t>& polygon_of,
                              const std::vector<std::uint32_t>& next,
                              const std::vector<bool>& touched) {
+  PlaneGraph g;
+  build_plane_graph(segments, fragments, channel_of, polygon_of, next, touched, g);
+  return g;
+}
+
+void build_plane_graph(const std::vector<Segment>& segments,
+                       const std::vector<Fragment>& fragments,
+                       const std::vector<std::uint8_t>& channel_of,
+                       const std::vector<std::int32_t>& polygon_of,
+                       const std::vector<std::uint32_t>& next, const std::vector<bool>& touched,
+                       PlaneGraph& g) {
   const std::uint32_t n = static_cast<std::uint32_t>(next.size());
   // Listed fragments come in segment order; a segment with none listed is its own fragment
   // (always so for an untouched one).
-  std::vector<std::uint32_t> first_fragment(n + 1, 0);
+  auto& first_fragment = thread_buffer<struct FirstFragmentBuffer, std::uint32_t>();
+  first_fragment.assign(n + 1, 0);
   for (const Fragment& f : fragments) ++first_fragment[f.parent + 1];
   for (std::uint32_t s = 0; s < n; ++s) first_fragment[s + 1] += first_fragment[s];
   auto listed = [&](std::uint32_t s) { return first_fragment[s] != first_fragment[s + 1]; };
@@ -82,8 +95,8 @@ PlaneGraph build_plane_graph(const std::vector<Segment>& segments,
   // minima would not do: the ring's smallest vertex may belong only to pieces that cancel (a
   // spike folded back onto itself), leaving a chain's interior point the smallest. So a chain
   // whose least point is interior and below its end is cut there.
-  std::vector<PlaneGraph::Chain> spans;
-  std::vector<std::uint32_t> touched_ids;
+  auto& spans = thread_buffer<struct SpansBuffer, PlaneGraph::Chain>();
+  auto& touched_ids = thread_buffer<struct TouchedIdsBuffer, std::uint32_t>();
   touched_ids.reserve(n);
   for (std::uint32_t b = 0; b < n;) {
     std::uint32_t e = b;
@@ -161,10 +174,12 @@ PlaneGraph build_plane_graph(const std::vector<Segment>& segments,
     std::uint32_t occurrence;  // index into occurrence_vertex
   };
   constexpr std::uint32_t kNone = 0xffffffffu;
-  std::vector<std::uint32_t> first_occurrence(n, kNone);  // of segment s's start
-  std::vector<std::uint32_t> own_end;  // of segment s, when its ring successor starts elsewhere
-  std::vector<Piece> pieces;
-  std::vector<Start> starts;
+  auto& first_occurrence = thread_buffer<struct FirstOccurrenceBuffer, std::uint32_t>();
+  first_occurrence.assign(n, kNone);  // of segment s's start
+  // Of segment s, when its ring successor starts elsewhere.
+  auto& own_end = thread_buffer<struct OwnEndBuffer, std::uint32_t>();
+  auto& pieces = thread_buffer<struct PiecesBuffer, Piece>();
+  auto& starts = thread_buffer<struct StartsBuffer, Start>();
   std::size_t piece_count = 0;
   for (const std::uint32_t s : touched_ids)
     piece_count += listed(s) ? first_fragment[s + 1] - first_fragment[s] : 1;
@@ -198,9 +213,10 @@ PlaneGraph build_plane_graph(const std::vector<Segment>& segments,
       starts.push_back({key_of(segments[s].b), static_cast<std::uint32_t>(starts.size())});
     }
   radix_sort(starts, [](const Start& x) { return x.key; });
-  std::vector<std::uint64_t> keys;
+  auto& keys = thread_buffer<struct KeysBuffer, std::uint64_t>();
   keys.reserve(starts.size());
-  std::vector<std::uint32_t> occurrence_vertex(starts.size());
+  auto& occurrence_vertex = thread_buffer<struct OccurrenceVertexBuffer, std::uint32_t>();
+  occurrence_vertex.resize(starts.size());
   for (const Start& st : starts) {
     if (keys.empty() || keys.back() != st.key) keys.push_back(st.key);
     occurrence_vertex[st.occurrence] = static_cast<std::uint32_t>(keys.size() - 1);
@@ -226,7 +242,11 @@ PlaneGraph build_plane_graph(const std::vector<Segment>& segments,
       }
     }
   }
-  PlaneGraph g;
+  // g's arrays are reused (their capacity kept): every one is sized or cleared below.
+  g.chain.clear();
+  g.around.clear();
+  g.position_of.clear();
+  g.cancelled_edges = 0;
   const std::size_t edge_bound = pieces.size() + spans.size();
   g.chain.reserve(edge_bound);
   g.vertices.resize(keys.size());
@@ -234,10 +254,12 @@ PlaneGraph build_plane_graph(const std::vector<Segment>& segments,
   // A counting sort by lo (one pass: ids are small), then by hi within each lo, stably: a
   // vertex is the lower end of few pieces, so those runs are short.
   {
-    std::vector<std::uint32_t> at(keys.size() + 1, 0);
+    auto& at = thread_buffer<struct AtBuffer, std::uint32_t>();
+    at.assign(keys.size() + 1, 0);
     for (const Piece& p : pieces) ++at[p.lo + 1];
     for (std::size_t v = 1; v < at.size(); ++v) at[v] += at[v - 1];
-    std::vector<Piece> by_lo(pieces.size());
+    auto& by_lo = thread_buffer<struct ByLoBuffer, Piece>();
+    by_lo.resize(pieces.size());
     for (const Piece& p : pieces) by_lo[at[p.lo]++] = p;
     pieces.swap(by_lo);
     auto hi_less = [](const Piece& x, const Piece& y) { return x.hi < y.hi; };
@@ -340,9 +362,11 @@ PlaneGraph build_plane_graph(const std::vector<Segment>& segments,
     Point64 d;  // direction of the first step
     std::uint32_t h;
   };
-  std::vector<Out> out(nh);
+  auto& out = thread_buffer<struct OutBuffer, Out>();
+  out.resize(nh);
   {
-    std::vector<std::uint32_t> fill(g.around_begin.begin(), g.around_begin.end() - 1);
+    auto& fill = thread_buffer<struct FillBuffer, std::uint32_t>();
+    fill.assign(g.around_begin.begin(), g.around_begin.end() - 1);
     for (std::uint32_t e = 0; e < g.edge_count(); ++e) {
       const std::uint32_t a = g.from[e], b = g.to[e];
       const Point64 pa = g.vertices[a], pb = g.vertices[b];
@@ -373,7 +397,6 @@ PlaneGraph build_plane_graph(const std::vector<Segment>& segments,
       g.position_of[out[k].h] = k;
     }
   }
-  return g;
 }
 
 }  // namespace edgeland::detail

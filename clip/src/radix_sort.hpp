@@ -11,6 +11,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "thread_buffer.hpp"
+
 namespace edgeland::detail {
 
 namespace radix_detail {
@@ -21,7 +23,9 @@ void lsd_passes(std::vector<T>& v, KeyOf& key_of) {
   const std::uint64_t first = key_of(v[0]);
   std::uint64_t varying = 0;
   for (const T& x : v) varying |= key_of(x) ^ first;
-  std::vector<T> tmp;
+  // The scatter buffer is kept per thread (thread_buffer.hpp); after an odd number of passes it
+  // and v have traded storage, which is as good.
+  std::vector<T>& tmp = thread_buffer<struct RadixScatterBuffer, T>();
   // Each digit starts at the lowest varying bit not yet sorted on: keys made of two 32-bit
   // halves that vary in their low bits only take one pass fewer than with fixed digits.
   for (int shift = 0; shift < 64 && (varying >> shift) != 0; shift += kBits) {
