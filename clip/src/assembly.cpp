@@ -4,7 +4,7 @@
 #include <stdexcept>
 
 #include "edgeland/kernel/area.hpp"
-#include "thread_buffer.hpp"
+#include "recycled_vector.hpp"
 
 namespace edgeland::detail {
 
@@ -43,7 +43,7 @@ Ring ring_along(const PlaneGraph& g, const std::uint32_t* first, const std::uint
 BoundaryWalks trace_boundaries(const PlaneGraph& g, const std::vector<FaceLabel>& emitted) {
   const std::size_t nh = emitted.size();
   BoundaryWalks walks;
-  auto& used = thread_buffer<struct UsedBuffer, bool>();
+  RecycledVector<struct UsedBuffer, bool> used;
   used.assign(nh, false);
   for (std::uint32_t start = 0; start < nh; ++start) {
     const FaceLabel label = emitted[start];
@@ -78,7 +78,7 @@ BoundaryWalks trace_boundaries(const PlaneGraph& g, const std::vector<FaceLabel>
 
 Assembled assemble(const PlaneGraph& g, const std::vector<SideState>& left,
                    const LabelOf& label_of) {
-  auto& emitted = thread_buffer<struct EmittedBuffer, FaceLabel>();
+  RecycledVector<struct EmittedBuffer, FaceLabel> emitted;
   emitted.assign(2 * g.edge_count(), -1);
   for (std::uint32_t e = 0; e < g.edge_count(); ++e) {
     const FaceLabel l = label_of(left[2 * e]), r = label_of(left[2 * e + 1]);
@@ -93,7 +93,7 @@ Assembled assemble(const PlaneGraph& g, const std::vector<SideState>& left,
   std::vector<FaceLabel> ring_label;
   std::vector<bool> outer;
   std::size_t holes = 0;
-  auto& position = thread_buffer<struct PositionBuffer, std::int32_t>();
+  RecycledVector<struct PositionBuffer, std::int32_t> position;
   position.assign(g.vertices.size(), -1);
   auto add_loop = [&](FaceLabel label, const std::uint32_t* first, const std::uint32_t* last) {
     Ring ring = ring_along(g, first, last);

@@ -2,6 +2,7 @@
 #include "edgeland/clip/clip.hpp"
 
 #include <algorithm>
+#include <memory>
 #include <stdexcept>
 
 #include "assembly.hpp"
@@ -62,18 +63,41 @@ bool filled(FillRule rule, std::int32_t w) {
   return false;
 }
 
-// The operands' edges go into a buffer each thread keeps: at 10^5 vertices the edge list is
-// megabytes, and allocating it afresh for every operation costs page faults each time (the
-// allocator hands blocks that large back to the system when they are freed). The buffer keeps
-// the capacity of the thread's largest operation.
-detail::EdgeList& edge_buffer() {
-  thread_local detail::EdgeList buffer;
-  buffer.clear();
-  return buffer;
+// A per-thread object whose arrays keep their capacity from one operation to the next (the edge
+// list, the plane graph, the labels): at 10^5 vertices these are megabytes, and allocating them
+// afresh for every operation costs page faults each time (recycled_vector.hpp says why). Should
+// a use nest within another (nothing in the pipeline does), the inner one gets a fresh object.
+template <class T>
+class Reused {
+ public:
+  Reused() : own_(in_use() ? std::make_unique<T>() : nullptr) { in_use() = true; }
+  ~Reused() {
+    if (!own_) in_use() = false;
+  }
+  Reused(const Reused&) = delete;
+  Reused& operator=(const Reused&) = delete;
+  T& operator*() { return own_ ? *own_ : shared(); }
+
+ private:
+  static bool& in_use() {
+    thread_local bool used = false;
+    return used;
+  }
+  static T& shared() {
+    thread_local T object;
+    return object;
+  }
+  std::unique_ptr<T> own_;
+};
+
+detail::EdgeList& cleared(detail::EdgeList& edges) {
+  edges.clear();
+  return edges;
 }
 
 struct Pipeline {
-  detail::EdgeList& edges = edge_buffer();
+  Reused<detail::EdgeList> reused_edges;
+  detail::EdgeList& edges = cleared(*reused_edges);
   detail::LabelMode mode;
   detail::LabelOf label_of;
   bool simple_rings = true;  // validated operands; normalize's rings may cross themselves
@@ -85,9 +109,11 @@ ClipResult run(const Pipeline& p, std::vector<Box64>* moved_boxes = nullptr) {
   const std::vector<std::uint32_t>& next = p.edges.next;
   detail::SnapStats snap;
   const auto fragments = detail::snap_round(segs, next, p.simple_rings, snap);
-  // The graph and the labels live in per-thread buffers (thread_buffer.hpp says why).
-  thread_local detail::PlaneGraph g;
-  thread_local std::vector<SideState> left;
+  // The graph and the labels reuse per-thread storage (recycled_vector.hpp says why).
+  Reused<detail::PlaneGraph> graph;
+  Reused<std::vector<SideState>> labels;
+  detail::PlaneGraph& g = *graph;
+  std::vector<SideState>& left = *labels;
   detail::build_plane_graph(segs, fragments, p.edges.channel, p.edges.polygon, next,
                             snap.touched, g);
   detail::label_sides(g, p.mode, left);

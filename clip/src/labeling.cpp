@@ -6,7 +6,7 @@
 
 #include "edgeland/kernel/angle.hpp"
 #include "edgeland/kernel/predicates.hpp"
-#include "thread_buffer.hpp"
+#include "recycled_vector.hpp"
 
 namespace edgeland::detail {
 namespace {
@@ -227,14 +227,14 @@ std::vector<SideState> label_sides(const PlaneGraph& g, LabelMode mode) {
 void label_sides(const PlaneGraph& g, LabelMode mode, std::vector<SideState>& left) {
   const std::size_t nv = g.vertices.size();
   left.assign(2 * g.edge_count(), empty_state(mode));
-  auto& visited = thread_buffer<struct VisitedBuffer, bool>();
+  RecycledVector<struct VisitedBuffer, bool> visited;
   visited.assign(nv, false);
   std::unique_ptr<XStabbing> stab;
   std::vector<Piece> pieces;
   constexpr int kScansBeforeTree = 4;
   int located = 0;
   // (vertex, known position)
-  auto& queue = thread_buffer<struct QueueBuffer, std::pair<std::uint32_t, std::uint32_t>>();
+  RecycledVector<struct QueueBuffer, std::pair<std::uint32_t, std::uint32_t>> queue;
   bool any_labeled = false;
 
   for (std::uint32_t v0 = 0; v0 < nv; ++v0) {

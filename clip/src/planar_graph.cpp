@@ -7,7 +7,7 @@
 
 #include "edgeland/kernel/angle.hpp"
 #include "radix_sort.hpp"
-#include "thread_buffer.hpp"
+#include "recycled_vector.hpp"
 
 namespace edgeland::detail {
 namespace {
@@ -81,7 +81,7 @@ void build_plane_graph(const std::vector<Segment>& segments,
   const std::uint32_t n = static_cast<std::uint32_t>(next.size());
   // Listed fragments come in segment order; a segment with none listed is its own fragment
   // (always so for an untouched one).
-  auto& first_fragment = thread_buffer<struct FirstFragmentBuffer, std::uint32_t>();
+  RecycledVector<struct FirstFragmentBuffer, std::uint32_t> first_fragment;
   first_fragment.assign(n + 1, 0);
   for (const Fragment& f : fragments) ++first_fragment[f.parent + 1];
   for (std::uint32_t s = 0; s < n; ++s) first_fragment[s + 1] += first_fragment[s];
@@ -95,8 +95,8 @@ void build_plane_graph(const std::vector<Segment>& segments,
   // minima would not do: the ring's smallest vertex may belong only to pieces that cancel (a
   // spike folded back onto itself), leaving a chain's interior point the smallest. So a chain
   // whose least point is interior and below its end is cut there.
-  auto& spans = thread_buffer<struct SpansBuffer, PlaneGraph::Chain>();
-  auto& touched_ids = thread_buffer<struct TouchedIdsBuffer, std::uint32_t>();
+  RecycledVector<struct SpansBuffer, PlaneGraph::Chain> spans;
+  RecycledVector<struct TouchedIdsBuffer, std::uint32_t> touched_ids;
   touched_ids.reserve(n);
   for (std::uint32_t b = 0; b < n;) {
     std::uint32_t e = b;
@@ -174,12 +174,12 @@ void build_plane_graph(const std::vector<Segment>& segments,
     std::uint32_t occurrence;  // index into occurrence_vertex
   };
   constexpr std::uint32_t kNone = 0xffffffffu;
-  auto& first_occurrence = thread_buffer<struct FirstOccurrenceBuffer, std::uint32_t>();
+  RecycledVector<struct FirstOccurrenceBuffer, std::uint32_t> first_occurrence;
   first_occurrence.assign(n, kNone);  // of segment s's start
   // Of segment s, when its ring successor starts elsewhere.
-  auto& own_end = thread_buffer<struct OwnEndBuffer, std::uint32_t>();
-  auto& pieces = thread_buffer<struct PiecesBuffer, Piece>();
-  auto& starts = thread_buffer<struct StartsBuffer, Start>();
+  RecycledVector<struct OwnEndBuffer, std::uint32_t> own_end;
+  RecycledVector<struct PiecesBuffer, Piece> pieces;
+  RecycledVector<struct StartsBuffer, Start> starts;
   std::size_t piece_count = 0;
   for (const std::uint32_t s : touched_ids)
     piece_count += listed(s) ? first_fragment[s + 1] - first_fragment[s] : 1;
@@ -213,9 +213,9 @@ void build_plane_graph(const std::vector<Segment>& segments,
       starts.push_back({key_of(segments[s].b), static_cast<std::uint32_t>(starts.size())});
     }
   radix_sort(starts, [](const Start& x) { return x.key; });
-  auto& keys = thread_buffer<struct KeysBuffer, std::uint64_t>();
+  RecycledVector<struct KeysBuffer, std::uint64_t> keys;
   keys.reserve(starts.size());
-  auto& occurrence_vertex = thread_buffer<struct OccurrenceVertexBuffer, std::uint32_t>();
+  RecycledVector<struct OccurrenceVertexBuffer, std::uint32_t> occurrence_vertex;
   occurrence_vertex.resize(starts.size());
   for (const Start& st : starts) {
     if (keys.empty() || keys.back() != st.key) keys.push_back(st.key);
@@ -254,11 +254,11 @@ void build_plane_graph(const std::vector<Segment>& segments,
   // A counting sort by lo (one pass: ids are small), then by hi within each lo, stably: a
   // vertex is the lower end of few pieces, so those runs are short.
   {
-    auto& at = thread_buffer<struct AtBuffer, std::uint32_t>();
+    RecycledVector<struct AtBuffer, std::uint32_t> at;
     at.assign(keys.size() + 1, 0);
     for (const Piece& p : pieces) ++at[p.lo + 1];
     for (std::size_t v = 1; v < at.size(); ++v) at[v] += at[v - 1];
-    auto& by_lo = thread_buffer<struct ByLoBuffer, Piece>();
+    RecycledVector<struct ByLoBuffer, Piece> by_lo;
     by_lo.resize(pieces.size());
     for (const Piece& p : pieces) by_lo[at[p.lo]++] = p;
     pieces.swap(by_lo);
@@ -362,10 +362,10 @@ void build_plane_graph(const std::vector<Segment>& segments,
     Point64 d;  // direction of the first step
     std::uint32_t h;
   };
-  auto& out = thread_buffer<struct OutBuffer, Out>();
+  RecycledVector<struct OutBuffer, Out> out;
   out.resize(nh);
   {
-    auto& fill = thread_buffer<struct FillBuffer, std::uint32_t>();
+    RecycledVector<struct FillBuffer, std::uint32_t> fill;
     fill.assign(g.around_begin.begin(), g.around_begin.end() - 1);
     for (std::uint32_t e = 0; e < g.edge_count(); ++e) {
       const std::uint32_t a = g.from[e], b = g.to[e];

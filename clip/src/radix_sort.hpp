@@ -11,7 +11,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "thread_buffer.hpp"
+#include "recycled_vector.hpp"
 
 namespace edgeland::detail {
 
@@ -23,9 +23,9 @@ void lsd_passes(std::vector<T>& v, KeyOf& key_of) {
   const std::uint64_t first = key_of(v[0]);
   std::uint64_t varying = 0;
   for (const T& x : v) varying |= key_of(x) ^ first;
-  // The scatter buffer is kept per thread (thread_buffer.hpp); after an odd number of passes it
-  // and v have traded storage, which is as good.
-  std::vector<T>& tmp = thread_buffer<struct RadixScatterBuffer, T>();
+  // The scatter buffer's storage is recycled (recycled_vector.hpp); after an odd number of
+  // passes it and v have traded storage, which is as good.
+  RecycledVector<struct RadixScatterBuffer, T> tmp;
   // Each digit starts at the lowest varying bit not yet sorted on: keys made of two 32-bit
   // halves that vary in their low bits only take one pass fewer than with fixed digits.
   for (int shift = 0; shift < 64 && (varying >> shift) != 0; shift += kBits) {
