@@ -43,6 +43,8 @@ Ring ring_along(const PlaneGraph& g, const std::uint32_t* first, const std::uint
 BoundaryWalks trace_boundaries(const PlaneGraph& g, const std::vector<FaceLabel>& emitted) {
   const std::size_t nh = emitted.size();
   BoundaryWalks walks;
+  walks.begin.push_back(0);
+  walks.half_edges.reserve(nh);  // each half-edge is walked at most once
   RecycledVector<struct UsedBuffer, bool> used;
   used.assign(nh, false);
   for (std::uint32_t start = 0; start < nh; ++start) {

@@ -9,6 +9,7 @@
 #include "edgeland/kernel/polygon.hpp"
 #include "labeling.hpp"
 #include "planar_graph.hpp"
+#include "recycled_vector.hpp"
 
 namespace edgeland::detail {
 
@@ -38,9 +39,9 @@ Assembled assemble(const PlaneGraph& g, const std::vector<SideState>& left,
 // turn among half-edges of its own label, in a fixed order. Flat: walk i is
 // half_edges[begin[i] .. begin[i + 1]) with label[i] (one allocation per array, not per walk).
 struct BoundaryWalks {
-  std::vector<FaceLabel> label;
-  std::vector<std::uint32_t> begin{0};
-  std::vector<std::uint32_t> half_edges;
+  RecycledVector<struct WalkLabelBuffer, FaceLabel> label;
+  RecycledVector<struct WalkBeginBuffer, std::uint32_t> begin;  // starts with 0
+  RecycledVector<struct WalkHalfEdgesBuffer, std::uint32_t> half_edges;
   std::size_t size() const { return label.size(); }
   const std::uint32_t* first(std::size_t i) const { return half_edges.data() + begin[i]; }
   const std::uint32_t* last(std::size_t i) const { return half_edges.data() + begin[i + 1]; }

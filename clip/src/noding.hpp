@@ -8,14 +8,15 @@
 
 #include "edgeland/kernel/bbox.hpp"
 #include "edgeland/kernel/polygon.hpp"
+#include "recycled_vector.hpp"
 
 namespace edgeland::detail {
 
 struct Contacts {
   // (segment, integer point strictly inside it where it must be split)
-  std::vector<std::pair<std::uint32_t, Point64>> splits;
+  RecycledVector<struct ContactSplitsBuffer, std::pair<std::uint32_t, Point64>> splits;
   // Pixels of proper crossings at non-integer points (rounded by round_to_grid).
-  std::vector<Point64> hot;
+  RecycledVector<struct ContactHotBuffer, Point64> hot;
   // Pairs of segments that meet other than at a shared endpoint.
   std::size_t intersections = 0;
 };

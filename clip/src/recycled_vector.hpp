@@ -25,6 +25,12 @@ class RecycledVector : public std::vector<T> {
   RecycledVector() : std::vector<T>(std::move(spare())) { this->clear(); }
   RecycledVector(const RecycledVector&) = delete;
   RecycledVector& operator=(const RecycledVector&) = delete;
+  RecycledVector(RecycledVector&& other) noexcept : std::vector<T>(std::move(other)) {}
+  RecycledVector& operator=(RecycledVector&& other) noexcept {
+    std::vector<T>::operator=(std::move(other));
+    return *this;
+  }
+  using std::vector<T>::operator=;  // assigning a plain vector's contents
   ~RecycledVector() {
     std::vector<T>& s = spare();
     if (this->capacity() > s.capacity()) s = std::move(static_cast<std::vector<T>&>(*this));

@@ -36,7 +36,7 @@ SegmentGrid::SegmentGrid(const std::vector<Segment>& segments) {
   set_side(side);
   // One walk records every (cell, segment) registration in segment order; a counting sort by
   // cell then lists each cell's segments in increasing id order.
-  std::vector<std::uint32_t> entry_cells;
+  RecycledVector<struct GridEntryCellsBuffer, std::uint32_t> entry_cells;
   entry_cells.reserve(4 * n);
   slot_begin_.assign(n + 1, 0);
   for (std::uint32_t i = 0; i < n; ++i) {
@@ -48,7 +48,8 @@ SegmentGrid::SegmentGrid(const std::vector<Segment>& segments) {
   for (std::size_t k = 1; k < cell_begin_.size(); ++k) cell_begin_[k] += cell_begin_[k - 1];
   items_.resize(entry_cells.size());
   slots_.resize(entry_cells.size());
-  std::vector<std::uint32_t> fill(cell_begin_.begin(), cell_begin_.end() - 1);
+  RecycledVector<struct GridFillBuffer, std::uint32_t> fill;
+  fill.assign(cell_begin_.begin(), cell_begin_.end() - 1);
   for (std::uint32_t i = 0; i < n; ++i)
     for (std::uint32_t e = slot_begin_[i]; e < slot_begin_[i + 1]; ++e) {
       const std::uint32_t k = entry_cells[e];

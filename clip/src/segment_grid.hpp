@@ -25,6 +25,7 @@
 #include "edgeland/kernel/int128.hpp"
 #include "edgeland/kernel/polygon.hpp"
 #include "line_floor.hpp"
+#include "recycled_vector.hpp"
 
 namespace edgeland::detail {
 
@@ -65,13 +66,15 @@ class SegmentGrid {
   std::int64_t min_x_ = 0, min_y_ = 0, max_x_ = 0, max_y_ = 0;
   std::int64_t side_ = 1, columns_ = 0, rows_ = 0;
   int shift_ = 0;  // side_ == 2^shift_: cells are found by shifts, not divisions
-  std::vector<std::uint32_t> cell_begin_;  // CSR over cells: items_ of cell k, ascending ids
-  std::vector<std::uint32_t> items_;       // segment ids
+  // CSR over cells: items_ of cell k, ascending ids.
+  RecycledVector<struct GridCellBeginBuffer, std::uint32_t> cell_begin_;
+  RecycledVector<struct GridItemsBuffer, std::uint32_t> items_;  // segment ids
   struct Slot {
     std::uint32_t at, cell_end;  // a segment's place in items_, and the end of its cell there
   };
-  std::vector<std::uint32_t> slot_begin_;  // CSR over segments: the slots of segment i
-  std::vector<Slot> slots_;
+  // CSR over segments: the slots of segment i.
+  RecycledVector<struct GridSlotBeginBuffer, std::uint32_t> slot_begin_;
+  RecycledVector<struct GridSlotsBuffer, Slot> slots_;
 };
 
 template <class F>
@@ -120,8 +123,9 @@ template <class F>
 void SegmentGrid::for_each_candidate_pair(F&& visit) const {
   // Items of a cell are in increasing id order, so the partners of i with a larger id follow
   // its own slot; a stamp per segment drops partners already met in an earlier common cell.
-  std::vector<std::uint32_t> stamp(slot_begin_.empty() ? 0 : slot_begin_.size() - 1,
-                                   std::numeric_limits<std::uint32_t>::max());
+  RecycledVector<struct GridStampBuffer, std::uint32_t> stamp;
+  stamp.assign(slot_begin_.empty() ? 0 : slot_begin_.size() - 1,
+               std::numeric_limits<std::uint32_t>::max());
   for (std::uint32_t i = 0; i + 1 < slot_begin_.size(); ++i) {
     for (std::uint32_t k = slot_begin_[i]; k < slot_begin_[i + 1]; ++k) {
       for (std::uint32_t x = slots_[k].at + 1; x < slots_[k].cell_end; ++x) {

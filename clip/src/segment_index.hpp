@@ -18,6 +18,7 @@
 #include "box_sweep.hpp"
 #include "edgeland/kernel/bbox.hpp"
 #include "edgeland/kernel/polygon.hpp"
+#include "recycled_vector.hpp"
 
 namespace edgeland::detail {
 
@@ -71,15 +72,15 @@ class SegmentIndex {
   void pairs_between(const Run& r1, const Run& r2, F& visit) const;
 
   const std::vector<Segment>* segments_;  // boxes are computed, not stored: less memory traffic
-  std::vector<Run> runs_;
-  std::vector<Box64> run_boxes_;
+  RecycledVector<struct IndexRunsBuffer, Run> runs_;
+  RecycledVector<struct IndexRunBoxesBuffer, Box64> run_boxes_;
   // Run boxes, sorted_for_sweep; sorted on first use (noding through the segment grid and
   // inputs without hot pixels never need them).
   const std::vector<SweepBox>& run_sweep() const {
     if (run_sweep_.size() != run_boxes_.size()) run_sweep_ = sorted_for_sweep(run_boxes_);
     return run_sweep_;
   }
-  mutable std::vector<SweepBox> run_sweep_;
+  mutable RecycledVector<struct IndexRunSweepBuffer, SweepBox> run_sweep_;
 };
 
 template <class F>

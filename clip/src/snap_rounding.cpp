@@ -23,11 +23,13 @@ namespace {
 // Points on the way of segments, grouped by segment (CSR: one array, no allocation per segment).
 class StopsOf {
  public:
-  StopsOf(std::size_t segments, const std::vector<std::pair<std::uint32_t, Point64>>& stops)
-      : begin_(segments + 1, 0), points_(stops.size()) {
+  StopsOf(std::size_t segments, const std::vector<std::pair<std::uint32_t, Point64>>& stops) {
+    begin_.assign(segments + 1, 0);
+    points_.resize(stops.size());
     for (const auto& st : stops) ++begin_[st.first + 1];
     for (std::size_t k = 1; k < begin_.size(); ++k) begin_[k] += begin_[k - 1];
-    std::vector<std::uint32_t> fill(begin_.begin(), begin_.end() - 1);
+    RecycledVector<struct StopsFillBuffer, std::uint32_t> fill;
+    fill.assign(begin_.begin(), begin_.end() - 1);
     for (const auto& [s, p] : stops) points_[fill[s]++] = p;
   }
   // Appends the points of segment s to out.
@@ -36,8 +38,8 @@ class StopsOf {
   }
 
  private:
-  std::vector<std::uint32_t> begin_;
-  std::vector<Point64> points_;
+  RecycledVector<struct StopsBeginBuffer, std::uint32_t> begin_;
+  RecycledVector<struct StopsPointsBuffer, Point64> points_;
 };
 
 // A box that contains the whole pixel of p (closed, integer corners).
@@ -50,12 +52,13 @@ std::vector<Box64> pixel_boxes(const std::vector<Point64>& pts) {
 }
 
 struct Closure {
-  std::vector<Point64> hot;                                      // all hot pixel centres
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> meets;    // (segment, hot index)
-  std::vector<bool> moved;
+  RecycledVector<struct ClosureHotBuffer, Point64> hot;  // all hot pixel centres
+  // (segment, hot index)
+  RecycledVector<struct ClosureMeetsBuffer, std::pair<std::uint32_t, std::uint32_t>> meets;
+  RecycledVector<struct ClosureMovedBuffer, bool> moved;
   // (segment, vertex) for every vertex (end or split point) not on the segment whose closed pixel
   // the segment meets; complete once a grid pass over all vertices has run (off_classic_routes).
-  std::vector<std::pair<std::uint32_t, Point64>> near_vertex;
+  RecycledVector<struct ClosureNearVertexBuffer, std::pair<std::uint32_t, Point64>> near_vertex;
   bool near_vertex_complete = false;
 };
 
@@ -135,11 +138,12 @@ class SegmentsNear {
 // Vertices are the segments' endpoints and the exact split points. Either rule can only pin a
 // vertex whose closed pixel the segment meets: the route's corners are centres of pixels the
 // segment meets, so the region between them lies within half a unit (in x and y) of the segment.
-// Each round only looks at what is new.
+// Each round only looks at what is new. `fresh` holds the new hot centres on entry and is empty
+// on return.
 void close_hot_set(const std::vector<Segment>& segs, const SegmentIndex& index, SegmentsNear& near,
                    const std::vector<Point64>& split_points,
                    const StopsOf& splits_of, bool classic,
-                   PointSet& is_hot, Closure& c, std::vector<Point64> fresh) {
+                   PointSet& is_hot, Closure& c, std::vector<Point64>& fresh) {
   std::vector<SweepBox> split_sweep;
   if (!split_points.empty()) split_sweep = sorted_for_sweep(pixel_boxes(split_points));
   std::vector<std::uint32_t> slot;  // segment -> its place in `changed`, or kNoSlot
@@ -147,7 +151,7 @@ void close_hot_set(const std::vector<Segment>& segs, const SegmentIndex& index, 
   while (!fresh.empty()) {
     const std::uint32_t base = static_cast<std::uint32_t>(c.hot.size());
     c.hot.insert(c.hot.end(), fresh.begin(), fresh.end());
-    std::vector<std::uint32_t> changed;
+    RecycledVector<struct ChangedBuffer, std::uint32_t> changed;
     auto meet = [&](std::uint32_t h, std::uint32_t s) {
       const Point64 centre = fresh[h];
       if (!segment_meets_pixel(segs[s], centre)) return;
@@ -252,9 +256,10 @@ void close_hot_set(const std::vector<Segment>& segs, const SegmentIndex& index, 
 
 // Routes every segment that has stops (split points, centres of hot pixels it meets) through
 // them, in order along it. Segments without stops are their own fragment and are not listed.
-std::vector<Fragment> route(const std::vector<Segment>& segs, const Closure& c,
-                            const std::vector<std::pair<std::uint32_t, Point64>>& splits) {
-  std::vector<std::pair<std::uint32_t, Point64>> stops = splits;
+Fragments route(const std::vector<Segment>& segs, const Closure& c,
+                const std::vector<std::pair<std::uint32_t, Point64>>& splits) {
+  RecycledVector<struct RouteStopsBuffer, std::pair<std::uint32_t, Point64>> stops;
+  stops.assign(splits.begin(), splits.end());
   for (const auto& [s, h] : c.meets) stops.emplace_back(s, c.hot[h]);
   // By segment (radix), then along each segment: most segments have one or two stops.
   radix_sort(stops, [](const auto& x) { return std::uint64_t{x.first}; });
@@ -272,7 +277,7 @@ std::vector<Fragment> route(const std::vector<Segment>& segs, const Closure& c,
     }
     i = j;
   }
-  std::vector<Fragment> out;
+  Fragments out;
   out.reserve(2 * stops.size());
   for (std::size_t k = 0; k < stops.size();) {
     const std::uint32_t s = stops[k].first;
@@ -365,6 +370,7 @@ Contacts recheck(const AllFragments& all, const std::vector<bool>& moved,
                  const SegmentIndex& index, std::size_t segment_count, std::vector<bool>& touched,
                  bool off_classic_is_known, OffClassic&& off_classic) {
   std::vector<std::uint32_t> which;
+  which.reserve(all.listed_count());
   std::vector<bool> is_moved(all.listed_count(), false);  // moved segments are always listed
   for (std::uint32_t i = 0; i < all.listed_count(); ++i) {
     if (!moved[all.parent(i)]) continue;
@@ -430,15 +436,15 @@ Contacts recheck(const AllFragments& all, const std::vector<bool>& moved,
 }
 
 // The listed fragments after cutting fragments (by AllFragments id) at exact split points.
-std::vector<Fragment> split_fragments(const AllFragments& all, std::size_t segment_count,
+Fragments split_fragments(const AllFragments& all, std::size_t segment_count,
                                       const std::vector<std::pair<std::uint32_t, Point64>>& splits) {
   std::vector<Segment> pieces(all.id_bound());
   for (std::uint32_t id = 0; id < all.id_bound(); ++id) pieces[id] = all.seg(id);
-  const std::vector<Fragment> cut = route(pieces, Closure{}, splits);  // by piece id
+  const Fragments cut = route(pieces, Closure{}, splits);  // by piece id
   std::vector<std::uint32_t> first(all.id_bound() + 1, 0);
   for (const Fragment& f : cut) ++first[f.parent + 1];
   for (std::size_t id = 0; id < all.id_bound(); ++id) first[id + 1] += first[id];
-  std::vector<Fragment> out;
+  Fragments out;
   for (std::uint32_t s = 0; s < segment_count; ++s)
     all.for_each_of(s, [&](std::uint32_t id) {
       if (first[id] == first[id + 1]) {
@@ -452,7 +458,7 @@ std::vector<Fragment> split_fragments(const AllFragments& all, std::size_t segme
 
 }  // namespace
 
-std::vector<Fragment> snap_round(const std::vector<Segment>& segs,
+Fragments snap_round(const std::vector<Segment>& segs,
                                  const std::vector<std::uint32_t>& next, bool simple_rings,
                                  SnapStats& stats) {
   const SegmentIndex index(segs, next);
@@ -465,7 +471,7 @@ std::vector<Fragment> snap_round(const std::vector<Segment>& segs,
   if (contacts.hot.empty()) return route(segs, Closure{}, contacts.splits);
 
   // Vertex pixels: the segments' endpoints (found through the index) and exact split points.
-  std::vector<Point64> split_points;
+  RecycledVector<struct SplitPointsBuffer, Point64> split_points;
   split_points.reserve(contacts.splits.size());
   for (const auto& sp : contacts.splits) split_points.push_back(sp.second);
 
@@ -473,7 +479,7 @@ std::vector<Fragment> snap_round(const std::vector<Segment>& segs,
   is_hot.reserve(2 * contacts.hot.size());
   Closure closure;
   closure.moved.assign(segs.size(), false);
-  std::vector<Point64> fresh;
+  RecycledVector<struct FreshBuffer, Point64> fresh;
   auto add_hot = [&](const std::vector<Point64>& pts) {
     for (Point64 p : pts)
       if (is_hot.insert(p)) fresh.push_back(p);
@@ -500,13 +506,15 @@ std::vector<Fragment> snap_round(const std::vector<Segment>& segs,
     std::sort(fresh.begin(), fresh.end());
     std::sort(split_points.begin(), split_points.end());
     split_points.erase(std::unique(split_points.begin(), split_points.end()), split_points.end());
-    close_hot_set(segs, index, near, split_points, splits_of, classic, is_hot, closure, std::move(fresh));
+    close_hot_set(segs, index, near, split_points, splits_of, classic, is_hot, closure, fresh);
     fresh.clear();
     for (const auto& m : closure.meets) stats.touched[m.first] = true;
-    std::vector<Fragment> frags = route(segs, closure, contacts.splits);
+    Fragments frags = route(segs, closure, contacts.splits);
     stats.rounds = round;
     stats.hot_pixels = closure.hot.size();
     stats.moved_boxes.clear();
+    stats.moved_boxes.reserve(static_cast<std::size_t>(
+        std::count(closure.moved.begin(), closure.moved.end(), true)));
     for (std::uint32_t i = 0; i < segs.size(); ++i)
       if (closure.moved[i]) stats.moved_boxes.push_back(index.box(i));
 

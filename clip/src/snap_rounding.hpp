@@ -7,6 +7,7 @@
 
 #include "edgeland/kernel/bbox.hpp"
 #include "edgeland/kernel/polygon.hpp"
+#include "recycled_vector.hpp"
 
 namespace edgeland::detail {
 
@@ -34,7 +35,11 @@ struct SnapStats {
 // next[s] is the segment following s along its ring. simple_rings: every ring is strictly simple
 // (validated operands; normalize's rings are not), which spares the noding pairs within a ring.
 // Throws std::logic_error if the safety re-check does not converge.
-std::vector<Fragment> snap_round(const std::vector<Segment>& segments,
+// Fragment lists recycle their storage per thread (recycled_vector.hpp).
+struct FragmentsBuffer;
+using Fragments = RecycledVector<FragmentsBuffer, Fragment>;
+
+Fragments snap_round(const std::vector<Segment>& segments,
                                  const std::vector<std::uint32_t>& next, bool simple_rings,
                                  SnapStats& stats);
 
