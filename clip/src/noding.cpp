@@ -32,21 +32,22 @@ Meeting classify_pair(const Segment& s, std::uint32_t i, const Segment& t, std::
     const Point64 t_other = (t.a == s.a || t.a == s.b) ? t.b : t.a;
     if (orientation(s.a, s.b, t_other) != Orientation::kCollinear) return Meeting::kSharedEndpoint;
   }
-  // Perpendicular axis-parallel segments (tiles, boxes, cell cuts) cross at an integer point,
-  // the vertical one's x and the horizontal one's y, when each passes strictly between the
-  // other's ends: the common case of rectilinear inputs, without the rational construction.
+  // Perpendicular axis-parallel segments (tiles, boxes, cell cuts) can only meet at one
+  // integer point, the vertical one's x and the horizontal one's y: the common case of
+  // rectilinear inputs, decided without the rational construction.
   const bool s_flat = s.a.y == s.b.y, t_flat = t.a.y == t.b.y;
   if ((s_flat && t.a.x == t.b.x) || (t_flat && s.a.x == s.b.x)) {
     const Segment& h = s_flat ? s : t;
     const Segment& v = s_flat ? t : s;
     const Point64 p{v.a.x, h.a.y};
-    if (std::min(h.a.x, h.b.x) < p.x && p.x < std::max(h.a.x, h.b.x) &&
-        std::min(v.a.y, v.b.y) < p.y && p.y < std::max(v.a.y, v.b.y)) {
-      ++c.intersections;
-      c.splits.emplace_back(i, p);
-      c.splits.emplace_back(j, p);
-      return Meeting::kOther;
-    }
+    if (p.x < std::min(h.a.x, h.b.x) || p.x > std::max(h.a.x, h.b.x) ||
+        p.y < std::min(v.a.y, v.b.y) || p.y > std::max(v.a.y, v.b.y))
+      return Meeting::kNone;
+    // (A common endpoint of both was answered above.)
+    ++c.intersections;
+    split_if_interior(c, i, s, p);
+    split_if_interior(c, j, t, p);
+    return Meeting::kOther;
   }
   const SegmentIntersection r = intersect(s, t);
     switch (r.relation) {
