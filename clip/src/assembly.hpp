@@ -2,20 +2,16 @@
 // Assembly (thesis 3.5): the operation table picks the result label of every face, and the
 // boundary of every labeled region is traced with the sharpest-left-turn rule (3.5.2).
 #include <cstdint>
-#include <functional>
 #include <utility>
 #include <vector>
 
 #include "edgeland/kernel/polygon.hpp"
+#include "face_label.hpp"
 #include "labeling.hpp"
 #include "planar_graph.hpp"
 #include "recycled_vector.hpp"
 
 namespace edgeland::detail {
-
-// A face label: which output polygon family a face belongs to, or -1 when not in the result.
-using FaceLabel = std::int64_t;
-using LabelOf = std::function<FaceLabel(const SideState&)>;
 
 // The boundary of one labeled region, split into simple loops.
 struct RegionRings {

@@ -20,7 +20,6 @@
 namespace edgeland {
 namespace {
 
-using detail::FaceLabel;
 using detail::SideState;
 
 const char* operand_name(Operand o) {
@@ -30,37 +29,6 @@ const char* operand_name(Operand o) {
     case Operand::kRings: return "rings";
   }
   return "?";
-}
-
-FaceLabel label(int channel, std::int32_t polygon) {
-  return (static_cast<FaceLabel>(channel) << 32) | static_cast<FaceLabel>(polygon);
-}
-
-// The operation table of thesis 3.5, on the polygons covering a face (-1: none). Subject
-// polygons are never merged with each other: a face keeps the polygon it came from.
-FaceLabel op_label(ClipOp op, const SideState& st) {
-  const std::int32_t a = st.s[0], b = st.s[1];
-  switch (op) {
-    case ClipOp::kUnion:
-      return a >= 0 ? label(0, a) : b >= 0 ? label(1, b) : -1;
-    case ClipOp::kIntersection:
-      return a >= 0 && b >= 0 ? label(0, a) : -1;
-    case ClipOp::kDifference:
-      return a >= 0 && b < 0 ? label(0, a) : -1;
-    case ClipOp::kXor:
-      return a >= 0 && b < 0 ? label(0, a) : a < 0 && b >= 0 ? label(1, b) : -1;
-  }
-  return -1;
-}
-
-bool filled(FillRule rule, std::int32_t w) {
-  switch (rule) {
-    case FillRule::kEvenOdd: return (w & 1) != 0;
-    case FillRule::kNonZero: return w != 0;
-    case FillRule::kPositive: return w > 0;
-    case FillRule::kNegative: return w < 0;
-  }
-  return false;
 }
 
 // A per-thread object whose arrays keep their capacity from one operation to the next (the edge
@@ -99,7 +67,7 @@ struct Pipeline {
   Reused<detail::EdgeList> reused_edges;
   detail::EdgeList& edges = cleared(*reused_edges);
   detail::LabelMode mode;
-  detail::LabelOf label_of;
+  detail::LabelOf label_of = detail::LabelOf::operation(ClipOp::kUnion);
   bool simple_rings = true;  // validated operands; normalize's rings may cross themselves
 };
 
@@ -161,7 +129,7 @@ ClipResult clip_near(ClipOp op, const PolygonSet& subject, const PolygonSet& cli
     detail::append_ring_edges(subject, 0, true, p.edges, &near);
     detail::append_ring_edges(clip_set, 1, true, p.edges);
     p.mode = detail::LabelMode::kOwner;
-    p.label_of = [op](const SideState& s) { return op_label(op, s); };
+    p.label_of = detail::LabelOf::operation(op);
     std::vector<Box64> moved;
     ClipResult r = run(p, &moved);
 
@@ -246,7 +214,7 @@ ClipResult box_of_valid(const PolygonSet& set, const Box64& box, const ClipOptio
         detail::append_ring_edges(set, 0, true, p.edges, &near);
         detail::append_ring_edges(cell, 1, true, p.edges);
         p.mode = detail::LabelMode::kOwner;
-        p.label_of = [](const SideState& s) { return op_label(ClipOp::kIntersection, s); };
+        p.label_of = detail::LabelOf::operation(ClipOp::kIntersection);
         return run(p);
       },
       options, "clip_to_box", [&] { return to_wkt(set); }, [&] { return to_wkt(cell); });
@@ -333,7 +301,7 @@ ClipResult normalize(const std::vector<Ring>& rings, FillRule rule, const ClipOp
         detail::append_ring_edges(rings, 0, false, p.edges);
         p.simple_rings = false;
         p.mode = detail::LabelMode::kWinding;
-        p.label_of = [rule](const SideState& s) -> FaceLabel { return filled(rule, s.s[0]) ? 0 : -1; };
+        p.label_of = detail::LabelOf::fill(rule);
         return run(p);
       },
       options, std::string("normalize ") + fill_rule_name(rule),
