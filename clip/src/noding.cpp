@@ -17,6 +17,28 @@ void split_if_interior(Contacts& c, std::uint32_t seg, const Segment& s, Point64
   if (p != s.a && p != s.b) c.splits.emplace_back(seg, p);
 }
 
+// s and t lie on one horizontal (flat) or vertical line: they meet along the interval
+// [lo, hi] of that line's coordinate where their ranges overlap, if any.
+Meeting collinear_axis_contact(const Segment& s, std::uint32_t i, const Segment& t, std::uint32_t j,
+                               bool flat, Contacts& c) {
+  auto along = [flat](Point64 p) { return flat ? p.x : p.y; };
+  const std::int64_t lo = std::max(std::min(along(s.a), along(s.b)), std::min(along(t.a), along(t.b)));
+  const std::int64_t hi = std::min(std::max(along(s.a), along(s.b)), std::max(along(t.a), along(t.b)));
+  if (lo > hi) return Meeting::kNone;
+  auto at = [&](std::int64_t v) { return flat ? Point64{v, s.a.y} : Point64{s.a.x, v}; };
+  const Point64 from = at(lo), to = at(hi);
+  if (lo == hi && (from == s.a || from == s.b) && (from == t.a || from == t.b))
+    return Meeting::kSharedEndpoint;
+  ++c.intersections;
+  split_if_interior(c, i, s, from);
+  split_if_interior(c, j, t, from);
+  if (hi != lo) {
+    split_if_interior(c, i, s, to);
+    split_if_interior(c, j, t, to);
+  }
+  return Meeting::kOther;
+}
+
 }  // namespace
 
 Meeting classify_pair(const Segment& s, std::uint32_t i, const Segment& t, std::uint32_t j,
@@ -48,6 +70,13 @@ Meeting classify_pair(const Segment& s, std::uint32_t i, const Segment& t, std::
     split_if_interior(c, i, s, p);
     split_if_interior(c, j, t, p);
     return Meeting::kOther;
+  }
+  // Two horizontal or two vertical segments: on different lines they are apart, on one line
+  // they share an interval of it (rectilinear inputs: tiles side by side).
+  const bool s_upright = s.a.x == s.b.x, t_upright = t.a.x == t.b.x;
+  if ((s_flat && t_flat) || (s_upright && t_upright)) {
+    if (s_flat ? s.a.y != t.a.y : s.a.x != t.a.x) return Meeting::kNone;
+    return collinear_axis_contact(s, i, t, j, s_flat, c);
   }
   const SegmentIntersection r = intersect(s, t);
     switch (r.relation) {
