@@ -82,24 +82,26 @@ void SegmentGrid::for_each_cell(const Segment& s, F&& f) const {
   const Point64 a = s.a.x <= s.b.x ? s.a : s.b, b = s.a.x <= s.b.x ? s.b : s.a;
   const std::int64_t seg_lo = std::min(a.y, b.y), seg_hi = std::max(a.y, b.y);
   auto row = [&](std::int64_t y) { return (y - min_y_) >> shift_; };  // y >= min_y_
-  const std::int64_t c0 = (a.x - min_x_) >> shift_, c1 = (b.x - min_x_) >> shift_;
-  const Int128 dx = b.x - a.x, dy = b.y - a.y;
-  auto y_floor = [&](std::int64_t x) { return line_y_floor(a, dx, dy, x); };
-  // Adjacent columns share their boundary x: the line's y there is computed once.
-  std::int64_t carried_x = a.x, carried_y = a.y;
-  for (std::int64_t c = c0; c <= c1; ++c) {
-    std::int64_t lo = seg_lo, hi = seg_hi;
-    if (dx != 0) {
-      const std::int64_t cx0 = min_x_ + c * side_;
-      const std::int64_t from = std::max(cx0, a.x), to = std::min(cx0 + side_, b.x);
-      const std::int64_t y0 = from == carried_x ? carried_y : y_floor(from);
-      const std::int64_t y1 = to == b.x ? b.y : y_floor(to);
-      carried_x = to;
-      carried_y = y1;
-      lo = std::max(seg_lo, std::min(y0, y1));
-      hi = std::min(seg_hi, std::max(y0, y1));
-    }
+  auto rows_between = [&](std::int64_t c, std::int64_t lo, std::int64_t hi) {
     for (std::int64_t r = row(lo); r <= row(hi); ++r) f(static_cast<std::size_t>(c * rows_ + r));
+  };
+  const std::int64_t c0 = (a.x - min_x_) >> shift_, c1 = (b.x - min_x_) >> shift_;
+  if (c0 == c1) {  // one column (vertical segments among them): the rows of its y-range
+    rows_between(c0, seg_lo, seg_hi);
+    return;
+  }
+  // Column c spans the line's y from where the segment enters it (a.y in the first) to the
+  // floor at its right boundary (b.y in the last): adjacent columns share the boundary's y.
+  LineYFloors at_boundary(a, b.x - a.x, b.y - a.y, min_x_ + (c0 + 1) * side_, side_);
+  std::int64_t y_in = a.y;
+  for (std::int64_t c = c0; c <= c1; ++c) {
+    std::int64_t y_out = b.y;
+    if (c < c1) {
+      y_out = at_boundary.value();
+      at_boundary.next();
+    }
+    rows_between(c, std::max(seg_lo, std::min(y_in, y_out)), std::min(seg_hi, std::max(y_in, y_out)));
+    y_in = y_out;
   }
 }
 
