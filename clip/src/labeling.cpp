@@ -157,7 +157,7 @@ SideState state_above_point(const PlaneGraph& g, const std::vector<SideState>& l
 // `stab` may be null: then every piece is looked at (cheaper than building the tree for a few
 // queries).
 Below find_below(const PlaneGraph& g, const std::vector<Piece>& pieces, const XStabbing* stab,
-                 const std::vector<bool>& labeled, const std::vector<SideState>& left, Point64 p) {
+                 const std::vector<std::uint8_t>& labeled, const std::vector<SideState>& left, Point64 p) {
   Below best;
   const Piece* best_piece = nullptr;
   int best_kind = 0;  // 1: end a, 2: end b, 3: interior of the piece
@@ -227,8 +227,8 @@ std::vector<SideState> label_sides(const PlaneGraph& g, LabelMode mode) {
 void label_sides(const PlaneGraph& g, LabelMode mode, std::vector<SideState>& left) {
   const std::size_t nv = g.vertices.size();
   left.assign(2 * g.edge_count(), empty_state(mode));
-  RecycledVector<struct VisitedBuffer, bool> visited;
-  visited.assign(nv, false);
+  RecycledVector<struct VisitedBuffer, std::uint8_t> visited;  // bytes: no bit masking
+  visited.assign(nv, 0);
   std::unique_ptr<XStabbing> stab;
   std::vector<Piece> pieces;
   constexpr int kScansBeforeTree = 4;
@@ -251,7 +251,7 @@ void label_sides(const PlaneGraph& g, LabelMode mode, std::vector<SideState>& le
     }
     const std::uint32_t k0 = sector_containing(g, v0, {-1, 0});
     left[g.around[k0]] = base;
-    visited[v0] = true;
+    visited[v0] = 1;
     queue.assign(1, {v0, k0});
     while (!queue.empty()) {
       const auto [w, k] = queue.back();
@@ -268,7 +268,7 @@ void label_sides(const PlaneGraph& g, LabelMode mode, std::vector<SideState>& le
       for (std::uint32_t i = 0; i < n; ++i) {
         const std::uint32_t h = g.around[b + i], twin = h ^ 1, x = g.origin(twin);
         if (visited[x]) continue;
-        visited[x] = true;
+        visited[x] = 1;
         const std::uint32_t bx = g.around_begin[x], nx = around_count(g, x);
         const std::uint32_t at = g.position_of[twin];
         const std::uint32_t before = at == bx ? bx + nx - 1 : at - 1;

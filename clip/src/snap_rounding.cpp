@@ -86,9 +86,11 @@ bool meets_closed_pixel(const Segment& s, Point64 p) {
   if (std::min(s.a.x, s.b.x) > p.x + 1 || std::max(s.a.x, s.b.x) < p.x - 1 ||
       std::min(s.a.y, s.b.y) > p.y + 1 || std::max(s.a.y, s.b.y) < p.y - 1)
     return false;
-  const Int128 dx = s.b.x - s.a.x, dy = s.b.y - s.a.y;
-  const Int128 det = dx * (p.y - s.a.y) - dy * (p.x - s.a.x);
-  return 2 * (det < 0 ? -det : det) <= (dx < 0 ? -dx : dx) + (dy < 0 ? -dy : dy);
+  // Differences of in-range coordinates fit 64 bits (theorem orient_differences_int64), so each
+  // product is one widening 64 x 64 -> 128-bit multiply.
+  const std::int64_t dx = s.b.x - s.a.x, dy = s.b.y - s.a.y;
+  const Int128 det = Int128(dx) * (p.y - s.a.y) - Int128(dy) * (p.x - s.a.x);
+  return 2 * (det < 0 ? -det : det) <= Int128(dx < 0 ? -dx : dx) + (dy < 0 ? -dy : dy);
 }
 
 // The input segments near a point, found through a SegmentGrid of the input (find_contacts
