@@ -76,10 +76,10 @@ std::vector<Piece> pieces_of(const PlaneGraph& g) {
   std::vector<Piece> out;
   out.reserve(2 * g.edge_count());
   for (std::uint32_t e = 0; e < g.edge_count(); ++e) {
-    Point64 at = g.vertices[g.from[e]];
+    Point64 at = g.vertices[g.from(e)];
     const std::uint32_t m = g.interior_count(e);
     for (std::uint32_t i = 0; i <= m; ++i) {
-      const Point64 nx = i < m ? g.interior_point(e, i) : g.vertices[g.to[e]];
+      const Point64 nx = i < m ? g.interior_point(e, i) : g.vertices[g.to(e)];
       out.push_back({at, nx, e, i, i == 0, i == m});
       at = nx;
     }
@@ -140,14 +140,14 @@ struct Below {
 SideState state_above_point(const PlaneGraph& g, const std::vector<SideState>& left,
                             const Piece& piece, bool at_a) {
   if (at_a ? piece.a_is_vertex : piece.b_is_vertex) {
-    const std::uint32_t v = at_a ? g.from[piece.edge] : g.to[piece.edge];
+    const std::uint32_t v = at_a ? g.from(piece.edge) : g.to(piece.edge);
     return left[g.around[sector_containing(g, v, {0, 1})]];
   }
   // An interior point: its neighbours along the edge, from -> to.
   const std::uint32_t e = piece.edge, i = at_a ? piece.index : piece.index + 1;
   const Point64 q = at_a ? piece.a : piece.b;
-  const Point64 prev = i == 1 ? g.vertices[g.from[e]] : g.interior_point(e, i - 2);
-  const Point64 nx = i == g.interior_count(e) ? g.vertices[g.to[e]] : g.interior_point(e, i);
+  const Point64 prev = i == 1 ? g.vertices[g.from(e)] : g.interior_point(e, i - 2);
+  const Point64 nx = i == g.interior_count(e) ? g.vertices[g.to(e)] : g.interior_point(e, i);
   // Walking prev -> q -> nx, the left side at q is swept counter-clockwise from nx to prev.
   const bool left_side = strictly_inside_ccw_sector({nx.x - q.x, nx.y - q.y},
                                                     {prev.x - q.x, prev.y - q.y}, {0, 1});
@@ -171,7 +171,7 @@ Below find_below(const PlaneGraph& g, const std::vector<Piece>& pieces, const XS
   };
   auto consider = [&](std::uint32_t k) {
     const Piece& piece = pieces[k];
-    if (!labeled[g.from[piece.edge]]) return;
+    if (!labeled[g.from(piece.edge)]) return;
     const Point64 a = piece.a, b = piece.b;
     if (a.x == b.x) {  // vertical: its top end is the candidate
       const bool a_top = a.y > b.y;

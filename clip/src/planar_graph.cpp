@@ -289,8 +289,7 @@ void build_plane_graph(const std::vector<Segment>& segments,
   // Written by index into arrays sized for the most edges there can be, then trimmed: one
   // store per field instead of a capacity check per push.
   g.segments = &segments;
-  g.from.resize(edge_bound);
-  g.to.resize(edge_bound);
+  g.origin_of.resize(2 * edge_bound);
   g.mult_begin.resize(edge_bound + 1);
   g.mults.resize(edge_bound);
   g.mult_begin[0] = 0;
@@ -300,8 +299,8 @@ void build_plane_graph(const std::vector<Segment>& segments,
       ++g.cancelled_edges;
       return;
     }
-    g.from[edges] = lo;
-    g.to[edges] = hi;
+    g.origin_of[2 * edges] = lo;
+    g.origin_of[2 * edges + 1] = hi;
     g.mult_begin[++edges] = mult_count;
   };
   for (std::size_t i = 0; i < pieces.size();) {
@@ -343,8 +342,7 @@ void build_plane_graph(const std::vector<Segment>& segments,
     close_edge(a, b, mult_count - 1);
     g.chain.push_back(c);
   }
-  g.from.resize(edges);
-  g.to.resize(edges);
+  g.origin_of.resize(2 * std::size_t{edges});
   g.mult_begin.resize(edges + 1);
   g.mults.resize(mult_count);
 
@@ -353,9 +351,9 @@ void build_plane_graph(const std::vector<Segment>& segments,
   // four half-edges, which an insertion sort orders with fewer comparisons than std::sort.
   const std::size_t nv = g.vertices.size(), nh = 2 * g.edge_count();
   g.around_begin.assign(nv + 1, 0);
-  for (std::size_t e = 0; e < g.edge_count(); ++e) {
-    ++g.around_begin[g.from[e] + 1];
-    ++g.around_begin[g.to[e] + 1];
+  for (std::uint32_t e = 0; e < g.edge_count(); ++e) {
+    ++g.around_begin[g.from(e) + 1];
+    ++g.around_begin[g.to(e) + 1];
   }
   for (std::size_t v = 0; v < nv; ++v) g.around_begin[v + 1] += g.around_begin[v];
   struct Out {
@@ -368,7 +366,7 @@ void build_plane_graph(const std::vector<Segment>& segments,
     RecycledVector<struct FillBuffer, std::uint32_t> fill;
     fill.assign(g.around_begin.begin(), g.around_begin.end() - 1);
     for (std::uint32_t e = 0; e < g.edge_count(); ++e) {
-      const std::uint32_t a = g.from[e], b = g.to[e];
+      const std::uint32_t a = g.from(e), b = g.to(e);
       const Point64 pa = g.vertices[a], pb = g.vertices[b];
       const std::uint32_t m = g.chain[e].count;
       const Point64 step_a = m == 0 ? pb : g.interior_point(e, 0);

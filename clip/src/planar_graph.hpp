@@ -25,10 +25,12 @@ struct Multiplicity {
 
 struct PlaneGraph {
   std::vector<Point64> vertices;               // sorted, unique
-  // Edge e joins from[e] < to[e] (vertex ids, lexicographic). Half-edge 2e runs from -> to,
+  // Edge e joins from(e) < to(e) (vertex ids, lexicographic). Half-edge 2e runs from -> to,
   // 2e + 1 runs to -> from; the twin of half-edge h is h ^ 1. Two edges may join the same two
-  // vertices along different polylines.
-  std::vector<std::uint32_t> from, to;
+  // vertices along different polylines. origin_of[h] is where half-edge h starts (so
+  // origin_of[2e] = from(e), origin_of[2e + 1] = to(e)): one load, no branch, for the walks
+  // of labeling and assembly that ask it at every step.
+  std::vector<std::uint32_t> origin_of;
   // Interior points of a chain edge are read from the input segments, not copied: the points
   // of edge e are the starts of chain[e].count segments after chain[e].first along its ring
   // (ring [ring_begin, ring_begin + ring_len) of the segment list), in from -> to order unless
@@ -46,9 +48,11 @@ struct PlaneGraph {
   std::vector<std::uint32_t> around_begin, around, position_of;
   std::size_t cancelled_edges = 0;             // edges whose multiplicities summed to zero
 
-  std::size_t edge_count() const { return from.size(); }
-  std::uint32_t origin(std::uint32_t h) const { return (h & 1) ? to[h >> 1] : from[h >> 1]; }
-  std::uint32_t target(std::uint32_t h) const { return origin(h ^ 1); }
+  std::size_t edge_count() const { return origin_of.size() / 2; }
+  std::uint32_t from(std::uint32_t e) const { return origin_of[2 * e]; }
+  std::uint32_t to(std::uint32_t e) const { return origin_of[2 * e + 1]; }
+  std::uint32_t origin(std::uint32_t h) const { return origin_of[h]; }
+  std::uint32_t target(std::uint32_t h) const { return origin_of[h ^ 1]; }
   std::uint32_t interior_count(std::uint32_t e) const { return chain[e].count; }
   // Interior point i (0-based, from -> to) of edge e.
   Point64 interior_point(std::uint32_t e, std::uint32_t i) const {
