@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "canonical.hpp"
 #include "edgeland/kernel/area.hpp"
 #include "recycled_vector.hpp"
 
@@ -79,7 +80,7 @@ BoundaryWalks trace_boundaries(const PlaneGraph& g, const std::vector<FaceLabel>
 }
 
 Assembled assemble(const PlaneGraph& g, const std::vector<SideState>& left,
-                   const LabelOf& label_of) {
+                   const LabelOf& label_of, bool collinear_free_operands) {
   RecycledVector<struct EmittedBuffer, FaceLabel> emitted;
   emitted.assign(2 * g.edge_count(), -1);
   for (std::uint32_t e = 0; e < g.edge_count(); ++e) {
@@ -97,15 +98,46 @@ Assembled assemble(const PlaneGraph& g, const std::vector<SideState>& left,
   std::size_t holes = 0;
   RecycledVector<struct PositionBuffer, std::int32_t> position;
   position.assign(g.vertices.size(), -1);
+  // Each loop is written out in canonical form at once (canonical.hpp): it starts at its
+  // smallest point, which is a graph vertex (no chain has an interior point smaller than both
+  // its ends), and the turn there is its orientation, so neither a pass for the area nor one to
+  // rotate is needed. Collinear points can only be graph vertices, or chain points when an
+  // operand ring had collinear consecutive vertices.
+  // Hole splitting needs a region's rings as traced, every graph vertex on them (a bridge may
+  // end at one a canonical ring drops), so each loop's half-edges are kept to trace again.
+  RecycledVector<struct LoopHalfEdgesBuffer, std::uint32_t> loop_half_edges;
+  RecycledVector<struct LoopBeginBuffer, std::uint32_t> loop_begin;
+  loop_begin.push_back(0);
+  RecycledVector<struct LoopPointsBuffer, Point64> points;
+  RecycledVector<struct LoopCheckBuffer, std::uint8_t> check;
+  const std::uint8_t check_chains = collinear_free_operands ? 0 : 1;
   auto add_loop = [&](FaceLabel label, const std::uint32_t* first, const std::uint32_t* last) {
-    Ring ring = ring_along(g, first, last);
-    if (ring.size() < 3) return;
-    const Int128 area = twice_signed_area(ring);
-    if (area == 0) return;
+    points.clear();
+    check.clear();
+    std::size_t least = 0;
+    for (const std::uint32_t* h = first; h != last; ++h) {
+      const std::size_t at = points.size();
+      g.append_points(*h, points);
+      check.push_back(1);
+      check.resize(points.size(), check_chains);
+      if (points[at] < points[least]) least = at;
+    }
+    int turn = 0;
+    Ring ring = canonical_ring_from(points, check, least, turn);
+    if (turn == 0) {
+      // Not expected of a face boundary (simple, so nonzero area means a convex smallest
+      // vertex); decided by the area as before, should it happen.
+      const Int128 area = points.size() < 3 ? 0 : twice_signed_area(points);
+      if (area == 0) return;
+      ring = canonical_ring(Ring(points.begin(), points.end()));
+      turn = area > 0 ? 1 : -1;
+    }
     out.rings.push_back(std::move(ring));
     ring_label.push_back(label);
-    outer.push_back(area > 0);
-    if (area < 0) ++holes;
+    outer.push_back(turn > 0);
+    if (turn < 0) ++holes;
+    loop_half_edges.insert(loop_half_edges.end(), first, last);
+    loop_begin.push_back(static_cast<std::uint32_t>(loop_half_edges.size()));
   };
   const BoundaryWalks walks = trace_boundaries(g, emitted);
   out.rings.reserve(walks.size());
@@ -145,8 +177,12 @@ Assembled assemble(const PlaneGraph& g, const std::vector<SideState>& left,
     } else {
       RegionRings& region = out.holed.emplace_back();
       region.label = ring_label[order[i]];
-      for (std::size_t k = i; k < j; ++k)
-        (outer[order[k]] ? region.outers : region.holes).push_back(std::move(out.rings[order[k]]));
+      for (std::size_t k = i; k < j; ++k) {
+        const std::uint32_t r = order[k];
+        (outer[r] ? region.outers : region.holes)
+            .push_back(ring_along(g, loop_half_edges.data() + loop_begin[r],
+                                  loop_half_edges.data() + loop_begin[r + 1]));
+      }
     }
     i = j;
   }

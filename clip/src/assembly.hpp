@@ -21,15 +21,16 @@ struct RegionRings {
 };
 
 // The assembled result: the rings of regions without holes, each a counter-clockwise output
-// polygon as it stands, and the regions with holes (sorted by label) for hole splitting. Loops
-// that revisit a vertex are split there, so every ring is a simple closed polyline of graph
-// edges.
+// polygon in canonical form (canonical.hpp; only their order is left to do), and the regions
+// with holes (sorted by label) for hole splitting. Loops that revisit a vertex are split there,
+// so every ring is a simple closed polyline of graph edges. collinear_free_operands: no input
+// ring has collinear consecutive vertices, so only graph vertices can be collinear.
 struct Assembled {
   std::vector<Ring> rings;
   std::vector<RegionRings> holed;
 };
 Assembled assemble(const PlaneGraph& g, const std::vector<SideState>& left,
-                   const LabelOf& label_of);
+                   const LabelOf& label_of, bool collinear_free_operands);
 
 // Closed walks along the half-edges with emitted[h] >= 0, each following the sharpest left
 // turn among half-edges of its own label, in a fixed order. Flat: walk i is

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "edgeland/kernel/predicates.hpp"
+#include "recycled_vector.hpp"
 
 namespace edgeland::detail {
 
@@ -50,8 +51,61 @@ Ring canonical_ring(Ring ring) {
   return rotated;
 }
 
+Ring canonical_ring_from(const std::vector<Point64>& points, const std::vector<std::uint8_t>& check,
+                         std::size_t least, int& turn) {
+  const std::size_t n = points.size();
+  Ring out;
+  turn = 0;
+  if (n < 3) return out;
+  out.reserve(n);
+  // The stack algorithm of canonical_ring, from the smallest point round: the top is dropped
+  // while it is collinear with its neighbours. A top needs the test if it is marked, or if its
+  // left neighbour on the stack is not its own predecessor (something between was dropped), or
+  // if its right neighbour is not its successor (the point being added after a drop).
+  // suspect[k]: out[k] must be tested once it is the middle of three.
+  RecycledVector<struct CanonicalSuspectBuffer, std::uint8_t> suspect;
+  suspect.reserve(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::size_t i = least + k < n ? least + k : least + k - n;
+    const Point64 p = points[i];
+    bool dropped = false;
+    while (out.size() >= 2 && (suspect.back() || dropped || check[i]) &&
+           orientation(out[out.size() - 2], out.back(), p) == Orientation::kCollinear) {
+      out.pop_back();
+      suspect.pop_back();
+      dropped = true;
+    }
+    if (dropped && !suspect.empty()) suspect.back() = 1;  // its right neighbour changed
+    out.push_back(p);
+    suspect.push_back(static_cast<std::uint8_t>(check[i] || dropped));
+  }
+  // The seam: the smallest point (out[0]) is never collinear between its neighbours (both are
+  // larger), but the last points may be collinear with it.
+  while (out.size() > 3 &&
+         orientation(out[out.size() - 2], out.back(), out[0]) == Orientation::kCollinear)
+    out.pop_back();
+  if (out.size() < 3) return out;
+  turn = static_cast<int>(orientation(out.back(), out[0], out[1]));
+  return out;
+}
+
+bool collinear_free(const PolygonSet& set) {
+  for (const Polygon& ring : set) {
+    const std::size_t n = ring.size();
+    for (std::size_t i = 0; i < n; ++i)
+      if (orientation(ring[i == 0 ? n - 1 : i - 1], ring[i], ring[i + 1 == n ? 0 : i + 1]) ==
+          Orientation::kCollinear)
+        return false;
+  }
+  return true;
+}
+
 void canonicalize(PolygonSet& set) {
   for (Polygon& p : set) p = canonical_ring(std::move(p));
+  sort_canonical(set);
+}
+
+void sort_canonical(PolygonSet& set) {
   // Sorted by first (least) vertex, which polygons share only when they touch there: the
   // comparisons read one 64-bit key kept next to the index (the point, shifted into unsigned
   // 32-bit halves: order-preserving for in-range coordinates; 0 for an empty ring, which sorts

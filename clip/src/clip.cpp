@@ -68,6 +68,8 @@ struct Pipeline {
   detail::EdgeList& edges = cleared(*reused_edges);
   detail::LabelMode mode;
   detail::LabelOf label_of = detail::LabelOf::operation(ClipOp::kUnion);
+  // No operand ring has collinear consecutive vertices: only graph vertices can be collinear.
+  bool collinear_free_operands = false;
   bool simple_rings = true;  // validated operands; normalize's rings may cross themselves
 };
 
@@ -85,14 +87,14 @@ ClipResult run(const Pipeline& p, std::vector<Box64>* moved_boxes = nullptr) {
   detail::build_plane_graph(segs, fragments, p.edges.channel, p.edges.polygon, next,
                             snap.touched, g);
   detail::label_sides(g, p.mode, left);
-  detail::Assembled assembled = detail::assemble(g, left, p.label_of);
-  result.polygons = std::move(assembled.rings);
+  detail::Assembled assembled = detail::assemble(g, left, p.label_of, p.collinear_free_operands);
+  result.polygons = std::move(assembled.rings);  // canonical rings
   for (auto& region : assembled.holed) {
     for (Ring& r : detail::split_holes(std::move(region.outers), std::move(region.holes),
                                        result.stats.holes_split))
-      result.polygons.push_back(std::move(r));
+      result.polygons.push_back(detail::canonical_ring(std::move(r)));
   }
-  detail::canonicalize(result.polygons);
+  detail::sort_canonical(result.polygons);
   result.stats.intersections = snap.intersections;
   result.stats.vertices_snapped = snap.hot_pixels;
   result.stats.zero_area_dropped = g.cancelled_edges;
@@ -110,10 +112,11 @@ Box64 grown(Box64 b, std::int64_t by) {
 // where it was). Left-out polygons are unaffected by the operation: kept as they are, or dropped
 // by an intersection. If rounding moved a segment near a left-out polygon, that polygon is
 // brought in and the operation re-run; the included set only grows, so this terminates.
+// collinear_free: no ring of either operand has collinear consecutive vertices.
 // subject_canonical: the subject is in canonical form (an earlier result), so left-out polygons
 // are copied as they are and merged into the sorted result.
 ClipResult clip_near(ClipOp op, const PolygonSet& subject, const PolygonSet& clip_set,
-                     bool subject_canonical) {
+                     bool subject_canonical, bool collinear_free) {
   std::vector<Box64> boxes(subject.size());
   for (std::size_t i = 0; i < subject.size(); ++i) boxes[i] = *bounding_box(subject[i]);
   std::vector<bool> included(subject.size(), false);
@@ -130,6 +133,7 @@ ClipResult clip_near(ClipOp op, const PolygonSet& subject, const PolygonSet& cli
     detail::append_ring_edges(clip_set, 1, true, p.edges);
     p.mode = detail::LabelMode::kOwner;
     p.label_of = detail::LabelOf::operation(op);
+    p.collinear_free_operands = collinear_free;
     std::vector<Box64> moved;
     ClipResult r = run(p, &moved);
 
@@ -192,15 +196,19 @@ void require_valid_box(const Box64& box) {
   }
 }
 
-// subject OP clip for operands known to be valid.
+// subject OP clip for operands known to be valid; *_canonical: that operand is in canonical
+// form (an earlier result).
 ClipResult clip_of_valid(ClipOp op, const PolygonSet& subject, const PolygonSet& clip_set,
-                         const ClipOptions& options, bool subject_canonical = false) {
+                         const ClipOptions& options, bool subject_canonical = false,
+                         bool collinear_free = false) {
   return guarded(
-      [&] { return clip_near(op, subject, clip_set, subject_canonical); },
+      [&] { return clip_near(op, subject, clip_set, subject_canonical, collinear_free); },
       options, op_name(op), [&] { return to_wkt(subject); }, [&] { return to_wkt(clip_set); });
 }
 
-ClipResult box_of_valid(const PolygonSet& set, const Box64& box, const ClipOptions& options) {
+// collinear_free: no ring of the set has collinear consecutive vertices (the box has none).
+ClipResult box_of_valid(const PolygonSet& set, const Box64& box, const ClipOptions& options,
+                        bool collinear_free) {
   if (box.min.x == box.max.x || box.min.y == box.max.y) return {};
   // Members that cannot reach the box take no part; the rest go through the full pipeline,
   // so the result stays closed under repetition exactly like clip().
@@ -215,6 +223,7 @@ ClipResult box_of_valid(const PolygonSet& set, const Box64& box, const ClipOptio
         detail::append_ring_edges(cell, 1, true, p.edges);
         p.mode = detail::LabelMode::kOwner;
         p.label_of = detail::LabelOf::operation(ClipOp::kIntersection);
+        p.collinear_free_operands = collinear_free;
         return run(p);
       },
       options, "clip_to_box", [&] { return to_wkt(set); }, [&] { return to_wkt(cell); });
@@ -261,6 +270,7 @@ ClipResult clip(ClipOp op, const PolygonSet& subject, const PolygonSet& clip_set
 
 ValidSet::ValidSet(PolygonSet set, Operand which) : set_(std::move(set)) {
   require_valid(set_, which);
+  collinear_free_ = detail::collinear_free(set_);
 }
 
 // The one way library code makes a ValidSet without validating: from an operation's output.
@@ -268,20 +278,25 @@ struct ValidSetFactory {
   static ValidClipResult from(ClipResult r) {
     ValidSet set(std::move(r.polygons), ValidSet::Trusted{});
     set.canonical_ = true;  // every output is in canonical form (clip.hpp)
+    set.collinear_free_ = true;
     return {std::move(set), r.stats};
   }
   static bool canonical(const ValidSet& s) { return s.canonical_; }
+  static bool collinear_free(const ValidSet& s) { return s.collinear_free_; }
 };
 
 ValidClipResult clip(ClipOp op, const ValidSet& subject, const ValidSet& clip_set,
                      const ClipOptions& options) {
   return ValidSetFactory::from(clip_of_valid(op, subject.polygons(), clip_set.polygons(), options,
-                                             ValidSetFactory::canonical(subject)));
+                                             ValidSetFactory::canonical(subject),
+                                             ValidSetFactory::collinear_free(subject) &&
+                                                 ValidSetFactory::collinear_free(clip_set)));
 }
 
 ValidClipResult clip_to_box(const ValidSet& set, const Box64& box, const ClipOptions& options) {
   require_valid_box(box);
-  return ValidSetFactory::from(box_of_valid(set.polygons(), box, options));
+  return ValidSetFactory::from(
+      box_of_valid(set.polygons(), box, options, ValidSetFactory::collinear_free(set)));
 }
 
 ClipResult normalize(const std::vector<Ring>& rings, FillRule rule, const ClipOptions& options) {
@@ -338,7 +353,7 @@ ClipResult import_polygons(const std::vector<std::vector<Ring>>& polygons,
 ClipResult clip_to_box(const PolygonSet& set, const Box64& box, const ClipOptions& options) {
   require_valid_box(box);
   require_valid(set, Operand::kSubject);
-  return box_of_valid(set, box, options);
+  return box_of_valid(set, box, options, false);
 }
 
 }  // namespace edgeland

@@ -54,6 +54,24 @@ RC_GTEST_PROP(ValidSetProperty, OverloadsGiveIdenticalResults, ()) {
             cut.polygons);
 }
 
+// ValidSets without collinear consecutive vertices (every earlier result; validated sets found
+// so, as in OverloadsGiveIdenticalResults above) take the pipeline's shortcut: assembly tests
+// only graph vertices for collinearity. The result must be exactly what the same polygons give
+// through the PolygonSet overload, which tests every vertex.
+RC_GTEST_PROP(ValidSetProperty, CanonicalOperandsGiveIdenticalResults, ()) {
+  const OperandPair p = *gen::operand_pair();
+  const ClipOp op = *rc::gen::element(ClipOp::kUnion, ClipOp::kIntersection,
+                                      ClipOp::kDifference, ClipOp::kXor);
+  // Union with the empty set gives the canonical form of a set, marked as such.
+  const ValidSet a = clip(ClipOp::kUnion, ValidSet(p.a), ValidSet()).set;
+  const ValidSet b = clip(ClipOp::kUnion, ValidSet(p.b, Operand::kClip), ValidSet()).set;
+  const ClipResult plain = clip(op, a.polygons(), b.polygons(), ClipOptions{.checked = true});
+  RC_ASSERT(clip(op, a, b, ClipOptions{.checked = true}).set.polygons() == plain.polygons);
+  const Box64 box{{-50, -40}, {60, 45}};
+  RC_ASSERT(clip_to_box(a, box, ClipOptions{.checked = true}).set.polygons() ==
+            clip_to_box(a.polygons(), box, ClipOptions{.checked = true}).polygons);
+}
+
 TEST(ValidSet, ABoxOutsideTheRangeIsRefused) {
   const ValidSet s(PolygonSet{{{0, 0}, {10, 0}, {10, 10}, {0, 10}}});
   EXPECT_THROW(clip_to_box(s, Box64{{0, 0}, {kCoordBound + 1, 5}}), InvalidInput);

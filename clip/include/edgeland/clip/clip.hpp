@@ -100,6 +100,9 @@ class EDGELAND_EXPORT ValidSet {
   friend struct ValidSetFactory;
   PolygonSet set_;
   bool canonical_ = false;  // in canonical form (an operation's output)
+  // No ring has three consecutive collinear vertices (canonical sets, and validated sets found
+  // so): the pipeline then tests only the vertices an operation creates for collinearity.
+  bool collinear_free_ = false;
 };
 
 struct ValidClipResult {
