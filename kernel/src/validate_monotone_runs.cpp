@@ -22,6 +22,7 @@
 
 #include "edgeland/kernel/checked.hpp"
 #include "edgeland/kernel/point_in_polygon.hpp"
+#include "spare_vector.hpp"
 #include "validate_event_sort.hpp"
 #include "validate_exact.hpp"
 #include "validate_selection.hpp"
@@ -170,10 +171,12 @@ class RunSweep {
     // clipped landscape often share edges), and then the work here was for nothing.
     const std::size_t per_run = ring_count() >= 2 ? 2 * min_run : min_run;
     const std::size_t most_runs = per_run == 0 ? edges : edges / per_run;
-    std::vector<std::uint32_t> starts(most_runs + 1);
+    SpareVector<StartsSpare, std::uint32_t> starts;
+    starts.resize(most_runs + 1);
     RunStarts cut{starts.data(), starts.size()};
     rings_.resize(ring_count());
-    std::vector<std::size_t> first_run(ring_count() + 1);
+    SpareVector<FirstRunSpare, std::size_t> first_run;
+    first_run.resize(ring_count() + 1);
     const std::uint32_t cap = std::max(options_.run_cap, 1u);
     for (std::size_t r = 0; r < ring_count(); ++r) {
       first_run[r] = cut.count;
@@ -348,11 +351,17 @@ class RunSweep {
   std::size_t ring_count() const noexcept { return selected_count(polygons_, members_); }
   const Polygon& ring(std::size_t r) const noexcept { return selected_ring(polygons_, members_, r); }
 
+  // Tags naming the per-thread spare of each array (spare_vector.hpp).
+  struct StartsSpare;
+  struct FirstRunSpare;
+  struct RingsSpare;
+  struct RunsSpare;
+
   std::span<const Polygon> polygons_;
   std::span<const std::size_t> members_;
   RunSweepOptions options_;
-  std::vector<RingView> rings_;
-  std::vector<Run> runs_;
+  SpareVector<RingsSpare, RingView> rings_;
+  SpareVector<RunsSpare, Run> runs_;
   std::size_t work_ = 0;    // box and edge tests so far
   std::size_t budget_ = 0;  // undecided past this many
 };

@@ -5,6 +5,10 @@
 // sorted by 64-bit keys (validate_event_sort.hpp); the status is a sorted array of edge
 // numbers, cut into blocks when it grows wide (validate_status.hpp).
 //
+// Its signs are exact in int64 when the input's box is narrow (validate_exact.hpp), so the sweep
+// is compiled twice, for int64 and for Int128 signs, and the box picks one. Its arrays come
+// from per-thread spares (spare_vector.hpp): small inputs are validated on every clip.
+//
 // It only ever concludes "valid". At the first sign of trouble it gives up, and validate()
 // runs the reporting checks, which say exactly what is wrong; so reports never depend on it.
 //
@@ -29,11 +33,12 @@
 #include <vector>
 
 #include "edgeland/kernel/checked.hpp"
+#include "spare_vector.hpp"
 #include "validate_checks.hpp"
 #include "validate_event_sort.hpp"
 #include "validate_exact.hpp"
-#include "validate_selection.hpp"
 #include "validate_monotone_runs.hpp"
+#include "validate_selection.hpp"
 #include "validate_status.hpp"
 
 namespace edgeland::detail {
@@ -47,6 +52,8 @@ constexpr std::size_t kStatusLimit = std::size_t{1} << 18;
 struct Edge {
   Point64 left;   // lexicographically smaller end
   Point64 right;  // larger end
+  // right - left, formed once: every sign the sweep asks of an edge starts from it.
+  std::int64_t dx, dy;
   std::uint32_t ring;
   bool forward;  // the ring runs from left to right
 };
@@ -58,45 +65,55 @@ struct RingRange {
 
 using Event = KeyedVertex;
 
-bool is_vertical(const Edge& e) noexcept { return e.left.x == e.right.x; }
+bool is_vertical(const Edge& e) noexcept { return e.dx == 0; }
 
-// -1 when the status edge t passes strictly below q, 0 through q, +1 above (validate_sweep.hpp).
-int side_of_point(const Edge& t, Point64 q) noexcept {
-  if (is_vertical(t)) return 0;
-  return -orient_sign(t.left, t.right, q);
-}
+// The signs the sweep asks of edges, in int64 when the input's box is narrow (kNarrow,
+// validate_exact.hpp), else through Int128.
+template <bool kNarrow>
+struct EdgeSigns {
+  // Sign of orient(e.left, e.right, p): +1 when p is left of the edge.
+  static int orient(const Edge& e, Point64 p) noexcept {
+    return cross_sign_in<kNarrow>(e.dx, e.dy, coord_diff(p.x, e.left.x), coord_diff(p.y, e.left.y));
+  }
 
-// Order of the directions of two edges leaving one point rightward (upward if vertical).
-int compare_directions(const Edge& a, const Edge& b) noexcept {
-  const bool av = is_vertical(a), bv = is_vertical(b);
-  if (av || bv) return av == bv ? 0 : (av ? 1 : -1);
-  return -cross_sign(coord_diff(a.right.x, a.left.x), coord_diff(a.right.y, a.left.y),
-                     coord_diff(b.right.x, b.left.x), coord_diff(b.right.y, b.left.y));
-}
+  // -1 when the status edge t passes strictly below q, 0 through q, +1 above
+  // (validate_sweep.hpp).
+  static int side_of_point(const Edge& t, Point64 q) noexcept {
+    if (is_vertical(t)) return 0;
+    return -orient(t, q);
+  }
 
-// Whether two closed segments share a point (any contact) and whether they cross at a point
-// interior to both.
-struct Contact {
-  bool any;
-  bool crossing;
+  // Order of the directions of two edges leaving one point rightward (upward if vertical).
+  static int compare_directions(const Edge& a, const Edge& b) noexcept {
+    const bool av = is_vertical(a), bv = is_vertical(b);
+    if (av || bv) return av == bv ? 0 : (av ? 1 : -1);
+    return -cross_sign_in<kNarrow>(a.dx, a.dy, b.dx, b.dy);
+  }
+
+  // Whether two closed segments share a point (any contact) and whether they cross at a
+  // point interior to both.
+  struct Contact {
+    bool any;
+    bool crossing;
+  };
+
+  static Contact contact(const Edge& a, const Edge& b) noexcept {
+    // Disjoint boxes: no contact. Status neighbours overlap in x, so y decides most pairs.
+    if (std::max(a.left.y, a.right.y) < std::min(b.left.y, b.right.y) ||
+        std::max(b.left.y, b.right.y) < std::min(a.left.y, a.right.y) || a.right.x < b.left.x ||
+        b.right.x < a.left.x) {
+      return {false, false};
+    }
+    const int o1 = orient(a, b.left), o2 = orient(a, b.right);
+    if (o1 * o2 > 0) return {false, false};
+    const int o3 = orient(b, a.left), o4 = orient(b, a.right);
+    if (o3 * o4 > 0) return {false, false};
+    if (o1 == 0 && o2 == 0) {  // collinear: on one line, lexicographic order is order along it
+      return {std::max(a.left, b.left) <= std::min(a.right, b.right), false};
+    }
+    return {true, o1 != 0 && o2 != 0 && o3 != 0 && o4 != 0};
+  }
 };
-
-Contact contact(const Edge& a, const Edge& b) noexcept {
-  // Disjoint boxes: no contact. Status neighbours overlap in x, so y decides most pairs.
-  if (std::max(a.left.y, a.right.y) < std::min(b.left.y, b.right.y) ||
-      std::max(b.left.y, b.right.y) < std::min(a.left.y, a.right.y) || a.right.x < b.left.x ||
-      b.right.x < a.left.x) {
-    return {false, false};
-  }
-  const int o1 = orient_sign(a.left, a.right, b.left), o2 = orient_sign(a.left, a.right, b.right);
-  if (o1 * o2 > 0) return {false, false};
-  const int o3 = orient_sign(b.left, b.right, a.left), o4 = orient_sign(b.left, b.right, a.right);
-  if (o3 * o4 > 0) return {false, false};
-  if (o1 == 0 && o2 == 0) {  // collinear: on one line, lexicographic order is order along it
-    return {std::max(a.left, b.left) <= std::min(a.right, b.right), false};
-  }
-  return {true, o1 != 0 && o2 != 0 && o3 != 0 && o4 != 0};
-}
 
 class OneSweep {
  public:
@@ -107,16 +124,22 @@ class OneSweep {
   bool run() {
     if (!build()) return false;
     sort_by_key(events_, events_scratch_, key_bits_);
+    return narrow_ ? sweep<true>() : sweep<false>();
+  }
+
+ private:
+  // The events in order, grouped by point.
+  template <bool kNarrow>
+  bool sweep() {
     for (std::size_t g = 0; g < events_.size();) {
       std::size_t h = g + 1;
       while (h < events_.size() && events_[h].key == events_[g].key) ++h;
-      if (!(h == g + 1 ? vertex_event(g) : event(g, h))) return false;
+      if (!(h == g + 1 ? vertex_event<kNarrow>(g) : event<kNarrow>(g, h))) return false;
       g = h;
     }
     return status_.empty();
   }
 
- private:
   // Flattens the rings into edges and events once each passes its local rules (unless
   // already known to).
   bool build() {
@@ -138,13 +161,15 @@ class OneSweep {
       for (std::size_t i = 0; i < p.size(); ++i, ++id) {
         const Point64 a = p[i], b = p[i + 1 == p.size() ? 0 : i + 1];
         const bool forward = a < b;
-        edges_.push_back(
-            {forward ? a : b, forward ? b : a, static_cast<std::uint32_t>(r), forward});
+        const Point64 left = forward ? a : b, right = forward ? b : a;
+        edges_.push_back({left, right, coord_diff(right.x, left.x), coord_diff(right.y, left.y),
+                          static_cast<std::uint32_t>(r), forward});
         low = {std::min(low.x, a.x), std::min(low.y, a.y)};
         high = {std::max(high.x, a.x), std::max(high.y, a.y)};
       }
     }
     // Each vertex as one key in as few bits as the box needs.
+    narrow_ = narrow_box(low, high);
     const unsigned y_bits = sweep_key_bits(high.y - low.y);
     key_bits_ = y_bits + sweep_key_bits(high.x - low.x);
     for (std::uint32_t v = 0; v < total; ++v) {
@@ -169,24 +194,27 @@ class OneSweep {
   }
 
   // Index of the first status edge not below q.
+  template <bool kNarrow>
   std::size_t first_not_below(Point64 q) const noexcept {
     return status_.partition_point(
-        [&](std::uint32_t e) { return side_of_point(edges_[e], q) < 0; });
+        [&](std::uint32_t e) { return EdgeSigns<kNarrow>::side_of_point(edges_[e], q) < 0; });
   }
 
   // The common event: one vertex v alone at its point q, its two edges in and out. The same
   // steps as event() below, without lists; an edge passing through q sends it there.
+  template <bool kNarrow>
   bool vertex_event(std::size_t g) {
+    using Signs = EdgeSigns<kNarrow>;
     const std::uint32_t v = events_[g].vertex;
     const std::uint32_t in = previous_edge(v);
     const Edge& ein = edges_[in];
     const Edge& eout = edges_[v];
     const Point64 q = ein.forward ? ein.right : ein.left;
-    const std::size_t i = first_not_below(q);
+    const std::size_t i = first_not_below<kNarrow>(q);
     std::size_t j = i;
     while (j < status_.size() && edges_[status_[j]].right == q) ++j;
-    if (j < status_.size() && side_of_point(edges_[status_[j]], q) == 0) {
-      return event_at(q, &events_[g], 1);  // an edge passes through q
+    if (j < status_.size() && Signs::side_of_point(edges_[status_[j]], q) == 0) {
+      return event_at<kNarrow>(q, &events_[g], 1);  // an edge passes through q
     }
     const std::size_t ended = j - i;
     // `in` ends at q, and `out` starts there, when the ring runs rightward along them.
@@ -200,7 +228,7 @@ class OneSweep {
       k = 1;
     } else if (out_starts) {  // both edges start at q: insert them bottom-up
       if (ended != 0 || status_.size() >= kStatusLimit) return false;
-      const int c = compare_directions(ein, eout);
+      const int c = Signs::compare_directions(ein, eout);
       const bool in_first = c < 0 || (c == 0 && in < v);
       block[0] = in_first ? in : v;
       block[1] = in_first ? v : in;
@@ -210,46 +238,73 @@ class OneSweep {
       if (ended != 2) return false;
       status_.replace(i, 2, block, 0);
     }
-    return neighbourhood_fine(i, block, k);
+    return neighbourhood_fine<kNarrow>(i, block, k);
   }
 
   // The events g..h-1 share one point q.
+  template <bool kNarrow>
   bool event(std::size_t g, std::size_t h) {
-    return event_at(edge_start(events_[g].vertex), &events_[g], h - g);
+    return event_at<kNarrow>(edge_start(events_[g].vertex), &events_[g], h - g);
   }
 
-  // The vertices of `count` events at q, in general.
-  bool event_at(Point64 q, const Event* group, std::size_t count) {
-    ending_.clear();
-    starting_.clear();
-    through_.clear();
+  // Sorts the two edges of each of the `count` vertices of `group` into ending_ and
+  // starting_, by whether the ring runs into q along them. Both lists are written by index
+  // into room kept from earlier events, each edge to both with only the right count
+  // advanced: no push, no fill, no branch per edge.
+  void split_edges_at(const Event* group, std::size_t count) {
+    if (ending_.size() < 2 * count) {
+      ending_.resize(2 * count);
+      starting_.resize(2 * count);
+    }
+    std::uint32_t* const ends = ending_.data();
+    std::uint32_t* const starts = starting_.data();
+    std::size_t e = 0, s = 0;
     for (std::size_t k = 0; k < count; ++k) {
       const std::uint32_t v = group[k].vertex;
       const std::uint32_t in = previous_edge(v);
-      (edges_[in].forward ? ending_ : starting_).push_back(in);
-      (edges_[v].forward ? starting_ : ending_).push_back(v);
+      const bool in_ends = edges_[in].forward, out_starts = edges_[v].forward;
+      ends[e] = in;
+      starts[s] = in;
+      e += in_ends;
+      s += !in_ends;
+      ends[e] = v;
+      starts[s] = v;
+      e += !out_starts;
+      s += out_starts;
     }
+    ending_count_ = e;
+    starting_count_ = s;
+  }
+
+  // The vertices of `count` events at q, in general.
+  template <bool kNarrow>
+  bool event_at(Point64 q, const Event* group, std::size_t count) {
+    using Signs = EdgeSigns<kNarrow>;
+    split_edges_at(group, count);
+    through_.clear();
 
     // The status edges through q form one run [i, j), holding every edge ending at q.
-    const std::size_t i = first_not_below(q);
+    const std::size_t i = first_not_below<kNarrow>(q);
     std::size_t j = i, ended = 0;
     for (; j < status_.size(); ++j) {
       const std::uint32_t e = status_[j];
       if (edges_[e].right == q) {
         ++ended;
-      } else if (side_of_point(edges_[e], q) == 0) {
+      } else if (Signs::side_of_point(edges_[e], q) == 0) {
         through_.push_back(e);
       } else {
         break;
       }
     }
     // Not a consistent status: let the reporting sweep tell.
-    if (ended != ending_.size()) return false;
+    if (ended != ending_count_) return false;
 
     if (!through_.empty() || count > 1) {
       // Edges through q in different directions cross there.
       for (std::size_t k = 1; k < through_.size(); ++k) {
-        if (compare_directions(edges_[through_[k - 1]], edges_[through_[k]]) != 0) return false;
+        if (Signs::compare_directions(edges_[through_[k - 1]], edges_[through_[k]]) != 0) {
+          return false;
+        }
       }
       // Edges of one ring at q must be ring neighbours. The two edges of one vertex are, so
       // only a ring met twice at q (at two vertices, or at a vertex and a passing edge)
@@ -269,29 +324,31 @@ class OneSweep {
     // The new run replaces [i, j): edges through q and edges leaving q, bottom-up, i.e. by
     // direction (collinear ones by number, fixed for their life). Starting edges are sorted
     // into the through edges, already in order.
-    const std::size_t k = through_.size() + starting_.size();
-    for (const std::uint32_t s : starting_) {
-      std::size_t at = through_.size();
-      through_.push_back(s);
+    const std::size_t passing = through_.size(), k = passing + starting_count_;
+    for (std::size_t m = 0; m < starting_count_; ++m) through_.push_back(starting_[m]);
+    std::uint32_t* const run = through_.data();
+    for (std::size_t placed = passing; placed < k; ++placed) {
+      const std::uint32_t s = run[placed];
+      std::size_t at = placed;
       for (; at > 0; --at) {
-        const std::uint32_t before = through_[at - 1];
-        const int c = compare_directions(edges_[before], edges_[s]);
+        const std::uint32_t before = run[at - 1];
+        const int c = Signs::compare_directions(edges_[before], edges_[s]);
         if (c < 0 || (c == 0 && before < s)) break;
-        through_[at] = before;
+        run[at] = before;
       }
-      through_[at] = s;
+      run[at] = s;
     }
     if (k > j - i && status_.size() + (k - (j - i)) > kStatusLimit) return false;
     status_.replace(i, j - i, through_.data(), k);
-    return neighbourhood_fine(i, through_.data(), k);
+    return neighbourhood_fine<kNarrow>(i, through_.data(), k);
   }
 
   // Whether every two edges of one ring at q (ending_, through_, starting_) are neighbours.
   bool ring_neighbours_only() {
     at_.clear();
-    at_.insert(at_.end(), ending_.begin(), ending_.end());
+    at_.insert(at_.end(), ending_.begin(), ending_.begin() + ending_count_);
     at_.insert(at_.end(), through_.begin(), through_.end());
-    at_.insert(at_.end(), starting_.begin(), starting_.end());
+    at_.insert(at_.end(), starting_.begin(), starting_.begin() + starting_count_);
     for (std::size_t a = 0; a < at_.size(); ++a) {
       for (std::size_t b = a + 1; b < at_.size(); ++b) {
         if (edges_[at_[a]].ring == edges_[at_[b]].ring && !may_touch(at_[a], at_[b])) {
@@ -304,16 +361,17 @@ class OneSweep {
 
   // After an event, the k edges through or leaving q, `block`, sit at [i, i + k) of the
   // status: walk the winding numbers around q and test the pairs of new neighbours.
+  template <bool kNarrow>
   [[gnu::always_inline]] bool neighbourhood_fine(std::size_t i, const std::uint32_t* block,
                                                  std::size_t k) {
     const std::uint32_t kNo = UINT32_MAX;
     const std::uint32_t below = i > 0 ? status_[i - 1] : kNo;
     const std::uint32_t above = i + k < status_.size() ? status_[i + k] : kNo;
-    if (multi_ && !winding_stays_below_two(below, block, k)) return false;
+    if (multi_ && !winding_stays_below_two<kNarrow>(below, block, k)) return false;
     const std::uint32_t low = k > 0 ? block[0] : above;
     const std::uint32_t high = k > 0 ? block[k - 1] : below;
-    if (below != kNo && low != kNo && !neighbours_fine(below, low)) return false;
-    if (k > 0 && above != kNo && !neighbours_fine(high, above)) return false;
+    if (below != kNo && low != kNo && !neighbours_fine<kNarrow>(below, low)) return false;
+    if (k > 0 && above != kNo && !neighbours_fine<kNarrow>(high, above)) return false;
     return true;
   }
 
@@ -324,11 +382,13 @@ class OneSweep {
 
   // The winding walk of validate_overlap.cpp over the sectors right of q, counter-clockwise
   // from straight down, storing the count above each of the k edges of `block`.
+  template <bool kNarrow>
   bool winding_stays_below_two(std::uint32_t below, const std::uint32_t* block, std::size_t k) {
     int cover = below == UINT32_MAX ? 0 : cover_[below];
     for (std::size_t first = 0; first < k;) {
       std::size_t last = first + 1;
-      while (last < k && compare_directions(edges_[block[first]], edges_[block[last]]) == 0) {
+      while (last < k && EdgeSigns<kNarrow>::compare_directions(edges_[block[first]],
+                                                                edges_[block[last]]) == 0) {
         ++last;
       }
       int entering = 0;
@@ -349,29 +409,52 @@ class OneSweep {
 
   // New status neighbours: of one ring they must not meet unless ring neighbours; of two
   // rings they must not cross (touching is judged at events).
+  template <bool kNarrow>
   bool neighbours_fine(std::uint32_t a, std::uint32_t b) const noexcept {
+    using Signs = EdgeSigns<kNarrow>;
     if (edges_[a].ring == edges_[b].ring) {
-      return may_touch(a, b) || !contact(edges_[a], edges_[b]).any;
+      return may_touch(a, b) || !Signs::contact(edges_[a], edges_[b]).any;
     }
-    return !contact(edges_[a], edges_[b]).crossing;
+    return !Signs::contact(edges_[a], edges_[b]).crossing;
   }
 
   std::size_t ring_count() const noexcept { return selected_count(polygons_, members_); }
   const Polygon& ring(std::size_t r) const noexcept { return selected_ring(polygons_, members_, r); }
 
+  // Tags naming the per-thread spare of each array (spare_vector.hpp).
+  struct EdgesSpare;
+  struct RingsSpare;
+  struct EventsSpare;
+  struct EventsScratchSpare;
+  struct CoverSpare;
+  struct EndingSpare;
+  struct StartingSpare;
+  struct ThroughSpare;
+  struct AtSpare;
+  struct SeenSpare;
+
   std::span<const Polygon> polygons_;
   std::span<const std::size_t> members_;
   bool local_rules_known_;  // every ring passes local_rules_hold (the run sweep said so)
   bool multi_ = false;
-  std::vector<Edge> edges_;  // edge v runs from vertex v to the next vertex of its ring
-  std::vector<RingRange> rings_;
-  std::vector<Event> events_;
-  std::vector<Event> events_scratch_;
-  unsigned key_bits_ = 0;           // every event key is below 2^key_bits_
-  std::vector<std::int8_t> cover_;  // winding number just above each placed edge (sets only)
+  bool narrow_ = false;  // the input's box is narrow: signs in int64 (validate_exact.hpp)
+  // Edge v runs from vertex v to the next vertex of its ring.
+  SpareVector<EdgesSpare, Edge> edges_;
+  SpareVector<RingsSpare, RingRange> rings_;
+  SpareVector<EventsSpare, Event> events_;
+  SpareVector<EventsScratchSpare, Event> events_scratch_;
+  unsigned key_bits_ = 0;  // every event key is below 2^key_bits_
+  // Winding number just above each placed edge (sets only).
+  SpareVector<CoverSpare, std::int8_t> cover_;
   SweepStatus status_;
-  std::vector<std::uint32_t> ending_, starting_, through_, at_;
-  std::vector<std::uint32_t> seen_;  // per ring: the last stamp_ of an event that met it
+  // At an event: the edges ending at q, ending_[0, ending_count_), and those starting there.
+  SpareVector<EndingSpare, std::uint32_t> ending_;
+  SpareVector<StartingSpare, std::uint32_t> starting_;
+  std::size_t ending_count_ = 0, starting_count_ = 0;
+  SpareVector<ThroughSpare, std::uint32_t> through_;
+  SpareVector<AtSpare, std::uint32_t> at_;
+  // Per ring: the last stamp_ of an event that met it.
+  SpareVector<SeenSpare, std::uint32_t> seen_;
   std::uint32_t stamp_ = 0;
 };
 

@@ -12,6 +12,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "spare_vector.hpp"
+
 namespace edgeland::detail {
 
 class SweepStatus {
@@ -53,14 +55,7 @@ class SweepStatus {
   // Replaces the `count` entries from index i by values[0, k).
   void replace(std::size_t i, std::size_t count, const std::uint32_t* values, std::size_t k) {
     if (blocks_.empty()) {
-      const auto at = flat_.begin() + static_cast<std::ptrdiff_t>(i);
-      if (k > count) {
-        flat_.insert(at + static_cast<std::ptrdiff_t>(count), values + count, values + k);
-      } else if (k < count) {
-        flat_.erase(at + static_cast<std::ptrdiff_t>(k), at + static_cast<std::ptrdiff_t>(count));
-      }
-      std::copy(values, values + std::min(count, k),
-                flat_.begin() + static_cast<std::ptrdiff_t>(i));
+      replace_flat(i, count, values, k);
       if (flat_.size() > 2 * kBlock) to_blocks();
       return;
     }
@@ -91,6 +86,21 @@ class SweepStatus {
       }
     }
     return lo;
+  }
+
+  // replace() on the flat array. Element by element: an event moves a few entries, and a
+  // library call for each move (vector insert and erase) cost more than the moving.
+  void replace_flat(std::size_t i, std::size_t count, const std::uint32_t* values, std::size_t k) {
+    const std::size_t old_size = flat_.size();
+    if (k > count) flat_.resize(old_size + (k - count));
+    std::uint32_t* const v = flat_.data();
+    if (k > count) {  // the tail moves up, from its top
+      for (std::size_t m = old_size; m-- > i + count;) v[m + (k - count)] = v[m];
+    } else if (k < count) {  // the tail moves down, from its bottom
+      for (std::size_t m = i + count; m < old_size; ++m) v[m - (count - k)] = v[m];
+    }
+    for (std::size_t m = 0; m < k; ++m) v[i + m] = values[m];
+    if (k < count) flat_.resize(old_size - (count - k));
   }
 
   // The flat array has grown too long: cut it into blocks of kBlock entries.
@@ -158,7 +168,8 @@ class SweepStatus {
       starts_[b + 1] = starts_[b] + blocks_[b].size();
   }
 
-  std::vector<std::uint32_t> flat_;                 // the status while it is short
+  struct FlatSpare;  // tag of the flat array's per-thread spare (spare_vector.hpp)
+  SpareVector<FlatSpare, std::uint32_t> flat_;      // the status while it is short
   std::vector<std::vector<std::uint32_t>> blocks_;  // then: none empty unless alone
   std::vector<std::size_t> starts_;  // index of each block's first entry, then size()
 };
