@@ -5,7 +5,7 @@
 
 #include "canonical.hpp"
 #include "edgeland/kernel/area.hpp"
-#include "recycled_vector.hpp"
+#include "edgeland/kernel/recycled_vector.hpp"
 
 namespace edgeland::detail {
 

@@ -9,7 +9,7 @@
 #include "face_label.hpp"
 #include "labeling.hpp"
 #include "planar_graph.hpp"
-#include "recycled_vector.hpp"
+#include "edgeland/kernel/recycled_vector.hpp"
 
 namespace edgeland::detail {
 

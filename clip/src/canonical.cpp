@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "edgeland/kernel/predicates.hpp"
-#include "recycled_vector.hpp"
+#include "edgeland/kernel/recycled_vector.hpp"
 
 namespace edgeland::detail {
 

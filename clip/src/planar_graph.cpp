@@ -7,7 +7,7 @@
 
 #include "edgeland/kernel/angle.hpp"
 #include "radix_sort.hpp"
-#include "recycled_vector.hpp"
+#include "edgeland/kernel/recycled_vector.hpp"
 
 namespace edgeland::detail {
 namespace {

@@ -11,7 +11,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "recycled_vector.hpp"
+#include "edgeland/kernel/recycled_vector.hpp"
 
 namespace edgeland::detail {
 

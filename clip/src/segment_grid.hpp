@@ -25,7 +25,7 @@
 #include "edgeland/kernel/int128.hpp"
 #include "edgeland/kernel/polygon.hpp"
 #include "line_floor.hpp"
-#include "recycled_vector.hpp"
+#include "edgeland/kernel/recycled_vector.hpp"
 
 namespace edgeland::detail {
 

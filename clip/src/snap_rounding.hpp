@@ -7,7 +7,7 @@
 
 #include "edgeland/kernel/bbox.hpp"
 #include "edgeland/kernel/polygon.hpp"
-#include "recycled_vector.hpp"
+#include "edgeland/kernel/recycled_vector.hpp"
 
 namespace edgeland::detail {
 

@@ -4,7 +4,7 @@
 #include <bit>
 #include <cstddef>
 
-#include "spare_vector.hpp"
+#include "edgeland/kernel/recycled_vector.hpp"
 
 namespace edgeland::detail {
 namespace {
@@ -35,7 +35,7 @@ bool packs(std::size_t n, unsigned bits) noexcept { return bits + position_bits(
 // of an event, with no tie-break. The events are then gathered in that order.
 void sort_packed(std::vector<KeyedVertex>& events, std::vector<KeyedVertex>& scratch) {
   struct WordsSpare;
-  SpareVector<WordsSpare, std::uint64_t> words;
+  RecycledVector<WordsSpare, std::uint64_t> words;
   const unsigned shift = position_bits(events.size());
   const std::uint64_t position_mask = (std::uint64_t{1} << shift) - 1;
   words.resize(events.size());

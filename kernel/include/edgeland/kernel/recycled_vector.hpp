@@ -1,14 +1,16 @@
 #pragma once
-// A std::vector that takes its storage from a per-thread spare and gives it back when it dies,
-// for the pipeline's large temporaries.
+// Internal to edgeland (validate() and the clipper), not part of the API: a std::vector that
+// takes its storage from a per-thread spare and gives it back when it dies, for the large
+// temporaries of operations called again and again.
 //
 // Why: glibc gives freed memory at the top of the heap back to the system once more than
 // 128 KiB of it is free there (M_TRIM_THRESHOLD). An operation that allocates a few hundred KiB
 // of arrays and frees them at the end therefore page-faults all of it in again on the next
-// operation: on a 100-square checkerboard that was a fifth of the time, and on 1,000 squares
-// nearly half. Recycled storage keeps the capacity of the thread's largest operation (like the
-// edge list, clip.cpp), so repeated operations - a game carving its landscape - reuse the same
-// pages.
+// operation: on a 100-square checkerboard that was a fifth of the clipper's time, and on 1,000
+// squares nearly half; and on small inputs the allocations themselves are a visible share
+// (validate() builds a dozen arrays per call). Recycled storage keeps the capacity of the
+// thread's largest operation, so repeated operations - a game carving its landscape - reuse
+// the same pages.
 //
 // Each use names its own spare with a tag type. The spare only holds storage while no vector
 // of that tag is alive: a vector takes it whole (two live vectors of one tag - a stage run
