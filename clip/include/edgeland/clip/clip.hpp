@@ -15,8 +15,10 @@
 // that vertex; equal inputs give byte-identical outputs on every compiler and platform.
 // ERRORS. Invalid input throws InvalidInput (nothing is returned half-done). In checked mode
 // every output is re-validated; a violation throws InternalError carrying the inputs as WKT.
-// MEMORY. Each calling thread keeps the edge list of its largest operation so far (41 bytes per
-// input edge) and reuses it: allocating megabytes afresh per call costs more than the work.
+// MEMORY. Each calling thread keeps the working arrays of its largest operation so far (edge
+// list, search structures, plane graph, labels: a few hundred bytes per input edge) and reuses
+// them: allocating and freeing them per call made the allocator return them to the system and
+// fault them in again every time, which cost more than the work. They are freed at thread exit.
 // THREADS. Operations share no state between threads; concurrent calls are safe.
 #include <cstddef>
 #include <string>
