@@ -9,6 +9,7 @@
 #include "box_sweep.hpp"
 #include "canonical.hpp"
 #include "edgeland/kernel/area.hpp"
+#include "edgeland/kernel/recycled_vector.hpp"
 #include "edgeland/kernel/validate.hpp"
 #include "edgeland/kernel/wkt_writer.hpp"
 #include "hole_splitting.hpp"
@@ -31,16 +32,33 @@ const char* operand_name(Operand o) {
   return "?";
 }
 
+template <class T>
+std::size_t bytes(const std::vector<T>& v) {
+  return v.capacity() * sizeof(T);
+}
+std::size_t footprint(const detail::EdgeList& e) {
+  return bytes(e.segments) + bytes(e.channel) + bytes(e.polygon) + bytes(e.next);
+}
+std::size_t footprint(const detail::PlaneGraph& g) {
+  return bytes(g.vertices) + bytes(g.origin_of) + bytes(g.chain) + bytes(g.mult_begin) +
+         bytes(g.mults) + bytes(g.around_begin) + bytes(g.around) + bytes(g.position_of);
+}
+std::size_t footprint(const std::vector<SideState>& labels) { return bytes(labels); }
+
 // A per-thread object whose arrays keep their capacity from one operation to the next (the edge
-// list, the plane graph, the labels): at 10^5 vertices these are megabytes, and allocating them
-// afresh for every operation costs page faults each time (recycled_vector.hpp says why). Should
-// a use nest within another (nothing in the pipeline does), the inner one gets a fresh object.
+// list, the plane graph, the labels): allocating them afresh for every operation costs page
+// faults each time (edgeland/kernel/recycled_vector.hpp says why). An object grown past
+// kMaxKept is freed after use. Should a use nest within another (nothing in the pipeline does),
+// the inner one gets a fresh object.
 template <class T>
 class Reused {
  public:
+  static constexpr std::size_t kMaxKept = std::size_t{32} << 20;
   Reused() : own_(in_use() ? std::make_unique<T>() : nullptr) { in_use() = true; }
   ~Reused() {
-    if (!own_) in_use() = false;
+    if (own_) return;
+    in_use() = false;
+    if (footprint(shared()) > kMaxKept) shared() = T{};
   }
   Reused(const Reused&) = delete;
   Reused& operator=(const Reused&) = delete;

@@ -16,10 +16,17 @@
 // of that tag is alive: a vector takes it whole (two live vectors of one tag - a stage run
 // within another, or two grids at once - simply do not share), and on destruction hands back
 // its storage if that is larger. So nothing is ever aliased, whatever the nesting.
+#include <cstddef>
 #include <utility>
 #include <vector>
 
 namespace edgeland::detail {
+
+// What a thread keeps between operations is bounded: a spare (or one of the clipper's reused
+// objects) is kept only up to this size. An operation whose arrays are larger frees them as
+// before; at that size its own work outweighs the page faults. (A per-thread running total was
+// tried: its bookkeeping on every construction cost 3% of a small operation.)
+inline constexpr std::size_t kMaxKeptBytes = std::size_t{8} << 20;
 
 template <class Tag, class T>
 class RecycledVector : public std::vector<T> {
@@ -35,7 +42,8 @@ class RecycledVector : public std::vector<T> {
   using std::vector<T>::operator=;  // assigning a plain vector's contents
   ~RecycledVector() {
     std::vector<T>& s = spare();
-    if (this->capacity() > s.capacity()) s = std::move(static_cast<std::vector<T>&>(*this));
+    if (this->capacity() > s.capacity() && this->capacity() <= kMaxKeptBytes / sizeof(T))
+      s = std::move(static_cast<std::vector<T>&>(*this));
   }
 
  private:
