@@ -7,7 +7,10 @@
 #include <CGAL/Polygon_set_2.h>
 #include <CGAL/Polygon_with_holes_2.h>
 
+#include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <optional>
 #include <sstream>
 #include <type_traits>
 #include <utility>
@@ -77,16 +80,201 @@ void write_ring(std::ostringstream& os, const CPolygon& ring) {
 
 }  // namespace
 
+// ---------------------------------------------------------------------------------------------
+// Working around CGAL 5.5. Its Boolean operations on valid regions can fail their own
+// arrangement precondition "number_of_outer_ccbs() == 1" (cf. CGAL issue #644): seen on sets
+// carried through a few hundred operations of the closure chain (the same operation on rebuilt
+// sets then succeeded), and reported in longer chains from computations that retry did not cover.
+// Whether an operation fails depends on the exact shapes and on the arrangement it runs in, so
+// every construction and operation of the oracle computes the SAME region another way when CGAL
+// fails: each fallback below is an exact identity of regularised Boolean operations, evaluated
+// by CGAL in other, smaller arrangements; none approximates or skips anything, and a failure of
+// the last one propagates.
+// ---------------------------------------------------------------------------------------------
+namespace {
+
+using Parts = std::vector<CPolygonWithHoles>;
+
+// A set and its polygons with holes, read from it.
+struct Computed {
+  CSet set;
+  Parts parts;
+};
+
+Computed read(CSet s) {
+  Computed c{std::move(s), {}};
+  c.set.polygons_with_holes(std::back_inserter(c.parts));
+  return c;
+}
+
+// Reading the polygons with holes walks the arrangement's faces (where the precondition lives),
+// so it belongs to the attempt: a failed attempt gives nothing, never part of a region.
+template <class Compute>
+std::optional<Computed> attempt(Compute compute) {
+  try {
+    return read(compute());
+  } catch (const CGAL::Failure_exception&) {
+    return std::nullopt;
+  }
+}
+
+// Uses of each fallback (oracle_fallbacks()); atomic as a test may use the oracle on threads.
+std::atomic<std::size_t> rebuilt_uses{0}, split_uses{0}, part_by_part_uses{0}, halves_uses{0};
+
+// How deep split() may nest: at most 2^6 strips for one operation.
+constexpr int kMaxSplits = 6;
+
+void apply_in_place(CSet& r, ClipOp op, const CSet& other) {
+  switch (op) {
+    case ClipOp::kUnion: r.join(other); break;
+    case ClipOp::kIntersection: r.intersection(other); break;
+    case ClipOp::kDifference: r.difference(other); break;
+    case ClipOp::kXor: r.symmetric_difference(other); break;
+  }
+}
+
+// The same region in a set built afresh from its polygons with holes (a new arrangement).
+CSet rebuilt(const Parts& parts) {
+  CSet s;
+  if (!parts.empty()) s.join(parts.begin(), parts.end());
+  return s;
+}
+
+Computed apply_parts(ClipOp op, const Parts& a, const Parts& b, int splits_left);
+
+// A op B computed one part of A (and for xor, of B) at a time, each against the other whole
+// set, the results joined: intersection and difference distribute over the disjoint parts, and
+// xor = (A - B) + (B - A). A different arrangement for each piece. The last resort: a failure
+// here propagates.
+CSet part_by_part(ClipOp op, const Parts& a, const Parts& b) {
+  if (op == ClipOp::kUnion) {
+    Parts all(a);
+    all.insert(all.end(), b.begin(), b.end());
+    return rebuilt(all);
+  }
+  const CSet whole_b = rebuilt(b);
+  auto each = [](const Parts& parts, ClipOp part_op, const CSet& other, Parts& out) {
+    for (const CPolygonWithHoles& p : parts) {
+      CSet piece;
+      piece.insert(p);
+      apply_in_place(piece, part_op, other);
+      piece.polygons_with_holes(std::back_inserter(out));
+    }
+  };
+  Parts out;
+  if (op == ClipOp::kXor) {
+    each(a, ClipOp::kDifference, whole_b, out);
+    each(b, ClipOp::kDifference, rebuilt(a), out);
+  } else {
+    each(a, op, whole_b, out);
+  }
+  return rebuilt(out);
+}
+
+CGAL::Bbox_2 bbox(const Parts& a, const Parts& b) {
+  CGAL::Bbox_2 box;
+  for (const Parts* parts : {&a, &b})
+    for (const CPolygonWithHoles& p : *parts) box += p.outer_boundary().bbox();
+  return box;
+}
+
+CPolygonWithHoles rectangle(const K::FT& x0, const K::FT& y0, const K::FT& x1, const K::FT& y1) {
+  CPolygon r;
+  r.push_back(CPoint(x0, y0));
+  r.push_back(CPoint(x1, y0));
+  r.push_back(CPoint(x1, y1));
+  r.push_back(CPoint(x0, y1));
+  return CPolygonWithHoles(r);
+}
+
+// A op B as the union of (A * H) op (B * H) over the two closed half-boxes H either side of a
+// vertical line through the middle of the operands' box: regularised operations commute with
+// restriction to a closed cell, and the two results meet only along the line. Every piece is
+// computed in its own, smaller arrangement (through apply_parts, so a piece that fails again is
+// split again). The line x = m + 1/2 misses every integer vertex of the inputs.
+Computed split(ClipOp op, const Parts& a, const Parts& b, int splits_left) {
+  const CGAL::Bbox_2 box = bbox(a, b);  // CGAL's boxes of exact points are outward-rounded
+  const double x0 = std::floor(box.xmin()) - 1, x1 = std::ceil(box.xmax()) + 1;
+  const double y0 = std::floor(box.ymin()) - 1, y1 = std::ceil(box.ymax()) + 1;
+  const K::FT cut = K::FT(std::floor((x0 + x1) / 2)) + K::FT(1) / K::FT(2);
+  const Parts halves[] = {{rectangle(K::FT(x0), K::FT(y0), cut, K::FT(y1))},
+                          {rectangle(cut, K::FT(y0), K::FT(x1), K::FT(y1))}};
+  Parts pieces[2];
+  for (int i = 0; i < 2; ++i) {
+    const Computed ah = apply_parts(ClipOp::kIntersection, a, halves[i], splits_left - 1);
+    const Computed bh = apply_parts(ClipOp::kIntersection, b, halves[i], splits_left - 1);
+    pieces[i] = apply_parts(op, ah.parts, bh.parts, splits_left - 1).parts;
+  }
+  return apply_parts(ClipOp::kUnion, pieces[0], pieces[1], splits_left - 1);
+}
+
+// A op B once it failed in sets built from A's and B's polygons with holes: split along a
+// vertical line (while the nesting allows), else part by part.
+Computed fallbacks(ClipOp op, const Parts& a, const Parts& b, int splits_left) {
+  if (splits_left > 0) {
+    if (auto r = attempt([&] { return split(op, a, b, splits_left).set; })) {
+      ++split_uses;
+      return std::move(*r);
+    }
+  }
+  ++part_by_part_uses;
+  return read(part_by_part(op, a, b));
+}
+
+std::optional<Computed> in_rebuilt_sets(ClipOp op, const Parts& a, const Parts& b) {
+  return attempt([&] {
+    CSet s = rebuilt(a);
+    apply_in_place(s, op, rebuilt(b));
+    return s;
+  });
+}
+
+// A op B for regions given by their polygons with holes.
+Computed apply_parts(ClipOp op, const Parts& a, const Parts& b, int splits_left) {
+  if (auto r = in_rebuilt_sets(op, a, b)) return std::move(*r);
+  return fallbacks(op, a, b, splits_left);
+}
+
+// The union of simple counterclockwise polygons: joined at once, else (the union being
+// associative) the polygons sorted by their left ends, each half joined, then the two halves
+// united. Halving terminates: a single polygon is inserted as it is.
+Computed joined(std::vector<CPolygon> polygons) {
+  if (polygons.size() <= 1) {
+    CSet s;
+    if (!polygons.empty()) s.insert(polygons.front());
+    return read(std::move(s));
+  }
+  if (auto r = attempt([&] {
+        CSet s;
+        s.join(polygons.begin(), polygons.end());
+        return s;
+      }))
+    return std::move(*r);
+  ++halves_uses;
+  std::sort(polygons.begin(), polygons.end(), [](const CPolygon& p, const CPolygon& q) {
+    return p.bbox().xmin() < q.bbox().xmin();
+  });
+  const auto mid = polygons.begin() + static_cast<std::ptrdiff_t>(polygons.size() / 2);
+  const Computed left = joined(std::vector<CPolygon>(polygons.begin(), mid));
+  const Computed right = joined(std::vector<CPolygon>(mid, polygons.end()));
+  return apply_parts(ClipOp::kUnion, left.parts, right.parts, kMaxSplits);
+}
+
+}  // namespace
+
+OracleFallbacks oracle_fallbacks() {
+  return {rebuilt_uses.load(), split_uses.load(), part_by_part_uses.load(), halves_uses.load()};
+}
+
 struct ExactRegion::Impl {
   CSet set;
-  std::vector<CPolygonWithHoles> parts;
+  Parts parts;
   std::vector<CSegment> boundary;
   std::vector<CGAL::Bbox_2> boxes;  // conservative (outward-rounded) boxes of `boundary`
   std::size_t cycles = 0;
   Rational area = 0;
 
-  explicit Impl(CSet s) : set(std::move(s)) {
-    set.polygons_with_holes(std::back_inserter(parts));
+  explicit Impl(Computed c) : set(std::move(c.set)), parts(std::move(c.parts)) {
     auto add_ring = [&](const CPolygon& ring) {
       ++cycles;
       area += to_rational(CGAL::exact(ring.area()));  // holes are clockwise: negative area
@@ -102,15 +290,13 @@ struct ExactRegion::Impl {
   }
 };
 
-ExactRegion::ExactRegion() : impl_(std::make_shared<const Impl>(CSet())) {}
+ExactRegion::ExactRegion() : impl_(std::make_shared<const Impl>(Computed{})) {}
 ExactRegion::ExactRegion(std::shared_ptr<const Impl> impl) : impl_(std::move(impl)) {}
 
 ExactRegion ExactRegion::of(const PolygonSet& set) {
   std::vector<CPolygon> polygons;
   for (const Polygon& p : set) polygons.push_back(cpolygon(p));
-  CSet s;
-  if (!polygons.empty()) s.join(polygons.begin(), polygons.end());
-  return ExactRegion(std::make_shared<const Impl>(std::move(s)));
+  return ExactRegion(std::make_shared<const Impl>(joined(std::move(polygons))));
 }
 
 ExactRegion ExactRegion::of(const Polygon& polygon) { return of(PolygonSet{polygon}); }
@@ -130,79 +316,24 @@ ExactRegion ExactRegion::of_rational_polygons(const std::vector<std::vector<QPoi
     if (s == CGAL::NEGATIVE) c.reverse_orientation();
     pieces.push_back(std::move(c));
   }
-  CSet s;
-  if (!pieces.empty()) s.join(pieces.begin(), pieces.end());
-  return ExactRegion(std::make_shared<const Impl>(std::move(s)));
+  return ExactRegion(std::make_shared<const Impl>(joined(std::move(pieces))));
 }
 
-namespace {
-
-void apply_in_place(CSet& r, ClipOp op, const CSet& other) {
-  switch (op) {
-    case ClipOp::kUnion: r.join(other); break;
-    case ClipOp::kIntersection: r.intersection(other); break;
-    case ClipOp::kDifference: r.difference(other); break;
-    case ClipOp::kXor: r.symmetric_difference(other); break;
-  }
-}
-
-// The same region in a set built afresh from its polygons with holes (a new arrangement).
-CSet rebuilt(const std::vector<CPolygonWithHoles>& parts) {
-  CSet s;
-  if (!parts.empty()) s.join(parts.begin(), parts.end());
-  return s;
-}
-
-// A op B computed one part of A (and for xor, of B) at a time, each against the other whole
-// set, the results joined: intersection and difference distribute over the disjoint parts, and
-// xor = (A - B) + (B - A). A different arrangement for each piece.
-CSet part_by_part(ClipOp op, const std::vector<CPolygonWithHoles>& a,
-                  const std::vector<CPolygonWithHoles>& b) {
-  if (op == ClipOp::kUnion) {
-    std::vector<CPolygonWithHoles> all(a);
-    all.insert(all.end(), b.begin(), b.end());
-    return rebuilt(all);
-  }
-  const CSet whole_b = rebuilt(b);
-  auto each = [](const std::vector<CPolygonWithHoles>& parts, ClipOp part_op, const CSet& other,
-                 std::vector<CPolygonWithHoles>& out) {
-    for (const CPolygonWithHoles& p : parts) {
-      CSet piece;
-      piece.insert(p);
-      apply_in_place(piece, part_op, other);
-      piece.polygons_with_holes(std::back_inserter(out));
-    }
-  };
-  std::vector<CPolygonWithHoles> out;
-  if (op == ClipOp::kXor) {
-    each(a, ClipOp::kDifference, whole_b, out);
-    each(b, ClipOp::kDifference, rebuilt(a), out);
-  } else {
-    each(a, op, whole_b, out);
-  }
-  return rebuilt(out);
-}
-
-}  // namespace
-
+// On a failure of CGAL (see above): the operation on sets rebuilt from the polygons with holes
+// (a fresh arrangement; enough for most failures of sets carried through many operations), then
+// in two halves along a vertical line, recursively, then part by part.
 ExactRegion ExactRegion::apply(ClipOp op, const ExactRegion& other) const {
-  CSet r = impl_->set;
-  try {
-    apply_in_place(r, op, other.impl_->set);
-  } catch (const CGAL::Precondition_exception&) {
-    // CGAL 5.5's Boolean operations on a set carried through many operations can fail the
-    // arrangement precondition "number_of_outer_ccbs() == 1" (cf. CGAL issue #644) although
-    // the region is valid; seen after a few hundred steps of the closure chain, with this
-    // session's and earlier edgeland alike. The same operation on sets rebuilt from their
-    // polygons with holes succeeds; should it not, the exception propagates.
-    try {
-      r = rebuilt(impl_->parts);
-      apply_in_place(r, op, rebuilt(other.impl_->parts));
-    } catch (const CGAL::Precondition_exception&) {
-      r = part_by_part(op, impl_->parts, other.impl_->parts);
-    }
+  std::optional<Computed> r = attempt([&] {
+    CSet s = impl_->set;
+    apply_in_place(s, op, other.impl_->set);
+    return s;
+  });
+  if (!r) {
+    r = in_rebuilt_sets(op, impl_->parts, other.impl_->parts);
+    if (r) ++rebuilt_uses;
+    else r = fallbacks(op, impl_->parts, other.impl_->parts, kMaxSplits);
   }
-  return ExactRegion(std::make_shared<const Impl>(std::move(r)));
+  return ExactRegion(std::make_shared<const Impl>(std::move(*r)));
 }
 
 bool ExactRegion::empty() const { return impl_->parts.empty(); }

@@ -70,6 +70,16 @@ class ExactRegion {
   std::shared_ptr<const Impl> impl_;
 };
 
+// How often, since the program started, the oracle had to get past a failure of CGAL 5.5 (see
+// cgal_reference.cpp), by the way the answer was then computed - each as exact as the first.
+struct OracleFallbacks {
+  std::size_t rebuilt = 0;            // an operation redone on sets rebuilt from their polygons
+  std::size_t split = 0;              // ... as the union of its halves either side of a line
+  std::size_t part_by_part = 0;       // ... one polygon with holes of an operand at a time
+  std::size_t members_in_halves = 0;  // a set's members joined as two groups, then united
+};
+OracleFallbacks oracle_fallbacks();
+
 // Exact squared distance between two closed segments with integer endpoints (a segment with
 // a == b is a point), compared with a rational: whether it is > squared_radius.
 bool segments_farther_than(const Segment& s, const Segment& t, const Rational& squared_radius);
