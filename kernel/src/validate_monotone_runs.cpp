@@ -116,7 +116,7 @@ bool scan_ring(const Ring& ring, std::uint32_t cap, RunStarts& starts) {
   const std::size_t last_slot = starts.size - 1;
   std::size_t cuts = starts.count;
   // Edge i, from v[i] to `next`: whether the rules hold at v[i].
-  const auto edge = [&](std::size_t i, Point64 next) [[gnu::always_inline]] {
+  const auto edge = [&](std::size_t i, Point64 next) {
     const Point64 at = v[i];
     if (!in_range(next) || at == next) return false;
     const std::int64_t vx = coord_diff(next.x, at.x), vy = coord_diff(next.y, at.y);
