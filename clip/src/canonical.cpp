@@ -100,11 +100,6 @@ bool collinear_free(const PolygonSet& set) {
   return true;
 }
 
-void canonicalize(PolygonSet& set) {
-  for (Polygon& p : set) p = canonical_ring(std::move(p));
-  sort_canonical(set);
-}
-
 void sort_canonical(PolygonSet& set) {
   // Sorted by first (least) vertex, which polygons share only when they touch there: the
   // comparisons read one 64-bit key kept next to the index (the point, shifted into unsigned
@@ -116,7 +111,7 @@ void sort_canonical(PolygonSet& set) {
   };
   auto key_of = [](const Polygon& p) -> std::uint64_t {
     if (p.empty()) return 0;
-    if (!in_range(p.front())) throw std::logic_error("canonicalize: vertex out of range");
+    if (!in_range(p.front())) throw std::logic_error("canonical order: vertex out of range");
     return (static_cast<std::uint64_t>(p.front().x + kCoordBound + 1) << 32) |
            static_cast<std::uint64_t>(p.front().y + kCoordBound + 1);
   };

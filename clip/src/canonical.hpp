@@ -26,7 +26,5 @@ bool collinear_free(const PolygonSet& set);
 
 // Canonical order: rings sorted (each already canonical). O(p log p).
 void sort_canonical(PolygonSet& set);
-// canonical_ring on every ring, then sort_canonical. O(total n + p log p).
-void canonicalize(PolygonSet& set);
 
 }  // namespace edgeland::detail

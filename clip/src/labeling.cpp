@@ -218,12 +218,6 @@ SideState empty_state(LabelMode mode) {
   return s;
 }
 
-std::vector<SideState> label_sides(const PlaneGraph& g, LabelMode mode) {
-  std::vector<SideState> left;
-  label_sides(g, mode, left);
-  return left;
-}
-
 void label_sides(const PlaneGraph& g, LabelMode mode, std::vector<SideState>& left) {
   const std::size_t nv = g.vertices.size();
   left.assign(2 * g.edge_count(), empty_state(mode));

@@ -22,9 +22,8 @@ struct SideState {
 // The state outside everything.
 SideState empty_state(LabelMode mode);
 
-// left_state[h] for every half-edge h. O(m log m).
-std::vector<SideState> label_sides(const PlaneGraph& g, LabelMode mode);
-// The same into `left`, reusing its capacity.
+// left[h], the state on the left of half-edge h, for every h (reusing left's capacity).
+// O(m log m).
 void label_sides(const PlaneGraph& g, LabelMode mode, std::vector<SideState>& left);
 
 }  // namespace edgeland::detail

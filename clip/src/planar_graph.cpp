@@ -34,6 +34,22 @@ struct Piece {
   std::int8_t sign;  // +1 when the fragment runs lo -> hi
 };
 
+// Sorts [first, last) stably: by insertion when it is short, the common case here (a vertex
+// has a few half-edges, and is the lower end of a few pieces), by merge sort otherwise.
+template <class It, class Less>
+void sort_short_run(It first, It last, Less less) {
+  if (last - first > 16) {
+    std::stable_sort(first, last, less);
+    return;
+  }
+  for (It i = first; i != last; ++i) {
+    const auto x = *i;
+    It j = i;
+    for (; j != first && less(x, *(j - 1)); --j) *j = *(j - 1);
+    *j = x;
+  }
+}
+
 }  // namespace
 
 void PlaneGraph::append_points(std::uint32_t h, std::vector<Point64>& out) const {
@@ -266,16 +282,7 @@ void build_plane_graph(const std::vector<Segment>& segments,
     for (std::size_t i = 0; i < pieces.size();) {
       std::size_t j = i + 1;
       while (j < pieces.size() && pieces[j].lo == pieces[i].lo) ++j;
-      if (j - i > 16) {
-        std::stable_sort(pieces.begin() + i, pieces.begin() + j, hi_less);
-      } else {
-        for (std::size_t k = i + 1; k < j; ++k) {
-          const Piece x = pieces[k];
-          std::size_t m = k;
-          for (; m > i && hi_less(x, pieces[m - 1]); --m) pieces[m] = pieces[m - 1];
-          pieces[m] = x;
-        }
-      }
+      sort_short_run(pieces.begin() + i, pieces.begin() + j, hi_less);
       i = j;
     }
   }
@@ -348,7 +355,7 @@ void build_plane_graph(const std::vector<Segment>& segments,
 
   // Half-edges around each vertex, sorted by the angle of their first step. Each half-edge's
   // direction is read once (first_step walks chain indirections); most vertices have two to
-  // four half-edges, which an insertion sort orders with fewer comparisons than std::sort.
+  // four half-edges.
   const std::size_t nv = g.vertices.size(), nh = 2 * g.edge_count();
   g.around_begin.assign(nv + 1, 0);
   for (std::uint32_t e = 0; e < g.edge_count(); ++e) {
@@ -380,16 +387,7 @@ void build_plane_graph(const std::vector<Segment>& segments,
   g.position_of.resize(nh);
   for (std::size_t v = 0; v < nv; ++v) {
     const std::uint32_t b = g.around_begin[v], e = g.around_begin[v + 1];
-    if (e - b > 8) {
-      std::sort(out.begin() + b, out.begin() + e, before);
-    } else {
-      for (std::uint32_t i = b + 1; i < e; ++i) {
-        const Out x = out[i];
-        std::uint32_t j = i;
-        for (; j > b && before(x, out[j - 1]); --j) out[j] = out[j - 1];
-        out[j] = x;
-      }
-    }
+    sort_short_run(out.begin() + b, out.begin() + e, before);
     for (std::uint32_t k = b; k < e; ++k) {
       g.around[k] = out[k].h;
       g.position_of[out[k].h] = k;
