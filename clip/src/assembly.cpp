@@ -123,7 +123,7 @@ Assembled assemble(const PlaneGraph& g, const std::vector<SideState>& left,
       if (points[at] < points[least]) least = at;
     }
     int turn = 0;
-    Ring ring = canonical_ring_from(points, check, least, turn);
+    Ring ring = canonical_ring_from(points, check.data(), least, turn);
     if (turn == 0) {
       // Not expected of a face boundary (simple, so nonzero area means a convex smallest
       // vertex); decided by the area as before, should it happen.

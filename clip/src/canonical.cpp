@@ -11,47 +11,14 @@
 namespace edgeland::detail {
 
 Ring canonical_ring(Ring ring) {
-  // Drop vertices that lie on the straight line through their neighbours. In a simple ring
-  // with nonzero area a collinear vertex is a straight continuation, never a fold-back.
-  // In place: the kept prefix [0, w) never overtakes the point being read.
-  Ring& out = ring;
-  std::size_t w = 0;
-  for (std::size_t i = 0; i < out.size(); ++i) {
-    const Point64 p = out[i];
-    while (w >= 2 && orientation(out[w - 2], out[w - 1], p) == Orientation::kCollinear) --w;
-    out[w++] = p;
-  }
-  out.resize(w);
-  // The seam: the first and last vertices may be collinear with their wrap-around neighbours.
-  bool changed = true;
-  while (changed && out.size() > 3) {
-    changed = false;
-    const std::size_t n = out.size();
-    if (orientation(out[n - 2], out[n - 1], out[0]) == Orientation::kCollinear) {
-      out.pop_back();
-      changed = true;
-    } else if (orientation(out[n - 1], out[0], out[1]) == Orientation::kCollinear) {
-      out.erase(out.begin());
-      changed = true;
-    }
-  }
-  // Start at the least vertex. Small rings rotate in place; large ones take two block copies
-  // into a new ring (std::rotate swaps element by element, several times slower on rings of
-  // thousands of vertices, while an allocation per small ring costs more than its rotation).
-  const auto least = std::min_element(out.begin(), out.end());
-  if (least == out.begin()) return ring;
-  if (out.size() <= 256) {
-    std::rotate(out.begin(), least, out.end());
-    return ring;
-  }
-  Ring rotated;
-  rotated.reserve(out.size());
-  rotated.insert(rotated.end(), least, out.end());
-  rotated.insert(rotated.end(), out.begin(), least);
-  return rotated;
+  // The one-pass builder with every point tested: in a simple ring with nonzero area a
+  // collinear vertex is a straight continuation, never a fold-back.
+  const auto least = static_cast<std::size_t>(std::min_element(ring.begin(), ring.end()) - ring.begin());
+  int turn = 0;
+  return canonical_ring_from(ring, nullptr, least, turn);
 }
 
-Ring canonical_ring_from(const std::vector<Point64>& points, const std::vector<std::uint8_t>& check,
+Ring canonical_ring_from(const std::vector<Point64>& points, const std::uint8_t* check,
                          std::size_t least, int& turn) {
   const std::size_t n = points.size();
   Ring out;
@@ -69,7 +36,8 @@ Ring canonical_ring_from(const std::vector<Point64>& points, const std::vector<s
     const std::size_t i = least + k < n ? least + k : least + k - n;
     const Point64 p = points[i];
     bool dropped = false;
-    while (out.size() >= 2 && (suspect.back() || dropped || check[i]) &&
+    const bool tested = check == nullptr || check[i] != 0;
+    while (out.size() >= 2 && (tested || suspect.back() || dropped) &&
            orientation(out[out.size() - 2], out.back(), p) == Orientation::kCollinear) {
       out.pop_back();
       suspect.pop_back();
@@ -77,7 +45,7 @@ Ring canonical_ring_from(const std::vector<Point64>& points, const std::vector<s
     }
     if (dropped && !suspect.empty()) suspect.back() = 1;  // its right neighbour changed
     out.push_back(p);
-    suspect.push_back(static_cast<std::uint8_t>(check[i] || dropped));
+    suspect.push_back(static_cast<std::uint8_t>(tested || dropped));
   }
   // The seam: the smallest point (out[0]) is never collinear between its neighbours (both are
   // larger), but the last points may be collinear with it.

@@ -13,12 +13,13 @@ Ring canonical_ring(Ring ring);
 
 // The canonical ring of the simple closed polyline `points`, built in one pass: it starts at
 // points[least], its smallest point, and drops collinear points. Only points with check[i] != 0
-// are tested, and any point whose neighbour was dropped: the caller vouches that the others
-// are not collinear with their neighbours (points inside a stretch of a canonical input ring).
+// (every point when check is null) are tested, and any point whose neighbour was dropped: the
+// caller vouches that the others are not collinear with their neighbours (points inside a
+// stretch of a canonical input ring).
 // turn: the orientation at the smallest point, which is the ring's orientation (+1
 // counter-clockwise, -1 clockwise; the smallest vertex of a simple polygon is convex), or 0 when
 // the ring is degenerate (then the ring returned may be anything). O(n).
-Ring canonical_ring_from(const std::vector<Point64>& points, const std::vector<std::uint8_t>& check,
+Ring canonical_ring_from(const std::vector<Point64>& points, const std::uint8_t* check,
                          std::size_t least, int& turn);
 
 // Whether no ring of `set` has three consecutive collinear vertices (cyclically). O(n).
