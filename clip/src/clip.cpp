@@ -15,6 +15,7 @@
 #include "hole_splitting.hpp"
 #include "input_edges.hpp"
 #include "labeling.hpp"
+#include "operand_screen.hpp"
 #include "planar_graph.hpp"
 #include "snap_rounding.hpp"
 
@@ -81,6 +82,31 @@ detail::EdgeList& cleared(detail::EdgeList& edges) {
   return edges;
 }
 
+void require_valid(const PolygonSet& set, Operand which) {
+  const ValidationReport report = validate(set, 1);
+  if (!report.ok()) throw InvalidInput(which, report.violations.front());
+}
+
+// The validating clip() checks its operands while it clips them (clip/README.md, "Validating
+// while clipping"): the O(n) rules first (operand_screen.hpp), then noding reports any ring
+// meeting itself, and labeling any face covered twice by one operand. Labeling's check is
+// exact only when snap rounding moved nothing; when it moved something, an operand of several
+// rings is validated in full instead (one ring needs no coverage check). Should anything look
+// wrong, the pipeline stops (`suspect`) and the caller validates both operands in full, which
+// names the violation, or finds none and clips them as valid.
+struct Screening {
+  const PolygonSet* operand[2];
+  bool validated[2] = {false, false};
+  bool suspect = false;
+
+  void validate_in_full(int c) {
+    if (validated[c]) return;
+    require_valid(*operand[c], c == 0 ? Operand::kSubject : Operand::kClip);
+    validated[c] = true;
+  }
+  bool unchecked_multi_ring(int c) const { return !validated[c] && operand[c]->size() > 1; }
+};
+
 struct Pipeline {
   Reused<detail::EdgeList> reused_edges;
   detail::EdgeList& edges = cleared(*reused_edges);
@@ -89,6 +115,7 @@ struct Pipeline {
   // No operand ring has collinear consecutive vertices: only graph vertices can be collinear.
   bool collinear_free_operands = false;
   bool simple_rings = true;  // validated operands; normalize's rings may cross themselves
+  Screening* screening = nullptr;  // operands not validated yet (then simple_rings is false)
 };
 
 ClipResult run(const Pipeline& p, std::vector<Box64>* moved_boxes = nullptr) {
@@ -102,9 +129,24 @@ ClipResult run(const Pipeline& p, std::vector<Box64>* moved_boxes = nullptr) {
   Reused<std::vector<SideState>> labels;
   detail::PlaneGraph& g = *graph;
   std::vector<SideState>& left = *labels;
+  bool check_cover = false;
+  if (Screening* screen = p.screening) {
+    if (snap.ring_self_contact) {
+      screen->suspect = true;
+      return result;
+    }
+    if (snap.hot_pixels > 0) {  // moved: labeling's check would not be exact
+      for (int c = 0; c < 2; ++c)
+        if (screen->unchecked_multi_ring(c)) screen->validate_in_full(c);
+    }
+    check_cover = screen->unchecked_multi_ring(0) || screen->unchecked_multi_ring(1);
+  }
   detail::build_plane_graph(segs, fragments, p.edges.channel, p.edges.polygon, next,
                             snap.touched, g);
-  detail::label_sides(g, p.mode, left);
+  if (!detail::label_sides(g, p.mode, left, check_cover)) {
+    p.screening->suspect = true;
+    return result;
+  }
   detail::Assembled assembled = detail::assemble(g, left, p.label_of, p.collinear_free_operands);
   result.polygons = std::move(assembled.rings);  // canonical rings
   for (auto& region : assembled.holed) {
@@ -134,7 +176,7 @@ Box64 grown(Box64 b, std::int64_t by) {
 // subject_canonical: the subject is in canonical form (an earlier result), so left-out polygons
 // are copied as they are and merged into the sorted result.
 ClipResult clip_near(ClipOp op, const PolygonSet& subject, const PolygonSet& clip_set,
-                     bool subject_canonical, bool collinear_free) {
+                     bool subject_canonical, bool collinear_free, Screening* screening = nullptr) {
   std::vector<Box64> boxes(subject.size());
   for (std::size_t i = 0; i < subject.size(); ++i) boxes[i] = *bounding_box(subject[i]);
   std::vector<bool> included(subject.size(), false);
@@ -142,8 +184,13 @@ ClipResult clip_near(ClipOp op, const PolygonSet& subject, const PolygonSet& cli
     const Box64 reach = grown(*cb, 1);
     for (std::size_t i = 0; i < subject.size(); ++i) included[i] = boxes[i].overlaps(reach);
   }
+  // Left-out subject polygons never reach the pipeline, so its checks cannot vouch for them.
+  if (screening && std::find(included.begin(), included.end(), false) != included.end())
+    screening->validate_in_full(0);
   for (;;) {
     Pipeline p;
+    p.screening = screening;
+    p.simple_rings = screening == nullptr;
     std::vector<std::uint32_t> near;
     for (std::uint32_t i = 0; i < subject.size(); ++i)
       if (included[i]) near.push_back(i);
@@ -154,6 +201,7 @@ ClipResult clip_near(ClipOp op, const PolygonSet& subject, const PolygonSet& cli
     p.collinear_free_operands = collinear_free;
     std::vector<Box64> moved;
     ClipResult r = run(p, &moved);
+    if (screening && screening->suspect) return r;
 
     std::vector<Box64> left_out;
     std::vector<std::size_t> left_out_index;
@@ -179,21 +227,20 @@ ClipResult clip_near(ClipOp op, const PolygonSet& subject, const PolygonSet& cli
   }
 }
 
-void require_valid(const PolygonSet& set, Operand which) {
-  const ValidationReport report = validate(set, 1);
-  if (!report.ok()) throw InvalidInput(which, report.violations.front());
-}
-
 // Runs the pipeline; any failure of an internal invariant becomes an InternalError with the
-// inputs, and in checked mode so does an output that fails validation.
+// inputs, and in checked mode so does an output that fails validation. Operands not validated
+// yet are validated before an InternalError is thrown (`validate_inputs`): a pipeline fed an
+// invalid operand may fail anywhere, and that is the caller's InvalidInput, not a bug.
 template <class F>
 ClipResult guarded(F&& body, const ClipOptions& options, const std::string& what,
                    const std::function<std::string()>& subject_wkt,
-                   const std::function<std::string()>& clip_wkt) {
+                   const std::function<std::string()>& clip_wkt,
+                   const std::function<void()>& validate_inputs = {}) {
   ClipResult r;
   try {
     r = body();
   } catch (const std::logic_error& e) {
+    if (validate_inputs) validate_inputs();
     throw InternalError(what + ": " + e.what(), subject_wkt(), clip_wkt());
   }
   if (options.checked) {
@@ -281,8 +328,23 @@ InternalError::InternalError(const std::string& what, std::string subject, std::
 
 ClipResult clip(ClipOp op, const PolygonSet& subject, const PolygonSet& clip_set,
                 const ClipOptions& options) {
-  require_valid(subject, Operand::kSubject);
-  require_valid(clip_set, Operand::kClip);
+  auto validate_both = [&] {
+    require_valid(subject, Operand::kSubject);
+    require_valid(clip_set, Operand::kClip);
+  };
+  // Validated while clipped (Screening); anything the screen or the pipeline doubts is
+  // validated in full, so errors are exactly validate()'s, subject first.
+  if (!detail::rings_pass_screen(subject) || !detail::rings_pass_screen(clip_set)) {
+    validate_both();
+    return clip_of_valid(op, subject, clip_set, options);
+  }
+  Screening screen{{&subject, &clip_set}};
+  ClipResult r = guarded(
+      [&] { return clip_near(op, subject, clip_set, false, false, &screen); }, options,
+      op_name(op), [&] { return to_wkt(subject); }, [&] { return to_wkt(clip_set); },
+      validate_both);
+  if (!screen.suspect) return r;
+  validate_both();
   return clip_of_valid(op, subject, clip_set, options);
 }
 

@@ -46,6 +46,29 @@ SideState cross(const PlaneGraph& g, LabelMode mode, SideState s, std::uint32_t 
   return out;
 }
 
+// Whether crossing half-edge h from its right side (state `right`) to its left keeps each
+// channel covered at most once, by the polygon its state names (label_sides' check). Per
+// channel: at most one polygon enters and at most one leaves, each by exactly one edge; one
+// that leaves must be the current owner; one that enters alone needs no current owner.
+bool keeps_single_cover(const PlaneGraph& g, std::uint32_t h, const SideState& right) {
+  const std::uint32_t e = h >> 1;
+  const std::int32_t dir = (h & 1) ? -1 : 1;
+  std::int32_t entering[2] = {-1, -1}, leaving[2] = {-1, -1};
+  for (std::uint32_t k = g.mult_begin[e]; k < g.mult_begin[e + 1]; ++k) {
+    const Multiplicity& m = g.mults[k];
+    const std::int32_t net = dir * m.net;
+    if ((net != 1 && net != -1) || m.channel > 1) return false;
+    std::int32_t& slot = net > 0 ? entering[m.channel] : leaving[m.channel];
+    if (slot >= 0) return false;
+    slot = m.polygon;
+  }
+  for (int c = 0; c < 2; ++c) {
+    const std::int32_t owner = right.s[c];
+    if (leaving[c] >= 0 ? leaving[c] != owner : entering[c] >= 0 && owner >= 0) return false;
+  }
+  return true;
+}
+
 std::uint32_t around_count(const PlaneGraph& g, std::uint32_t v) {
   return g.around_begin[v + 1] - g.around_begin[v];
 }
@@ -218,7 +241,8 @@ SideState empty_state(LabelMode mode) {
   return s;
 }
 
-void label_sides(const PlaneGraph& g, LabelMode mode, std::vector<SideState>& left) {
+bool label_sides(const PlaneGraph& g, LabelMode mode, std::vector<SideState>& left,
+                 bool check_single_cover) {
   const std::size_t nv = g.vertices.size();
   left.assign(2 * g.edge_count(), empty_state(mode));
   RecycledVector<struct VisitedBuffer, std::uint8_t> visited;  // bytes: no bit masking
@@ -255,7 +279,9 @@ void label_sides(const PlaneGraph& g, LabelMode mode, std::vector<SideState>& le
       // (Positions wrap by a compare, not %: a division per step was a quarter of labeling.)
       for (std::uint32_t i = 1, prev = k; i < n; ++i) {
         const std::uint32_t cur = prev + 1 == b + n ? b : prev + 1;
-        left[g.around[cur]] = cross(g, mode, left[g.around[prev]], g.around[cur]);
+        const SideState right = left[g.around[prev]];
+        if (check_single_cover && !keeps_single_cover(g, g.around[cur], right)) return false;
+        left[g.around[cur]] = cross(g, mode, right, g.around[cur]);
         prev = cur;
       }
       // Carry each side along its edge: the left of h is the right of its twin.
@@ -272,6 +298,7 @@ void label_sides(const PlaneGraph& g, LabelMode mode, std::vector<SideState>& le
     }
     any_labeled = true;
   }
+  return true;
 }
 
 }  // namespace edgeland::detail

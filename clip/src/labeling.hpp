@@ -24,6 +24,19 @@ SideState empty_state(LabelMode mode);
 
 // left[h], the state on the left of half-edge h, for every h (reusing left's capacity).
 // O(m log m).
-void label_sides(const PlaneGraph& g, LabelMode mode, std::vector<SideState>& left);
+//
+// With check_single_cover (kOwner mode), it also checks that no face is covered twice by one
+// channel: every crossing it makes must take the channel from no polygon into one (an edge of
+// that polygon only), out of the current one, or from the current one straight into a
+// neighbour across an edge they share in opposite directions. It stops and returns false at
+// the first crossing that does not. Why that is a complete check: every side's state is the
+// outer face's (true: nothing covers it), a copy of another side of the same face, or one
+// crossing away from a state computed before; a crossing of that kind from a true state with
+// coverage 0 or 1 yields the true state again. So if some face were covered twice or more (or
+// negatively), the first such side labeled came from a checked crossing that failed. Only
+// meaningful on an exact arrangement (nothing moved by snap rounding): the caller's business.
+// Returns true otherwise.
+bool label_sides(const PlaneGraph& g, LabelMode mode, std::vector<SideState>& left,
+                 bool check_single_cover = false);
 
 }  // namespace edgeland::detail

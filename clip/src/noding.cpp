@@ -124,20 +124,29 @@ Contacts find_contacts(const std::vector<Segment>& segments, const std::vector<s
                        const SegmentIndex& index, bool simple_rings, std::vector<bool>& touched,
                        std::unique_ptr<SegmentGrid>* grid) {
   Contacts c;
+  // Ring of each segment (rings occupy consecutive ids): needed to skip the pairs of one ring
+  // on the grid walk when rings are simple, and to see a ring meet itself when they may not be.
+  const bool walk = segments.size() >= kGridWalkFrom && index.run_length_x16() < kGridWalkBelowRunLengthX16;
+  RecycledVector<struct RingOfBuffer, std::uint32_t> ring_of;
+  if (walk || !simple_rings) {
+    ring_of.resize(segments.size());
+    for (std::uint32_t s = 0, ring = 0; s < ring_of.size(); ++s) {
+      if (s > 0 && next[s - 1] != s) ring = s;
+      ring_of[s] = ring;
+    }
+  }
   auto visit = [&](std::uint32_t i, std::uint32_t j) {
     const Meeting m = classify_pair(segments[i], i, segments[j], j, c);
     if (m == Meeting::kNone) return;
-    if (m == Meeting::kSharedEndpoint && (next[i] == j || next[j] == i)) return;
+    const bool neighbours = next[i] == j || next[j] == i;
+    if (!simple_rings && ring_of[i] == ring_of[j] && (m == Meeting::kOther || !neighbours))
+      c.ring_self_contact = true;
+    if (m == Meeting::kSharedEndpoint && neighbours) return;
     touched[i] = touched[j] = true;
   };
   // Short runs (spiky or zigzag rings) leave the run index little to group, and long diagonal
   // segments make box overlap a weak filter: walk the segments through a grid instead.
-  if (segments.size() >= kGridWalkFrom && index.run_length_x16() < kGridWalkBelowRunLengthX16) {
-    std::vector<std::uint32_t> ring_of(simple_rings ? segments.size() : 0);
-    for (std::uint32_t s = 0, ring = 0; s < ring_of.size(); ++s) {
-      if (s > 0 && next[s - 1] != s) ring = s;  // rings occupy consecutive ids
-      ring_of[s] = ring;
-    }
+  if (walk) {
     auto walked = std::make_unique<SegmentGrid>(segments);
     walked->for_each_candidate_pair([&](std::uint32_t i, std::uint32_t j) {
       if (simple_rings && ring_of[i] == ring_of[j]) return;

@@ -19,6 +19,9 @@ struct Contacts {
   RecycledVector<struct ContactHotBuffer, Point64> hot;
   // Pairs of segments that meet other than at a shared endpoint.
   std::size_t intersections = 0;
+  // Only when rings are not known to be simple: two segments of one ring meet other than as
+  // ring neighbours at their one shared endpoint (the ring is not strictly simple).
+  bool ring_self_contact = false;
 };
 
 class SegmentIndex;
@@ -29,6 +32,7 @@ class SegmentGrid;
 // shared endpoint: an untouched segment shares no point with anything else.
 // simple_rings: every ring is strictly simple (validated operands), so two segments of one ring
 // meet only as neighbours at their shared endpoint and such pairs are not tested at all.
+// Otherwise they are, and c.ring_self_contact records whether any ring meets itself.
 // O(r log r + candidate pairs) for r runs of the index.
 // When it walks the segments through a SegmentGrid (short runs: spiky inputs) and `grid` is not
 // null, the grid is handed out there for snap rounding's point queries.

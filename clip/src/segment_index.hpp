@@ -68,8 +68,9 @@ class SegmentIndex {
     return r.x_decreasing ? r.last - k : r.first + k;
   }
   static std::uint32_t size(const Run& r) { return r.last - r.first + 1; }
+  // Pairs of segments of runs a and b whose boxes overlap.
   template <class F>
-  void pairs_between(const Run& r1, const Run& r2, F& visit) const;
+  void pairs_between(std::uint32_t a, std::uint32_t b, F& visit) const;
 
   const std::vector<Segment>* segments_;  // boxes are computed, not stored: less memory traffic
   RecycledVector<struct IndexRunsBuffer, Run> runs_;
@@ -84,14 +85,33 @@ class SegmentIndex {
 };
 
 template <class F>
-void SegmentIndex::pairs_between(const Run& r1, const Run& r2, F& visit) const {
+void SegmentIndex::pairs_between(std::uint32_t a, std::uint32_t b, F& visit) const {
   // Along a run in increasing-x order both ends of the segments' x-ranges are non-decreasing,
   // so the segments of r2 overlapping one of r1 in x form a window that only moves forward.
+  // Only segments within the common part of the two runs' boxes can meet: each run is entered
+  // by binary search at its first segment reaching that part, and left past it. (Runs of one
+  // ring that follow each other share only an end, and a long run often reaches the other
+  // run's box with a few segments only.)
+  const Run &r1 = runs_[a], &r2 = runs_[b];
+  const Box64 &b1 = run_boxes_[a], &b2 = run_boxes_[b];
+  const std::int64_t lo_x = std::max(b1.min.x, b2.min.x), hi_x = std::min(b1.max.x, b2.max.x);
+  const std::int64_t lo_y = std::max(b1.min.y, b2.min.y), hi_y = std::min(b1.max.y, b2.max.y);
+  auto first_reaching = [&](const Run& r) {
+    std::uint32_t lo = 0, hi = size(r);
+    while (lo < hi) {
+      const std::uint32_t mid = (lo + hi) / 2;
+      if (box(at(r, mid)).max.x < lo_x) lo = mid + 1;
+      else hi = mid;
+    }
+    return lo;
+  };
   const std::uint32_t n1 = size(r1), n2 = size(r2);
-  std::uint32_t from = 0;
-  for (std::uint32_t k1 = 0; k1 < n1; ++k1) {
+  std::uint32_t from = first_reaching(r2);
+  for (std::uint32_t k1 = first_reaching(r1); k1 < n1; ++k1) {
     const std::uint32_t s = at(r1, k1);
     const Box64 bs = box(s);
+    if (bs.min.x > hi_x) break;
+    if (bs.min.y > hi_y || bs.max.y < lo_y) continue;
     while (from < n2 && box(at(r2, from)).max.x < bs.min.x) ++from;
     for (std::uint32_t k2 = from; k2 < n2; ++k2) {
       const std::uint32_t t = at(r2, k2);
@@ -106,7 +126,7 @@ template <class F>
 void SegmentIndex::for_each_overlapping_pair(F&& visit, bool across_rings_only) const {
   auto between = [&](std::uint32_t a, std::uint32_t b) {
     if (across_rings_only && runs_[a].ring == runs_[b].ring) return;
-    pairs_between(runs_[a], runs_[b], visit);
+    pairs_between(a, b, visit);
   };
   // Many runs: a grid, whose cost follows the boxes' local density; the sweep compares each
   // run with every run spanning its x, which on grid-like inputs is a whole column of them.

@@ -468,6 +468,7 @@ Fragments snap_round(const std::vector<Segment>& segs,
   SegmentsNear near(segs);
   Contacts contacts = find_contacts(segs, next, index, simple_rings, stats.touched, &near.grid());
   stats.intersections = contacts.intersections;
+  stats.ring_self_contact = contacts.ring_self_contact;
   stats.moved_boxes.clear();
   // No crossing at a non-integer point: every contact is an exact split and nothing moves.
   if (contacts.hot.empty()) return route(segs, Closure{}, contacts.splits);

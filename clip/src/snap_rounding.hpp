@@ -27,6 +27,8 @@ struct SnapStats {
   // share no point with any other fragment except their ring neighbours' at their common
   // endpoints. The plane graph chains such segments (planar_graph.hpp).
   std::vector<bool> touched;
+  // Unless simple_rings: whether some ring meets itself (noding.hpp, Contacts).
+  bool ring_self_contact = false;
 };
 
 // The fragments of the segments that snap rounding cuts or moves, in input order (each such

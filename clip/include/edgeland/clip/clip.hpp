@@ -79,8 +79,11 @@ class EDGELAND_EXPORT InternalError : public Error {
   std::string clip_wkt;
 };
 
-// subject OP clip. Both must be valid polygon sets. O((n + k) log n) for n input vertices and
-// k intersections.
+// subject OP clip. Both must be valid polygon sets: an invalid one throws InvalidInput with
+// validate()'s first violation, the subject's before the clip's. O((n + k) log n) for n input
+// vertices and k intersections. The operands are validated by the operation itself, mostly
+// for free (clip/README.md, "Validating while clipping"); the result is exactly the ValidSet
+// overload's.
 EDGELAND_EXPORT ClipResult clip(ClipOp op, const PolygonSet& subject, const PolygonSet& clip,
                                 const ClipOptions& options = {});
 
