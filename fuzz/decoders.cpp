@@ -509,6 +509,43 @@ std::optional<Finding> clip_pair_checks(const Pair& p) {
   return check_pair_points(p, results);
 }
 
+// The validating clip() (PolygonSet operands, which may be invalid here): InvalidInput exactly
+// when validate() rejects an operand, naming the subject first and carrying validate()'s own
+// first violation; otherwise exactly the ValidSet overload's result (clip/README.md,
+// "Validating while clipping").
+std::optional<Finding> validating_clip_agrees(ClipOp op, const PolygonSet& a, const PolygonSet& b,
+                                              const std::string& log_text) {
+  const ValidationReport va = validate(a, 1), vb = validate(b, 1);
+  const std::string line = op_line(op, a, b);
+  try {
+    const ClipResult r = clip(op, a, b, ClipOptions{.checked = true});
+    if (!va.ok() || !vb.ok()) {
+      return Finding{"clip() accepted an invalid operand (" +
+                         (va.ok() ? vb : va).violations.front().describe() + "): " + line,
+                     log_text};
+    }
+    const ValidClipResult v =
+        clip(op, ValidSet(a), ValidSet(b, Operand::kClip), ClipOptions{.checked = true});
+    if (v.set.polygons() != r.polygons)
+      return Finding{"clip() on PolygonSets and on ValidSets differ: " + line, log_text};
+  } catch (const InvalidInput& e) {
+    if (va.ok() && vb.ok())
+      return Finding{std::string("InvalidInput on valid operands: ") + e.what() + "\n  " + line, log_text};
+    const Operand which = va.ok() ? Operand::kClip : Operand::kSubject;
+    const Violation& expected = (va.ok() ? vb : va).violations.front();
+    if (e.operand != which || e.violation.describe() != expected.describe()) {
+      return Finding{std::string("clip() reports ") + e.what() + " where validate() finds " +
+                         (va.ok() ? "clip: " : "subject: ") + expected.describe() + "\n  " + line,
+                     log_text};
+    }
+  } catch (const InternalError& e) {
+    return Finding{std::string("InternalError: ") + e.what() + "\n  " + line, log_text};
+  } catch (const std::exception& e) {
+    return Finding{std::string("unexpected exception: ") + e.what() + "\n  " + line, log_text};
+  }
+  return std::nullopt;
+}
+
 // ---- clip_sequence ----------------------------------------------------------------------
 
 struct SequenceRun {
@@ -537,6 +574,29 @@ SequenceRun run_sequence(const std::uint8_t* data, std::size_t size) {
     }
     const PolygonSet before = state.current();
     const std::string context = op_line(op, before, operand);
+    // Now and then the validating clip() on operands that may be invalid: the raw operand, or
+    // the state and the operand merged into one set (members overlapping, nested, sharing
+    // edges in one direction, or a valid set after all). Chosen from what is already decoded,
+    // consuming no input: saved inputs keep decoding to the cases they were saved for.
+    switch ((s + before.size() + 3 * operand.size()) % 4) {
+      case 0: {
+        PolygonSet merged = before;
+        merged.insert(merged.end(), operand.begin(), operand.end());
+        const bool merged_first = (s / 4) % 2 == 0;
+        if (auto f = validating_clip_agrees(op, merged_first ? merged : operand,
+                                            merged_first ? operand : merged, recorder.text()))
+          return {f, recorder.text()};
+        break;
+      }
+      case 1:
+        if (raw) {
+          if (auto f = validating_clip_agrees(op, operand, before, recorder.text()))
+            return {f, recorder.text()};
+        }
+        break;
+      default:
+        break;
+    }
     try {
       state.apply(op, operand, checked);
     } catch (const InvalidInput& e) {
