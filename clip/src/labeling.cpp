@@ -37,6 +37,13 @@ SideState cross(const PlaneGraph& g, LabelMode mode, SideState s, std::uint32_t 
   std::int32_t s0 = s.s[0], s1 = s.s[1];
   if (mode == LabelMode::kWinding) {
     for (std::uint32_t k = first; k < last; ++k) s0 += dir * g.mults[k].net;
+  } else if (last - first == 1) {
+    // One polygon's edge, the common case: owner_after for its channel, the other unchanged.
+    const Multiplicity& m = g.mults[first];
+    const std::int32_t net = dir * m.net;
+    auto after = [&](std::int32_t owner) { return net > 0 ? m.polygon : owner == m.polygon ? -1 : owner; };
+    if (m.channel == 0) s0 = after(s0);
+    else s1 = after(s1);
   } else {
     s0 = owner_after(g, dir, 0, s0, first, last);
     s1 = owner_after(g, dir, 1, s1, first, last);

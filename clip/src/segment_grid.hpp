@@ -90,6 +90,11 @@ void SegmentGrid::for_each_cell(const Segment& s, F&& f) const {
     rows_between(c0, seg_lo, seg_hi);
     return;
   }
+  if (a.y == b.y) {  // horizontal (tiles, boxes): one row, no line to follow
+    const std::int64_t r = row(a.y);
+    for (std::int64_t c = c0; c <= c1; ++c) f(static_cast<std::size_t>(c * rows_ + r));
+    return;
+  }
   // Column c spans the line's y from where the segment enters it (a.y in the first) to the
   // floor at its right boundary (b.y in the last): adjacent columns share the boundary's y.
   LineYFloors at_boundary(a, b.x - a.x, b.y - a.y, min_x_ + (c0 + 1) * side_, side_);
