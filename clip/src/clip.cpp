@@ -123,7 +123,8 @@ ClipResult run(const Pipeline& p, std::vector<Box64>* moved_boxes = nullptr) {
   const std::vector<Segment>& segs = p.edges.segments;
   const std::vector<std::uint32_t>& next = p.edges.next;
   detail::SnapStats snap;
-  const auto fragments = detail::snap_round(segs, next, p.simple_rings, snap);
+  const auto fragments = detail::snap_round(segs, next, p.simple_rings, snap,
+                                            p.screening ? &p.edges.channel : nullptr);
   // The graph and the labels reuse per-thread storage (recycled_vector.hpp says why).
   Reused<detail::PlaneGraph> graph;
   Reused<std::vector<SideState>> labels;
@@ -131,7 +132,7 @@ ClipResult run(const Pipeline& p, std::vector<Box64>* moved_boxes = nullptr) {
   std::vector<SideState>& left = *labels;
   bool check_cover = false;
   if (Screening* screen = p.screening) {
-    if (snap.ring_self_contact) {
+    if (snap.operand_invalid) {
       screen->suspect = true;
       return result;
     }

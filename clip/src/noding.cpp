@@ -120,15 +120,44 @@ Box64 segment_box(const Segment& s) {
   return b;
 }
 
+namespace {
+
+// Thrown by the pair visit to stop noding at the first contact proving an operand invalid.
+struct StopNoding {};
+
+// Whether two segments of different rings of one operand meet in a way no valid set allows:
+// crossing properly (each ring's inside lies on one side of its edge, so near the crossing the
+// insides overlap), or overlapping along a stretch in the same direction (both insides on the
+// same side of it). Exact; only asked of pairs that meet other than at shared endpoints.
+bool overlap_proof(const Segment& s, const Segment& t) {
+  const Orientation o1 = orientation(s.a, s.b, t.a), o2 = orientation(s.a, s.b, t.b);
+  if (o1 == Orientation::kCollinear && o2 == Orientation::kCollinear) {
+    const bool along_x = s.a.x != s.b.x;
+    auto at = [along_x](Point64 p) { return along_x ? p.x : p.y; };
+    const std::int64_t lo = std::max(std::min(at(s.a), at(s.b)), std::min(at(t.a), at(t.b)));
+    const std::int64_t hi = std::min(std::max(at(s.a), at(s.b)), std::max(at(t.a), at(t.b)));
+    const bool same_way = (at(s.b) > at(s.a)) == (at(t.b) > at(t.a));
+    return lo < hi && same_way;
+  }
+  if (static_cast<int>(o1) * static_cast<int>(o2) >= 0) return false;
+  const Orientation o3 = orientation(t.a, t.b, s.a), o4 = orientation(t.a, t.b, s.b);
+  return static_cast<int>(o3) * static_cast<int>(o4) < 0;
+}
+
+}  // namespace
+
 Contacts find_contacts(const std::vector<Segment>& segments, const std::vector<std::uint32_t>& next,
                        const SegmentIndex& index, bool simple_rings, std::vector<bool>& touched,
-                       std::unique_ptr<SegmentGrid>* grid) {
+                       std::unique_ptr<SegmentGrid>* grid,
+                       const std::vector<std::uint8_t>* screen_channel) {
   Contacts c;
   // Ring of each segment (rings occupy consecutive ids): needed to skip the pairs of one ring
-  // on the grid walk when rings are simple, and to see a ring meet itself when they may not be.
+  // on the grid walk when rings are simple, and to see a ring meet itself when screening.
   const bool walk = segments.size() >= kGridWalkFrom && index.run_length_x16() < kGridWalkBelowRunLengthX16;
+  const bool screening = screen_channel != nullptr;
+  if (screening) simple_rings = false;
   RecycledVector<struct RingOfBuffer, std::uint32_t> ring_of;
-  if (walk || !simple_rings) {
+  if (walk || screening) {
     ring_of.resize(segments.size());
     for (std::uint32_t s = 0, ring = 0; s < ring_of.size(); ++s) {
       if (s > 0 && next[s - 1] != s) ring = s;
@@ -139,22 +168,31 @@ Contacts find_contacts(const std::vector<Segment>& segments, const std::vector<s
     const Meeting m = classify_pair(segments[i], i, segments[j], j, c);
     if (m == Meeting::kNone) return;
     const bool neighbours = next[i] == j || next[j] == i;
-    if (!simple_rings && ring_of[i] == ring_of[j] && (m == Meeting::kOther || !neighbours))
-      c.ring_self_contact = true;
+    if (screening) {
+      const bool proof = ring_of[i] == ring_of[j]
+                             ? m == Meeting::kOther || !neighbours
+                             : m == Meeting::kOther && (*screen_channel)[i] == (*screen_channel)[j] &&
+                                   overlap_proof(segments[i], segments[j]);
+      if (proof) throw StopNoding{};
+    }
     if (m == Meeting::kSharedEndpoint && neighbours) return;
     touched[i] = touched[j] = true;
   };
-  // Short runs (spiky or zigzag rings) leave the run index little to group, and long diagonal
-  // segments make box overlap a weak filter: walk the segments through a grid instead.
-  if (walk) {
-    auto walked = std::make_unique<SegmentGrid>(segments);
-    walked->for_each_candidate_pair([&](std::uint32_t i, std::uint32_t j) {
-      if (simple_rings && ring_of[i] == ring_of[j]) return;
-      if (boxes_overlap(segments[i], segments[j])) visit(i, j);
-    });
-    if (grid) *grid = std::move(walked);
-  } else {
-    index.for_each_overlapping_pair(visit, simple_rings);
+  try {
+    // Short runs (spiky or zigzag rings) leave the run index little to group, and long
+    // diagonal segments make box overlap a weak filter: walk the segments through a grid.
+    if (walk) {
+      auto walked = std::make_unique<SegmentGrid>(segments);
+      walked->for_each_candidate_pair([&](std::uint32_t i, std::uint32_t j) {
+        if (simple_rings && ring_of[i] == ring_of[j]) return;
+        if (boxes_overlap(segments[i], segments[j])) visit(i, j);
+      });
+      if (grid) *grid = std::move(walked);
+    } else {
+      index.for_each_overlapping_pair(visit, simple_rings);
+    }
+  } catch (const StopNoding&) {
+    c.operand_invalid = true;
   }
   return c;
 }

@@ -19,9 +19,9 @@ struct Contacts {
   RecycledVector<struct ContactHotBuffer, Point64> hot;
   // Pairs of segments that meet other than at a shared endpoint.
   std::size_t intersections = 0;
-  // Only when rings are not known to be simple: two segments of one ring meet other than as
-  // ring neighbours at their one shared endpoint (the ring is not strictly simple).
-  bool ring_self_contact = false;
+  // Only when screening (below): noding stopped at a contact that proves an operand invalid;
+  // the rest of the contacts are then incomplete.
+  bool operand_invalid = false;
 };
 
 class SegmentIndex;
@@ -32,13 +32,20 @@ class SegmentGrid;
 // shared endpoint: an untouched segment shares no point with anything else.
 // simple_rings: every ring is strictly simple (validated operands), so two segments of one ring
 // meet only as neighbours at their shared endpoint and such pairs are not tested at all.
-// Otherwise they are, and c.ring_self_contact records whether any ring meets itself.
+// screen_channel (the operand of each segment), when the operands are not validated yet (the
+// validating clip(), clip/README.md): every pair is tested, and noding stops, setting
+// c.operand_invalid, at the first contact proving an operand invalid: two segments of one
+// ring meeting other than as neighbours at their shared endpoint (not strictly simple), or two
+// of different rings of one operand crossing properly or overlapping in the same direction
+// (their insides overlap). Stopping there keeps an invalid operand with n^2 such contacts from
+// costing n^2 before it is rejected.
 // O(r log r + candidate pairs) for r runs of the index.
 // When it walks the segments through a SegmentGrid (short runs: spiky inputs) and `grid` is not
 // null, the grid is handed out there for snap rounding's point queries.
 Contacts find_contacts(const std::vector<Segment>& segments, const std::vector<std::uint32_t>& next,
                        const SegmentIndex& index, bool simple_rings, std::vector<bool>& touched,
-                       std::unique_ptr<SegmentGrid>* grid = nullptr);
+                       std::unique_ptr<SegmentGrid>* grid = nullptr,
+                       const std::vector<std::uint8_t>* screen_channel = nullptr);
 
 enum class Meeting : std::uint8_t {
   kNone,            // disjoint

@@ -462,13 +462,16 @@ Fragments split_fragments(const AllFragments& all, std::size_t segment_count,
 
 Fragments snap_round(const std::vector<Segment>& segs,
                                  const std::vector<std::uint32_t>& next, bool simple_rings,
-                                 SnapStats& stats) {
+                                 SnapStats& stats,
+                                 const std::vector<std::uint8_t>* screen_channel) {
   const SegmentIndex index(segs, next);
   stats.touched.assign(segs.size(), false);
   SegmentsNear near(segs);
-  Contacts contacts = find_contacts(segs, next, index, simple_rings, stats.touched, &near.grid());
+  Contacts contacts =
+      find_contacts(segs, next, index, simple_rings, stats.touched, &near.grid(), screen_channel);
   stats.intersections = contacts.intersections;
-  stats.ring_self_contact = contacts.ring_self_contact;
+  stats.operand_invalid = contacts.operand_invalid;
+  if (contacts.operand_invalid) return {};
   stats.moved_boxes.clear();
   // No crossing at a non-integer point: every contact is an exact split and nothing moves.
   if (contacts.hot.empty()) return route(segs, Closure{}, contacts.splits);

@@ -27,8 +27,9 @@ struct SnapStats {
   // share no point with any other fragment except their ring neighbours' at their common
   // endpoints. The plane graph chains such segments (planar_graph.hpp).
   std::vector<bool> touched;
-  // Unless simple_rings: whether some ring meets itself (noding.hpp, Contacts).
-  bool ring_self_contact = false;
+  // Only with screen_channel: noding found a contact proving an operand invalid and stopped
+  // (noding.hpp); snap_round then returns no fragments.
+  bool operand_invalid = false;
 };
 
 // The fragments of the segments that snap rounding cuts or moves, in input order (each such
@@ -41,8 +42,10 @@ struct SnapStats {
 struct FragmentsBuffer;
 using Fragments = RecycledVector<FragmentsBuffer, Fragment>;
 
+// screen_channel: see find_contacts (noding.hpp).
 Fragments snap_round(const std::vector<Segment>& segments,
                                  const std::vector<std::uint32_t>& next, bool simple_rings,
-                                 SnapStats& stats);
+                                 SnapStats& stats,
+                                 const std::vector<std::uint8_t>* screen_channel = nullptr);
 
 }  // namespace edgeland::detail
