@@ -121,6 +121,9 @@ std::optional<Computed> attempt(Compute compute) {
 // Uses of each fallback (oracle_fallbacks()); atomic as a test may use the oracle on threads.
 std::atomic<std::size_t> rebuilt_uses{0}, split_uses{0}, part_by_part_uses{0}, halves_uses{0};
 
+// ForcedOracleFallback's setting on this thread: 0, or how many ways apply() skips.
+thread_local int forced_skip = 0;
+
 // How deep split() may nest: at most 2^6 strips for one operation.
 constexpr int kMaxSplits = 6;
 
@@ -244,12 +247,14 @@ Computed joined(std::vector<CPolygon> polygons) {
     if (!polygons.empty()) s.insert(polygons.front());
     return read(std::move(s));
   }
-  if (auto r = attempt([&] {
-        CSet s;
-        s.join(polygons.begin(), polygons.end());
-        return s;
-      }))
-    return std::move(*r);
+  if (forced_skip == 0) {
+    if (auto r = attempt([&] {
+          CSet s;
+          s.join(polygons.begin(), polygons.end());
+          return s;
+        }))
+      return std::move(*r);
+  }
   ++halves_uses;
   std::sort(polygons.begin(), polygons.end(), [](const CPolygon& p, const CPolygon& q) {
     return p.bbox().xmin() < q.bbox().xmin();
@@ -265,6 +270,11 @@ Computed joined(std::vector<CPolygon> polygons) {
 OracleFallbacks oracle_fallbacks() {
   return {rebuilt_uses.load(), split_uses.load(), part_by_part_uses.load(), halves_uses.load()};
 }
+
+ForcedOracleFallback::ForcedOracleFallback(Skip skip) : previous_(forced_skip) {
+  forced_skip = static_cast<int>(skip);
+}
+ForcedOracleFallback::~ForcedOracleFallback() { forced_skip = previous_; }
 
 struct ExactRegion::Impl {
   CSet set;
@@ -323,15 +333,25 @@ ExactRegion ExactRegion::of_rational_polygons(const std::vector<std::vector<QPoi
 // (a fresh arrangement; enough for most failures of sets carried through many operations), then
 // in two halves along a vertical line, recursively, then part by part.
 ExactRegion ExactRegion::apply(ClipOp op, const ExactRegion& other) const {
-  std::optional<Computed> r = attempt([&] {
-    CSet s = impl_->set;
-    apply_in_place(s, op, other.impl_->set);
-    return s;
-  });
-  if (!r) {
+  std::optional<Computed> r;
+  if (forced_skip < 1) {
+    r = attempt([&] {
+      CSet s = impl_->set;
+      apply_in_place(s, op, other.impl_->set);
+      return s;
+    });
+  }
+  if (!r && forced_skip < 2) {
     r = in_rebuilt_sets(op, impl_->parts, other.impl_->parts);
     if (r) ++rebuilt_uses;
-    else r = fallbacks(op, impl_->parts, other.impl_->parts, kMaxSplits);
+  }
+  if (!r) {
+    if (forced_skip >= 3) {
+      ++part_by_part_uses;
+      r = read(part_by_part(op, impl_->parts, other.impl_->parts));
+    } else {
+      r = fallbacks(op, impl_->parts, other.impl_->parts, kMaxSplits);
+    }
   }
   return ExactRegion(std::make_shared<const Impl>(std::move(*r)));
 }

@@ -80,6 +80,23 @@ struct OracleFallbacks {
 };
 OracleFallbacks oracle_fallbacks();
 
+// Test hook: while an object lives, the oracle on this thread behaves as if CGAL had failed in
+// its first attempts, so that a fallback computes the answer (which must be the same region):
+// apply() skips the operation on the sets as they are (kDirect), also the one on rebuilt sets
+// (kDirectAndRebuilt), or goes straight to part by part (kPartByPart); and of() always joins
+// the members in two halves.
+class ForcedOracleFallback {
+ public:
+  enum class Skip { kDirect = 1, kDirectAndRebuilt = 2, kPartByPart = 3 };
+  explicit ForcedOracleFallback(Skip skip);
+  ~ForcedOracleFallback();
+  ForcedOracleFallback(const ForcedOracleFallback&) = delete;
+  ForcedOracleFallback& operator=(const ForcedOracleFallback&) = delete;
+
+ private:
+  int previous_;
+};
+
 // Exact squared distance between two closed segments with integer endpoints (a segment with
 // a == b is a point), compared with a rational: whether it is > squared_radius.
 bool segments_farther_than(const Segment& s, const Segment& t, const Rational& squared_radius);
