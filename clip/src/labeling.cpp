@@ -60,8 +60,16 @@ SideState cross(const PlaneGraph& g, LabelMode mode, SideState s, std::uint32_t 
 bool keeps_single_cover(const PlaneGraph& g, std::uint32_t h, const SideState& right) {
   const std::uint32_t e = h >> 1;
   const std::int32_t dir = (h & 1) ? -1 : 1;
+  const std::uint32_t first = g.mult_begin[e], last = g.mult_begin[e + 1];
+  if (last - first == 1) {  // one polygon's edge, the common case: the rule below, unrolled
+    const Multiplicity& m = g.mults[first];
+    const std::int32_t net = dir * m.net;
+    if (m.channel > 1) return false;
+    const std::int32_t owner = right.s[m.channel];
+    return net == 1 ? owner < 0 : net == -1 && owner == m.polygon;
+  }
   std::int32_t entering[2] = {-1, -1}, leaving[2] = {-1, -1};
-  for (std::uint32_t k = g.mult_begin[e]; k < g.mult_begin[e + 1]; ++k) {
+  for (std::uint32_t k = first; k < last; ++k) {
     const Multiplicity& m = g.mults[k];
     const std::int32_t net = dir * m.net;
     if ((net != 1 && net != -1) || m.channel > 1) return false;
