@@ -16,27 +16,15 @@
 #include "edgeland/kernel/predicates.hpp"
 #include "edgeland/kernel/validate.hpp"
 #include "edgeland/kernel/wkt_writer.hpp"
+#include "support/rc_grid_draws.hpp"
 #include "validate_generators.hpp"
 
 namespace edgeland {
 namespace {
 
-constexpr std::int64_t B = kCoordBound;
-
-// Uniform over [lo, hi) whatever RapidCheck's current size; shrinks toward lo.
-struct RcDraw {
-  std::int64_t operator()(std::int64_t lo, std::int64_t hi) const {
-    return *rc::gen::resize(rc::kNominalSize, rc::gen::inRange<std::int64_t>(lo, hi));
-  }
-};
-
-Point64 grid_point(std::int64_t size) { return {RcDraw{}(0, size + 1), RcDraw{}(0, size + 1)}; }
-
-Polygon grid_triangle(std::int64_t size) {
-  Polygon t{grid_point(size), grid_point(size), grid_point(size)};
-  if (orientation(t[0], t[1], t[2]) == Orientation::kClockwise) std::swap(t[1], t[2]);
-  return t;
-}
+using testing::grid_point;
+using testing::grid_triangle;
+using testing::RcDraw;
 
 // An operand that is often invalid in one of the ways only the pipeline's checks see: rings
 // touching or crossing themselves, members overlapping, nested, sharing edges in one

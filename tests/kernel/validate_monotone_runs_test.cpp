@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "edgeland/kernel/validate.hpp"
+#include "support/rc_grid_draws.hpp"
 #include "support/validate_bruteforce.hpp"
 #include "edgeland/kernel/wkt_writer.hpp"
 #include "support/validate_generators.hpp"
@@ -100,21 +101,9 @@ void check_promises(const PolygonSet& set) {
   }
 }
 
-// Uniform over [lo, hi) whatever RapidCheck's current size; shrinks toward lo.
-struct RcDraw {
-  std::int64_t operator()(std::int64_t lo, std::int64_t hi) const {
-    return *rc::gen::resize(rc::kNominalSize, rc::gen::inRange<std::int64_t>(lo, hi));
-  }
-};
-
-Point64 grid_point(std::int64_t size) { return {RcDraw{}(0, size + 1), RcDraw{}(0, size + 1)}; }
-
-// A triangle on a small grid, turned counter-clockwise if it has area.
-Polygon grid_triangle(std::int64_t size) {
-  Polygon t{grid_point(size), grid_point(size), grid_point(size)};
-  if (orient(t[0], t[1], t[2]) < 0) std::swap(t[1], t[2]);
-  return t;
-}
+using testing::grid_point;
+using testing::grid_triangle;
+using testing::RcDraw;
 
 RC_GTEST_PROP(ValidateRunSweep, KeepsItsPromisesOnRandomRingsOfATinyGrid, ()) {
   const std::int64_t size = *rc::gen::element<std::int64_t>(2, 3, 4, 6, 10);

@@ -16,23 +16,19 @@
 
 #include "edgeland/kernel/validate.hpp"
 #include "support/validate_bruteforce.hpp"
+#include "support/rc_grid_draws.hpp"
 #include "support/validate_generators.hpp"
 
 namespace edgeland {
 namespace {
 
+using testing::grid_point;
+using testing::grid_triangle;
+using testing::RcDraw;
 using testing::validate_bruteforce;
 
 constexpr std::int64_t B = kCoordBound;
 constexpr std::size_t kAll = 1'000'000;
-
-// Uniform over [lo, hi) whatever RapidCheck's current size (inRange alone shrinks the range
-// with the size, which would make the first cases all zeros); shrinks toward lo.
-struct RcDraw {
-  std::int64_t operator()(std::int64_t lo, std::int64_t hi) const {
-    return *rc::gen::resize(rc::kNominalSize, rc::gen::inRange<std::int64_t>(lo, hi));
-  }
-};
 
 // Empty when the sweep and the brute force agree on `set` (see the file comment), else why not.
 std::string disagreement(const PolygonSet& set) {
@@ -87,21 +83,10 @@ void check_agrees_in_every_direction(const PolygonSet& set) {
   check_agrees(turned(set, true));
 }
 
-Point64 grid_point(std::int64_t size) { return {RcDraw{}(0, size + 1), RcDraw{}(0, size + 1)}; }
-
 // Coordinates that stress the bound: both ends of the range and the middle.
 std::int64_t extreme_coordinate() {
   static constexpr std::int64_t kValues[] = {-B, -B + 1, -1, 0, 1, B - 1, B};
   return kValues[RcDraw{}(0, 7)];
-}
-
-// A triangle on a small grid turned counter-clockwise if it has area, left flat otherwise.
-Polygon grid_triangle(std::int64_t size) {
-  Polygon t{grid_point(size), grid_point(size), grid_point(size)};
-  const __int128 area =
-      __int128(t[1].x - t[0].x) * (t[2].y - t[0].y) - __int128(t[1].y - t[0].y) * (t[2].x - t[0].x);
-  if (area < 0) std::swap(t[1], t[2]);
-  return t;
 }
 
 // Breaks (or, sometimes, harmlessly rearranges) a set: duplicate, flip, move a vertex onto
