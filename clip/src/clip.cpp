@@ -88,8 +88,9 @@ void require_valid(const PolygonSet& set, Operand which) {
 }
 
 // The validating clip() checks its operands while it clips them (clip/README.md, "Validating
-// while clipping"): the O(n) rules first (operand_screen.hpp), then noding reports any ring
-// meeting itself, and labeling any face covered twice by one operand. Labeling's check is
+// while clipping"): the O(n) rules first (operand_screen.hpp), then noding stops at any ring
+// meeting itself or members of one operand crossing or overlapping alike (noding.hpp), and
+// labeling at any face covered twice by one operand. Labeling's check is
 // exact only when snap rounding moved nothing; when it moved something, an operand of several
 // rings is validated in full instead (one ring needs no coverage check). Should anything look
 // wrong, the pipeline stops (`suspect`) and the caller validates both operands in full, which
@@ -115,7 +116,7 @@ struct Pipeline {
   // No operand ring has collinear consecutive vertices: only graph vertices can be collinear.
   bool collinear_free_operands = false;
   bool simple_rings = true;  // validated operands; normalize's rings may cross themselves
-  Screening* screening = nullptr;  // operands not validated yet (then simple_rings is false)
+  Screening* screening = nullptr;  // operands not validated yet (noding then tests all pairs)
 };
 
 ClipResult run(const Pipeline& p, std::vector<Box64>* moved_boxes = nullptr) {
@@ -191,7 +192,6 @@ ClipResult clip_near(ClipOp op, const PolygonSet& subject, const PolygonSet& cli
   for (;;) {
     Pipeline p;
     p.screening = screening;
-    p.simple_rings = screening == nullptr;
     std::vector<std::uint32_t> near;
     for (std::uint32_t i = 0; i < subject.size(); ++i)
       if (included[i]) near.push_back(i);
