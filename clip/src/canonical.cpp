@@ -7,6 +7,7 @@
 
 #include "edgeland/kernel/predicates.hpp"
 #include "edgeland/kernel/recycled_vector.hpp"
+#include "point_key.hpp"
 
 namespace edgeland::detail {
 
@@ -80,8 +81,7 @@ void sort_canonical(PolygonSet& set) {
   auto key_of = [](const Polygon& p) -> std::uint64_t {
     if (p.empty()) return 0;
     if (!in_range(p.front())) throw std::logic_error("canonical order: vertex out of range");
-    return (static_cast<std::uint64_t>(p.front().x + kCoordBound + 1) << 32) |
-           static_cast<std::uint64_t>(p.front().y + kCoordBound + 1);
+    return point_key(p.front());
   };
   std::vector<Key> keys(set.size());
   for (std::uint32_t i = 0; i < keys.size(); ++i) keys[i] = {key_of(set[i]), i};

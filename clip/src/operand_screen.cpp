@@ -3,19 +3,9 @@
 #include <cstdint>
 
 #include "edgeland/kernel/predicates.hpp"
+#include "point_key.hpp"
 
 namespace edgeland::detail {
-
-namespace {
-
-// The ring's points as 64-bit keys ordered like the points (point_set.hpp and the plane graph
-// use the same map): in range, c + 2^31 fits 32 bits.
-std::uint64_t key_of(Point64 p) {
-  return (static_cast<std::uint64_t>(p.x + kCoordBound + 1) << 32) |
-         static_cast<std::uint64_t>(p.y + kCoordBound + 1);
-}
-
-}  // namespace
 
 bool rings_pass_screen(const PolygonSet& set) {
   for (const Ring& ring : set) {
@@ -30,10 +20,10 @@ bool rings_pass_screen(const PolygonSet& set) {
       if (i + 1 < n) bad |= p == ring[i + 1];
     }
     if (bad) return false;
-    std::uint64_t least_key = key_of(ring[0]);
+    std::uint64_t least_key = point_key(ring[0]);
     std::size_t least = 0;
     for (std::size_t i = 1; i < n; ++i) {
-      const std::uint64_t k = key_of(ring[i]);
+      const std::uint64_t k = point_key(ring[i]);
       if (k < least_key) {
         least_key = k;
         least = i;

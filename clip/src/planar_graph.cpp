@@ -6,6 +6,7 @@
 #include <tuple>
 
 #include "edgeland/kernel/angle.hpp"
+#include "point_key.hpp"
 #include "radix_sort.hpp"
 #include "edgeland/kernel/recycled_vector.hpp"
 
@@ -18,8 +19,7 @@ namespace {
 // keys is several times faster than comparing points.
 std::uint64_t key_of(Point64 p) {
   if (!in_range(p)) throw std::logic_error("plane graph: vertex out of range");
-  return (static_cast<std::uint64_t>(p.x + kCoordBound + 1) << 32) |
-         static_cast<std::uint64_t>(p.y + kCoordBound + 1);
+  return point_key(p);
 }
 
 Point64 point_of(std::uint64_t key) {
