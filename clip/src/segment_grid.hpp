@@ -24,7 +24,6 @@
 #include "edgeland/kernel/bbox.hpp"
 #include "edgeland/kernel/int128.hpp"
 #include "edgeland/kernel/polygon.hpp"
-#include "line_floor.hpp"
 #include "edgeland/kernel/recycled_vector.hpp"
 
 namespace edgeland::detail {
@@ -95,18 +94,34 @@ void SegmentGrid::for_each_cell(const Segment& s, F&& f) const {
     for (std::int64_t c = c0; c <= c1; ++c) f(static_cast<std::size_t>(c * rows_ + r));
     return;
   }
-  // Column c spans the line's y from where the segment enters it (a.y in the first) to the
-  // floor at its right boundary (b.y in the last): adjacent columns share the boundary's y.
-  LineYFloors at_boundary(a, b.x - a.x, b.y - a.y, min_x_ + (c0 + 1) * side_, side_);
-  std::int64_t y_in = a.y;
+  // Column c spans the line's rows from where the segment enters it (a's row in the first) to
+  // the row of its y at the column's right boundary X (b's row in the last); adjacent columns
+  // share the boundary's row. That row is tracked by stepping, not dividing: the line reaches
+  // row boundary Y at X exactly when dy * (X - a.x) >= (Y - a.y) * dx (dx > 0), one comparison
+  // of products per column and per row crossed. (Two 64-bit divisions per segment were most of
+  // the grid's construction on spiky inputs.) Every X lies in (a.x, b.x] and every Y tested
+  // between a.y and b.y, so the products stay below 2^65 in magnitude: 128-bit, one widening
+  // multiply each.
+  const std::int64_t dx = b.x - a.x, dy = b.y - a.y;
+  auto reaches = [&](std::int64_t x, std::int64_t y) {  // the line's y at x is >= y
+    return Int128(dy) * (x - a.x) >= Int128(y - a.y) * dx;
+  };
+  const std::int64_t r_last = row(b.y);
+  std::int64_t r_in = row(a.y), r = r_in;
   for (std::int64_t c = c0; c <= c1; ++c) {
-    std::int64_t y_out = b.y;
     if (c < c1) {
-      y_out = at_boundary.value();
-      at_boundary.next();
+      const std::int64_t x = min_x_ + (c + 1) * side_;
+      if (dy > 0) {
+        while (r < r_last && reaches(x, min_y_ + (r + 1) * side_)) ++r;
+      } else {
+        while (r > r_last && !reaches(x, min_y_ + r * side_)) --r;
+      }
+    } else {
+      r = r_last;
     }
-    rows_between(c, std::max(seg_lo, std::min(y_in, y_out)), std::min(seg_hi, std::max(y_in, y_out)));
-    y_in = y_out;
+    for (std::int64_t k = std::min(r_in, r); k <= std::max(r_in, r); ++k)
+      f(static_cast<std::size_t>(c * rows_ + k));
+    r_in = r;
   }
 }
 
