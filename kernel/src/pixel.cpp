@@ -31,7 +31,18 @@ bool segment_meets_pixel(const Segment& s, Point64 c) noexcept {
   {
     const Int128 ex = s.b.x - s.a.x, ey = s.b.y - s.a.y;
     const Int128 det = ex * (c.y - s.a.y) - ey * (c.x - s.a.x);
-    if (2 * (det < 0 ? -det : det) > (ex < 0 ? -ex : ex) + (ey < 0 ? -ey : ey)) return false;
+    const Int128 reach = (ex < 0 ? -ex : ex) + (ey < 0 ? -ey : ey);
+    if (2 * (det < 0 ? -det : det) > reach) return false;
+    // The same three axes with strict inequalities: the segment meets the open square, hence
+    // the half-open pixel. (Were it apart from the open square, some line would separate them,
+    // and the separating directions form an angular interval whose ends are edge normals of
+    // the square or of the segment, which are these axes; at such an end the projections meet
+    // at most at an end of the square's open interval.) The common case of a segment running
+    // through the pixel is answered here, without the exact clipping.
+    if (2 * std::min(s.a.x, s.b.x) < 2 * c.x + 1 && 2 * std::max(s.a.x, s.b.x) > 2 * c.x - 1 &&
+        2 * std::min(s.a.y, s.b.y) < 2 * c.y + 1 && 2 * std::max(s.a.y, s.b.y) > 2 * c.y - 1 &&
+        2 * (det < 0 ? -det : det) < reach)
+      return true;
   }
   // Doubled coordinates relative to the pixel centre: the pixel is [-1, 1) x [-1, 1).
   const Int128 px = 2 * Int128(s.a.x - c.x), py = 2 * Int128(s.a.y - c.y);
