@@ -28,7 +28,10 @@ step intersection terrain.wkt
 echo "final result:"
 cat "$state"
 echo
-echo "a self-intersecting ring (bow-tie) imported with each fill rule:"
+echo "a self-intersecting ring (bow-tie) read as an OGC polygon (every lobe it winds around):"
+printf '  %-9s %s\n' "ogc" "$("$edgeland" clip --op union --check \
+  "$here/clip/bowtie_rings.wkt" "$here/clip/bowtie_rings.wkt")"
+echo "and imported with each fill rule:"
 for rule in evenodd nonzero positive negative; do
   printf '  %-9s %s\n' "$rule" "$("$edgeland" clip --op union --fill-rule "$rule" --check \
     "$here/clip/bowtie_rings.wkt" "$here/clip/bowtie_rings.wkt")"

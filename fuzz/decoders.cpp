@@ -644,6 +644,42 @@ SequenceRun run_sequence(const std::uint8_t* data, std::size_t size) {
 
 // ---- normalize --------------------------------------------------------------------------
 
+// The same rings read as one OGC polygon (ring 0 its exterior, the rest its holes) by
+// import_polygons: valid output, and far from every ring a point is inside exactly when the
+// rings winding around it (exterior +1, holes -1) sum to more than zero (clip.hpp).
+std::optional<Finding> import_checks(const std::vector<Ring>& rings, bool out_of_range) {
+  if (rings.empty()) return std::nullopt;
+  const std::vector<std::vector<Ring>> polygons{rings};
+  const std::string context = "import_polygons of the polygon " + to_wkt(PolygonSet(rings.begin(), rings.end())) +
+                              " (ring 0 its exterior)";
+  ClipResult result;
+  try {
+    result = import_polygons(polygons, ClipOptions{.checked = true});
+  } catch (const InternalError& e) {
+    return Finding{std::string("InternalError: ") + e.what() + "\n  " + context, ""};
+  } catch (const InvalidInput& e) {
+    if (out_of_range) return std::nullopt;
+    return Finding{std::string("in-range rings rejected: ") + e.what() + "\n  " + context, ""};
+  } catch (const std::exception& e) {
+    return Finding{std::string("unexpected exception: ") + e.what() + "\n  " + context, ""};
+  }
+  if (out_of_range) return Finding{"out-of-range coordinate accepted: " + context, ""};
+  if (auto f = invalid_output(context, result.polygons, "")) return f;
+  if (!small(rings)) return std::nullopt;
+  for (const Point64& q : sample_points(rings)) {
+    if (!far_from_rings(q, rings)) continue;
+    int value = 0;
+    for (std::size_t r = 0; r < rings.size(); ++r)
+      value += (winding_number(q, rings[r]) != 0 ? 1 : 0) * (r == 0 ? 1 : -1);
+    const bool actual = locate(q, result.polygons) != PointLocation::kOutside;
+    if ((value > 0) != actual)
+      return Finding{"point " + point_text(q) + (actual ? " is" : " is not") + " in the output of " +
+                         context + "\n  output = " + to_wkt(result.polygons),
+                     ""};
+  }
+  return std::nullopt;
+}
+
 std::optional<Finding> normalize_checks(const std::uint8_t* data, std::size_t size) {
   Provider in(data, size);
   Decoder decoder(in);
@@ -668,6 +704,7 @@ std::optional<Finding> normalize_checks(const std::uint8_t* data, std::size_t si
   }
   if (out_of_range) return Finding{"out-of-range coordinate accepted: " + context, ""};
   if (auto f = invalid_output(context, result.polygons, "")) return f;
+  if (auto f = import_checks(rings, out_of_range)) return f;
   if (!small(rings)) return std::nullopt;
   for (const Point64& q : sample_points(rings)) {
     if (!far_from_rings(q, rings)) continue;

@@ -295,6 +295,31 @@ ClipResult box_of_valid(const PolygonSet& set, const Box64& box, const ClipOptio
       options, "clip_to_box", [&] { return to_wkt(set); }, [&] { return to_wkt(cell); });
 }
 
+// Every ring routed through the hot pixels of all of them snapped together (snap_rounding.hpp),
+// as closed integer polylines in their own direction: the routes meet one another and
+// themselves only at shared vertices or along shared stretches, never crossing.
+std::vector<Ring> snapped_rings(const std::vector<Ring>& rings, ClipStats& stats) {
+  detail::EdgeList edges;
+  detail::append_ring_edges(rings, 0, true, edges);
+  detail::SnapStats snap;
+  const auto fragments = detail::snap_round(edges.segments, edges.next, false, snap);
+  stats.intersections = snap.intersections;
+  stats.vertices_snapped = snap.hot_pixels;
+  // Listed fragments come in segment order, each segment's from its start to its end; a
+  // segment with none listed is its own fragment.
+  std::vector<Ring> out(rings.size());
+  std::size_t f = 0;
+  for (std::uint32_t s = 0; s < edges.size(); ++s) {
+    Ring& route = out[static_cast<std::size_t>(edges.polygon[s])];
+    if (f == fragments.size() || fragments[f].parent != s) {
+      route.push_back(edges.segments[s].a);
+      continue;
+    }
+    for (; f < fragments.size() && fragments[f].parent == s; ++f) route.push_back(fragments[f].seg.a);
+  }
+  return out;
+}
+
 }  // namespace
 
 const char* op_name(ClipOp op) noexcept {
@@ -410,7 +435,16 @@ ClipResult normalize(const std::vector<Ring>& rings, FillRule rule, const ClipOp
 
 ClipResult import_polygons(const std::vector<std::vector<Ring>>& polygons,
                            const ClipOptions& options) {
+  // Each ring stands for the region it winds around (non-zero rule). A strictly simple ring
+  // is that region's boundary once it turns the right way: exteriors counter-clockwise, holes
+  // clockwise; then the sum of +1 over exteriors and -1 over holes is filled where positive.
+  // A ring that is not simple (a bow tie, a spike, a figure eight: invalid OGC, common in
+  // foreign data) is replaced by the boundaries of its own non-zero region, so every lobe of a
+  // self-crossing exterior counts, whichever way it turns (orienting it by its total signed
+  // area would keep only the lobes turning with the larger ones; GEOS and PostGIS MakeValid
+  // keep them all too).
   std::vector<Ring> rings;
+  std::vector<bool> exterior, simple;
   for (const auto& polygon : polygons)
     for (std::size_t k = 0; k < polygon.size(); ++k) {
       Ring ring = polygon[k];
@@ -423,12 +457,35 @@ ClipResult import_polygons(const std::vector<std::vector<Ring>>& polygons,
           v.where = ring[i];
           throw InvalidInput(Operand::kRings, v);
         }
-      const Int128 area = twice_signed_area(ring);
-      const bool exterior = k == 0;
-      if ((exterior && area < 0) || (!exterior && area > 0)) std::reverse(ring.begin(), ring.end());
+      if (twice_signed_area(ring) < 0) std::reverse(ring.begin(), ring.end());
+      simple.push_back(validate(ring, 1).ok());  // strictly simple (and now CCW)
+      exterior.push_back(k == 0);
+      if (k > 0) std::reverse(ring.begin(), ring.end());
       rings.push_back(std::move(ring));
     }
-  return normalize(rings, FillRule::kPositive, options);
+  if (std::find(simple.begin(), simple.end(), false) == simple.end())
+    return normalize(rings, FillRule::kPositive, options);  // valid OGC input: one pass
+  // One rounding for everything: all rings are snapped together first, after which filling
+  // a ring alone, or all of them, meets only integer contacts and rounds nothing more.
+  // (Snapping each odd ring alone and then all together would round twice; a vertex could
+  // then lie farther than a unit from the exact boundary, and a property test found one.)
+  ClipStats snapped_stats;
+  const std::vector<Ring> snapped = snapped_rings(rings, snapped_stats);
+  std::vector<Ring> filled;
+  for (std::size_t r = 0; r < snapped.size(); ++r) {
+    if (simple[r]) {
+      filled.push_back(snapped[r]);
+      continue;
+    }
+    for (Polygon& piece : normalize({snapped[r]}, FillRule::kNonZero, options).polygons) {
+      if (!exterior[r]) std::reverse(piece.begin(), piece.end());
+      filled.push_back(std::move(piece));
+    }
+  }
+  ClipResult out = normalize(filled, FillRule::kPositive, options);
+  out.stats.intersections = snapped_stats.intersections;
+  out.stats.vertices_snapped = snapped_stats.vertices_snapped;
+  return out;
 }
 
 ClipResult clip_to_box(const PolygonSet& set, const Box64& box, const ClipOptions& options) {

@@ -112,5 +112,72 @@ RC_GTEST_PROP(ClipNormalize, ValidSetsKeepTheirExactRegion, ()) {
   if (a.size() == 1) RC_ASSERT(o.result->polygons == canonical_form(a));
 }
 
+// OGC polygons of messy rings (self-crossing exteriors and holes, spikes, either orientation,
+// holes anywhere): import_polygons gives a valid set within the contract of the region its
+// contract defines, computed by the reference's own slabs with a winding number per ring.
+RC_GTEST_PROP(ClipImportPolygons, MeetsTheContractOfTheOgcRegion, ()) {
+  const std::int64_t r = *rc::gen::elementOf(std::vector<std::int64_t>{3, 6, 20, 1000});
+  std::vector<std::vector<Ring>> polygons(static_cast<std::size_t>(*rc::gen::inRange(1, 4)));
+  std::vector<Ring> rings;
+  for (auto& polygon : polygons) {
+    const int holes = *rc::gen::inRange(0, 3);
+    for (int k = 0; k <= holes; ++k) {
+      polygon.push_back(*messy_ring({0, 0}, k == 0 ? r : r / 2 + 1));
+      rings.push_back(polygon.back());
+    }
+  }
+  const Outcome o = run_import(polygons);
+  if (!o.ok()) RC_FAIL(o.error);
+  const FilledRegion exact = ogc_region(polygons);
+  RC_ASSERT(exact.region.area() == exact.trapezoid_area);
+  std::vector<Point64> inputs;
+  for (const Ring& ring : rings) inputs.insert(inputs.end(), ring.begin(), ring.end());
+  std::string described = "import_polygons:";
+  for (const auto& polygon : polygons) described += " " + to_wkt(PolygonSet(polygon.begin(), polygon.end()));
+  const ContractReport rep = check_contract(exact_region(exact.region), *o.result, inputs, described);
+  if (!rep.ok()) RC_FAIL(rep.failure);
+}
+
+// Area of an import, exactly.
+Rational imported_area(const std::vector<std::vector<Ring>>& polygons) {
+  const Outcome o = run_import(polygons);
+  EXPECT_TRUE(o.ok()) << o.error;
+  return o.ok() ? ExactRegion::of(o.result->polygons).area() : Rational(-1);
+}
+
+// A bow tie (an exterior crossing itself at (5 5)) stands for both of its lobes, whichever
+// way it is drawn: orienting it by its signed area, zero here, would keep one lobe.
+TEST(ClipImportPolygons, BowTieExteriorKeepsBothLobes) {
+  const Ring bow_tie{{0, 0}, {10, 0}, {0, 10}, {10, 10}};
+  EXPECT_EQ(imported_area({{bow_tie}}), Rational(50));
+  EXPECT_EQ(imported_area({{Ring(bow_tie.rbegin(), bow_tie.rend())}}), Rational(50));
+  // Lobes of 200/3 and 50/3 meeting at (20/3 20/3): the smaller one turns against the total
+  // area. Both count, give or take the rounding of the crossing (a few units here).
+  const Rational unequal = imported_area({{{{0, 0}, {20, 0}, {0, 10}, {10, 10}}}});
+  EXPECT_GT(unequal, Rational(250, 3) - Rational(5));
+  EXPECT_LT(unequal, Rational(250, 3) + Rational(5));
+}
+
+// A bow-tie hole removes both of its lobes from its exterior.
+TEST(ClipImportPolygons, BowTieHoleRemovesBothLobes) {
+  const Ring square{{-10, -10}, {20, -10}, {20, 20}, {-10, 20}};
+  const Ring bow_tie{{0, 0}, {10, 0}, {0, 10}, {10, 10}};
+  EXPECT_EQ(imported_area({{square, bow_tie}}), Rational(900 - 50));
+}
+
+// A ring that winds twice around its core (a pentagram) stands for all it winds around, core
+// included, like the non-zero rule; a valid polygon with a valid hole keeps its usual region.
+TEST(ClipImportPolygons, PentagramAndValidPolygonWithHole) {
+  const Ring pentagram{{0, 30}, {18, -24}, {-29, 9}, {29, 9}, {-18, -24}};
+  const Outcome nonzero = run_normalize({pentagram}, FillRule::kNonZero);
+  ASSERT_TRUE(nonzero.ok()) << nonzero.error;
+  EXPECT_EQ(imported_area({{pentagram}}), ExactRegion::of(nonzero.result->polygons).area());
+  const Ring square{{0, 0}, {10, 0}, {10, 10}, {0, 10}};
+  const Ring hole{{2, 2}, {2, 8}, {8, 8}, {8, 2}};
+  EXPECT_EQ(imported_area({{square, hole}}), Rational(100 - 36));
+  EXPECT_EQ(imported_area({{Ring(square.rbegin(), square.rend()), Ring(hole.rbegin(), hole.rend())}}),
+            Rational(100 - 36));
+}
+
 }  // namespace
 }  // namespace edgeland::test

@@ -43,6 +43,18 @@ inline Outcome run_normalize(const std::vector<Ring>& rings, FillRule rule) {
   return o;
 }
 
+inline Outcome run_import(const std::vector<std::vector<Ring>>& polygons) {
+  Outcome o;
+  try {
+    o.result = import_polygons(polygons, ClipOptions{.checked = true});
+  } catch (const std::exception& e) {
+    PolygonSet rings;
+    for (const auto& polygon : polygons) rings.insert(rings.end(), polygon.begin(), polygon.end());
+    o.error = std::string("exception: ") + e.what() + "\n  import_polygons rings = " + to_wkt(rings);
+  }
+  return o;
+}
+
 inline Outcome run_clip_to_box(const PolygonSet& a, const Box64& box) {
   Outcome o;
   try {

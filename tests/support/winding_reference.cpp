@@ -7,8 +7,9 @@ namespace edgeland::test {
 namespace {
 
 struct Seg {
-  Point64 lo, hi;  // lo.x < hi.x
-  int dir;         // +1 when the ring runs from lo to hi (+x), -1 otherwise
+  Point64 lo, hi;    // lo.x < hi.x
+  int dir;           // +1 when the ring runs from lo to hi (+x), -1 otherwise
+  std::size_t ring;  // index into the rings
 };
 
 bool filled(FillRule rule, int w) {
@@ -27,9 +28,10 @@ Rational y_at(const Seg& s, const Rational& x) {
          Rational(s.hi.y - s.lo.y) * (x - Rational(s.lo.x)) / Rational(s.hi.x - s.lo.x);
 }
 
-}  // namespace
-
-FilledRegion filled_region(const std::vector<Ring>& rings, FillRule rule) {
+// The slab decomposition; `counter` is reset per slab, told of each segment crossed going up
+// (ring, dir) and asked whether the gap above is filled.
+template <class Counter>
+FilledRegion slab_region(const std::vector<Ring>& rings, Counter counter) {
   std::vector<Seg> segs;
   std::vector<Rational> xs;
   for (const Ring& ring : rings) {
@@ -37,7 +39,8 @@ FilledRegion filled_region(const std::vector<Ring>& rings, FillRule rule) {
       const Point64 a = ring[i], b = ring[(i + 1) % ring.size()];
       xs.push_back(Rational(a.x));
       if (a.x == b.x) continue;  // vertical or degenerate: changes no slab's winding
-      segs.push_back(a.x < b.x ? Seg{a, b, 1} : Seg{b, a, -1});
+      const std::size_t r = static_cast<std::size_t>(&ring - rings.data());
+      segs.push_back(a.x < b.x ? Seg{a, b, 1, r} : Seg{b, a, -1, r});
     }
   }
   // Crossing abscissas of every pair of non-parallel segments whose x-ranges overlap.
@@ -59,21 +62,22 @@ FilledRegion filled_region(const std::vector<Ring>& rings, FillRule rule) {
     struct Active {
       Rational y0, y1;
       int dir;
+      std::size_t ring;
     };
     std::vector<Active> act;
     for (const Seg& s : segs)
       if (Rational(s.lo.x) <= x0 && Rational(s.hi.x) >= x1)
-        act.push_back({y_at(s, x0), y_at(s, x1), s.dir});
+        act.push_back({y_at(s, x0), y_at(s, x1), s.dir, s.ring});
     // No crossing inside the slab: ordering by (y0, y1) is the order at every abscissa.
     std::sort(act.begin(), act.end(), [](const Active& a, const Active& b) {
       return a.y0 != b.y0 ? a.y0 < b.y0 : a.y1 < b.y1;
     });
-    int w = 0;
+    counter.reset();
     std::size_t run_start = 0;
     bool in_run = false;
     for (std::size_t j = 0; j < act.size(); ++j) {
-      w += act[j].dir;
-      const bool f = filled(rule, w) && j + 1 < act.size();
+      counter.cross(act[j].ring, act[j].dir);
+      const bool f = counter.filled() && j + 1 < act.size();
       if (f && !in_run) {
         run_start = j;
         in_run = true;
@@ -93,6 +97,47 @@ FilledRegion filled_region(const std::vector<Ring>& rings, FillRule rule) {
   }
   out.region = ExactRegion::of_rational_polygons(pieces);
   return out;
+}
+
+}  // namespace
+
+FilledRegion filled_region(const std::vector<Ring>& rings, FillRule rule) {
+  struct Sum {
+    FillRule rule;
+    int w = 0;
+    void reset() { w = 0; }
+    void cross(std::size_t, int dir) { w += dir; }
+    bool filled() const { return edgeland::test::filled(rule, w); }
+  };
+  return slab_region(rings, Sum{rule});
+}
+
+FilledRegion ogc_region(const std::vector<std::vector<Ring>>& polygons) {
+  std::vector<Ring> rings;
+  std::vector<int> weight;  // +1 exterior, -1 hole
+  for (const auto& polygon : polygons)
+    for (std::size_t k = 0; k < polygon.size(); ++k) {
+      rings.push_back(polygon[k]);
+      weight.push_back(k == 0 ? 1 : -1);
+    }
+  // Per ring its own winding number; the value is the sum of the weights of the rings that
+  // wind around the point at all.
+  struct Indicators {
+    const std::vector<int>* weight;
+    std::vector<int> w;
+    int value = 0;
+    void reset() {
+      w.assign(weight->size(), 0);
+      value = 0;
+    }
+    void cross(std::size_t ring, int dir) {
+      const bool before = w[ring] != 0;
+      w[ring] += dir;
+      value += (*weight)[ring] * ((w[ring] != 0) - int{before});
+    }
+    bool filled() const { return value > 0; }
+  };
+  return slab_region(rings, Indicators{&weight, {}, 0});
 }
 
 }  // namespace edgeland::test

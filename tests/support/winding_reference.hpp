@@ -27,4 +27,9 @@ struct FilledRegion {
 // contribute nothing; repeated points, spikes and zero-area parts are allowed.
 FilledRegion filled_region(const std::vector<Ring>& rings, FillRule rule);
 
+// The region import_polygons reads OGC polygons as (clip.hpp): each ring stands for the points
+// it winds around (non-zero), exteriors count +1 and holes -1, filled where the sum of the
+// rings winding around a point is positive. Same slabs, with a winding number per ring.
+FilledRegion ogc_region(const std::vector<std::vector<Ring>>& polygons);
+
 }  // namespace edgeland::test

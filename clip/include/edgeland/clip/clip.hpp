@@ -132,7 +132,11 @@ EDGELAND_EXPORT ClipResult normalize(const std::vector<Ring>& rings, FillRule ru
 
 // OGC-style polygons with holes (element 0 of each entry is the exterior, the rest its holes;
 // any ring orientation) -> a valid hole-free set: each exterior minus its holes, all members
-// united. Equivalent to normalize() with exteriors made CCW, holes CW and FillRule::kPositive.
+// united. Each ring stands for the points it winds around (non-zero rule), so every lobe of a
+// self-crossing ring counts (as with GEOS / PostGIS MakeValid); the result is where the sum of
+// +1 per exterior and -1 per hole around a point is positive. For strictly simple rings this
+// is normalize() with exteriors made CCW, holes CW and FillRule::kPositive, which is what runs
+// then; the accuracy contract above holds against that exact region in every case.
 EDGELAND_EXPORT ClipResult import_polygons(const std::vector<std::vector<Ring>>& polygons,
                                            const ClipOptions& options = {});
 
