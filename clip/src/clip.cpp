@@ -457,6 +457,10 @@ ClipResult import_polygons(const std::vector<std::vector<Ring>>& polygons,
           v.where = ring[i];
           throw InvalidInput(Operand::kRings, v);
         }
+      // Repeated points (a closing point copied from WKT or GeoJSON among them) change no
+      // winding number; without them a valid ring passes the simplicity test below.
+      ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
+      if (ring.size() > 1 && ring.front() == ring.back()) ring.pop_back();
       if (twice_signed_area(ring) < 0) std::reverse(ring.begin(), ring.end());
       simple.push_back(validate(ring, 1).ok());  // strictly simple (and now CCW)
       exterior.push_back(k == 0);

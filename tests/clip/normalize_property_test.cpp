@@ -179,5 +179,19 @@ TEST(ClipImportPolygons, PentagramAndValidPolygonWithHole) {
             Rational(100 - 36));
 }
 
+// Rings given closed (last point = first, as WKT writes them) or with repeated points describe
+// the same polygons.
+TEST(ClipImportPolygons, ClosingAndRepeatedPointsChangeNothing) {
+  const Ring square{{0, 0}, {10, 0}, {10, 10}, {0, 10}};
+  const Ring hole{{2, 2}, {2, 8}, {8, 8}, {8, 2}};
+  const Outcome open = run_import({{square, hole}});
+  const Outcome closed = run_import({{{{0, 0}, {10, 0}, {10, 10}, {0, 10}, {0, 0}},
+                                      {{2, 2}, {2, 8}, {2, 8}, {8, 8}, {8, 2}, {2, 2}}}});
+  ASSERT_TRUE(open.ok()) << open.error;
+  ASSERT_TRUE(closed.ok()) << closed.error;
+  EXPECT_EQ(open.result->polygons, closed.result->polygons);
+  EXPECT_EQ(ExactRegion::of(open.result->polygons).area(), Rational(100 - 36));
+}
+
 }  // namespace
 }  // namespace edgeland::test
