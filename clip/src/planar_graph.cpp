@@ -207,19 +207,34 @@ void build_plane_graph(const std::vector<Segment>& segments,
   }
   // Piece i starts at occurrence piece_base + i.
   const auto piece_base = static_cast<std::uint32_t>(starts.size());
+  // Written by index (sized once): this loop runs once per fragment.
+  starts.resize(piece_base + piece_count);
+  pieces.resize(piece_count);
+  std::uint32_t occurrence = piece_base;
+  auto add_piece = [&](Point64 start, std::int32_t polygon, std::uint8_t channel) {
+    starts[occurrence] = {key_of(start), occurrence};
+    // The direction (sign) is set once the end ids are known.
+    pieces[occurrence - piece_base] = {0, 0, polygon, channel, 0};
+    ++occurrence;
+  };
   for (const std::uint32_t s : touched_ids) {
-    first_occurrence[s] = static_cast<std::uint32_t>(starts.size());
-    const std::uint32_t count = listed(s) ? first_fragment[s + 1] - first_fragment[s] : 1;
-    for (std::uint32_t k = 0; k < count; ++k) {
-      const Segment& f = listed(s) ? fragments[first_fragment[s] + k].seg : segments[s];
-      const Point64 expected_start = k == 0 ? segments[s].a : fragments[first_fragment[s] + k - 1].seg.b;
-      const Point64 expected_end = k + 1 == count ? segments[s].b : f.b;
-      if (f.a != expected_start || f.b != expected_end)
-        throw std::logic_error("plane graph: the fragments of a segment do not run end to end");
-      starts.push_back({key_of(f.a), static_cast<std::uint32_t>(starts.size())});
-      // The direction (sign) is set once the end ids are known.
-      pieces.push_back({0, 0, polygon_of[s], channel_of[s], 0});
+    first_occurrence[s] = occurrence;
+    const std::int32_t polygon = polygon_of[s];
+    const std::uint8_t channel = channel_of[s];
+    if (!listed(s)) {  // its own single piece
+      add_piece(segments[s].a, polygon, channel);
+      continue;
     }
+    Point64 expected = segments[s].a;
+    for (std::uint32_t k = first_fragment[s]; k < first_fragment[s + 1]; ++k) {
+      const Segment& f = fragments[k].seg;
+      if (f.a != expected)
+        throw std::logic_error("plane graph: the fragments of a segment do not run end to end");
+      expected = f.b;
+      add_piece(f.a, polygon, channel);
+    }
+    if (expected != segments[s].b)
+      throw std::logic_error("plane graph: the fragments of a segment do not run end to end");
   }
   // Segments that are not in rings (hole splitting's pieces) end where nothing starts.
   for (const std::uint32_t s : touched_ids)
