@@ -315,7 +315,8 @@ std::vector<Ring> snapped_rings(const std::vector<Ring>& rings, ClipStats& stats
       route.push_back(edges.segments[s].a);
       continue;
     }
-    for (; f < fragments.size() && fragments[f].parent == s; ++f) route.push_back(fragments[f].seg.a);
+    for (; f < fragments.size() && fragments[f].parent == s; ++f)
+      route.push_back(fragments[f].seg.a);
   }
   return out;
 }

@@ -1,10 +1,11 @@
 #pragma once
-// Sort by a 64-bit key, LSD radix for large inputs: the plane graph sorts tens of thousands of fragment ends
-// per operation, and comparison sorts of them were a third of its time (and still a seventh of a
-// 100-square checkerboard's at a few thousand). Bits on which all keys agree are skipped
-// (coordinates of one input share their high bits), so typical inputs take three or four passes. Digits are 11 bits for large inputs and 8 below 4,096 elements, where counting
-// 2,048 buckets per pass would dominate; below 512 a comparison sort wins (measured on point keys),
-// and a handful of elements are insertion-sorted.
+// Sort by a 64-bit key, LSD radix for large inputs: the plane graph sorts tens of thousands of
+// fragment ends per operation, and comparison sorts of them were a third of its time (and still
+// a seventh of a 100-square checkerboard's at a few thousand). Bits on which all keys agree are
+// skipped (coordinates of one input share their high bits), so typical inputs take three or
+// four passes. Digits are 11 bits for large inputs and 8 below 4,096 elements, where counting
+// 2,048 buckets per pass would dominate; below 512 a comparison sort wins (measured on point
+// keys), and a handful of elements are insertion-sorted.
 // Elements with equal keys may come out in any order: both callers' ties are interchangeable
 // (equal fragment ends get one vertex id; equal stops of a segment are re-sorted by position
 // along it). The order is still a deterministic function of the input. The comparison sort is
@@ -58,8 +59,7 @@ void radix_sort(std::vector<T>& v, KeyOf key_of) {
     return;
   }
   if (v.size() < 512) {  // the buckets' fixed cost would dominate
-    std::sort(v.begin(), v.end(),
-                     [&](const T& a, const T& b) { return key_of(a) < key_of(b); });
+    std::sort(v.begin(), v.end(), [&](const T& a, const T& b) { return key_of(a) < key_of(b); });
   } else if (v.size() < 4096) {
     radix_detail::lsd_passes<8>(v, key_of);
   } else {
