@@ -25,7 +25,8 @@ struct ClipCommandOptions {
 };
 
 // Without a fill rule an operand is read as OGC polygons (exterior minus holes, members
-// united); with one, all its rings form a single path set filled by that rule.
+// united; a self-crossing ring counts for every lobe it winds around, clip.hpp
+// import_polygons); with one, all its rings form a single path set filled by that rule.
 PolygonSet operand(const WktGeometry& geometry, const ClipCommandOptions& o) {
   const ClipOptions checked{o.check};
   if (o.has_fill_rule) {
