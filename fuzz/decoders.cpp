@@ -644,6 +644,28 @@ SequenceRun run_sequence(const std::uint8_t* data, std::size_t size) {
 
 // ---- normalize --------------------------------------------------------------------------
 
+// Runs `fill` (normalize or import_polygons of rings, checked mode) into `result`. A finding
+// (wrapped) when it fails other than by the documented typed error for out-of-range rings,
+// accepts such rings, or returns an invalid set; nullopt (unwrapped) when all is well, and a
+// wrapped nullopt when the typed error was rightly thrown (nothing more to check).
+template <class Fill>
+std::optional<std::optional<Finding>> filled_checks(const std::string& context, bool out_of_range,
+                                                    ClipResult& result, Fill&& fill) {
+  try {
+    result = fill();
+  } catch (const InternalError& e) {
+    return Finding{std::string("InternalError: ") + e.what() + "\n  " + context, ""};
+  } catch (const InvalidInput& e) {
+    if (out_of_range) return std::optional<Finding>{};  // the documented typed error
+    return Finding{std::string("in-range rings rejected: ") + e.what() + "\n  " + context, ""};
+  } catch (const std::exception& e) {
+    return Finding{std::string("unexpected exception: ") + e.what() + "\n  " + context, ""};
+  }
+  if (out_of_range) return Finding{"out-of-range coordinate accepted: " + context, ""};
+  if (auto f = invalid_output(context, result.polygons, "")) return f;
+  return std::nullopt;
+}
+
 // The same rings read as one OGC polygon (ring 0 its exterior, the rest its holes) by
 // import_polygons: valid output, and far from every ring a point is inside exactly when the
 // rings winding around it (exterior +1, holes -1) sum to more than zero (clip.hpp).
@@ -653,18 +675,9 @@ std::optional<Finding> import_checks(const std::vector<Ring>& rings, bool out_of
   const std::string context = "import_polygons of the polygon " + to_wkt(PolygonSet(rings.begin(), rings.end())) +
                               " (ring 0 its exterior)";
   ClipResult result;
-  try {
-    result = import_polygons(polygons, ClipOptions{.checked = true});
-  } catch (const InternalError& e) {
-    return Finding{std::string("InternalError: ") + e.what() + "\n  " + context, ""};
-  } catch (const InvalidInput& e) {
-    if (out_of_range) return std::nullopt;
-    return Finding{std::string("in-range rings rejected: ") + e.what() + "\n  " + context, ""};
-  } catch (const std::exception& e) {
-    return Finding{std::string("unexpected exception: ") + e.what() + "\n  " + context, ""};
-  }
-  if (out_of_range) return Finding{"out-of-range coordinate accepted: " + context, ""};
-  if (auto f = invalid_output(context, result.polygons, "")) return f;
+  if (auto f = filled_checks(context, out_of_range, result,
+                             [&] { return import_polygons(polygons, ClipOptions{.checked = true}); }))
+    return *f;
   if (!small(rings)) return std::nullopt;
   for (const Point64& q : sample_points(rings)) {
     if (!far_from_rings(q, rings)) continue;
@@ -692,18 +705,9 @@ std::optional<Finding> normalize_checks(const std::uint8_t* data, std::size_t si
   const std::string context = std::string("normalize ") + fill_rule_name(rule) +
                               " rings = " + to_wkt(PolygonSet(rings.begin(), rings.end()));
   ClipResult result;
-  try {
-    result = normalize(rings, rule, ClipOptions{.checked = true});
-  } catch (const InternalError& e) {
-    return Finding{std::string("InternalError: ") + e.what() + "\n  " + context, ""};
-  } catch (const InvalidInput& e) {
-    if (out_of_range) return std::nullopt;  // the documented typed error
-    return Finding{std::string("in-range rings rejected: ") + e.what() + "\n  " + context, ""};
-  } catch (const std::exception& e) {
-    return Finding{std::string("unexpected exception: ") + e.what() + "\n  " + context, ""};
-  }
-  if (out_of_range) return Finding{"out-of-range coordinate accepted: " + context, ""};
-  if (auto f = invalid_output(context, result.polygons, "")) return f;
+  if (auto f = filled_checks(context, out_of_range, result,
+                             [&] { return normalize(rings, rule, ClipOptions{.checked = true}); }))
+    return *f;
   if (auto f = import_checks(rings, out_of_range)) return f;
   if (!small(rings)) return std::nullopt;
   for (const Point64& q : sample_points(rings)) {
