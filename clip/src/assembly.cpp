@@ -46,15 +46,23 @@ BoundaryWalks trace_boundaries(const PlaneGraph& g, const std::vector<FaceLabel>
   BoundaryWalks walks;
   walks.begin.push_back(0);
   walks.half_edges.reserve(nh);  // each half-edge is walked at most once
-  RecycledVector<struct UsedBuffer, bool> used;
+  RecycledVector<struct UsedBuffer, std::uint8_t> used;
   used.assign(nh, false);
+  // left_in[v]: 1 + the walk that last left vertex v (0: none yet), to see a walk revisit one.
+  RecycledVector<struct LeftInBuffer, std::uint32_t> left_in;
+  left_in.assign(g.vertices.size(), 0);
   for (std::uint32_t start = 0; start < nh; ++start) {
     const FaceLabel label = emitted[start];
     if (label < 0 || used[start]) continue;
+    const auto walk = static_cast<std::uint32_t>(walks.label.size() + 1);
+    std::uint8_t revisits = 0;
     std::uint32_t cur = start;
     do {
       used[cur] = true;
       walks.half_edges.push_back(cur);
+      std::uint32_t& left_by = left_in[g.origin(cur)];
+      revisits |= static_cast<std::uint8_t>(left_by == walk);
+      left_by = walk;
       // Sharpest left turn: from the reversed edge, turn clockwise to the first edge that
       // bounds the same region.
       const std::uint32_t w = g.target(cur), b = g.around_begin[w];
@@ -74,6 +82,7 @@ BoundaryWalks trace_boundaries(const PlaneGraph& g, const std::vector<FaceLabel>
       cur = next;
     } while (cur != start);
     walks.label.push_back(label);
+    walks.revisits.push_back(revisits);
     walks.begin.push_back(static_cast<std::uint32_t>(walks.half_edges.size()));
   }
   return walks;
@@ -96,18 +105,21 @@ Assembled assemble(const PlaneGraph& g, const std::vector<SideState>& left,
   std::vector<FaceLabel> ring_label;
   std::vector<bool> outer;
   std::size_t holes = 0;
-  RecycledVector<struct PositionBuffer, std::int32_t> position;
-  position.assign(g.vertices.size(), -1);
+  RecycledVector<struct PositionBuffer, std::int32_t> position;  // split_at_repeated_vertices
   // Each loop is written out in canonical form at once (canonical.hpp): it starts at its
   // smallest point, which is a graph vertex (no chain has an interior point smaller than both
   // its ends), and the turn there is its orientation, so neither a pass for the area nor one to
   // rotate is needed. Collinear points can only be graph vertices, or chain points when an
   // operand ring had collinear consecutive vertices.
   // Hole splitting needs a region's rings as traced, every graph vertex on them (a bridge may
-  // end at one a canonical ring drops), so each loop's half-edges are kept to trace again.
-  RecycledVector<struct LoopHalfEdgesBuffer, std::uint32_t> loop_half_edges;
-  RecycledVector<struct LoopBeginBuffer, std::uint32_t> loop_begin;
-  loop_begin.push_back(0);
+  // end at one a canonical ring drops), so each ring's half-edges are kept to trace again: as
+  // its walk's stretch of half-edges, or for a loop split off a walk, a copy.
+  struct LoopSpan {
+    std::uint32_t begin, end;  // in the walks' half-edges, or in split_loops when `split`
+    bool split;
+  };
+  RecycledVector<struct LoopSpansBuffer, LoopSpan> loops;  // one per ring of out.rings
+  RecycledVector<struct SplitLoopsBuffer, std::uint32_t> split_loops;
   RecycledVector<struct LoopPointsBuffer, Point64> points;
   RecycledVector<struct LoopCheckBuffer, std::uint8_t> check;
   const std::uint8_t check_chains = collinear_free_operands ? 0 : 1;
@@ -115,20 +127,29 @@ Assembled assemble(const PlaneGraph& g, const std::vector<SideState>& left,
     points.clear();
     check.clear();
     std::size_t least = 0;
+    bool chains = false;  // whether a chain's interior points are among the points
     for (const std::uint32_t* h = first; h != last; ++h) {
       const std::size_t at = points.size();
       g.append_points(*h, points);
+      if (points[at] < points[least]) least = at;
+      if (points.size() == at + 1) {  // a vertex alone
+        if (chains) check.push_back(1);
+        continue;
+      }
+      // Marks are written from the first chain on: every point before it is a vertex.
+      if (!chains) check.assign(at, 1);
+      chains = true;
       check.push_back(1);
       check.resize(points.size(), check_chains);
-      if (points[at] < points[least]) least = at;
     }
     int turn = 0;
-    Ring ring = canonical_ring_from(points, check.data(), least, turn);
+    // Without chain points every point is a graph vertex, each one tested.
+    Ring ring = canonical_ring_from(points, chains ? check.data() : nullptr, least, turn);
     if (turn == 0) {
       // Not expected of a face boundary (simple, so nonzero area means a convex smallest
       // vertex); decided by the area as before, should it happen.
       const Int128 area = points.size() < 3 ? 0 : twice_signed_area(points);
-      if (area == 0) return;
+      if (area == 0) return false;
       ring = canonical_ring(Ring(points.begin(), points.end()));
       turn = area > 0 ? 1 : -1;
     }
@@ -136,29 +157,30 @@ Assembled assemble(const PlaneGraph& g, const std::vector<SideState>& left,
     ring_label.push_back(label);
     outer.push_back(turn > 0);
     if (turn < 0) ++holes;
-    loop_half_edges.insert(loop_half_edges.end(), first, last);
-    loop_begin.push_back(static_cast<std::uint32_t>(loop_half_edges.size()));
+    return true;
   };
   const BoundaryWalks walks = trace_boundaries(g, emitted);
+  auto half_edges = [&](const LoopSpan& l) {
+    return l.split ? split_loops.data() : walks.half_edges.data();
+  };
   out.rings.reserve(walks.size());
   ring_label.reserve(walks.size());
   outer.reserve(walks.size());
   for (std::size_t w = 0; w < walks.size(); ++w) {
     const std::uint32_t *first = walks.first(w), *last = walks.last(w);
     // Most walks visit every vertex once: then the walk is the loop, with nothing to split.
-    bool repeated = false;
-    for (const std::uint32_t* h = first; h != last; ++h) {
-      std::int32_t& at = position[g.origin(*h)];
-      if (at >= 0) repeated = true;
-      at = 0;
-    }
-    for (const std::uint32_t* h = first; h != last; ++h) position[g.origin(*h)] = -1;
-    if (!repeated) {
-      add_loop(walks.label[w], first, last);
+    if (!walks.revisits[w]) {
+      if (add_loop(walks.label[w], first, last))
+        loops.push_back({walks.begin[w], walks.begin[w + 1], false});
       continue;
     }
+    if (position.empty()) position.assign(g.vertices.size(), -1);
     for (const auto& loop : split_at_repeated_vertices(g, first, last, position))
-      add_loop(walks.label[w], loop.data(), loop.data() + loop.size());
+      if (add_loop(walks.label[w], loop.data(), loop.data() + loop.size())) {
+        const auto from = static_cast<std::uint32_t>(split_loops.size());
+        split_loops.insert(split_loops.end(), loop.begin(), loop.end());
+        loops.push_back({from, static_cast<std::uint32_t>(split_loops.size()), true});
+      }
   }
   if (holes == 0) return out;
   // Regions with holes move to out.holed; the rest of the rings stay, in their order.
@@ -180,8 +202,8 @@ Assembled assemble(const PlaneGraph& g, const std::vector<SideState>& left,
       for (std::size_t k = i; k < j; ++k) {
         const std::uint32_t r = order[k];
         (outer[r] ? region.outers : region.holes)
-            .push_back(ring_along(g, loop_half_edges.data() + loop_begin[r],
-                                  loop_half_edges.data() + loop_begin[r + 1]));
+            .push_back(ring_along(g, half_edges(loops[r]) + loops[r].begin,
+                                  half_edges(loops[r]) + loops[r].end));
       }
     }
     i = j;

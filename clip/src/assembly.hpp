@@ -34,9 +34,11 @@ Assembled assemble(const PlaneGraph& g, const std::vector<SideState>& left,
 
 // Closed walks along the half-edges with emitted[h] >= 0, each following the sharpest left
 // turn among half-edges of its own label, in a fixed order. Flat: walk i is
-// half_edges[begin[i] .. begin[i + 1]) with label[i] (one allocation per array, not per walk).
+// half_edges[begin[i] .. begin[i + 1]) with label[i] (one allocation per array, not per walk);
+// revisits[i]: whether walk i leaves some vertex twice (then it is several loops).
 struct BoundaryWalks {
   RecycledVector<struct WalkLabelBuffer, FaceLabel> label;
+  RecycledVector<struct WalkRevisitsBuffer, std::uint8_t> revisits;
   RecycledVector<struct WalkBeginBuffer, std::uint32_t> begin;  // starts with 0
   RecycledVector<struct WalkHalfEdgesBuffer, std::uint32_t> half_edges;
   std::size_t size() const { return label.size(); }

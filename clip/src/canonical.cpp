@@ -19,13 +19,12 @@ Ring canonical_ring(Ring ring) {
   return canonical_ring_from(ring, nullptr, least, turn);
 }
 
-Ring canonical_ring_from(const std::vector<Point64>& points, const std::uint8_t* check,
-                         std::size_t least, int& turn) {
+namespace {
+
+// The stack algorithm for points marked by `check` (canonical_ring_from), appended to out.
+void canonical_marked(const std::vector<Point64>& points, const std::uint8_t* check,
+                      std::size_t least, Ring& out) {
   const std::size_t n = points.size();
-  Ring out;
-  turn = 0;
-  if (n < 3) return out;
-  out.reserve(n);
   // The stack algorithm of canonical_ring, from the smallest point round: the top is dropped
   // while it is collinear with its neighbours. A top needs the test if it is marked, or if its
   // left neighbour on the stack is not its own predecessor (something between was dropped), or
@@ -37,7 +36,7 @@ Ring canonical_ring_from(const std::vector<Point64>& points, const std::uint8_t*
     const std::size_t i = least + k < n ? least + k : least + k - n;
     const Point64 p = points[i];
     bool dropped = false;
-    const bool tested = check == nullptr || check[i] != 0;
+    const bool tested = check[i] != 0;
     while (out.size() >= 2 && (tested || suspect.back() || dropped) &&
            orientation(out[out.size() - 2], out.back(), p) == Orientation::kCollinear) {
       out.pop_back();
@@ -47,6 +46,29 @@ Ring canonical_ring_from(const std::vector<Point64>& points, const std::uint8_t*
     if (dropped && !suspect.empty()) suspect.back() = 1;  // its right neighbour changed
     out.push_back(p);
     suspect.push_back(static_cast<std::uint8_t>(tested || dropped));
+  }
+}
+
+}  // namespace
+
+Ring canonical_ring_from(const std::vector<Point64>& points, const std::uint8_t* check,
+                         std::size_t least, int& turn) {
+  const std::size_t n = points.size();
+  Ring out;
+  turn = 0;
+  if (n < 3) return out;
+  out.reserve(n);
+  if (check == nullptr) {
+    // Every point tested: the plain stack algorithm, nothing to remember about drops.
+    for (std::size_t k = 0; k < n; ++k) {
+      const Point64 p = points[least + k < n ? least + k : least + k - n];
+      while (out.size() >= 2 &&
+             orientation(out[out.size() - 2], out.back(), p) == Orientation::kCollinear)
+        out.pop_back();
+      out.push_back(p);
+    }
+  } else {
+    canonical_marked(points, check, least, out);
   }
   // The seam: the smallest point (out[0]) is never collinear between its neighbours (both are
   // larger), but the last points may be collinear with it.

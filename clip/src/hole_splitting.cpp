@@ -199,7 +199,7 @@ std::vector<Ring> split_one(const Ring& outer, std::vector<const Ring*> holes, i
   std::vector<std::uint32_t> next(channel.size());
   for (std::uint32_t i = 0; i < next.size(); ++i) next[i] = i;
   const PlaneGraph g =
-      build_plane_graph(segments, frags, channel, polygon, next, std::vector<bool>(channel.size(), true));
+      build_plane_graph(segments, frags, channel, polygon, next, std::vector<std::uint8_t>(channel.size(), 1));
   std::vector<FaceLabel> emitted(2 * g.edge_count(), -1);
   for (std::uint32_t e = 0; e < g.edge_count(); ++e)
     for (std::uint32_t k = g.mult_begin[e]; k < g.mult_begin[e + 1]; ++k)

@@ -147,7 +147,7 @@ bool overlap_proof(const Segment& s, const Segment& t) {
 }  // namespace
 
 Contacts find_contacts(const std::vector<Segment>& segments, const std::vector<std::uint32_t>& next,
-                       const SegmentIndex& index, bool simple_rings, std::vector<bool>& touched,
+                       const SegmentIndex& index, bool simple_rings, std::vector<std::uint8_t>& touched,
                        std::unique_ptr<SegmentGrid>* grid,
                        const std::vector<std::uint8_t>* screen_channel) {
   Contacts c;

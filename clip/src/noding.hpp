@@ -43,7 +43,7 @@ class SegmentGrid;
 // When it walks the segments through a SegmentGrid (short runs: spiky inputs) and `grid` is not
 // null, the grid is handed out there for snap rounding's point queries.
 Contacts find_contacts(const std::vector<Segment>& segments, const std::vector<std::uint32_t>& next,
-                       const SegmentIndex& index, bool simple_rings, std::vector<bool>& touched,
+                       const SegmentIndex& index, bool simple_rings, std::vector<std::uint8_t>& touched,
                        std::unique_ptr<SegmentGrid>* grid = nullptr,
                        const std::vector<std::uint8_t>* screen_channel = nullptr);
 

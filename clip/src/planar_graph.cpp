@@ -82,7 +82,7 @@ PlaneGraph build_plane_graph(const std::vector<Segment>& segments,
                              const std::vector<std::uint8_t>& channel_of,
                              const std::vector<std::int32_t>& polygon_of,
                              const std::vector<std::uint32_t>& next,
-                             const std::vector<bool>& touched) {
+                             const std::vector<std::uint8_t>& touched) {
   PlaneGraph g;
   build_plane_graph(segments, fragments, channel_of, polygon_of, next, touched, g);
   return g;
@@ -92,7 +92,7 @@ void build_plane_graph(const std::vector<Segment>& segments,
                        const std::vector<Fragment>& fragments,
                        const std::vector<std::uint8_t>& channel_of,
                        const std::vector<std::int32_t>& polygon_of,
-                       const std::vector<std::uint32_t>& next, const std::vector<bool>& touched,
+                       const std::vector<std::uint32_t>& next, const std::vector<std::uint8_t>& touched,
                        PlaneGraph& g) {
   const std::uint32_t n = static_cast<std::uint32_t>(next.size());
   // Listed fragments come in segment order; a segment with none listed is its own fragment

@@ -80,13 +80,13 @@ PlaneGraph build_plane_graph(const std::vector<Segment>& segments,
                              const std::vector<std::uint8_t>& channel_of,
                              const std::vector<std::int32_t>& polygon_of,
                              const std::vector<std::uint32_t>& next,
-                             const std::vector<bool>& touched);
+                             const std::vector<std::uint8_t>& touched);
 // The same into g, reusing its arrays' capacity.
 void build_plane_graph(const std::vector<Segment>& segments,
                        const std::vector<Fragment>& fragments,
                        const std::vector<std::uint8_t>& channel_of,
                        const std::vector<std::int32_t>& polygon_of,
-                       const std::vector<std::uint32_t>& next, const std::vector<bool>& touched,
+                       const std::vector<std::uint32_t>& next, const std::vector<std::uint8_t>& touched,
                        PlaneGraph& g);
 
 }  // namespace edgeland::detail

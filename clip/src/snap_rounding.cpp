@@ -55,7 +55,7 @@ struct Closure {
   RecycledVector<struct ClosureHotBuffer, Point64> hot;  // all hot pixel centres
   // (segment, hot index)
   RecycledVector<struct ClosureMeetsBuffer, std::pair<std::uint32_t, std::uint32_t>> meets;
-  RecycledVector<struct ClosureMovedBuffer, bool> moved;
+  RecycledVector<struct ClosureMovedBuffer, std::uint8_t> moved;
   // (segment, vertex) for every vertex (end or split point) not on the segment whose closed pixel
   // the segment meets; complete once a grid pass over all vertices has run (off_classic_routes).
   RecycledVector<struct ClosureNearVertexBuffer, std::pair<std::uint32_t, Point64>> near_vertex;
@@ -368,8 +368,8 @@ std::vector<bool> off_classic_routes(const std::vector<Segment>& segs, SegmentsN
 // on the grid path, and on the box path only when off_classic_is_known (the closure recorded
 // it, so it costs no pass over all vertices).
 template <class OffClassic>
-Contacts recheck(const AllFragments& all, const std::vector<bool>& moved,
-                 const SegmentIndex& index, std::size_t segment_count, std::vector<bool>& touched,
+Contacts recheck(const AllFragments& all, const std::vector<std::uint8_t>& moved,
+                 const SegmentIndex& index, std::size_t segment_count, std::vector<std::uint8_t>& touched,
                  bool off_classic_is_known, OffClassic&& off_classic) {
   std::vector<std::uint32_t> which;
   which.reserve(all.listed_count());

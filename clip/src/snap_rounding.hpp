@@ -26,7 +26,7 @@ struct SnapStats {
   // touched[s] is false only for input segments that yield themselves as their one fragment and
   // share no point with any other fragment except their ring neighbours' at their common
   // endpoints. The plane graph chains such segments (planar_graph.hpp).
-  std::vector<bool> touched;
+  std::vector<std::uint8_t> touched;
   // Only with screen_channel: noding found a contact proving an operand invalid and stopped
   // (noding.hpp); snap_round then returns no fragments.
   bool operand_invalid = false;
