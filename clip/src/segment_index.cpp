@@ -8,25 +8,57 @@ int sign(std::int64_t v) { return (v > 0) - (v < 0); }
 }  // namespace
 
 SegmentIndex::SegmentIndex(const std::vector<Segment>& segments,
-                           const std::vector<std::uint32_t>& next) {
-  const std::uint32_t n = static_cast<std::uint32_t>(segments.size());
-  segments_ = &segments;
-  // Greedy runs: extend while the next segment follows along the ring and keeps the run's
-  // x and y directions (a zero component agrees with either).
-  std::uint32_t ring = 0;
-  for (std::uint32_t s = 0; s < n;) {
+                           const std::vector<std::uint32_t>& next)
+    : segments_(&segments), next_(&next) {}
+
+std::uint32_t SegmentIndex::run_end(std::uint32_t s) const {
+  // Greedy: extend while the next segment follows along the ring and keeps the run's x and y
+  // directions (a zero component agrees with either).
+  const std::vector<Segment>& segments = *segments_;
+  const std::vector<std::uint32_t>& next = *next_;
+  const auto n = static_cast<std::uint32_t>(segments.size());
+  int dx = sign(segments[s].b.x - segments[s].a.x), dy = sign(segments[s].b.y - segments[s].a.y);
+  std::uint32_t last = s;
+  while (last + 1 < n && next[last] == last + 1 && last + 1 - s < kRunLength) {
+    const Segment& t = segments[last + 1];
+    const int tx = sign(t.b.x - t.a.x), ty = sign(t.b.y - t.a.y);
+    if ((tx != 0 && dx != 0 && tx != dx) || (ty != 0 && dy != 0 && ty != dy)) break;
+    if (dx == 0) dx = tx;
+    if (dy == 0) dy = ty;
+    ++last;
+  }
+  return last;
+}
+
+void SegmentIndex::find_run_ends() const {
+  const auto n = static_cast<std::uint32_t>(segments_->size());
+  if (!run_ends_.empty() || n == 0) return;
+  for (std::uint32_t s = 0; s < n; s = run_ends_.back() + 1) run_ends_.push_back(run_end(s));
+}
+
+std::size_t SegmentIndex::run_length_x16() const {
+  find_run_ends();
+  return run_ends_.empty() ? 0 : 16 * segments_->size() / run_ends_.size();
+}
+
+void SegmentIndex::build_runs() const {
+  if (built_) return;
+  built_ = true;
+  const std::vector<Segment>& segments = *segments_;
+  const std::vector<std::uint32_t>& next = *next_;
+  find_run_ends();
+  std::uint32_t ring = 0, s = 0;
+  runs_.reserve(run_ends_.size());
+  for (const std::uint32_t last : run_ends_) {
     if (s > 0 && next[s - 1] != s) ring = s;  // rings occupy consecutive ids
-    int dx = sign(segments[s].b.x - segments[s].a.x), dy = sign(segments[s].b.y - segments[s].a.y);
-    std::uint32_t last = s;
-    while (last + 1 < n && next[last] == last + 1 && last + 1 - s < kRunLength) {
-      const Segment& t = segments[last + 1];
-      const int tx = sign(t.b.x - t.a.x), ty = sign(t.b.y - t.a.y);
-      if ((tx != 0 && dx != 0 && tx != dx) || (ty != 0 && dy != 0 && ty != dy)) break;
-      if (dx == 0) dx = tx;
-      if (dy == 0) dy = ty;
-      ++last;
-    }
-    runs_.push_back({s, last, ring, dx < 0});
+    // x decreasing: the run's first segment with an x change says which way.
+    bool x_decreasing = false;
+    for (std::uint32_t t = s; t <= last; ++t)
+      if (segments[t].b.x != segments[t].a.x) {
+        x_decreasing = segments[t].b.x < segments[t].a.x;
+        break;
+      }
+    runs_.push_back({s, last, ring, x_decreasing});
     s = last + 1;
   }
   run_boxes_.resize(runs_.size());

@@ -46,10 +46,8 @@ class SegmentIndex {
   void query(const std::vector<Box64>& boxes, F&& visit) const;
 
   // Segments per run on average, times 16 (an integer: the caller's choice of search only
-  // needs a rough figure).
-  std::size_t run_length_x16() const {
-    return runs_.empty() ? 0 : 16 * segments_->size() / runs_.size();
-  }
+  // needs a rough figure). Counts the runs without building them.
+  std::size_t run_length_x16() const;
 
   Box64 box(std::uint32_t s) const {
     const Segment& g = (*segments_)[s];
@@ -71,10 +69,22 @@ class SegmentIndex {
   // Pairs of segments of runs a and b whose boxes overlap.
   template <class F>
   void pairs_between(std::uint32_t a, std::uint32_t b, F& visit) const;
+  // The last segment of the greedy run starting at segment s.
+  std::uint32_t run_end(std::uint32_t s) const;
+  // Builds runs_ and run_boxes_ on first use: noding through the segment grid without hot
+  // pixels (checkerboards, tiles) never queries the index, and building the runs was a few
+  // percent of such an operation.
+  void build_runs() const;
 
   const std::vector<Segment>* segments_;  // boxes are computed, not stored: less memory traffic
-  RecycledVector<struct IndexRunsBuffer, Run> runs_;
-  RecycledVector<struct IndexRunBoxesBuffer, Box64> run_boxes_;
+  const std::vector<std::uint32_t>* next_;
+  mutable bool built_ = false;
+  // The last segment of each greedy run, in order: found once, by whichever of
+  // run_length_x16 and build_runs asks first.
+  mutable RecycledVector<struct IndexRunEndsBuffer, std::uint32_t> run_ends_;
+  void find_run_ends() const;
+  mutable RecycledVector<struct IndexRunsBuffer, Run> runs_;
+  mutable RecycledVector<struct IndexRunBoxesBuffer, Box64> run_boxes_;
   // Run boxes, sorted_for_sweep; sorted on first use (noding through the segment grid and
   // inputs without hot pixels never need them).
   const std::vector<SweepBox>& run_sweep() const {
@@ -124,6 +134,7 @@ void SegmentIndex::pairs_between(std::uint32_t a, std::uint32_t b, F& visit) con
 
 template <class F>
 void SegmentIndex::for_each_overlapping_pair(F&& visit, bool across_rings_only) const {
+  build_runs();
   auto between = [&](std::uint32_t a, std::uint32_t b) {
     if (across_rings_only && runs_[a].ring == runs_[b].ring) return;
     pairs_between(a, b, visit);
@@ -138,6 +149,7 @@ void SegmentIndex::for_each_overlapping_pair(F&& visit, bool across_rings_only) 
 
 template <class F>
 void SegmentIndex::query(const std::vector<Box64>& boxes, F&& visit) const {
+  build_runs();
   detail::for_each_overlapping_pair(
       sorted_for_sweep(boxes), run_sweep(), [&](std::uint32_t k, std::uint32_t r) {
         // Along the run in increasing-x order the segments' x-ranges only move right: skip by
