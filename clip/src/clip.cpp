@@ -220,10 +220,10 @@ ClipResult clip_near(ClipOp op, const PolygonSet& subject, const PolygonSet& cli
     const auto computed = static_cast<std::ptrdiff_t>(r.polygons.size());
     for (std::size_t i : left_out_index)
       r.polygons.push_back(subject_canonical ? subject[i] : detail::canonical_ring(subject[i]));
-    if (subject_canonical)  // both parts already sorted
-      std::inplace_merge(r.polygons.begin(), r.polygons.begin() + computed, r.polygons.end());
-    else
-      std::sort(r.polygons.begin(), r.polygons.end());
+    // The computed part is sorted; so are the left-out polygons of a canonical subject, and
+    // otherwise they are sorted alone (usually a few) before the two parts are merged.
+    if (!subject_canonical) std::sort(r.polygons.begin() + computed, r.polygons.end());
+    std::inplace_merge(r.polygons.begin(), r.polygons.begin() + computed, r.polygons.end());
     return r;
   }
 }

@@ -50,6 +50,43 @@ void sort_short_run(It first, It last, Less less) {
   }
 }
 
+// A half-edge leaving a vertex, with the direction of its first step.
+struct Out {
+  Point64 d;
+  std::uint32_t h;
+};
+
+// Whether direction x comes before y counter-clockwise from angle 0 (angle_less), computed
+// without branches: around a vertex the outcome is a coin toss to the branch predictor, and
+// mispredicted branches were most of the angle sort.
+inline bool angle_before(Point64 x, Point64 y) {
+  const bool lx = (x.y < 0) | ((x.y == 0) & (x.x < 0));  // lower half-plane
+  const bool ly = (y.y < 0) | ((y.y == 0) & (y.x < 0));
+  const bool ccw = Int128(x.x) * y.y - Int128(x.y) * y.x > 0;  // differences: 64 x 64 bits
+  return (lx != ly) ? ly : ccw;
+}
+
+// Vertices of at most this degree (most of them) get their half-edges placed by rank.
+constexpr std::uint32_t kRankedDegree = 4;
+
+// Writes the n <= kRankedDegree half-edges of one vertex (out[0 .. n), starting at position b
+// of g.around) in counter-clockwise order: each one's place is the number of others before it,
+// every pair compared once (a tie, which a plane graph never has, keeps the listed order), so
+// the ranks are a permutation and no branch depends on a comparison.
+void place_by_rank(const Out* out, std::uint32_t n, std::uint32_t b, PlaneGraph& g) {
+  std::uint32_t rank[kRankedDegree] = {};
+  for (std::uint32_t i = 1; i < n; ++i)
+    for (std::uint32_t j = 0; j < i; ++j) {
+      const std::uint32_t i_first = angle_before(out[i].d, out[j].d);
+      rank[j] += i_first;
+      rank[i] += 1 - i_first;
+    }
+  for (std::uint32_t k = 0; k < n; ++k) {
+    g.around[b + rank[k]] = out[k].h;
+    g.position_of[out[k].h] = b + rank[k];
+  }
+}
+
 }  // namespace
 
 void PlaneGraph::append_points(std::uint32_t h, std::vector<Point64>& out) const {
@@ -282,24 +319,21 @@ void build_plane_graph(const std::vector<Segment>& segments,
   g.chain.reserve(edge_bound);
   g.vertices.resize(keys.size());
   for (std::size_t i = 0; i < keys.size(); ++i) g.vertices[i] = point_of(keys[i]);
-  // A counting sort by lo (one pass: ids are small), then by hi within each lo, stably: a
-  // vertex is the lower end of few pieces, so those runs are short.
+  // Sorted by (lo, hi), stably: two counting sorts (vertex ids are small), by hi and then by
+  // lo. (Sorting each lo's short run by hi instead branched unpredictably on every piece.)
   {
     RecycledVector<struct AtBuffer, std::uint32_t> at;
-    at.assign(keys.size() + 1, 0);
-    for (const Piece& p : pieces) ++at[p.lo + 1];
-    for (std::size_t v = 1; v < at.size(); ++v) at[v] += at[v - 1];
-    RecycledVector<struct ByLoBuffer, Piece> by_lo;
-    by_lo.resize(pieces.size());
-    for (const Piece& p : pieces) by_lo[at[p.lo]++] = p;
-    pieces.swap(by_lo);
-    auto hi_less = [](const Piece& x, const Piece& y) { return x.hi < y.hi; };
-    for (std::size_t i = 0; i < pieces.size();) {
-      std::size_t j = i + 1;
-      while (j < pieces.size() && pieces[j].lo == pieces[i].lo) ++j;
-      sort_short_run(pieces.begin() + i, pieces.begin() + j, hi_less);
-      i = j;
-    }
+    RecycledVector<struct ByLoBuffer, Piece> sorted;
+    sorted.resize(pieces.size());
+    auto counting_sort = [&](auto id_of) {
+      at.assign(keys.size() + 1, 0);
+      for (const Piece& p : pieces) ++at[id_of(p) + 1];
+      for (std::size_t v = 1; v < at.size(); ++v) at[v] += at[v - 1];
+      for (const Piece& p : pieces) sorted[at[id_of(p)]++] = p;
+      pieces.swap(sorted);
+    };
+    counting_sort([](const Piece& p) { return p.hi; });
+    counting_sort([](const Piece& p) { return p.lo; });
   }
   // Merge pieces with equal endpoints, summing multiplicities per (channel, polygon). Most
   // edges have one piece: written straight out. In a larger group the pieces come in segment
@@ -378,10 +412,6 @@ void build_plane_graph(const std::vector<Segment>& segments,
     ++g.around_begin[g.to(e) + 1];
   }
   for (std::size_t v = 0; v < nv; ++v) g.around_begin[v + 1] += g.around_begin[v];
-  struct Out {
-    Point64 d;  // direction of the first step
-    std::uint32_t h;
-  };
   RecycledVector<struct OutBuffer, Out> out;
   out.resize(nh);
   {
@@ -402,6 +432,10 @@ void build_plane_graph(const std::vector<Segment>& segments,
   g.position_of.resize(nh);
   for (std::size_t v = 0; v < nv; ++v) {
     const std::uint32_t b = g.around_begin[v], e = g.around_begin[v + 1];
+    if (e - b <= kRankedDegree) {
+      place_by_rank(out.data() + b, e - b, b, g);
+      continue;
+    }
     sort_short_run(out.begin() + b, out.begin() + e, before);
     for (std::uint32_t k = b; k < e; ++k) {
       g.around[k] = out[k].h;
