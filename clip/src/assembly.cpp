@@ -64,18 +64,17 @@ BoundaryWalks trace_boundaries(const PlaneGraph& g, const std::vector<FaceLabel>
       revisits |= static_cast<std::uint8_t>(left_by == walk);
       left_by = walk;
       // Sharpest left turn: from the reversed edge, turn clockwise to the first edge that
-      // bounds the same region.
-      const std::uint32_t w = g.target(cur), b = g.around_begin[w];
-      const std::uint32_t n = g.around_begin[w + 1] - b;
-      const std::uint32_t k = g.position_of[cur ^ 1] - b;
-      std::uint32_t next = cur;
-      for (std::uint32_t i = 1, at = k; i <= n; ++i) {
-        at = at == 0 ? n - 1 : at - 1;  // clockwise, wrapping without a division
-        const std::uint32_t h = g.around[b + at];
-        if (emitted[h] == label) {
-          next = h;
+      // bounds the same region. turn_at[x] locates the half-edge clockwise after x's twin, so
+      // the candidate after h round the same vertex is at turn_at[h ^ 1]; the vertex's
+      // degree bounds the search.
+      std::uint32_t next = g.around[g.turn_at[cur]];
+      for (std::uint32_t tried = 1; emitted[next] != label; ++tried) {
+        const std::uint32_t w = g.target(cur);
+        if (tried >= g.around_begin[w + 1] - g.around_begin[w]) {
+          next = cur;
           break;
         }
+        next = g.around[g.turn_at[next ^ 1]];
       }
       if (next == cur || (used[next] && next != start))
         throw std::logic_error("assembly: region boundary does not close");

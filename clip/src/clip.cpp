@@ -42,7 +42,7 @@ std::size_t footprint(const detail::EdgeList& e) {
 }
 std::size_t footprint(const detail::PlaneGraph& g) {
   return bytes(g.vertices) + bytes(g.origin_of) + bytes(g.chain) + bytes(g.mult_begin) +
-         bytes(g.mults) + bytes(g.around_begin) + bytes(g.around) + bytes(g.position_of);
+         bytes(g.mults) + bytes(g.around_begin) + bytes(g.around) + bytes(g.turn_at);
 }
 std::size_t footprint(const std::vector<SideState>& labels) { return bytes(labels); }
 

@@ -304,9 +304,7 @@ bool label_sides(const PlaneGraph& g, LabelMode mode, std::vector<SideState>& le
         const std::uint32_t h = g.around[b + i], twin = h ^ 1, x = g.origin(twin);
         if (visited[x]) continue;
         visited[x] = 1;
-        const std::uint32_t bx = g.around_begin[x], nx = around_count(g, x);
-        const std::uint32_t at = g.position_of[twin];
-        const std::uint32_t before = at == bx ? bx + nx - 1 : at - 1;
+        const std::uint32_t before = g.turn_at[h];  // at x, clockwise from the twin
         left[g.around[before]] = left[h];
         queue.emplace_back(x, before);
       }

@@ -83,7 +83,7 @@ void place_by_rank(const Out* out, std::uint32_t n, std::uint32_t b, PlaneGraph&
     }
   for (std::uint32_t k = 0; k < n; ++k) {
     g.around[b + rank[k]] = out[k].h;
-    g.position_of[out[k].h] = b + rank[k];
+    g.turn_at[out[k].h ^ 1] = b + rank[k] - 1 + (rank[k] == 0 ? n : 0);
   }
 }
 
@@ -313,7 +313,7 @@ void build_plane_graph(const std::vector<Segment>& segments,
   // g's arrays are reused (their capacity kept): every one is sized or cleared below.
   g.chain.clear();
   g.around.clear();
-  g.position_of.clear();
+  g.turn_at.clear();
   g.cancelled_edges = 0;
   const std::size_t edge_bound = pieces.size() + spans.size();
   g.chain.reserve(edge_bound);
@@ -429,7 +429,7 @@ void build_plane_graph(const std::vector<Segment>& segments,
   }
   auto before = [](const Out& x, const Out& y) { return angle_less(x.d, y.d); };
   g.around.resize(nh);
-  g.position_of.resize(nh);
+  g.turn_at.resize(nh);
   for (std::size_t v = 0; v < nv; ++v) {
     const std::uint32_t b = g.around_begin[v], e = g.around_begin[v + 1];
     if (e - b <= kRankedDegree) {
@@ -439,7 +439,7 @@ void build_plane_graph(const std::vector<Segment>& segments,
     sort_short_run(out.begin() + b, out.begin() + e, before);
     for (std::uint32_t k = b; k < e; ++k) {
       g.around[k] = out[k].h;
-      g.position_of[out[k].h] = k;
+      g.turn_at[out[k].h ^ 1] = k == b ? e - 1 : k - 1;
     }
   }
 }

@@ -44,8 +44,11 @@ struct PlaneGraph {
   std::vector<std::uint32_t> mult_begin;       // CSR into mults, size edges + 1
   std::vector<Multiplicity> mults;
   // Outgoing half-edges of vertex v, counter-clockwise from angle 0:
-  // around[around_begin[v] .. around_begin[v + 1]); position_of[h] indexes into it.
-  std::vector<std::uint32_t> around_begin, around, position_of;
+  // around[around_begin[v] .. around_begin[v + 1]). turn_at[h] is the position there, at h's
+  // target, of the half-edge next clockwise from h's twin: the sharpest left turn after h (the
+  // next half-edge of the face on h's left). Walks along faces take one load a step from it,
+  // not a search round the vertex.
+  std::vector<std::uint32_t> around_begin, around, turn_at;
   std::size_t cancelled_edges = 0;             // edges whose multiplicities summed to zero
 
   std::size_t edge_count() const { return origin_of.size() / 2; }
