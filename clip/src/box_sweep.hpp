@@ -77,6 +77,7 @@ void for_each_overlapping_pair(const std::vector<SweepBox>& a, const std::vector
 template <class F>
 void for_each_overlapping_pair(const std::vector<Box64>& a, const std::vector<Box64>& b,
                                F&& visit) {
+  if (a.empty() || b.empty()) return;  // nothing to sort: clip_near often has no left-out box
   for_each_overlapping_pair(sorted_for_sweep(a), sorted_for_sweep(b), visit);
 }
 

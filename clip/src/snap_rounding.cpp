@@ -146,8 +146,7 @@ void close_hot_set(const std::vector<Segment>& segs, const SegmentIndex& index, 
                    const std::vector<Point64>& split_points,
                    const StopsOf& splits_of, bool classic,
                    PointSet& is_hot, Closure& c, std::vector<Point64>& fresh) {
-  std::vector<SweepBox> split_sweep;
-  if (!split_points.empty()) split_sweep = sorted_for_sweep(pixel_boxes(split_points));
+  std::vector<SweepBox> split_sweep;  // the split points' pixel boxes, sorted when first needed
   std::vector<std::uint32_t> slot;  // segment -> its place in `changed`, or kNoSlot
   constexpr std::uint32_t kNoSlot = 0xffffffffu;
   while (!fresh.empty()) {
@@ -248,6 +247,8 @@ void close_hot_set(const std::vector<Segment>& segs, const SegmentIndex& index, 
         consider(k, segs[t].a);
         consider(k, segs[t].b);
       });
+      if (split_sweep.empty() && !split_points.empty())
+        split_sweep = sorted_for_sweep(pixel_boxes(split_points));
       if (!split_sweep.empty())
         for_each_overlapping_pair(sorted_for_sweep(boxes), split_sweep,
                                   [&](std::uint32_t k, std::uint32_t v) { consider(k, split_points[v]); });
