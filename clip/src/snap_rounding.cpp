@@ -264,8 +264,21 @@ Fragments route(const std::vector<Segment>& segs, const Closure& c,
   RecycledVector<struct RouteStopsBuffer, std::pair<std::uint32_t, Point64>> stops;
   stops.assign(splits.begin(), splits.end());
   for (const auto& [s, h] : c.meets) stops.emplace_back(s, c.hot[h]);
-  // By segment (radix), then along each segment: most segments have one or two stops.
-  radix_sort(stops, [](const auto& x) { return std::uint64_t{x.first}; });
+  // By segment, then along each segment: most segments have one or two stops. With stops on
+  // a good share of the segments (tiles: every edge cut once or twice) one counting pass over
+  // segment ids beats the radix sort's two passes of 256 buckets.
+  if (8 * stops.size() >= segs.size()) {
+    RecycledVector<struct RouteBeginBuffer, std::uint32_t> at;
+    at.assign(segs.size() + 1, 0);
+    for (const auto& st : stops) ++at[st.first + 1];
+    for (std::size_t k = 1; k < at.size(); ++k) at[k] += at[k - 1];
+    RecycledVector<struct RouteSortedBuffer, std::pair<std::uint32_t, Point64>> sorted;
+    sorted.resize(stops.size());
+    for (const auto& st : stops) sorted[at[st.first]++] = st;
+    stops.swap(sorted);
+  } else {
+    radix_sort(stops, [](const auto& x) { return std::uint64_t{x.first}; });
+  }
   for (std::size_t i = 0; i < stops.size();) {
     std::size_t j = i + 1;
     while (j < stops.size() && stops[j].first == stops[i].first) ++j;
