@@ -56,28 +56,19 @@ struct Out {
   std::uint32_t h;
 };
 
-// Whether direction x comes before y counter-clockwise from angle 0 (angle_less), computed
-// without branches: around a vertex the outcome is a coin toss to the branch predictor, and
-// mispredicted branches were most of the angle sort.
-inline bool angle_before(Point64 x, Point64 y) {
-  const bool lx = (x.y < 0) | ((x.y == 0) & (x.x < 0));  // lower half-plane
-  const bool ly = (y.y < 0) | ((y.y == 0) & (y.x < 0));
-  const bool ccw = Int128(x.x) * y.y - Int128(x.y) * y.x > 0;  // differences: 64 x 64 bits
-  return (lx != ly) ? ly : ccw;
-}
-
 // Vertices of at most this degree (most of them) get their half-edges placed by rank.
 constexpr std::uint32_t kRankedDegree = 4;
 
 // Writes the n <= kRankedDegree half-edges of one vertex (out[0 .. n), starting at position b
 // of g.around) in counter-clockwise order: each one's place is the number of others before it,
 // every pair compared once (a tie, which a plane graph never has, keeps the listed order), so
-// the ranks are a permutation and no branch depends on a comparison.
+// the ranks are a permutation and no branch depends on a comparison: mispredicted branches
+// were most of the angle sort.
 void place_by_rank(const Out* out, std::uint32_t n, std::uint32_t b, PlaneGraph& g) {
   std::uint32_t rank[kRankedDegree] = {};
   for (std::uint32_t i = 1; i < n; ++i)
     for (std::uint32_t j = 0; j < i; ++j) {
-      const std::uint32_t i_first = angle_before(out[i].d, out[j].d);
+      const std::uint32_t i_first = angle_less_branch_free(out[i].d, out[j].d);
       rank[j] += i_first;
       rank[i] += 1 - i_first;
     }
