@@ -11,7 +11,7 @@ SegmentIndex::SegmentIndex(const std::vector<Segment>& segments,
                            const std::vector<std::uint32_t>& next)
     : segments_(&segments), next_(&next) {}
 
-std::uint32_t SegmentIndex::run_end(std::uint32_t s) const {
+SegmentIndex::RunEnd SegmentIndex::run_end(std::uint32_t s) const {
   // Greedy: extend while the next segment follows along the ring and keeps the run's x and y
   // directions (a zero component agrees with either).
   const std::vector<Segment>& segments = *segments_;
@@ -27,13 +27,13 @@ std::uint32_t SegmentIndex::run_end(std::uint32_t s) const {
     if (dy == 0) dy = ty;
     ++last;
   }
-  return last;
+  return {last, dx < 0};
 }
 
 void SegmentIndex::find_run_ends() const {
   const auto n = static_cast<std::uint32_t>(segments_->size());
   if (!run_ends_.empty() || n == 0) return;
-  for (std::uint32_t s = 0; s < n; s = run_ends_.back() + 1) run_ends_.push_back(run_end(s));
+  for (std::uint32_t s = 0; s < n; s = run_ends_.back().last + 1) run_ends_.push_back(run_end(s));
 }
 
 std::size_t SegmentIndex::run_length_x16() const {
@@ -49,17 +49,10 @@ void SegmentIndex::build_runs() const {
   find_run_ends();
   std::uint32_t ring = 0, s = 0;
   runs_.reserve(run_ends_.size());
-  for (const std::uint32_t last : run_ends_) {
+  for (const RunEnd& end : run_ends_) {
     if (s > 0 && next[s - 1] != s) ring = s;  // rings occupy consecutive ids
-    // x decreasing: the run's first segment with an x change says which way.
-    bool x_decreasing = false;
-    for (std::uint32_t t = s; t <= last; ++t)
-      if (segments[t].b.x != segments[t].a.x) {
-        x_decreasing = segments[t].b.x < segments[t].a.x;
-        break;
-      }
-    runs_.push_back({s, last, ring, x_decreasing});
-    s = last + 1;
+    runs_.push_back({s, end.last, ring, end.x_decreasing});
+    s = end.last + 1;
   }
   run_boxes_.resize(runs_.size());
   for (std::size_t r = 0; r < runs_.size(); ++r) {

@@ -69,8 +69,14 @@ class SegmentIndex {
   // Pairs of segments of runs a and b whose boxes overlap.
   template <class F>
   void pairs_between(std::uint32_t a, std::uint32_t b, F& visit) const;
-  // The last segment of the greedy run starting at segment s.
-  std::uint32_t run_end(std::uint32_t s) const;
+  // The greedy run starting at segment s: its last segment, and whether x decreases along it.
+  struct RunEnd {
+    std::uint32_t last;
+    bool x_decreasing;
+  };
+  RunEnd run_end(std::uint32_t s) const;
+  // Fills run_ends_ once, for whichever of run_length_x16 and build_runs asks first.
+  void find_run_ends() const;
   // Builds runs_ and run_boxes_ on first use: noding through the segment grid without hot
   // pixels (checkerboards, tiles) never queries the index, and building the runs was a few
   // percent of such an operation.
@@ -79,10 +85,7 @@ class SegmentIndex {
   const std::vector<Segment>* segments_;  // boxes are computed, not stored: less memory traffic
   const std::vector<std::uint32_t>* next_;
   mutable bool built_ = false;
-  // The last segment of each greedy run, in order: found once, by whichever of
-  // run_length_x16 and build_runs asks first.
-  mutable RecycledVector<struct IndexRunEndsBuffer, std::uint32_t> run_ends_;
-  void find_run_ends() const;
+  mutable RecycledVector<struct IndexRunEndsBuffer, RunEnd> run_ends_;  // in segment order
   mutable RecycledVector<struct IndexRunsBuffer, Run> runs_;
   mutable RecycledVector<struct IndexRunBoxesBuffer, Box64> run_boxes_;
   // Run boxes, sorted_for_sweep; sorted on first use (noding through the segment grid and
