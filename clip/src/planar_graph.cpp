@@ -34,8 +34,8 @@ struct Piece {
   std::int8_t sign;  // +1 when the fragment runs lo -> hi
 };
 
-// Sorts [first, last) stably: by insertion when it is short, the common case here (a vertex
-// has a few half-edges, and is the lower end of a few pieces), by merge sort otherwise.
+// Sorts [first, last) stably: by insertion when it is short, by merge sort otherwise. For the
+// half-edges round vertices of degree above kRankedDegree (below: place_by_rank).
 template <class It, class Less>
 void sort_short_run(It first, It last, Less less) {
   if (last - first > 16) {
@@ -314,7 +314,7 @@ void build_plane_graph(const std::vector<Segment>& segments,
   // lo. (Sorting each lo's short run by hi instead branched unpredictably on every piece.)
   {
     RecycledVector<struct AtBuffer, std::uint32_t> at;
-    RecycledVector<struct ByLoBuffer, Piece> sorted;
+    RecycledVector<struct PieceSortBuffer, Piece> sorted;
     sorted.resize(pieces.size());
     auto counting_sort = [&](auto id_of) {
       at.assign(keys.size() + 1, 0);
