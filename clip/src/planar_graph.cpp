@@ -312,20 +312,8 @@ void build_plane_graph(const std::vector<Segment>& segments,
   for (std::size_t i = 0; i < keys.size(); ++i) g.vertices[i] = point_of(keys[i]);
   // Sorted by (lo, hi), stably: two counting sorts (vertex ids are small), by hi and then by
   // lo. (Sorting each lo's short run by hi instead branched unpredictably on every piece.)
-  {
-    RecycledVector<struct AtBuffer, std::uint32_t> at;
-    RecycledVector<struct PieceSortBuffer, Piece> sorted;
-    sorted.resize(pieces.size());
-    auto counting_sort = [&](auto id_of) {
-      at.assign(keys.size() + 1, 0);
-      for (const Piece& p : pieces) ++at[id_of(p) + 1];
-      for (std::size_t v = 1; v < at.size(); ++v) at[v] += at[v - 1];
-      for (const Piece& p : pieces) sorted[at[id_of(p)]++] = p;
-      pieces.swap(sorted);
-    };
-    counting_sort([](const Piece& p) { return p.hi; });
-    counting_sort([](const Piece& p) { return p.lo; });
-  }
+  counting_sort(pieces, keys.size(), [](const Piece& p) { return p.hi; });
+  counting_sort(pieces, keys.size(), [](const Piece& p) { return p.lo; });
   // Merge pieces with equal endpoints, summing multiplicities per (channel, polygon). Most
   // edges have one piece: written straight out. In a larger group the pieces come in segment
   // order, which is already (channel, polygon) order for clip's operands (the sorts are

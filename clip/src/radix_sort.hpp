@@ -73,6 +73,20 @@ void lsd_passes(std::vector<T>& v, KeyOf& key_of) {
 
 }  // namespace radix_detail
 
+// Stable counting sort of v by id_of(x) < buckets, in one pass: for ids that are small next to
+// v's size (vertex ids, segment ids), where the radix sort would take two passes or more.
+template <class T, class IdOf>
+void counting_sort(std::vector<T>& v, std::size_t buckets, IdOf id_of) {
+  RecycledVector<struct CountingSortAtBuffer, std::uint32_t> at;
+  at.assign(buckets + 1, 0);
+  for (const T& x : v) ++at[id_of(x) + 1];
+  for (std::size_t k = 1; k < at.size(); ++k) at[k] += at[k - 1];
+  RecycledVector<struct CountingSortOutBuffer, T> sorted;
+  sorted.resize(v.size());
+  for (const T& x : v) sorted[at[id_of(x)]++] = x;
+  v.swap(sorted);
+}
+
 template <class T, class KeyOf>
 void radix_sort(std::vector<T>& v, KeyOf key_of) {
   if (v.size() <= 32) {  // insertion sort: stable, no buffer

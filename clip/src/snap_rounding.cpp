@@ -268,14 +268,7 @@ Fragments route(const std::vector<Segment>& segs, const Closure& c,
   // a good share of the segments (tiles: every edge cut once or twice) one counting pass over
   // segment ids beats the radix sort's two passes of 256 buckets.
   if (8 * stops.size() >= segs.size()) {
-    RecycledVector<struct RouteBeginBuffer, std::uint32_t> at;
-    at.assign(segs.size() + 1, 0);
-    for (const auto& st : stops) ++at[st.first + 1];
-    for (std::size_t k = 1; k < at.size(); ++k) at[k] += at[k - 1];
-    RecycledVector<struct RouteSortedBuffer, std::pair<std::uint32_t, Point64>> sorted;
-    sorted.resize(stops.size());
-    for (const auto& st : stops) sorted[at[st.first]++] = st;
-    stops.swap(sorted);
+    counting_sort(stops, segs.size(), [](const auto& x) { return x.first; });
   } else {
     radix_sort(stops, [](const auto& x) { return std::uint64_t{x.first}; });
   }

@@ -2,6 +2,7 @@
 // is a permutation of the input. Sizes cover every path (insertion, comparison, 8-bit digits
 // with four lanes, 11-bit digits with two, lanes of unequal length); keys are clustered (long
 // runs of one digit, what the lanes are for), spread over all 64 bits, or few and repeated.
+// counting_sort, beside it, against std::stable_sort by id.
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
@@ -46,6 +47,19 @@ RC_GTEST_PROP(RadixSort, SortsByKeyAndKeepsEveryElement, ()) {
   std::vector<Item> items(size);
   for (std::uint32_t i = 0; i < size; ++i) items[i] = {keys[i], i};
   expect_sorted_permutation(std::move(items));
+}
+
+RC_GTEST_PROP(CountingSort, EqualsAStableSortById, ()) {
+  const auto buckets = *rc::gen::inRange<std::size_t>(1, 2000);
+  const auto ids = *rc::gen::container<std::vector<std::uint64_t>>(
+      rc::gen::inRange<std::uint64_t>(0, buckets));
+  std::vector<Item> items(ids.size());
+  for (std::uint32_t i = 0; i < ids.size(); ++i) items[i] = {ids[i], i};
+  std::vector<Item> expected = items;
+  std::stable_sort(expected.begin(), expected.end(),
+                   [](const Item& a, const Item& b) { return a.first < b.first; });
+  counting_sort(items, buckets, [](const Item& x) { return x.first; });
+  RC_ASSERT(items == expected);  // stable: equal ids keep their input order
 }
 
 TEST(RadixSort, RunsOfOneDigitAcrossLaneBoundaries) {
