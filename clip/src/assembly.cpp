@@ -87,8 +87,31 @@ BoundaryWalks trace_boundaries(const PlaneGraph& g, const std::vector<FaceLabel>
   return walks;
 }
 
+namespace {
+
+// The points where two rings of one region touch, sorted (a point appears in several rings).
+std::vector<Point64> shared_points(const RegionRings& region) {
+  std::vector<Point64> all;
+  for (const auto* rings : {&region.outers, &region.holes})
+    for (const Ring& r : *rings) all.insert(all.end(), r.begin(), r.end());
+  std::sort(all.begin(), all.end());
+  std::vector<Point64> shared;
+  for (std::size_t i = 1; i < all.size(); ++i)
+    if (all[i] == all[i - 1] && (shared.empty() || shared.back() != all[i])) shared.push_back(all[i]);
+  return shared;
+}
+
+// A region's rings reduced to its corners and shared points (Assembled, corner_bridges).
+void keep_corners_and_shared_points(RegionRings& region) {
+  const std::vector<Point64> shared = shared_points(region);
+  for (auto* rings : {&region.outers, &region.holes})
+    for (Ring& r : *rings) r = drop_collinear_except(r, shared);
+}
+
+}  // namespace
+
 Assembled assemble(const PlaneGraph& g, const std::vector<SideState>& left,
-                   const LabelOf& label_of, bool collinear_free_operands) {
+                   const LabelOf& label_of, bool collinear_free_operands, bool corner_bridges) {
   RecycledVector<struct EmittedBuffer, FaceLabel> emitted;
   emitted.assign(2 * g.edge_count(), -1);
   for (std::uint32_t e = 0; e < g.edge_count(); ++e) {
@@ -181,7 +204,10 @@ Assembled assemble(const PlaneGraph& g, const std::vector<SideState>& left,
         loops.push_back({from, static_cast<std::uint32_t>(split_loops.size()), true});
       }
   }
-  if (holes == 0) return out;
+  if (holes == 0) {
+    out.labels = std::move(ring_label);
+    return out;
+  }
   // Regions with holes move to out.holed; the rest of the rings stay, in their order.
   std::vector<std::uint32_t> order(out.rings.size());
   for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
@@ -194,7 +220,10 @@ Assembled assemble(const PlaneGraph& g, const std::vector<SideState>& left,
     for (; j < order.size() && ring_label[order[j]] == ring_label[order[i]]; ++j)
       with_holes = with_holes || !outer[order[j]];
     if (!with_holes) {
-      for (std::size_t k = i; k < j; ++k) kept.push_back(std::move(out.rings[order[k]]));
+      for (std::size_t k = i; k < j; ++k) {
+        kept.push_back(std::move(out.rings[order[k]]));
+        out.labels.push_back(ring_label[order[k]]);
+      }
     } else {
       RegionRings& region = out.holed.emplace_back();
       region.label = ring_label[order[i]];
@@ -204,6 +233,7 @@ Assembled assemble(const PlaneGraph& g, const std::vector<SideState>& left,
             .push_back(ring_along(g, half_edges(loops[r]) + loops[r].begin,
                                   half_edges(loops[r]) + loops[r].end));
       }
+      if (corner_bridges) keep_corners_and_shared_points(region);
     }
     i = j;
   }

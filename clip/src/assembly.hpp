@@ -25,12 +25,18 @@ struct RegionRings {
 // with holes (sorted by label) for hole splitting. Loops that revisit a vertex are split there,
 // so every ring is a simple closed polyline of graph edges. collinear_free_operands: no input
 // ring has collinear consecutive vertices, so only graph vertices can be collinear.
+// labels[i] is the label of rings[i]. corner_bridges: the rings of a region with holes keep only
+// the points hole splitting may bridge to whatever the region's history: its corners and the
+// points where two of its rings touch (without it, every graph vertex on them stays, and which
+// vertices the graph has depends on the operands, not only on the region).
 struct Assembled {
   std::vector<Ring> rings;
+  std::vector<FaceLabel> labels;
   std::vector<RegionRings> holed;
 };
 Assembled assemble(const PlaneGraph& g, const std::vector<SideState>& left,
-                   const LabelOf& label_of, bool collinear_free_operands);
+                   const LabelOf& label_of, bool collinear_free_operands,
+                   bool corner_bridges = false);
 
 // Closed walks along the half-edges with emitted[h] >= 0, each following the sharpest left
 // turn among half-edges of its own label, in a fixed order. Flat: walk i is

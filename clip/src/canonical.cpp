@@ -91,7 +91,7 @@ bool collinear_free(const PolygonSet& set) {
   return true;
 }
 
-void sort_canonical(PolygonSet& set) {
+void sort_canonical(PolygonSet& set, std::vector<std::int64_t>* labels) {
   // Sorted by first (least) vertex, which polygons share only when they touch there: the
   // comparisons read one 64-bit key kept next to the index (the point, shifted into unsigned
   // 32-bit halves: order-preserving for in-range coordinates; 0 for an empty ring, which sorts
@@ -114,6 +114,28 @@ void sort_canonical(PolygonSet& set) {
   sorted.reserve(set.size());
   for (const Key& k : keys) sorted.push_back(std::move(set[k.index]));
   set.swap(sorted);
+  if (!labels) return;
+  std::vector<std::int64_t> permuted(keys.size());
+  for (std::size_t i = 0; i < keys.size(); ++i) permuted[i] = (*labels)[keys[i].index];
+  labels->swap(permuted);
+}
+
+Ring drop_collinear_except(const Ring& ring, const std::vector<Point64>& keep) {
+  // The stack algorithm of canonical_ring from a point that stays (a corner: the smallest
+  // point of a simple ring is one), testing only points not in `keep`.
+  const std::size_t n = ring.size();
+  const auto least = static_cast<std::size_t>(std::min_element(ring.begin(), ring.end()) - ring.begin());
+  auto droppable = [&](Point64 p) { return !std::binary_search(keep.begin(), keep.end(), p); };
+  Ring out;
+  out.reserve(n);
+  for (std::size_t k = 0; k <= n; ++k) {
+    const Point64 p = ring[(least + k) % n];
+    while (out.size() >= 2 && droppable(out.back()) &&
+           orientation(out[out.size() - 2], out.back(), p) == Orientation::kCollinear)
+      out.pop_back();
+    if (k < n) out.push_back(p);
+  }
+  return out;
 }
 
 }  // namespace edgeland::detail

@@ -25,7 +25,13 @@ Ring canonical_ring_from(const std::vector<Point64>& points, const std::uint8_t*
 // Whether no ring of `set` has three consecutive collinear vertices (cyclically). O(n).
 bool collinear_free(const PolygonSet& set);
 
-// Canonical order: rings sorted (each already canonical). O(p log p).
-void sort_canonical(PolygonSet& set);
+// Canonical order: rings sorted (each already canonical). O(p log p). labels (optional, one per
+// ring) are permuted along.
+void sort_canonical(PolygonSet& set, std::vector<std::int64_t>* labels = nullptr);
+
+// The ring with every point that is collinear with its neighbours dropped, except points listed
+// in `keep` (sorted): for a region's rings before hole splitting, where points two rings touch
+// at must stay. `ring` must be simple with nonzero area. O(n log k).
+Ring drop_collinear_except(const Ring& ring, const std::vector<Point64>& keep);
 
 }  // namespace edgeland::detail

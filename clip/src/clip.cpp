@@ -17,12 +17,22 @@
 #include "labeling.hpp"
 #include "operand_screen.hpp"
 #include "planar_graph.hpp"
+#include "pipeline.hpp"
+#include "valid_set_factory.hpp"
 #include "snap_rounding.hpp"
 
 namespace edgeland {
 namespace {
 
+using detail::Pipeline;
+using detail::Screening;
+using detail::require_valid;
+using detail::guarded;
 using detail::SideState;
+
+ClipResult run_clip(const Pipeline& p, std::vector<Box64>* moved_boxes = nullptr) {
+  return detail::run(p, moved_boxes).clipped;
+}
 
 const char* operand_name(Operand o) {
   switch (o) {
@@ -31,137 +41,6 @@ const char* operand_name(Operand o) {
     case Operand::kRings: return "rings";
   }
   return "?";
-}
-
-template <class T>
-std::size_t bytes(const std::vector<T>& v) {
-  return v.capacity() * sizeof(T);
-}
-std::size_t footprint(const detail::EdgeList& e) {
-  return bytes(e.segments) + bytes(e.channel) + bytes(e.polygon) + bytes(e.next);
-}
-std::size_t footprint(const detail::PlaneGraph& g) {
-  return bytes(g.vertices) + bytes(g.origin_of) + bytes(g.chain) + bytes(g.mult_begin) +
-         bytes(g.mults) + bytes(g.around_begin) + bytes(g.around) + bytes(g.turn_at);
-}
-std::size_t footprint(const std::vector<SideState>& labels) { return bytes(labels); }
-
-// A per-thread object whose arrays keep their capacity from one operation to the next (the edge
-// list, the plane graph, the labels): allocating them afresh for every operation costs page
-// faults each time (edgeland/kernel/recycled_vector.hpp says why). An object grown past
-// kMaxKept is freed after use. Should a use nest within another (nothing in the pipeline does),
-// the inner one gets a fresh object.
-template <class T>
-class Reused {
- public:
-  static constexpr std::size_t kMaxKept = std::size_t{32} << 20;
-  Reused() : own_(in_use() ? std::make_unique<T>() : nullptr) { in_use() = true; }
-  ~Reused() {
-    if (own_) return;
-    in_use() = false;
-    if (footprint(shared()) > kMaxKept) shared() = T{};
-  }
-  Reused(const Reused&) = delete;
-  Reused& operator=(const Reused&) = delete;
-  T& operator*() { return own_ ? *own_ : shared(); }
-
- private:
-  static bool& in_use() {
-    thread_local bool used = false;
-    return used;
-  }
-  static T& shared() {
-    thread_local T object;
-    return object;
-  }
-  std::unique_ptr<T> own_;
-};
-
-detail::EdgeList& cleared(detail::EdgeList& edges) {
-  edges.clear();
-  return edges;
-}
-
-void require_valid(const PolygonSet& set, Operand which) {
-  const ValidationReport report = validate(set, 1);
-  if (!report.ok()) throw InvalidInput(which, report.violations.front());
-}
-
-// The validating clip() checks its operands while it clips them (clip/README.md, "Validating
-// while clipping"): the O(n) rules first (operand_screen.hpp), then noding stops at any ring
-// meeting itself or members of one operand crossing or overlapping alike (noding.hpp), and
-// labeling at any face covered twice by one operand. Labeling's check is
-// exact only when snap rounding moved nothing; when it moved something, an operand of several
-// rings is validated in full instead (one ring needs no coverage check). Should anything look
-// wrong, the pipeline stops (`suspect`) and the caller validates both operands in full, which
-// names the violation, or finds none and clips them as valid.
-struct Screening {
-  const PolygonSet* operand[2];
-  bool validated[2] = {false, false};
-  bool suspect = false;
-
-  void validate_in_full(int c) {
-    if (validated[c]) return;
-    require_valid(*operand[c], c == 0 ? Operand::kSubject : Operand::kClip);
-    validated[c] = true;
-  }
-  bool unchecked_multi_ring(int c) const { return !validated[c] && operand[c]->size() > 1; }
-};
-
-struct Pipeline {
-  Reused<detail::EdgeList> reused_edges;
-  detail::EdgeList& edges = cleared(*reused_edges);
-  detail::LabelMode mode;
-  detail::LabelOf label_of = detail::LabelOf::operation(ClipOp::kUnion);
-  // No operand ring has collinear consecutive vertices: only graph vertices can be collinear.
-  bool collinear_free_operands = false;
-  bool simple_rings = true;  // validated operands; normalize's rings may cross themselves
-  Screening* screening = nullptr;  // operands not validated yet (noding then tests all pairs)
-};
-
-ClipResult run(const Pipeline& p, std::vector<Box64>* moved_boxes = nullptr) {
-  ClipResult result;
-  const std::vector<Segment>& segs = p.edges.segments;
-  const std::vector<std::uint32_t>& next = p.edges.next;
-  detail::SnapStats snap;
-  const auto fragments = detail::snap_round(segs, next, p.simple_rings, snap,
-                                            p.screening ? &p.edges.channel : nullptr);
-  // The graph and the labels reuse per-thread storage (recycled_vector.hpp says why).
-  Reused<detail::PlaneGraph> graph;
-  Reused<std::vector<SideState>> labels;
-  detail::PlaneGraph& g = *graph;
-  std::vector<SideState>& left = *labels;
-  bool check_cover = false;
-  if (Screening* screen = p.screening) {
-    if (snap.operand_invalid) {
-      screen->suspect = true;
-      return result;
-    }
-    if (snap.hot_pixels > 0) {  // moved: labeling's check would not be exact
-      for (int c = 0; c < 2; ++c)
-        if (screen->unchecked_multi_ring(c)) screen->validate_in_full(c);
-    }
-    check_cover = screen->unchecked_multi_ring(0) || screen->unchecked_multi_ring(1);
-  }
-  detail::build_plane_graph(segs, fragments, p.edges.channel, p.edges.polygon, next,
-                            snap.touched, g);
-  if (!detail::label_sides(g, p.mode, left, check_cover)) {
-    p.screening->suspect = true;
-    return result;
-  }
-  detail::Assembled assembled = detail::assemble(g, left, p.label_of, p.collinear_free_operands);
-  result.polygons = std::move(assembled.rings);  // canonical rings
-  for (auto& region : assembled.holed) {
-    for (Ring& r : detail::split_holes(std::move(region.outers), std::move(region.holes),
-                                       result.stats.holes_split))
-      result.polygons.push_back(detail::canonical_ring(std::move(r)));
-  }
-  detail::sort_canonical(result.polygons);
-  result.stats.intersections = snap.intersections;
-  result.stats.vertices_snapped = snap.hot_pixels;
-  result.stats.zero_area_dropped = g.cancelled_edges;
-  if (moved_boxes) *moved_boxes = std::move(snap.moved_boxes);
-  return result;
 }
 
 Box64 grown(Box64 b, std::int64_t by) {
@@ -201,7 +80,7 @@ ClipResult clip_near(ClipOp op, const PolygonSet& subject, const PolygonSet& cli
     p.label_of = detail::LabelOf::operation(op);
     p.collinear_free_operands = collinear_free;
     std::vector<Box64> moved;
-    ClipResult r = run(p, &moved);
+    ClipResult r = run_clip(p, &moved);
     if (screening && screening->suspect) return r;
 
     std::vector<Box64> left_out;
@@ -226,31 +105,6 @@ ClipResult clip_near(ClipOp op, const PolygonSet& subject, const PolygonSet& cli
     std::inplace_merge(r.polygons.begin(), r.polygons.begin() + computed, r.polygons.end());
     return r;
   }
-}
-
-// Runs the pipeline; any failure of an internal invariant becomes an InternalError with the
-// inputs, and in checked mode so does an output that fails validation. Operands not validated
-// yet are validated before an InternalError is thrown (`validate_inputs`): a pipeline fed an
-// invalid operand may fail anywhere, and that is the caller's InvalidInput, not a bug.
-template <class F>
-ClipResult guarded(F&& body, const ClipOptions& options, const std::string& what,
-                   const std::function<std::string()>& subject_wkt,
-                   const std::function<std::string()>& clip_wkt,
-                   const std::function<void()>& validate_inputs = {}) {
-  ClipResult r;
-  try {
-    r = body();
-  } catch (const std::logic_error& e) {
-    if (validate_inputs) validate_inputs();
-    throw InternalError(what + ": " + e.what(), subject_wkt(), clip_wkt());
-  }
-  if (options.checked) {
-    const ValidationReport report = validate(r.polygons, 1);
-    if (!report.ok())
-      throw InternalError(what + ": invalid output: " + report.violations.front().describe(),
-                          subject_wkt(), clip_wkt());
-  }
-  return r;
 }
 
 void require_valid_box(const Box64& box) {
@@ -290,7 +144,7 @@ ClipResult box_of_valid(const PolygonSet& set, const Box64& box, const ClipOptio
         p.mode = detail::LabelMode::kOwner;
         p.label_of = detail::LabelOf::operation(ClipOp::kIntersection);
         p.collinear_free_operands = collinear_free;
-        return run(p);
+        return run_clip(p);
       },
       options, "clip_to_box", [&] { return to_wkt(set); }, [&] { return to_wkt(cell); });
 }
@@ -380,18 +234,6 @@ ValidSet::ValidSet(PolygonSet set, Operand which) : set_(std::move(set)) {
   collinear_free_ = detail::collinear_free(set_);
 }
 
-// The one way library code makes a ValidSet without validating: from an operation's output.
-struct ValidSetFactory {
-  static ValidClipResult from(ClipResult r) {
-    ValidSet set(std::move(r.polygons), ValidSet::Trusted{});
-    set.canonical_ = true;  // every output is in canonical form (clip.hpp)
-    set.collinear_free_ = true;
-    return {std::move(set), r.stats};
-  }
-  static bool canonical(const ValidSet& s) { return s.canonical_; }
-  static bool collinear_free(const ValidSet& s) { return s.collinear_free_; }
-};
-
 ValidClipResult clip(ClipOp op, const ValidSet& subject, const ValidSet& clip_set,
                      const ClipOptions& options) {
   return ValidSetFactory::from(clip_of_valid(op, subject.polygons(), clip_set.polygons(), options,
@@ -424,7 +266,7 @@ ClipResult normalize(const std::vector<Ring>& rings, FillRule rule, const ClipOp
         p.simple_rings = false;
         p.mode = detail::LabelMode::kWinding;
         p.label_of = detail::LabelOf::fill(rule);
-        return run(p);
+        return run_clip(p);
       },
       options, std::string("normalize ") + fill_rule_name(rule),
       [&] {

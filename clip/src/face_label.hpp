@@ -41,20 +41,60 @@ inline bool filled(FillRule rule, std::int32_t winding) {
   return false;
 }
 
+// The new label of a face of a labeled overlay (relabel.hpp): channel 0 names the region
+// polygon covering the face (its label from region_labels), channel 1 counts the shape
+// polygons and the window around it; inside both when the count reaches inside_count.
+// Label 0 (no region) is not in the result.
+struct RelabelTable {
+  const std::uint32_t* region_labels = nullptr;  // per region polygon
+  const std::uint32_t* table = nullptr;          // new label inside, per old label
+  std::size_t table_size = 0;                    // labels from here on are kept
+  std::int32_t inside_count = 1;
+  FaceLabel operator()(const SideState& st) const {
+    const std::uint32_t old = st.s[0] >= 0 ? region_labels[st.s[0]] : 0;
+    const std::uint32_t now = st.s[1] >= inside_count && old < table_size ? table[old] : old;
+    return now == 0 ? -1 : static_cast<FaceLabel>(now);
+  }
+};
+
+// The label of a face cut into windows (relabel.hpp, cut_to_windows): the window (channel 1
+// owner) in the high half, the region's label in the low half; -1 outside either.
+inline FaceLabel window_label(const std::uint32_t* region_labels, const SideState& st) {
+  if (st.s[0] < 0 || st.s[1] < 0) return -1;
+  return family(st.s[1], 0) | static_cast<FaceLabel>(region_labels[st.s[0]]);
+}
+
 class LabelOf {
  public:
-  static LabelOf operation(ClipOp op) { return LabelOf(false, op, FillRule::kEvenOdd); }
-  static LabelOf fill(FillRule rule) { return LabelOf(true, ClipOp::kUnion, rule); }
+  static LabelOf operation(ClipOp op) { return LabelOf(Kind::kOperation, op, FillRule::kEvenOdd); }
+  static LabelOf fill(FillRule rule) { return LabelOf(Kind::kFill, ClipOp::kUnion, rule); }
+  static LabelOf relabel(const RelabelTable& table) {
+    LabelOf l(Kind::kRelabel, ClipOp::kUnion, FillRule::kEvenOdd);
+    l.relabel_ = table;
+    return l;
+  }
+  static LabelOf windows(const std::uint32_t* region_labels) {
+    LabelOf l(Kind::kWindows, ClipOp::kUnion, FillRule::kEvenOdd);
+    l.relabel_.region_labels = region_labels;
+    return l;
+  }
   FaceLabel operator()(const SideState& s) const {
-    if (by_fill_) return filled(rule_, s.s[0]) ? 0 : -1;
-    return op_label(op_, s);
+    switch (kind_) {
+      case Kind::kOperation: return op_label(op_, s);
+      case Kind::kFill: return filled(rule_, s.s[0]) ? 0 : -1;
+      case Kind::kRelabel: return relabel_(s);
+      case Kind::kWindows: return window_label(relabel_.region_labels, s);
+    }
+    return -1;
   }
 
  private:
-  LabelOf(bool by_fill, ClipOp op, FillRule rule) : by_fill_(by_fill), op_(op), rule_(rule) {}
-  bool by_fill_;
+  enum class Kind : std::uint8_t { kOperation, kFill, kRelabel, kWindows };
+  LabelOf(Kind kind, ClipOp op, FillRule rule) : kind_(kind), op_(op), rule_(rule) {}
+  Kind kind_;
   ClipOp op_;
   FillRule rule_;
+  RelabelTable relabel_;
 };
 
 }  // namespace edgeland::detail

@@ -37,6 +37,10 @@ SideState cross(const PlaneGraph& g, LabelMode mode, SideState s, std::uint32_t 
   std::int32_t s0 = s.s[0], s1 = s.s[1];
   if (mode == LabelMode::kWinding) {
     for (std::uint32_t k = first; k < last; ++k) s0 += dir * g.mults[k].net;
+  } else if (mode == LabelMode::kOwnerAndCount) {
+    s0 = owner_after(g, dir, 0, s0, first, last);
+    for (std::uint32_t k = first; k < last; ++k)
+      if (g.mults[k].channel == 1) s1 += dir * g.mults[k].net;
   } else if (last - first == 1) {
     // One polygon's edge, the common case: owner_after for its channel, the other unchanged.
     const Multiplicity& m = g.mults[first];
@@ -253,6 +257,7 @@ Below find_below(const PlaneGraph& g, const std::vector<Piece>& pieces, const XS
 SideState empty_state(LabelMode mode) {
   SideState s;
   if (mode == LabelMode::kWinding) s.s = {0, 0};
+  if (mode == LabelMode::kOwnerAndCount) s.s = {-1, 0};
   return s;
 }
 

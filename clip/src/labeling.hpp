@@ -12,6 +12,7 @@ namespace edgeland::detail {
 enum class LabelMode : std::uint8_t {
   kOwner,    // per channel: index of the polygon covering the side, or -1
   kWinding,  // channel 0: winding number of all rings
+  kOwnerAndCount,  // channel 0 as kOwner; channel 1: how many of its rings wind around the side
 };
 
 struct SideState {

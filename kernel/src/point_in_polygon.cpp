@@ -38,6 +38,24 @@ Scan scan(Point64 p, const Ring& ring) noexcept {
   return s;
 }
 
+// The winding number around p + eps (1, eps): the ray from there runs a hair above p's row
+// (a vertex on the row is below it: the half-open rule of scan) and starts a hair right of p
+// (an edge through p crosses the ray's row left of its start: not counted).
+int winding_half_open(Point64 p, const Ring& ring) noexcept {
+  int winding = 0;
+  const std::size_t n = ring.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Point64 a = ring[i];
+    const Point64 b = ring[i + 1 == n ? 0 : i + 1];
+    if (a.y <= p.y) {
+      if (b.y > p.y && orient_det(a, b, p) > 0) ++winding;
+    } else if (b.y <= p.y && orient_det(a, b, p) < 0) {
+      --winding;
+    }
+  }
+  return winding;
+}
+
 // Binary search over [lo, hi] for the last index where `pred` holds; pred(lo) must hold and
 // pred must be true then false along the range.
 template <class Pred>
@@ -141,6 +159,10 @@ PointLocation locate(Point64 p, const PolygonSet& set) noexcept {
     if (where != PointLocation::kOutside) return where;
   }
   return PointLocation::kOutside;
+}
+
+bool inside_half_open(Point64 p, const Ring& ring) noexcept {
+  return winding_half_open(p, ring) != 0;
 }
 
 }  // namespace edgeland

@@ -37,6 +37,13 @@ EDGELAND_EXPORT int winding_number(Point64 p, const Ring& ring) noexcept;
 // Fewer than 3 vertices: only the boundary (a point or a segment) exists. O(n).
 EDGELAND_EXPORT PointLocation locate(Point64 p, const Ring& ring) noexcept;
 
+// The half-open rule (the pixel convention of round_to_grid, and the landscape's material_at):
+// whether the points p + eps (1, eps) are inside the ring for every small enough eps > 0.
+// Every point of the plane is then inside exactly one face of a partition by rings: a point on
+// an edge or a vertex belongs to the face to its east (north-east for a horizontal edge).
+// Any ring; nonzero winding rule. O(n).
+EDGELAND_EXPORT bool inside_half_open(Point64 p, const Ring& ring) noexcept;
+
 // The convex fast path of thesis 2.5.2 in O(log n): binary search for the fan triangle
 // (v_0, v_k, v_(k+1)) whose wedge at v_0 holds p, then one orientation test.
 // Precondition: is_convex(ring) and the ring is counter-clockwise; collinear vertices are

@@ -1,0 +1,148 @@
+#pragma once
+// The pipeline of clip/README.md as one call: the tagged edges of the operands in, the
+// canonical result polygons out. clip(), clip_to_box(), normalize() and the labeled overlays
+// (relabel.hpp) each fill a Pipeline and call run().
+#include <functional>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "edgeland/clip/clip.hpp"
+#include "face_label.hpp"
+#include "input_edges.hpp"
+#include "labeling.hpp"
+#include "planar_graph.hpp"
+
+namespace edgeland::detail {
+
+template <class T>
+std::size_t bytes(const std::vector<T>& v) {
+  return v.capacity() * sizeof(T);
+}
+inline std::size_t footprint(const EdgeList& e) {
+  return bytes(e.segments) + bytes(e.channel) + bytes(e.polygon) + bytes(e.next);
+}
+inline std::size_t footprint(const PlaneGraph& g) {
+  return bytes(g.vertices) + bytes(g.origin_of) + bytes(g.chain) + bytes(g.mult_begin) +
+         bytes(g.mults) + bytes(g.around_begin) + bytes(g.around) + bytes(g.turn_at);
+}
+inline std::size_t footprint(const std::vector<SideState>& labels) { return bytes(labels); }
+
+// A per-thread object whose arrays keep their capacity from one operation to the next (the edge
+// list, the plane graph, the labels): allocating them afresh for every operation costs page
+// faults each time (edgeland/kernel/recycled_vector.hpp says why). An object grown past
+// kMaxKept is freed after use. Should a use nest within another (nothing in the pipeline does),
+// the inner one gets a fresh object.
+template <class T>
+class Reused {
+ public:
+  static constexpr std::size_t kMaxKept = std::size_t{32} << 20;
+  Reused() : own_(in_use() ? std::make_unique<T>() : nullptr) { in_use() = true; }
+  ~Reused() {
+    if (own_) return;
+    in_use() = false;
+    if (footprint(shared()) > kMaxKept) shared() = T{};
+  }
+  Reused(const Reused&) = delete;
+  Reused& operator=(const Reused&) = delete;
+  T& operator*() { return own_ ? *own_ : shared(); }
+
+ private:
+  static bool& in_use() {
+    thread_local bool used = false;
+    return used;
+  }
+  static T& shared() {
+    thread_local T object;
+    return object;
+  }
+  std::unique_ptr<T> own_;
+};
+
+inline EdgeList& cleared(EdgeList& edges) {
+  edges.clear();
+  return edges;
+}
+
+// Throws InvalidInput naming `which` with validate()'s first violation.
+void require_valid(const PolygonSet& set, Operand which);
+
+// The validating clip() checks its operands while it clips them (clip/README.md, "Validating
+// while clipping"): the O(n) rules first (operand_screen.hpp), then noding stops at any ring
+// meeting itself or members of one operand crossing or overlapping alike (noding.hpp), and
+// labeling at any face covered twice by one operand. Labeling's check is
+// exact only when snap rounding moved nothing; when it moved something, an operand of several
+// rings is validated in full instead (one ring needs no coverage check). Should anything look
+// wrong, the pipeline stops (`suspect`) and the caller validates both operands in full, which
+// names the violation, or finds none and clips them as valid.
+struct Screening {
+  const PolygonSet* operand[2];
+  bool validated[2] = {false, false};
+  bool suspect = false;
+
+  void validate_in_full(int c) {
+    if (validated[c]) return;
+    require_valid(*operand[c], c == 0 ? Operand::kSubject : Operand::kClip);
+    validated[c] = true;
+  }
+  bool unchecked_multi_ring(int c) const { return !validated[c] && operand[c]->size() > 1; }
+};
+
+struct Pipeline {
+  Reused<EdgeList> reused_edges;
+  EdgeList& edges = cleared(*reused_edges);
+  LabelMode mode;
+  LabelOf label_of = LabelOf::operation(ClipOp::kUnion);
+  // No operand ring has collinear consecutive vertices: only graph vertices can be collinear.
+  bool collinear_free_operands = false;
+  bool simple_rings = true;  // validated operands; normalize's rings may cross themselves
+  // Holes are bridged only at corners of their region and at points where two of its rings
+  // touch (assembly.hpp), so the pieces depend on the region alone (relabel.hpp).
+  bool corner_bridges = false;
+  Screening* screening = nullptr;  // operands not validated yet (noding then tests all pairs)
+};
+
+
+// The result of run(): canonical polygons in canonical order, and when asked for, the face
+// label each came from (labels[i] for polygons[i]).
+struct PipelineResult {
+  ClipResult clipped;
+  std::vector<FaceLabel> labels;
+};
+
+// Runs the stages on p.edges. moved_boxes (optional): the boxes of every segment snap rounding
+// moved. with_labels: fill PipelineResult::labels. When p.screening finds a suspect operand the
+// result is empty and p.screening->suspect is set.
+PipelineResult run(const Pipeline& p, std::vector<Box64>* moved_boxes = nullptr,
+                   bool with_labels = false);
+
+// Runs the pipeline; any failure of an internal invariant becomes an InternalError with the
+// inputs, and in checked mode so does an output that fails validation. Operands not validated
+// yet are validated before an InternalError is thrown (`validate_inputs`): a pipeline fed an
+// invalid operand may fail anywhere, and that is the caller's InvalidInput, not a bug.
+inline const PolygonSet& result_polygons(const ClipResult& r) { return r.polygons; }
+inline const PolygonSet& result_polygons(const PipelineResult& r) { return r.clipped.polygons; }
+
+template <class F>
+auto guarded(F&& body, const ClipOptions& options, const std::string& what,
+             const std::function<std::string()>& subject_wkt,
+             const std::function<std::string()>& clip_wkt,
+             const std::function<void()>& validate_inputs = {}) {
+  decltype(body()) r;
+  try {
+    r = body();
+  } catch (const std::logic_error& e) {
+    if (validate_inputs) validate_inputs();
+    throw InternalError(what + ": " + e.what(), subject_wkt(), clip_wkt());
+  }
+  if (options.checked) {
+    const ValidationReport report = validate(result_polygons(r), 1);
+    if (!report.ok())
+      throw InternalError(what + ": invalid output: " + report.violations.front().describe(),
+                          subject_wkt(), clip_wkt());
+  }
+  return r;
+}
+
+}  // namespace edgeland::detail

@@ -1,0 +1,178 @@
+// Overlays of labeled regions (relabel.hpp): the pipeline of clip/README.md with a face label
+// made of the region below and the shape or window around it.
+#include "edgeland/clip/relabel.hpp"
+
+#include <algorithm>
+
+#include "canonical.hpp"
+#include "edgeland/kernel/wkt_writer.hpp"
+#include "pipeline.hpp"
+#include "valid_set_factory.hpp"
+
+namespace edgeland {
+namespace {
+
+const char* reason_text(InvalidOverlay::Reason r) {
+  switch (r) {
+    case InvalidOverlay::Reason::kLabelCount: return "the number of labels differs from the number of polygons";
+    case InvalidOverlay::Reason::kZeroLabel: return "a polygon is labeled 0";
+    case InvalidOverlay::Reason::kOutsideWindow: return "a polygon is not inside the window";
+    case InvalidOverlay::Reason::kBadWindow: return "a window is not a box of positive area within the coordinate bound";
+    case InvalidOverlay::Reason::kWindowsOverlap: return "two windows overlap";
+  }
+  return "?";
+}
+
+Ring box_ring(const Box64& b) {
+  return {b.min, {b.max.x, b.min.y}, b.max, {b.min.x, b.max.y}};
+}
+
+bool inside(const Box64& inner, const Box64& outer) {
+  return outer.contains(inner.min) && outer.contains(inner.max);
+}
+
+void require_labels(const ValidSet& regions, std::span<const RegionLabel> labels) {
+  if (labels.size() != regions.polygons().size())
+    throw InvalidOverlay(InvalidOverlay::Reason::kLabelCount, labels.size());
+  for (std::size_t i = 0; i < labels.size(); ++i)
+    if (labels[i] == kNoRegion) throw InvalidOverlay(InvalidOverlay::Reason::kZeroLabel, i);
+}
+
+void require_window(const Box64& w, std::size_t index) {
+  if (!in_range(w.min) || !in_range(w.max) || w.min.x >= w.max.x || w.min.y >= w.max.y)
+    throw InvalidOverlay(InvalidOverlay::Reason::kBadWindow, index);
+}
+
+// The labeled set of a pipeline result (its polygons are an operation's output: valid).
+LabeledSet labeled(detail::PipelineResult& r, std::size_t begin, std::size_t end,
+                   RegionLabel (*label_of)(detail::FaceLabel)) {
+  ClipResult part;
+  part.polygons.assign(std::make_move_iterator(r.clipped.polygons.begin() + static_cast<std::ptrdiff_t>(begin)),
+                       std::make_move_iterator(r.clipped.polygons.begin() + static_cast<std::ptrdiff_t>(end)));
+  LabeledSet out{ValidSetFactory::from(std::move(part)).set, {}};
+  out.labels.reserve(end - begin);
+  for (std::size_t i = begin; i < end; ++i) out.labels.push_back(label_of(r.labels[i]));
+  return out;
+}
+
+RegionLabel low_half(detail::FaceLabel l) { return static_cast<RegionLabel>(l & 0xffffffff); }
+std::size_t high_half(detail::FaceLabel l) { return static_cast<std::size_t>(l >> 32); }
+
+// In checked mode: every output polygon of `set` lies in `window` (InternalError otherwise).
+void check_inside(const PolygonSet& set, const Box64& window, const std::string& what,
+                  const std::function<std::string()>& inputs) {
+  for (const Polygon& p : set)
+    if (!inside(*bounding_box(p), window))
+      throw InternalError(what + ": output polygon outside its window", inputs(), to_wkt(PolygonSet{box_ring(window)}));
+}
+
+}  // namespace
+
+InvalidOverlay::InvalidOverlay(Reason r, std::size_t i)
+    : Error(std::string("invalid overlay: ") + reason_text(r) + " (index " + std::to_string(i) + ")"),
+      reason(r),
+      index(i) {}
+
+LabeledClipResult relabel(const ValidSet& regions, std::span<const RegionLabel> labels,
+                          const ValidSet& shape, const Box64& window,
+                          std::span<const RegionLabel> table, const ClipOptions& options) {
+  require_labels(regions, labels);
+  require_window(window, 0);
+  const PolygonSet& members = regions.polygons();
+  for (std::size_t i = 0; i < members.size(); ++i)
+    if (!inside(*bounding_box(members[i]), window))
+      throw InvalidOverlay(InvalidOverlay::Reason::kOutsideWindow, i);
+  // Shape members that cannot reach the window take no part. When all that do lie in the
+  // window, being inside one of them is being inside shape ∩ window and the window's own ring
+  // is not needed; otherwise it joins them and "inside both" is a count of two.
+  std::vector<std::uint32_t> near;
+  bool all_inside = true;
+  for (std::uint32_t i = 0; i < shape.polygons().size(); ++i) {
+    const Box64 b = *bounding_box(shape.polygons()[i]);
+    if (!b.overlaps(window)) continue;
+    near.push_back(i);
+    all_inside = all_inside && inside(b, window);
+  }
+  const PolygonSet window_rings{box_ring(window)};
+  detail::RelabelTable rt{labels.data(), table.data(), table.size(), all_inside ? 1 : 2};
+  auto inputs = [&] { return to_wkt(members); };
+  auto shape_wkt = [&] { return to_wkt(shape.polygons()) + " within " + to_wkt(window_rings); };
+  detail::PipelineResult r = detail::guarded(
+      [&] {
+        detail::Pipeline p;
+        detail::append_ring_edges(members, 0, true, p.edges);
+        detail::append_ring_edges(shape.polygons(), 1, true, p.edges, &near);
+        if (!all_inside) detail::append_ring_edges(window_rings, 1, true, p.edges);
+        p.mode = detail::LabelMode::kOwnerAndCount;
+        p.label_of = detail::LabelOf::relabel(rt);
+        p.collinear_free_operands = ValidSetFactory::collinear_free(regions) &&
+                                    ValidSetFactory::collinear_free(shape);
+        p.corner_bridges = true;
+        return detail::run(p, nullptr, true);
+      },
+      options, "relabel", inputs, shape_wkt);
+  if (options.checked) check_inside(r.clipped.polygons, window, "relabel", inputs);
+  LabeledClipResult out;
+  out.stats = r.clipped.stats;
+  const std::size_t n = r.clipped.polygons.size();
+  out.regions = labeled(r, 0, n, low_half);
+  return out;
+}
+
+std::vector<LabeledSet> cut_to_windows(const ValidSet& regions,
+                                       std::span<const RegionLabel> labels,
+                                       std::span<const Box64> windows,
+                                       const ClipOptions& options) {
+  require_labels(regions, labels);
+  PolygonSet window_rings;
+  for (std::size_t i = 0; i < windows.size(); ++i) {
+    require_window(windows[i], i);
+    window_rings.push_back(box_ring(windows[i]));
+  }
+  const ValidationReport disjoint = validate(window_rings, 1);
+  if (!disjoint.ok())
+    throw InvalidOverlay(InvalidOverlay::Reason::kWindowsOverlap, disjoint.violations.front().polygon);
+  const PolygonSet& members = regions.polygons();
+  auto inputs = [&] { return to_wkt(members); };
+  auto windows_wkt = [&] { return to_wkt(window_rings); };
+  detail::PipelineResult r = detail::guarded(
+      [&] {
+        detail::Pipeline p;
+        detail::append_ring_edges(members, 0, true, p.edges);
+        detail::append_ring_edges(window_rings, 1, true, p.edges);
+        p.mode = detail::LabelMode::kOwner;
+        p.label_of = detail::LabelOf::windows(labels.data());
+        p.collinear_free_operands = ValidSetFactory::collinear_free(regions);
+        p.corner_bridges = true;
+        return detail::run(p, nullptr, true);
+      },
+      options, "cut_to_windows", inputs, windows_wkt);
+  // Stable partition by window keeps each window's polygons in canonical order.
+  std::vector<std::size_t> order(r.labels.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return high_half(r.labels[a]) < high_half(r.labels[b]);
+  });
+  detail::PipelineResult sorted;
+  sorted.clipped.stats = r.clipped.stats;
+  for (std::size_t i : order) {
+    sorted.clipped.polygons.push_back(std::move(r.clipped.polygons[i]));
+    sorted.labels.push_back(r.labels[i]);
+  }
+  std::vector<LabeledSet> out;
+  std::size_t begin = 0;
+  for (std::size_t w = 0; w < windows.size(); ++w) {
+    std::size_t end = begin;
+    while (end < sorted.labels.size() && high_half(sorted.labels[end]) == w) ++end;
+    if (options.checked) {
+      const PolygonSet part(sorted.clipped.polygons.begin() + static_cast<std::ptrdiff_t>(begin),
+                            sorted.clipped.polygons.begin() + static_cast<std::ptrdiff_t>(end));
+      check_inside(part, windows[w], "cut_to_windows", inputs);
+    }
+    out.push_back(labeled(sorted, begin, end, low_half));
+    begin = end;
+  }
+  return out;
+}
+
+}  // namespace edgeland

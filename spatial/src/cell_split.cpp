@@ -1,0 +1,61 @@
+#include "cell_split.hpp"
+
+#include <string>
+
+namespace edgeland::detail {
+namespace {
+
+std::int64_t width(const Box64& b) { return b.max.x - b.min.x; }
+std::int64_t height(const Box64& b) { return b.max.y - b.min.y; }
+std::int64_t mid(std::int64_t lo, std::int64_t hi) { return lo + (hi - lo) / 2; }
+
+}  // namespace
+
+void require_config(const Box64& world, const LandscapeConfig& c) {
+  if (!in_range(world.min) || !in_range(world.max))
+    throw InvalidConfig("world box beyond the coordinate bound");
+  if (world.min.x >= world.max.x || world.min.y >= world.max.y)
+    throw InvalidConfig("world box without positive width and height");
+  if (c.edge_cap < 4) throw InvalidConfig("edge_cap below 4");
+  if (c.merge_below >= c.edge_cap) throw InvalidConfig("merge_below not below edge_cap");
+  if (c.min_cell_size < 1) throw InvalidConfig("min_cell_size below 1");
+  if (c.grid_depth < -1 || c.grid_depth > kMaxGridDepth)
+    throw InvalidConfig("grid_depth outside -1.." + std::to_string(kMaxGridDepth));
+  if (c.tree != TreeKind::kQuadtree && c.tree != TreeKind::kKdTree)
+    throw InvalidConfig("unknown tree kind");
+}
+
+bool can_split(const Box64& box, const LandscapeConfig& config) noexcept {
+  return width(box) > config.min_cell_size || height(box) > config.min_cell_size;
+}
+
+std::vector<Box64> split_boxes(const Box64& box, const LandscapeConfig& config) {
+  bool cut_x = width(box) > config.min_cell_size;
+  bool cut_y = height(box) > config.min_cell_size;
+  if (config.tree == TreeKind::kKdTree && cut_x && cut_y) {
+    cut_x = width(box) >= height(box);
+    cut_y = !cut_x;
+  }
+  std::vector<std::int64_t> xs{box.min.x}, ys{box.min.y};
+  if (cut_x) xs.push_back(mid(box.min.x, box.max.x));
+  if (cut_y) ys.push_back(mid(box.min.y, box.max.y));
+  xs.push_back(box.max.x);
+  ys.push_back(box.max.y);
+  std::vector<Box64> out;
+  for (std::size_t j = 0; j + 1 < ys.size(); ++j)
+    for (std::size_t i = 0; i + 1 < xs.size(); ++i) out.push_back({{xs[i], ys[j]}, {xs[i + 1], ys[j + 1]}});
+  return out;
+}
+
+std::uint32_t child_holding(const Box64& parent, const std::vector<Box64>& children,
+                            Point64 p) noexcept {
+  for (std::uint32_t i = 0; i < children.size(); ++i) {
+    const Box64& c = children[i];
+    const bool x = c.min.x <= p.x && (p.x < c.max.x || c.max.x == parent.max.x);
+    const bool y = c.min.y <= p.y && (p.y < c.max.y || c.max.y == parent.max.y);
+    if (x && y) return i;
+  }
+  return static_cast<std::uint32_t>(children.size() - 1);
+}
+
+}  // namespace edgeland::detail

@@ -1,0 +1,32 @@
+#pragma once
+// Where a cell splits (thesis 4.5.1): at its integer midpoint lines, into closed boxes that share
+// those lines. A quadtree cuts every side longer than min_cell_size (four children, or two when
+// only one side may be cut); a kd-tree cuts the longer side (x on ties). Sides longer than
+// min_cell_size >= 1 are at least 2 long, so a midpoint lies strictly inside and no child is
+// flat.
+#include <cstdint>
+#include <vector>
+
+#include "edgeland/kernel/bbox.hpp"
+#include "edgeland/spatial/landscape.hpp"
+
+namespace edgeland::detail {
+
+// A grid of depth d has up to 4^d cells.
+inline constexpr int kMaxGridDepth = 10;
+
+// Throws InvalidConfig unless the world box and the configuration are usable.
+void require_config(const Box64& world, const LandscapeConfig& config);
+
+// Whether a cell of this box may split.
+bool can_split(const Box64& box, const LandscapeConfig& config) noexcept;
+
+// The children's boxes, in a fixed order (x before y, low before high). Requires can_split.
+std::vector<Box64> split_boxes(const Box64& box, const LandscapeConfig& config);
+
+// Which child's half-open box [min, max) holds p, a child on the parent's max side also
+// holding that side: the cell of the half-open rule. p must lie in the parent's closed box.
+std::uint32_t child_holding(const Box64& parent, const std::vector<Box64>& children,
+                            Point64 p) noexcept;
+
+}  // namespace edgeland::detail

@@ -1,0 +1,23 @@
+#pragma once
+// The change set of an edit, from the old and the new tree: the cells that differ, and which
+// polygons (by id) left and arrived.
+#include <vector>
+
+#include "node.hpp"
+
+namespace edgeland::detail {
+
+struct Changes {
+  std::vector<NodePtr> old_cells;  // cells of the old tree that are gone
+  std::vector<NodePtr> new_cells;  // cells of the new tree that are new
+  // Inner nodes of the new tree that are new (their structure is what checked mode verifies).
+  std::vector<NodePtr> new_inner;
+};
+
+// Walks both trees where they differ. O(size of the differing parts).
+Changes diff(const NodePtr& old_root, const NodePtr& new_root);
+
+// Removed and added polygons (by id), the new cells, the exact area change per material.
+ChangeSet change_set(const Changes& changes);
+
+}  // namespace edgeland::detail

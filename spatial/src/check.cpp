@@ -1,0 +1,163 @@
+#include "check.hpp"
+
+#include <algorithm>
+#include <set>
+#include <sstream>
+
+#include "cell_split.hpp"
+#include "edgeland/kernel/area.hpp"
+#include "landscape_access.hpp"
+#include "log_line.hpp"
+
+namespace edgeland::detail {
+namespace {
+
+std::string name(const Landscape::Node& n) {
+  std::ostringstream s;
+  s << (n.is_cell() ? "cell (" : "node (") << n.box.min.x << ' ' << n.box.min.y << ' ' << n.box.max.x
+    << ' ' << n.box.max.y << ")";
+  return s.str();
+}
+
+bool inside(const Box64& inner, const Box64& outer) {
+  return outer.contains(inner.min) && outer.contains(inner.max);
+}
+
+void check_parallel_arrays(const Landscape::Node& c, std::vector<std::string>& problems) {
+  const std::size_t n = c.polygon_set().size();
+  if (c.content.labels.size() != n || c.ids.size() != n || c.boxes.size() != n)
+    problems.push_back(name(c) + ": labels, ids or boxes do not match the polygons");
+}
+
+void check_polygons(const Landscape::Node& c, std::vector<std::string>& problems) {
+  const PolygonSet& polys = c.polygon_set();
+  const ValidationReport v = validate(polys, 1);
+  if (!v.ok()) problems.push_back(name(c) + ": invalid: " + v.violations.front().describe());
+  for (std::size_t i = 0; i < polys.size(); ++i) {
+    const auto b = bounding_box(polys[i]);
+    if (!b || !inside(*b, c.box)) problems.push_back(name(c) + ": polygon " + std::to_string(i) + " outside the cell");
+    else if (*b != c.boxes[i]) problems.push_back(name(c) + ": polygon " + std::to_string(i) + " has a wrong box");
+    if (c.content.labels[i] == 0 || c.content.labels[i] >= kMaterialCount)
+      problems.push_back(name(c) + ": polygon " + std::to_string(i) + " has material " +
+                         std::to_string(c.content.labels[i]));
+  }
+}
+
+void check_canonical(const Landscape::Node& c, std::vector<std::string>& problems) {
+  const LabeledClipResult again = relabel(c.content.set, c.content.labels, ValidSet(), c.box, {});
+  if (again.regions.labels != c.content.labels || again.regions.set.polygons() != c.polygon_set())
+    problems.push_back(name(c) + ": content is not the canonical decomposition of its regions");
+}
+
+void check_sums(const Landscape::Node& n, const NodePtr& rebuilt, std::vector<std::string>& problems) {
+  if (rebuilt->polygons != n.polygons || rebuilt->vertices != n.vertices ||
+      rebuilt->cells != n.cells || rebuilt->deepest != n.deepest || rebuilt->hash != n.hash)
+    problems.push_back(name(n) + ": stored sums or hash differ from its content");
+}
+
+}  // namespace
+
+void check_cell(const Landscape::Node& c, const LandscapeConfig& config,
+                std::vector<std::string>& problems) {
+  const std::size_t before = problems.size();
+  check_parallel_arrays(c, problems);
+  if (problems.size() != before) return;
+  check_polygons(c, problems);
+  if (problems.size() != before) return;
+  check_canonical(c, problems);
+  if (config.grid_depth < 0 && c.vertices > config.edge_cap && can_split(c.box, config))
+    problems.push_back(name(c) + ": " + std::to_string(c.vertices) + " edges, over the cap");
+  check_sums(c, make_cell(c.box, c.depth, c.content, c.ids), problems);
+}
+
+void check_inner(const Landscape::Node& n, const LandscapeConfig& config,
+                 std::vector<std::string>& problems) {
+  if (!can_split(n.box, config)) {
+    problems.push_back(name(n) + ": split although it may not");
+    return;
+  }
+  const std::vector<Box64> boxes = split_boxes(n.box, config);
+  if (boxes.size() != n.child_count) {
+    problems.push_back(name(n) + ": wrong number of children");
+    return;
+  }
+  std::vector<NodePtr> children;
+  bool all_cells = true;
+  for (std::uint32_t i = 0; i < n.child_count; ++i) {
+    const NodePtr& c = n.children[i];
+    if (!c || c->box != boxes[i] || c->depth != n.depth + 1)
+      problems.push_back(name(n) + ": child " + std::to_string(i) + " is not its part of the box");
+    if (!c) return;
+    all_cells = all_cells && c->is_cell();
+    children.push_back(c);
+  }
+  if (config.grid_depth < 0 && all_cells && n.vertices <= config.merge_below)
+    problems.push_back(name(n) + ": children small enough to merge");
+  if (config.grid_depth >= 0 && static_cast<int>(n.depth) >= config.grid_depth)
+    problems.push_back(name(n) + ": grid node below the grid depth");
+  check_sums(n, make_inner(n.box, n.depth, children), problems);
+}
+
+std::string check_edit(const Landscape& l, const NodePtr& new_root, const Changes& changes,
+                       PolygonId old_next_id) {
+  std::vector<std::string> problems;
+  const LandscapeConfig& config = LandscapeAccess::config(l);
+  if (new_root->box != LandscapeAccess::world(l) || new_root->depth != 0)
+    problems.push_back("the root is not the world");
+  for (const NodePtr& c : changes.new_cells) check_cell(*c, config, problems);
+  for (const NodePtr& n : changes.new_inner) check_inner(*n, config, problems);
+  std::set<PolygonId> old_ids, new_ids;
+  for (const NodePtr& c : changes.old_cells) old_ids.insert(c->ids.begin(), c->ids.end());
+  for (const NodePtr& c : changes.new_cells)
+    for (PolygonId id : c->ids) {
+      if (!new_ids.insert(id).second) problems.push_back("id " + std::to_string(id) + " twice");
+      if (id < old_next_id && !old_ids.count(id))
+        problems.push_back("id " + std::to_string(id) + " taken from a polygon that stays");
+    }
+  return problems.empty() ? std::string() : problems.front() + (problems.size() > 1 ? " (and " + std::to_string(problems.size() - 1) + " more)" : "");
+}
+
+namespace {
+
+void check_subtree(const NodePtr& n, const LandscapeConfig& config, std::vector<std::string>& problems,
+                   std::set<PolygonId>& ids, Landscape::AreaTable& areas) {
+  if (n->is_cell()) {
+    check_cell(*n, config, problems);
+    for (std::size_t i = 0; i < n->ids.size(); ++i) {
+      if (!ids.insert(n->ids[i]).second) problems.push_back("id " + std::to_string(n->ids[i]) + " twice");
+      if (i < n->content.labels.size() && n->content.labels[i] < kMaterialCount)
+        areas[n->content.labels[i]] += twice_signed_area(n->polygon_set()[i]);
+    }
+    return;
+  }
+  check_inner(*n, config, problems);
+  for (std::uint32_t i = 0; i < n->child_count; ++i)
+    if (n->children[i]) check_subtree(n->children[i], config, problems, ids, areas);
+}
+
+}  // namespace
+
+LandscapeReport check_all(const Landscape& l) {
+  LandscapeReport report;
+  const NodePtr& root = LandscapeAccess::root(l);
+  if (root->box != LandscapeAccess::world(l) || root->depth != 0)
+    report.problems.push_back("the root is not the world");
+  std::set<PolygonId> ids;
+  Landscape::AreaTable areas{};
+  check_subtree(root, LandscapeAccess::config(l), report.problems, ids, areas);
+  if (!ids.empty() && *ids.rbegin() >= LandscapeAccess::next_id(l))
+    report.problems.push_back("an id is not below the next id");
+  for (std::size_t m = 1; m < kMaterialCount; ++m)
+    if (areas[m] != LandscapeAccess::areas(l)[m])
+      report.problems.push_back("the area of material " + std::to_string(m) + " is not the sum of its polygons");
+  return report;
+}
+
+LandscapeInternalError internal_error(const Landscape& l, const std::string& what,
+                                      const std::string& log_line) {
+  std::ostringstream state;
+  l.save(state);
+  return LandscapeInternalError(what, state.str(), replay_log(l) + log_line);
+}
+
+}  // namespace edgeland::detail

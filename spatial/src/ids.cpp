@@ -1,0 +1,34 @@
+#include "ids.hpp"
+
+#include <algorithm>
+
+namespace edgeland::detail {
+
+void IdSource::add(const Landscape::Node& cell) {
+  const PolygonSet& polys = cell.polygon_set();
+  for (std::size_t i = 0; i < polys.size(); ++i)
+    entries_.push_back({&polys[i], cell.content.labels[i], cell.ids[i]});
+  // One cell's content is in canonical order (sorted by ring); several need a sort.
+  std::sort(entries_.begin(), entries_.end(),
+            [](const Entry& a, const Entry& b) { return *a.ring < *b.ring; });
+}
+
+PolygonId IdSource::find(const Polygon& ring, RegionLabel material) const {
+  auto it = std::lower_bound(entries_.begin(), entries_.end(), ring,
+                             [](const Entry& e, const Polygon& r) { return *e.ring < r; });
+  if (it == entries_.end() || *it->ring != ring || it->material != material) return 0;
+  return it->id;
+}
+
+std::vector<PolygonId> match_ids(const IdSource& previous, const LabeledSet& content,
+                                 PolygonId& next_id) {
+  const PolygonSet& polys = content.set.polygons();
+  std::vector<PolygonId> ids(polys.size());
+  for (std::size_t i = 0; i < polys.size(); ++i) {
+    const PolygonId kept = previous.find(polys[i], content.labels[i]);
+    ids[i] = kept != 0 ? kept : next_id++;
+  }
+  return ids;
+}
+
+}  // namespace edgeland::detail

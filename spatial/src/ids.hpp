@@ -1,0 +1,35 @@
+#pragma once
+// Polygon ids (spatial/README.md, I6): a polygon keeps its id while it stays the same polygon
+// (same ring, same material); every other polygon gets the next fresh id.
+#include <vector>
+
+#include "node.hpp"
+
+namespace edgeland::detail {
+
+// The polygons a new cell's content may take ids from: those of the cell(s) it replaces.
+class IdSource {
+ public:
+  static IdSource of(const Landscape::Node& cell) {
+    IdSource s;
+    s.add(cell);
+    return s;
+  }
+  void add(const Landscape::Node& cell);
+  // The id of the polygon equal to (ring, material), or 0 if there is none. O(log n).
+  PolygonId find(const Polygon& ring, RegionLabel material) const;
+
+ private:
+  struct Entry {
+    const Polygon* ring;
+    RegionLabel material;
+    PolygonId id;
+  };
+  std::vector<Entry> entries_;  // sorted by ring
+};
+
+// Ids for content's polygons, in order: taken from `previous` where equal, else next_id++.
+std::vector<PolygonId> match_ids(const IdSource& previous, const LabeledSet& content,
+                                 PolygonId& next_id);
+
+}  // namespace edgeland::detail

@@ -1,0 +1,127 @@
+// The Landscape's construction, edits (edit.cpp does the work), state and log.
+#include "edgeland/spatial/landscape.hpp"
+
+#include "cell_split.hpp"
+#include "edgeland/kernel/area.hpp"
+#include "check.hpp"
+#include "edit.hpp"
+#include "landscape_access.hpp"
+#include "log_line.hpp"
+#include "state_hash.hpp"
+
+namespace edgeland {
+namespace {
+
+// A coordinate beyond the bound is its own error (CoordinateOutOfRange); anything else that
+// validate() rejects is InvalidInput naming the shape as the clip operand.
+ValidSet shape_of(const PolygonSet& shape) {
+  for (std::size_t i = 0; i < shape.size(); ++i)
+    for (std::size_t j = 0; j < shape[i].size(); ++j)
+      if (!in_range(shape[i][j])) throw CoordinateOutOfRange(i, j, shape[i][j]);
+  return ValidSet(shape, Operand::kClip);
+}
+
+// The grid of thesis 4.4: the world cut to `depth` levels at once (one arrangement per level).
+detail::NodePtr grid(const Box64& box, std::uint32_t depth, int grid_depth, LabeledSet content,
+                     const LandscapeConfig& config, PolygonId& next_id) {
+  if (static_cast<int>(depth) >= grid_depth || !detail::can_split(box, config)) {
+    std::vector<PolygonId> ids(content.labels.size());
+    for (PolygonId& id : ids) id = next_id++;
+    return detail::make_cell(box, depth, std::move(content), std::move(ids));
+  }
+  const std::vector<Box64> boxes = detail::split_boxes(box, config);
+  std::vector<LabeledSet> parts = cut_to_windows(content.set, content.labels, boxes);
+  std::vector<detail::NodePtr> children;
+  for (std::size_t i = 0; i < boxes.size(); ++i)
+    children.push_back(grid(boxes[i], depth + 1, grid_depth, std::move(parts[i]), config, next_id));
+  return detail::make_inner(box, depth, children);
+}
+
+}  // namespace
+
+LimitExceeded::LimitExceeded(Limit l, std::size_t max, std::size_t req)
+    : LandscapeError(std::string(l == Limit::kVertices ? "landscape vertex" : "shape vertex") +
+                     " limit exceeded: " + std::to_string(req) + " > " + std::to_string(max)),
+      limit(l),
+      maximum(max),
+      requested(req) {}
+
+LandscapeInternalError::LandscapeInternalError(const std::string& what, std::string s, std::string lg)
+    : LandscapeError("edgeland landscape internal error (please report with the log): " + what),
+      state(std::move(s)),
+      log(std::move(lg)) {}
+
+LoadError::LoadError(const std::string& what, std::size_t at)
+    : LandscapeError("cannot load landscape at byte " + std::to_string(at) + ": " + what), offset(at) {}
+
+Landscape::Landscape(const Box64& world, Material fill, const LandscapeConfig& config,
+                     const LandscapeLimits& limits)
+    : world_(world), config_(config), limits_(limits), initial_fill_(fill) {
+  detail::require_config(world, config);
+  LabeledSet content;
+  if (fill != kEmpty) {
+    content.set = ValidSet(PolygonSet{{world.min, {world.max.x, world.min.y}, world.max, {world.min.x, world.max.y}}});
+    content.labels = {fill};
+  }
+  auto areas = std::make_shared<AreaTable>();
+  if (fill != kEmpty) (*areas)[fill] = twice_signed_area(content.set.polygons().front());
+  areas_ = std::move(areas);
+  root_ = grid(world, 0, std::max(config.grid_depth, 0), std::move(content), config, next_id_);
+}
+
+ChangeSet Landscape::carve(const ValidSet& shape) {
+  return LandscapeEditor(*this, shape, EditTable::carve()).run(*this, detail::carve_line(shape.polygons()));
+}
+ChangeSet Landscape::fill(const ValidSet& shape, Material m) {
+  return LandscapeEditor(*this, shape, EditTable::fill(m)).run(*this, detail::fill_line(shape.polygons(), m));
+}
+ChangeSet Landscape::fill_empty(const ValidSet& shape, Material m) {
+  return LandscapeEditor(*this, shape, EditTable::fill_empty(m))
+      .run(*this, detail::fill_empty_line(shape.polygons(), m));
+}
+ChangeSet Landscape::replace(const ValidSet& shape, Material from, Material to) {
+  return LandscapeEditor(*this, shape, EditTable::replace(from, to))
+      .run(*this, detail::replace_line(shape.polygons(), from, to));
+}
+ChangeSet Landscape::carve(const PolygonSet& shape) { return carve(shape_of(shape)); }
+ChangeSet Landscape::fill(const PolygonSet& shape, Material m) { return fill(shape_of(shape), m); }
+ChangeSet Landscape::fill_empty(const PolygonSet& shape, Material m) {
+  return fill_empty(shape_of(shape), m);
+}
+ChangeSet Landscape::replace(const PolygonSet& shape, Material from, Material to) {
+  return replace(shape_of(shape), from, to);
+}
+
+Int128 Landscape::twice_area(Material m) const {
+  if (m != kEmpty) return (*areas_)[m];
+  Int128 solid = 0;
+  for (std::size_t i = 1; i < kMaterialCount; ++i) solid += (*areas_)[i];
+  const Int128 world = 2 * Int128(world_.max.x - world_.min.x) * (world_.max.y - world_.min.y);
+  return world - solid;
+}
+
+std::uint64_t Landscape::state_hash() const noexcept {
+  detail::StateHash h;
+  h.add(world_)
+      .add(static_cast<std::uint64_t>(config_.tree))
+      .add(static_cast<std::uint64_t>(config_.edge_cap))
+      .add(static_cast<std::uint64_t>(config_.merge_below))
+      .add(static_cast<std::uint64_t>(config_.min_cell_size))
+      .add(static_cast<std::uint64_t>(static_cast<std::int64_t>(config_.grid_depth)))
+      .add(static_cast<std::uint64_t>(next_id_))
+      .add(root_->hash);
+  return h.value();
+}
+
+LandscapeReport Landscape::check() const { return detail::check_all(*this); }
+
+void Landscape::start_log() {
+  if (logging_) return;
+  logging_ = true;
+  log_.reset();
+  detail::append_log(*this, detail::state_log(*this));
+}
+
+std::string Landscape::log() const { return detail::log_text(*this); }
+
+}  // namespace edgeland

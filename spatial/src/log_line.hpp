@@ -1,0 +1,45 @@
+#pragma once
+// The landscape edit log (README.md "Landscape edit logs"): one text line per edit, kept as a
+// persistent list so that copies of a recording landscape share it.
+#include <memory>
+#include <string>
+
+#include "edgeland/spatial/landscape.hpp"
+
+namespace edgeland {
+
+struct Landscape::LogLine {
+  LogLine() = default;
+  LogLine(const LogLine&) = delete;
+  LogLine& operator=(const LogLine&) = delete;
+  // Unlinks the lines only this one holds one by one: a recursive release of a long log would
+  // exhaust the stack.
+  ~LogLine() {
+    std::shared_ptr<const LogLine> p = std::move(prev);
+    while (p && p.use_count() == 1) p = std::move(p->prev);
+  }
+  mutable std::shared_ptr<const LogLine> prev;
+  std::string text;  // one line, with its '\n'
+};
+
+namespace detail {
+
+// "carve WKT", "fill M WKT", "fill_empty M WKT", "replace FROM TO WKT", each ending in '\n'.
+std::string carve_line(const PolygonSet& shape);
+std::string fill_line(const PolygonSet& shape, Material m);
+std::string fill_empty_line(const PolygonSet& shape, Material m);
+std::string replace_line(const PolygonSet& shape, Material from, Material to);
+// "world X0 Y0 X1 Y1[ M]".
+std::string world_line(const Box64& world, Material fill);
+
+// A log that replays to the landscape's regions: the world line when nothing was edited since
+// it was made, else the world line and one fill per material.
+std::string state_log(const Landscape& l);
+// The recorded log if the landscape records one, else state_log.
+std::string replay_log(const Landscape& l);
+
+void append_log(Landscape& l, const std::string& line);
+std::string log_text(const Landscape& l);
+
+}  // namespace detail
+}  // namespace edgeland

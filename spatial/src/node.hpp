@@ -1,0 +1,57 @@
+#pragma once
+// The nodes of the landscape's persistent PR tree (spatial/README.md): immutable once built,
+// shared between snapshots. A leaf is a cell holding a canonical labeled set; an inner node has
+// two or four children (cell_split.hpp). Every node keeps the sums of its subtree and the hash
+// of its canonical form, so the landscape's counts and state hash cost O(1).
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "edgeland/clip/relabel.hpp"
+#include "edgeland/spatial/landscape.hpp"
+
+namespace edgeland {
+
+struct Landscape::Node {
+  Box64 box;
+  std::uint32_t depth = 0;        // the root is 0
+  std::uint32_t child_count = 0;  // 0 for a cell
+  std::array<std::shared_ptr<const Node>, 4> children;
+
+  // A cell's content: canonical order; labels are materials (1..255).
+  LabeledSet content;
+  std::vector<PolygonId> ids;
+  std::vector<Box64> boxes;  // bounding box of each polygon
+
+  // Sums over the subtree.
+  std::size_t polygons = 0, vertices = 0, cells = 0;
+  std::uint32_t deepest = 0;  // the largest depth of a cell below (or this one's)
+  std::uint64_t hash = 0;
+
+  bool is_cell() const noexcept { return child_count == 0; }
+  const PolygonSet& polygon_set() const noexcept { return content.set.polygons(); }
+};
+
+namespace detail {
+
+using NodePtr = std::shared_ptr<const Landscape::Node>;
+
+// A cell from its content (canonical, inside box) and the ids of its polygons.
+NodePtr make_cell(const Box64& box, std::uint32_t depth, LabeledSet content,
+                  std::vector<PolygonId> ids);
+// An inner node over its children (in split_boxes order).
+NodePtr make_inner(const Box64& box, std::uint32_t depth, const std::vector<NodePtr>& children);
+
+// Calls f(cell) for every cell below node, in tree order.
+template <class F>
+void for_each_cell(const NodePtr& node, F&& f) {
+  if (node->is_cell()) {
+    f(node);
+    return;
+  }
+  for (std::uint32_t i = 0; i < node->child_count; ++i) for_each_cell(node->children[i], f);
+}
+
+}  // namespace detail
+}  // namespace edgeland

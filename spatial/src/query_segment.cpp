@@ -1,0 +1,181 @@
+// Queries along a segment (spatial/README.md, "Queries"): the cells the segment meets, in
+// order, and in each the crossings of its polygons (kernel segment_crossings.hpp), merged into
+// the material profile. Crossings at one parameter are taken together, so a seam between two
+// pieces of one material (a cell line, a hole-splitting bridge) changes nothing.
+#include <algorithm>
+#include <map>
+
+#include "edgeland/kernel/box_queries.hpp"
+#include "edgeland/kernel/segment_crossings.hpp"
+#include "edgeland/spatial/landscape.hpp"
+#include "landscape_access.hpp"
+
+namespace edgeland {
+namespace {
+
+using detail::NodePtr;
+
+struct CellOnSegment {
+  Fraction t0;
+  const Landscape::Node* cell;
+};
+
+void cells_on(const NodePtr& n, const Segment& s, std::vector<CellOnSegment>& out) {
+  const auto range = clip_parameters(s, n->box);
+  if (!range) return;
+  if (n->is_cell()) {
+    out.push_back({range->t0, n.get()});
+    return;
+  }
+  for (std::uint32_t i = 0; i < n->child_count; ++i) cells_on(n->children[i], s, out);
+}
+
+struct Event {
+  SegmentCrossing c;
+  const Landscape::Node* cell;
+  std::uint32_t polygon;
+};
+
+// The walk along the segment: the material just behind the start, and the crossings of every
+// polygon of the cells met so far that are not processed yet.
+class Profile {
+ public:
+  explicit Profile(const Segment& s) : s_(s) {}
+
+  // Adds the crossings of the polygons of one cell.
+  void add_cell(const Landscape::Node& cell) {
+    const PolygonSet& polys = cell.polygon_set();
+    for (std::uint32_t i = 0; i < polys.size(); ++i) {
+      if (!clip_parameters(s_, cell.boxes[i])) continue;
+      const bool near_start = cell.boxes[i].contains(s_.a);
+      const RingCrossings rc = segment_crossings(s_, polys[i], CrossingCulling::kNone, near_start);
+      if (rc.inside_before) active_ = {&cell, i};
+      for (const SegmentCrossing& c : rc.crossings) pending_.push_back({c, &cell, i});
+    }
+  }
+
+  // Processes the pending crossings with t < limit (all when limit is null) in order; calls
+  // report(crossing) for each change of material and stops when it returns false.
+  template <class F>
+  bool advance(const Fraction* limit, F&& report) {
+    std::sort(pending_.begin(), pending_.end(), [](const Event& x, const Event& y) {
+      const int c = compare(x.c.t, y.c.t);
+      return c != 0 ? c < 0 : x.polygon < y.polygon;
+    });
+    std::size_t i = 0;
+    while (i < pending_.size() && (!limit || compare(pending_[i].c.t, *limit) < 0)) {
+      std::size_t j = i + 1;
+      while (j < pending_.size() && compare(pending_[j].c.t, pending_[i].c.t) == 0) ++j;
+      const bool go_on = group(i, j, report);
+      i = j;
+      if (!go_on) {
+        pending_.erase(pending_.begin(), pending_.begin() + static_cast<std::ptrdiff_t>(i));
+        return false;
+      }
+    }
+    pending_.erase(pending_.begin(), pending_.begin() + static_cast<std::ptrdiff_t>(i));
+    return true;
+  }
+
+ private:
+  struct Active {
+    const Landscape::Node* cell = nullptr;
+    std::uint32_t polygon = 0;
+    bool operator==(const Active&) const = default;
+  };
+  Material material(const Active& a) const {
+    return a.cell ? static_cast<Material>(a.cell->content.labels[a.polygon]) : kEmpty;
+  }
+
+  // Crossings [i, j) share their parameter: the polygon inside after them is the one whose
+  // net count leaves it inside (the one before, unless it left).
+  template <class F>
+  bool group(std::size_t i, std::size_t j, F&& report) {
+    std::map<std::pair<const Landscape::Node*, std::uint32_t>, int> net;
+    for (std::size_t k = i; k < j; ++k)
+      net[{pending_[k].cell, pending_[k].polygon}] += pending_[k].c.entering ? 1 : -1;
+    Active after = active_;
+    if (active_.cell && net[{active_.cell, active_.polygon}] < 0) after = {};
+    for (const auto& [key, count] : net)
+      if (count > 0) after = {key.first, key.second};
+    const Active before = active_;
+    active_ = after;
+    if (material(before) == material(after)) return true;
+    // The crossing of the polygon entered (or left, into empty space).
+    const Active& named = after.cell ? after : before;
+    const Event* e = &pending_[i];
+    for (std::size_t k = i; k < j; ++k)
+      if (pending_[k].cell == named.cell && pending_[k].polygon == named.polygon) e = &pending_[k];
+    return report(make_crossing(*e, material(before), material(after)));
+  }
+
+  MaterialCrossing make_crossing(const Event& e, Material before, Material after) const {
+    const Polygon& ring = e.cell->polygon_set()[e.polygon];
+    MaterialCrossing m;
+    m.t = e.c.t;
+    m.point = crossing_point(s_, ring, e.c);
+    m.rounded = round_to_grid(m.point);
+    m.before = before;
+    m.after = after;
+    m.polygon = e.cell->ids[e.polygon];
+    m.edge = e.c.edge;
+    const Point64 a = ring[e.c.edge], b = ring[(e.c.edge + 1) % ring.size()];
+    m.normal = {b.y - a.y, -(b.x - a.x)};
+    return m;
+  }
+
+  Segment s_;
+  Active active_;
+  std::vector<Event> pending_;
+};
+
+// Walks the cells along from -> to in order of entry, reporting material changes until
+// report returns false.
+template <class F>
+void walk(const NodePtr& root, Point64 from, Point64 to, F&& report) {
+  if (from == to) return;
+  const Segment s{from, to};
+  std::vector<CellOnSegment> cells;
+  cells_on(root, s, cells);
+  std::stable_sort(cells.begin(), cells.end(), [](const CellOnSegment& x, const CellOnSegment& y) {
+    return compare(x.t0, y.t0) < 0;
+  });
+  Profile profile(s);
+  for (std::size_t k = 0; k < cells.size(); ++k) {
+    profile.add_cell(*cells[k].cell);
+    // Crossings before the next cell's first point are final: no later cell reaches them.
+    const Fraction* limit = k + 1 < cells.size() ? &cells[k + 1].t0 : nullptr;
+    if (!profile.advance(limit, report)) return;
+  }
+}
+
+void require_in_range(Point64 p) {
+  if (!in_range(p)) throw CoordinateOutOfRange(0, 0, p);
+}
+
+}  // namespace
+
+std::vector<MaterialCrossing> Landscape::crossings(Point64 from, Point64 to) const {
+  require_in_range(from);
+  require_in_range(to);
+  std::vector<MaterialCrossing> out;
+  walk(root_, from, to, [&](const MaterialCrossing& c) {
+    out.push_back(c);
+    return true;
+  });
+  return out;
+}
+
+std::optional<MaterialCrossing> Landscape::raycast(Point64 from, Point64 to) const {
+  require_in_range(from);
+  require_in_range(to);
+  std::optional<MaterialCrossing> hit;
+  walk(root_, from, to, [&](const MaterialCrossing& c) {
+    if (c.after == kEmpty) return true;  // a back face: leaving into empty space
+    hit = c;
+    return false;
+  });
+  return hit;
+}
+
+}  // namespace edgeland
