@@ -94,7 +94,7 @@ NodePtr LandscapeEditor::rebuild(const NodePtr& node) {
   return merge_if_small(detail::make_inner(node->box, node->depth, children));
 }
 
-ChangeSet LandscapeEditor::run(Landscape& target, const std::string& log_line) {
+ChangeSet LandscapeEditor::run(Landscape& target, const std::function<std::string()>& log_line) {
   const std::size_t shape_vertices = [&] {
     std::size_t n = 0;
     for (const Polygon& p : shape_.polygons()) n += p.size();
@@ -108,16 +108,16 @@ ChangeSet LandscapeEditor::run(Landscape& target, const std::string& log_line) {
     if (!shape_.polygons().empty() && open_overlap(l_.world_, shape_box_)) root = rebuild(l_.root_);
   } catch (const InternalError& e) {
     throw detail::internal_error(l_, std::string(e.what()) + "\n  subject = " + e.subject_wkt +
-                                         "\n  clip = " + e.clip_wkt, log_line);
+                                         "\n  clip = " + e.clip_wkt, log_line());
   } catch (const InvalidOverlay& e) {
-    throw detail::internal_error(l_, e.what(), log_line);
+    throw detail::internal_error(l_, e.what(), log_line());
   }
   if (root->vertices > l_.limits_.max_vertices)
     throw LimitExceeded(LimitExceeded::Limit::kVertices, l_.limits_.max_vertices, root->vertices);
   detail::Changes changes = detail::diff(l_.root_, root);
   if (l_.checked_) {
     const std::string problem = detail::check_edit(l_, root, changes, l_.next_id_);
-    if (!problem.empty()) throw detail::internal_error(l_, problem, log_line);
+    if (!problem.empty()) throw detail::internal_error(l_, problem, log_line());
   }
   ChangeSet out = detail::change_set(changes);
   // Commit: nothing above may have touched `target`.
@@ -128,7 +128,7 @@ ChangeSet LandscapeEditor::run(Landscape& target, const std::string& log_line) {
   target.areas_ = std::move(areas);
   target.next_id_ = next_id_;
   ++target.edits_;
-  if (target.logging_) detail::append_log(target, log_line);
+  if (target.logging_) detail::append_log(target, log_line());
   return out;
 }
 

@@ -1,5 +1,6 @@
 #pragma once
 // One edit of the landscape as a rebuild of the touched part of the tree (edit.cpp).
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -28,7 +29,9 @@ struct EditTable {
 class LandscapeEditor {
  public:
   LandscapeEditor(const Landscape& l, const ValidSet& shape, EditTable table);
-  ChangeSet run(Landscape& target, const std::string& log_line);
+  // log_line makes the edit's line of the edit log (written only when recording, or into an
+  // internal error's log).
+  ChangeSet run(Landscape& target, const std::function<std::string()>& log_line);
 
  private:
   detail::NodePtr rebuild(const detail::NodePtr& node);

@@ -70,18 +70,18 @@ Landscape::Landscape(const Box64& world, Material fill, const LandscapeConfig& c
 }
 
 ChangeSet Landscape::carve(const ValidSet& shape) {
-  return LandscapeEditor(*this, shape, EditTable::carve()).run(*this, detail::carve_line(shape.polygons()));
+  return LandscapeEditor(*this, shape, EditTable::carve()).run(*this, [&] { return detail::carve_line(shape.polygons()); });
 }
 ChangeSet Landscape::fill(const ValidSet& shape, Material m) {
-  return LandscapeEditor(*this, shape, EditTable::fill(m)).run(*this, detail::fill_line(shape.polygons(), m));
+  return LandscapeEditor(*this, shape, EditTable::fill(m)).run(*this, [&] { return detail::fill_line(shape.polygons(), m); });
 }
 ChangeSet Landscape::fill_empty(const ValidSet& shape, Material m) {
   return LandscapeEditor(*this, shape, EditTable::fill_empty(m))
-      .run(*this, detail::fill_empty_line(shape.polygons(), m));
+      .run(*this, [&] { return detail::fill_empty_line(shape.polygons(), m); });
 }
 ChangeSet Landscape::replace(const ValidSet& shape, Material from, Material to) {
   return LandscapeEditor(*this, shape, EditTable::replace(from, to))
-      .run(*this, detail::replace_line(shape.polygons(), from, to));
+      .run(*this, [&] { return detail::replace_line(shape.polygons(), from, to); });
 }
 ChangeSet Landscape::carve(const PolygonSet& shape) { return carve(shape_of(shape)); }
 ChangeSet Landscape::fill(const PolygonSet& shape, Material m) { return fill(shape_of(shape), m); }
