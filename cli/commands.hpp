@@ -10,7 +10,8 @@
 #define EDGELAND_CLI_COMMANDS(X) \
   X(validate) \
   X(clip) \
-  X(replay)
+  X(replay) \
+  X(demo)
 // clang-format on
 
 namespace edgeland::cli {

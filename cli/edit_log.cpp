@@ -5,6 +5,7 @@
 
 #include "edgeland/kernel/validate.hpp"
 #include "edgeland/kernel/wkt_writer.hpp"
+#include "log_text.hpp"
 
 namespace edgeland::log {
 namespace {
@@ -18,26 +19,6 @@ constexpr std::array<Keyword, 5> kKeywords{{{"set", StepKind::kSet},
                                             {"intersection", StepKind::kIntersection},
                                             {"difference", StepKind::kDifference},
                                             {"xor", StepKind::kXor}}};
-
-bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
-
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && is_blank(s.front())) s.remove_prefix(1);
-  while (!s.empty() && is_blank(s.back())) s.remove_suffix(1);
-  return s;
-}
-
-// A printable excerpt of an unknown keyword for the message (the line may be binary junk).
-std::string excerpt(std::string_view word) {
-  constexpr std::size_t kMax = 24;
-  std::string out;
-  for (std::size_t i = 0; i < word.size() && i < kMax; ++i) {
-    const unsigned char c = static_cast<unsigned char>(word[i]);
-    out += (c >= 0x20 && c < 0x7f) ? static_cast<char>(c) : '?';
-  }
-  if (word.size() > kMax) out += "...";
-  return out;
-}
 
 ClipOp op_of(StepKind kind) {
   switch (kind) {
@@ -93,21 +74,19 @@ LogError::LogError(LogErrorKind kind_, std::size_t line_, const std::string& rea
     : Error("line " + std::to_string(line_) + ": " + reason), kind(kind_), line(line_) {}
 
 std::optional<Step> parse_log_line(std::string_view raw, std::size_t line_number) {
-  const std::string_view line = trim(raw);
-  if (line.empty() || line.front() == '#') return std::nullopt;
-  std::size_t end = 0;
-  while (end < line.size() && !is_blank(line[end])) ++end;
-  const std::string_view word = line.substr(0, end);
+  std::string_view rest = trim_blanks(raw);
+  if (is_skipped_line(rest)) return std::nullopt;
+  const std::string_view word = take_word(rest);
   const Keyword* keyword = nullptr;
   for (const Keyword& k : kKeywords) {
     if (k.word == word) keyword = &k;
   }
   if (keyword == nullptr) {
     throw LogError(LogErrorKind::kUnknownStep, line_number,
-                   "unknown step '" + excerpt(word) +
+                   "unknown step '" + printable_excerpt(word) +
                        "' (expected set, union, intersection, difference or xor)");
   }
-  const std::string_view wkt = trim(line.substr(end));
+  const std::string_view wkt = rest;
   if (wkt.empty()) {
     throw LogError(LogErrorKind::kMissingShape, line_number,
                    std::string(keyword->word) + ": missing WKT shape");
@@ -131,9 +110,7 @@ ParsedLog parse_log(std::string_view text) {
   std::size_t line_number = 0;
   while (!text.empty()) {
     ++line_number;
-    const std::size_t newline = text.find('\n');
-    const std::string_view line = text.substr(0, newline);
-    text.remove_prefix(newline == std::string_view::npos ? text.size() : newline + 1);
+    const std::string_view line = take_line(text);
     try {
       if (std::optional<Step> step = parse_log_line(line, line_number)) {
         parsed.steps.push_back(std::move(*step));

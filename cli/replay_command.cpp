@@ -1,5 +1,8 @@
-// `edgeland replay LOG [--check] [--dump FILE.wkt]`: applies a continuous-clip log
-// (edit_log.hpp) to an initially empty set and prints one JSON object on one line:
+// `edgeland replay LOG [--check] [--dump FILE] [--png FILE.png] [--cells]`: replays a log and
+// prints one JSON object on one line. The first command tells the two log kinds apart: `world`
+// starts a landscape log (landscape_log.hpp, replayed by landscape_replay.cpp, whose header
+// describes its JSON); anything else is a continuous-clip log (edit_log.hpp), applied here to
+// an initially empty set:
 //   {"steps":N,"polygons":P,"vertices":V,"twice_area":"A","state_hash":"H","steps_per_second":S}
 // plus, when the log could not be applied to the end, "stopped_at_line" and "error": the JSON
 // then describes the state after the steps before that line (which are kept).
@@ -12,6 +15,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <string_view>
 
 #include "commands.hpp"
 #include "edgeland/kernel/area.hpp"
@@ -19,15 +23,12 @@
 #include "edgeland/kernel/wkt_writer.hpp"
 #include "edit_log.hpp"
 #include "input_text.hpp"
+#include "landscape_log.hpp"
+#include "landscape_replay.hpp"
+#include "replay_options.hpp"
 
 namespace edgeland::cli {
 namespace {
-
-struct ReplayOptions {
-  std::string path;
-  bool check = false;
-  std::string dump;
-};
 
 struct Failure {
   std::size_t line = 0;
@@ -48,14 +49,8 @@ nlohmann::ordered_json summary(const PolygonSet& set, std::size_t steps, double 
   return out;
 }
 
-int run_replay(const ReplayOptions& options) {
-  log::ParsedLog parsed;
-  try {
-    parsed = log::parse_log(read_input_text(options.path));
-  } catch (const InputError& error) {
-    std::cerr << "edgeland replay: " << error.what() << '\n';
-    return kExitUnreadable;
-  }
+int replay_clip_log(std::string_view text, const ReplayOptions& options) {
+  const log::ParsedLog parsed = log::parse_log(text);
   const std::string name = options.path == "-" ? "standard input" : options.path;
 
   log::EvolvingSet state;
@@ -91,7 +86,9 @@ int run_replay(const ReplayOptions& options) {
   }
   std::cout << out.dump() << '\n';
 
-  if (!options.dump.empty()) {
+  if (options.dump == "-") {
+    std::cout << to_wkt(state.current()) << '\n' << std::flush;
+  } else if (!options.dump.empty()) {
     std::ofstream dump(options.dump, std::ios::binary | std::ios::trunc);
     dump << to_wkt(state.current()) << '\n';
     if (!dump.flush()) {
@@ -105,22 +102,50 @@ int run_replay(const ReplayOptions& options) {
   return failure.status;
 }
 
+int run_replay(const ReplayOptions& options) {
+  std::string text;
+  try {
+    text = read_input_text(options.path);
+  } catch (const InputError& error) {
+    std::cerr << "edgeland replay: " << error.what() << '\n';
+    return kExitUnreadable;
+  }
+  if (log::is_landscape_log(text)) return replay_landscape_log(text, options);
+  if (!options.png.empty() || options.cells) {
+    std::cerr << "edgeland replay: --png and --cells need a landscape log (one whose first "
+                 "command is `world`)\n";
+    return kExitUnreadable;
+  }
+  return replay_clip_log(text, options);
+}
+
 }  // namespace
 
 Command add_replay_command(CLI::App& parent) {
   auto options = std::make_shared<ReplayOptions>();
   CLI::App* app = parent.add_subcommand(
       "replay",
-      "Apply a continuous-clip log (set/union/intersection/difference/xor WKT, one step per "
-      "line) and print the final state as one JSON line.");
+      "Replay an edit log and print the final state as one JSON line: a landscape log "
+      "(first command `world`, then carve/fill/fill_empty/replace WKT) or a continuous-clip "
+      "log (set/union/intersection/difference/xor WKT, one step per line).");
   app->add_option("LOG", options->path, "log file, or - for standard input")->required();
-  app->add_flag("--check", options->check, "Validate the output of every step (checked mode)");
-  app->add_option("--dump", options->dump, "Write the final state to this file as WKT");
+  app->add_flag("--check", options->check,
+                "Checked mode: validate every step's output (landscape: Landscape::set_checked, "
+                "and check() at the end)");
+  app->add_option("--dump", options->dump,
+                  "Write the final state to this file (- = standard output, after the JSON): "
+                  "one WKT line; for a landscape, one `MATERIAL<TAB>MULTIPOLYGON` line per "
+                  "material");
+  app->add_option("--png", options->png, "Landscape logs: draw the final world into this PNG");
+  app->add_flag("--cells", options->cells, "Landscape logs: draw the cell lines in the PNG");
   app->footer(
-      "Prints {steps, polygons, vertices, twice_area, state_hash, steps_per_second} as JSON. "
-      "Exit status: 0 when every step was applied; 2 at the first bad line (the JSON then "
-      "describes the steps before it and adds stopped_at_line and error; a one-line message "
-      "naming the line goes to stderr); 3 when a step hits an internal error.");
+      "Prints {steps, polygons, vertices, twice_area, state_hash, steps_per_second} for a "
+      "continuous-clip log, {edits, polygons, vertices, cells, depth, area, state_hash, "
+      "edits_per_second} for a landscape log, as JSON. "
+      "Exit status: 0 when every step was applied; 2 at the first bad line or shape (the JSON "
+      "then describes the steps before it and adds stopped_at_line and error; a one-line "
+      "message naming the line goes to stderr); 3 when a step hits an internal error (or, "
+      "with --check, the landscape's final check fails).");
   return {app, [options] { return run_replay(*options); }};
 }
 

@@ -1,0 +1,45 @@
+#pragma once
+// Seeded shapes and positions of the landscape benchmarks (splitmix64, so every run and every
+// rival sees the same edits). Vertices come from double trigonometry (this is bench/, not the
+// library) and are rounded; each shape is the convex hull of its rounded vertices, so it is a
+// valid polygon at every radius (small n-gons would otherwise round to repeated vertices).
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "edgeland/clip/clip.hpp"
+#include "edgeland/kernel/bbox.hpp"
+#include "edgeland/kernel/polygon.hpp"
+#include "splitmix64.hpp"
+
+namespace edgeland::bench {
+
+// A regular n-gon around an integer centre, vertices rounded, as its convex hull.
+Polygon ngon(Point64 centre, double radius, std::size_t sides);
+
+// The vertex count a game would give a circle of this radius: one vertex per 8 units of
+// circumference, at least 16, at most 512.
+std::size_t game_sides(double radius);
+
+// A stroke of the tunnel digger: the convex hull of the n-gons at both ends.
+Polygon capsule(Point64 a, Point64 b, double radius, std::size_t sides);
+
+// `count` integer points uniform in the closed box.
+std::vector<Point64> random_points(std::uint64_t seed, std::size_t count, const Box64& box);
+
+// A random walk of `count` + 1 positions, `step` units apart (rounded), starting at the box's
+// centre and turning by up to 30 degrees per step; it turns back when it would leave the box.
+std::vector<Point64> random_walk(std::uint64_t seed, std::size_t count, double step,
+                                 const Box64& box);
+
+// The box shrunk by `margin` on every side.
+Box64 inset(const Box64& box, std::int64_t margin);
+
+// A terrain's caves: `count` circles at random centres in the box, radii uniform in [24, 160],
+// game_sides() vertices each.
+std::vector<Polygon> caves(std::uint64_t seed, std::size_t count, const Box64& box);
+
+// Each polygon as a one-member ValidSet (validated here, before any clock starts).
+std::vector<ValidSet> as_shapes(const std::vector<Polygon>& polygons);
+
+}  // namespace edgeland::bench

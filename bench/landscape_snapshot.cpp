@@ -1,0 +1,2 @@
+#include "landscape_common.hpp"
+namespace edgeland::bench { void register_snapshot_benchmarks() {} }

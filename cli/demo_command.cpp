@@ -1,0 +1,187 @@
+// `edgeland demo [--out DIR] [--edits N] [--seed S] [--cells] [--save FILE] [--log FILE]
+// [--unchecked]`: the landscape demo. Builds a deterministic 8192 x 8192 world (demo_world.hpp),
+// lets N edits of explosions, tunnels, floods, veins and landslides loose on it
+// (demo_actions.hpp) in checked mode, runs Landscape::check(), prints a summary as readable
+// lines and draws DIR/landscape.png. --save writes the landscape's save file, --log its recorded
+// edit log (which `edgeland replay` turns back into the same state hash).
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <string>
+
+#include "cell_tracker.hpp"
+#include "commands.hpp"
+#include "demo_actions.hpp"
+#include "demo_editor.hpp"
+#include "demo_world.hpp"
+#include "landscape_png.hpp"
+#include "landscape_report.hpp"
+#include "splitmix64.hpp"
+
+namespace edgeland::cli {
+namespace {
+
+constexpr Box64 kDemoWorld{{0, 0}, {8192, 8192}};
+
+struct DemoOptions {
+  std::string out = ".";
+  std::size_t edits = 3000;
+  std::uint64_t seed = 1;
+  bool cells = false;
+  bool unchecked = false;
+  std::string save;
+  std::string log;
+};
+
+struct DemoRun {
+  std::size_t world_edits = 0;
+  demo::ActionCounts actions;
+  double seconds = 0;
+};
+
+DemoRun run_edits(Landscape& landscape, CellTracker& cells, const DemoOptions& options) {
+  demo::DemoEditor editor(landscape, cells);
+  SplitMix64 random(options.seed);
+  DemoRun run;
+  const auto start = std::chrono::steady_clock::now();
+  const demo::Terrain terrain = demo::build_world(editor, landscape.world(), random);
+  run.world_edits = editor.edits();
+  run.actions = demo::run_actions(editor, landscape.world(), terrain, options.edits, random);
+  run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return run;
+}
+
+void print_line(const std::string& label, const std::string& value) {
+  std::cout << std::left << std::setw(18) << (label + ":") << value << '\n';
+}
+
+void print_summary(const Landscape& landscape, const DemoRun& run, const LandscapeReport& report) {
+  const demo::ActionCounts& a = run.actions;
+  const std::size_t action_edits =
+      a.explosions + a.tunnel_steps + a.floods + a.vein_steps + a.landslides + a.drifts;
+  const std::size_t edits = run.world_edits + action_edits;
+  const LandscapeStats stats = landscape.stats();
+  std::ostringstream rate;
+  rate << std::fixed << std::setprecision(0) << (run.seconds > 0 ? edits / run.seconds : 0.0)
+       << " (" << std::setprecision(2) << run.seconds << " s)";
+  print_line("world built", std::to_string(run.world_edits) +
+                                " edits (layers, grass, ore and sand bands, caves, pools)");
+  print_line("actions", std::to_string(action_edits) + " edits: " + std::to_string(a.explosions) +
+                            " explosions, " + std::to_string(a.tunnel_steps) + " tunnel steps, " +
+                            std::to_string(a.floods) + " floods, " + std::to_string(a.vein_steps) +
+                            " vein steps, " + std::to_string(a.landslides) + " landslides, " +
+                            std::to_string(a.drifts) + " sand drifts");
+  print_line("edits", std::to_string(edits));
+  print_line("edits per second", rate.str());
+  print_line("polygons", std::to_string(stats.polygons));
+  print_line("vertices", std::to_string(stats.vertices));
+  print_line("cells", std::to_string(stats.cells));
+  print_line("depth", std::to_string(stats.depth));
+  print_line("memory bytes", std::to_string(stats.bytes));
+  print_line("state hash", state_hash_hex(landscape.state_hash()));
+  print_line("check()", report.ok() ? "ok" : std::to_string(report.problems.size()) +
+                                                  " problem(s): " + report.problems.front());
+}
+
+// A file the demo was asked to write; false (with a message) when it cannot be written.
+bool write_file(const std::string& path, const std::string& bytes) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out << bytes;
+  if (out.flush()) return true;
+  std::cerr << "edgeland demo: cannot write '" << path << "'\n";
+  return false;
+}
+
+// An internal error keeps its evidence: the state before the failing edit and a log that
+// replays to it, beside the picture.
+int report_internal_error(const LandscapeInternalError& error, const std::filesystem::path& out) {
+  const std::string state = (out / "demo_failure.state").string();
+  const std::string log = (out / "demo_failure.log").string();
+  write_file(state, error.state);
+  write_file(log, error.log);
+  std::string what = error.what();
+  for (char& c : what) c = c == '\n' ? ' ' : c;
+  std::cerr << "edgeland demo: " << what << " (state: " << state << ", log: " << log << ")\n";
+  return kExitInternal;
+}
+
+int write_outputs(const Landscape& landscape, const CellTracker& cells,
+                  const DemoOptions& options) {
+  const std::string png = (std::filesystem::path(options.out) / "landscape.png").string();
+  try {
+    write_landscape_png(landscape, png, PngOptions{.cells = options.cells ? &cells.cells() : nullptr});
+  } catch (const PngError& error) {
+    std::cerr << "edgeland demo: " << error.what() << '\n';
+    return kExitUnreadable;
+  }
+  print_line("picture", png);
+  if (!options.save.empty()) {
+    std::ostringstream bytes;
+    landscape.save(bytes);
+    if (!write_file(options.save, bytes.str())) return kExitUnreadable;
+    print_line("save file", options.save);
+  }
+  if (!options.log.empty()) {
+    if (!write_file(options.log, landscape.log())) return kExitUnreadable;
+    print_line("edit log", options.log);
+  }
+  return kExitOk;
+}
+
+int run_demo(const DemoOptions& options) {
+  std::error_code error;
+  std::filesystem::create_directories(options.out, error);
+  if (error) {
+    std::cerr << "edgeland demo: cannot create '" << options.out << "': " << error.message() << '\n';
+    return kExitUnreadable;
+  }
+  Landscape landscape(kDemoWorld);
+  landscape.set_checked(!options.unchecked);
+  if (!options.log.empty()) landscape.start_log();
+  CellTracker cells(landscape.world());
+  std::cout << "edgeland demo: world 0 0 8192 8192, seed " << options.seed << ", checked mode "
+            << (options.unchecked ? "off" : "on") << '\n';
+  DemoRun run;
+  try {
+    run = run_edits(landscape, cells, options);
+  } catch (const LandscapeInternalError& failure) {
+    return report_internal_error(failure, options.out);
+  }
+  const LandscapeReport report = landscape.check();
+  print_summary(landscape, run, report);
+  const int written = write_outputs(landscape, cells, options);
+  return report.ok() ? written : kExitInternal;
+}
+
+}  // namespace
+
+Command add_demo_command(CLI::App& parent) {
+  auto options = std::make_shared<DemoOptions>();
+  CLI::App* app = parent.add_subcommand(
+      "demo",
+      "The landscape demo: a layered 8192 x 8192 world of bedrock, rock, dirt, ore and water, "
+      "then explosions, tunnels, floods and ore veins in checked mode; prints a summary and "
+      "draws DIR/landscape.png.");
+  app->add_option("--out", options->out, "Directory for landscape.png (created if missing)")
+      ->capture_default_str();
+  app->add_option("--edits", options->edits, "Edits after the world is built")
+      ->capture_default_str();
+  app->add_option("--seed", options->seed, "Seed of the random world and edits")
+      ->capture_default_str();
+  app->add_flag("--cells", options->cells, "Draw the cell lines in the picture");
+  app->add_option("--save", options->save, "Also write the landscape's save file here");
+  app->add_option("--log", options->log,
+                  "Also record the edit log and write it here (`edgeland replay` reads it)");
+  app->add_flag("--unchecked", options->unchecked, "Edit without checked mode (faster)");
+  app->footer(
+      "Deterministic: the same seed and edit count give the same state hash. Exit status: 0; 2 "
+      "when an output cannot be written; 3 when an edit hits an internal error (its state and "
+      "log are written to DIR/demo_failure.state and .log) or check() fails.");
+  return {app, [options] { return run_demo(*options); }};
+}
+
+}  // namespace edgeland::cli

@@ -1,0 +1,76 @@
+#include "demo_world.hpp"
+
+namespace edgeland::cli::demo {
+namespace {
+
+// Waves are sampled every kStep units: 129 points across an 8192 world.
+constexpr std::int64_t kStep = 64;
+
+std::int64_t height(const Box64& world, std::int64_t per_mille) {
+  return world.min.y + (world.max.y - world.min.y) * per_mille / 1000;
+}
+
+std::int64_t scaled(const Box64& world, std::int64_t per_mille) {
+  return (world.max.y - world.min.y) * per_mille / 1000;
+}
+
+// Dirt under the surface, rock under that, bedrock at the bottom: each fill covers the one
+// before where it reaches.
+Terrain lay_layers(DemoEditor& editor, const Box64& world, SplitMix64& random) {
+  Terrain t;
+  t.surface = random_wavy_line(height(world, 690), scaled(world, 36), random);
+  t.rock_top = random_wavy_line(height(world, 570), scaled(world, 40), random);
+  const WavyLine bedrock = random_wavy_line(height(world, 80), scaled(world, 16), random);
+  editor.fill(region_below(t.surface, world, kStep), kDirt);
+  editor.fill(region_below(t.rock_top, world, kStep), kRock);
+  editor.fill(region_below(bedrock, world, kStep), kBedrock);
+  // A grass skin: the top of the dirt along the surface.
+  editor.replace(band_along(t.surface, -scaled(world, 6), scaled(world, 12), world, kStep), kDirt,
+                 kGrass);
+  return t;
+}
+
+// Thin wavy bands turn rock into ore and dirt into sand where they cross it.
+void lay_bands(DemoEditor& editor, const Box64& world, SplitMix64& random) {
+  for (int i = 0; i < 5; ++i) {
+    const WavyLine vein = random_wavy_line(height(world, random.between(140, 540)),
+                                           scaled(world, random.between(10, 30)), random);
+    editor.replace(band_along(vein, 0, scaled(world, random.between(3, 8)), world, kStep), kRock,
+                   kOre);
+  }
+  for (int i = 0; i < 2; ++i) {
+    const WavyLine pocket = random_wavy_line(height(world, random.between(600, 660)),
+                                             scaled(world, random.between(10, 20)), random);
+    editor.replace(band_along(pocket, 0, scaled(world, random.between(6, 12)), world, kStep),
+                   kDirt, kSand);
+  }
+}
+
+// Caves in the rock, the lower part of every third one flooded (only its empty space fills).
+void carve_caves(DemoEditor& editor, const Box64& world, SplitMix64& random) {
+  for (int i = 0; i < 28; ++i) {
+    const Point64 c{world.min.x + (world.max.x - world.min.x) * random.between(30, 970) / 1000,
+                    height(world, random.between(130, 520))};
+    const std::int64_t r = scaled(world, random.between(12, 45));
+    editor.carve(rough_ngon(c, r, static_cast<int>(random.between(14, 28)), 35, random));
+    if (i % 3 == 0) {
+      const Ring pool{{c.x - r, c.y - r}, {c.x + r, c.y - r}, {c.x + r, c.y - r / 3},
+                      {c.x - r, c.y - r / 3}};
+      editor.fill_empty(pool, kWater);
+    }
+    if (i % 7 == 3) {
+      editor.replace(rough_ngon(c, r + scaled(world, 4), 20, 10, random), kRock, kCrystal);
+    }
+  }
+}
+
+}  // namespace
+
+Terrain build_world(DemoEditor& editor, const Box64& world, SplitMix64& random) {
+  const Terrain terrain = lay_layers(editor, world, random);
+  lay_bands(editor, world, random);
+  carve_caves(editor, world, random);
+  return terrain;
+}
+
+}  // namespace edgeland::cli::demo

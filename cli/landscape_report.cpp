@@ -1,0 +1,25 @@
+#include "landscape_report.hpp"
+
+namespace edgeland::cli {
+
+std::string state_hash_hex(std::uint64_t hash) {
+  static constexpr char kHex[] = "0123456789abcdef";
+  std::string out(16, '0');
+  for (int i = 15; i >= 0; --i) {
+    out[static_cast<std::size_t>(i)] = kHex[hash & 0xf];
+    hash >>= 4;
+  }
+  return out;
+}
+
+std::vector<std::pair<Material, Int128>> material_areas(const Landscape& landscape) {
+  std::vector<std::pair<Material, Int128>> out;
+  for (std::size_t m = 0; m < kMaterialCount; ++m) {
+    const auto material = static_cast<Material>(m);
+    const Int128 twice = landscape.twice_area(material);
+    if (twice != 0) out.emplace_back(material, twice);
+  }
+  return out;
+}
+
+}  // namespace edgeland::cli

@@ -1,0 +1,37 @@
+#include "log_text.hpp"
+
+namespace edgeland::log {
+
+std::string_view trim_blanks(std::string_view s) noexcept {
+  while (!s.empty() && is_blank(s.front())) s.remove_prefix(1);
+  while (!s.empty() && is_blank(s.back())) s.remove_suffix(1);
+  return s;
+}
+
+std::string_view take_line(std::string_view& text) noexcept {
+  const std::size_t newline = text.find('\n');
+  const std::string_view line = text.substr(0, newline);
+  text.remove_prefix(newline == std::string_view::npos ? text.size() : newline + 1);
+  return line;
+}
+
+std::string_view take_word(std::string_view& rest) noexcept {
+  std::size_t end = 0;
+  while (end < rest.size() && !is_blank(rest[end])) ++end;
+  const std::string_view word = rest.substr(0, end);
+  rest = trim_blanks(rest.substr(end));
+  return word;
+}
+
+std::string printable_excerpt(std::string_view word) {
+  constexpr std::size_t kMax = 24;
+  std::string out;
+  for (std::size_t i = 0; i < word.size() && i < kMax; ++i) {
+    const unsigned char c = static_cast<unsigned char>(word[i]);
+    out += (c >= 0x20 && c < 0x7f) ? static_cast<char>(c) : '?';
+  }
+  if (word.size() > kMax) out += "...";
+  return out;
+}
+
+}  // namespace edgeland::log

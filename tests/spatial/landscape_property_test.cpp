@@ -1,0 +1,334 @@
+// Properties of the landscape under random edit sequences (issue 15, "Verification"):
+//   * every invariant holds after every edit (checked mode), change sets say exactly what
+//     changed (ids, polygons, areas);
+//   * the materials are those of the exact history of the edits (pointwise, and areas against
+//     CGAL) up to the accumulated snap-rounding bound, in a deep tree and in a one-cell landscape
+//     alike (the seam property);
+//   * material_at, crossings, raycast and overlaps agree with brute force over all polygons;
+//   * snapshots restore the state hash; save/load gives the same state.
+#include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
+
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "cgal_reference.hpp"
+#include "generators.hpp"
+#include "landscape_oracle.hpp"
+#include "polygon_set_helpers.hpp"
+
+namespace edgeland::test {
+namespace {
+
+struct LandscapeCase {
+  Box64 world;
+  Material fill = kEmpty;
+  LandscapeConfig config;
+  std::vector<LandscapeEdit> edits;
+};
+
+void showValue(const LandscapeCase& c, std::ostream& os) {
+  os << "world " << c.world.min.x << ' ' << c.world.min.y << ' ' << c.world.max.x << ' '
+     << c.world.max.y << ' ' << int(c.fill) << "\n  config: tree " << int(c.config.tree) << " cap "
+     << c.config.edge_cap << " merge " << c.config.merge_below << " min " << c.config.min_cell_size
+     << " grid " << c.config.grid_depth;
+  for (const LandscapeEdit& e : c.edits) os << "\n  " << describe(e);
+}
+
+rc::Gen<LandscapeEdit> edit_in(const Box64& w) {
+  return rc::gen::exec([w] {
+    const std::int64_t size = w.max.x - w.min.x;
+    const std::int64_t r = *rc::gen::element<std::int64_t>(3, 8, 20, std::max<std::int64_t>(4, size / 4));
+    const Point64 c{*gen::coord(w.min.x - r / 2, w.max.x + r / 2), *gen::coord(w.min.y - r / 2, w.max.y + r / 2)};
+    LandscapeEdit e;
+    e.shape = *rc::gen::weightedOneOf<PolygonSet>(
+        {{5, rc::gen::map(gen::shape(c, r), [](Polygon p) { return PolygonSet{std::move(p)}; })},
+         {1, gen::polygon_set(c, r)}});
+    e.kind = *rc::gen::element(LandscapeEdit::Kind::kCarve, LandscapeEdit::Kind::kFill,
+                               LandscapeEdit::Kind::kFillEmpty, LandscapeEdit::Kind::kReplace);
+    e.a = static_cast<Material>(*rc::gen::inRange(1, 5));
+    e.b = static_cast<Material>(*rc::gen::inRange(0, 5));
+    if (e.kind == LandscapeEdit::Kind::kReplace && *rc::gen::inRange(0, 4) == 0) e.a = kEmpty;
+    return e;
+  });
+}
+
+// Sized to RapidCheck's nominal size throughout (inRange would shrink its range with the size
+// and give one edit in a tiny world to most of the early cases).
+rc::Gen<LandscapeCase> landscape_case(int max_edits = 8) {
+  return rc::gen::resize(rc::kNominalSize, rc::gen::exec([max_edits] {
+    LandscapeCase c;
+    const std::int64_t size = *rc::gen::element<std::int64_t>(64, 256, 1000);
+    const Point64 origin{*gen::coord(-300, 300), *gen::coord(-300, 300)};
+    c.world = {origin, {origin.x + size, origin.y + size / (*rc::gen::inRange(1, 3))}};
+    c.fill = static_cast<Material>(*rc::gen::element(0, 0, 1, 2));
+    c.config.tree = *rc::gen::element(TreeKind::kQuadtree, TreeKind::kKdTree);
+    c.config.edge_cap = *rc::gen::element<std::uint32_t>(8, 12, 24, 64, 1000);
+    c.config.merge_below = c.config.edge_cap / 3;
+    c.config.min_cell_size = *rc::gen::element<std::int64_t>(1, 2, 8);
+    if (*rc::gen::inRange(0, 10) == 0) c.config.grid_depth = *rc::gen::inRange(1, 4);
+    const int n = *rc::gen::inRange(1, max_edits + 1);
+    for (int i = 0; i < n; ++i) c.edits.push_back(*edit_in(c.world));
+    return c;
+  }));
+}
+
+// The landscape of a case after its edits, checked; fails the property on any exception.
+Landscape run_case(const LandscapeCase& c, const LandscapeConfig& config, std::uint32_t* deepest = nullptr) {
+  Landscape l(c.world, c.fill, config);
+  l.set_checked(true);
+  for (const LandscapeEdit& e : c.edits) {
+    try {
+      apply(l, e);
+    } catch (const std::exception& ex) {
+      RC_FAIL(std::string("edit threw: ") + ex.what() + "\n  edit: " + describe(e));
+    }
+    if (deepest) *deepest = std::max<std::uint32_t>(*deepest, static_cast<std::uint32_t>(l.stats().depth));
+  }
+  return l;
+}
+
+std::map<PolygonId, FlatPolygon> by_id(const Landscape& l) {
+  std::map<PolygonId, FlatPolygon> out;
+  l.polygons_in(l.world(), [&](const PolygonView& v) {
+    out[v.id] = {v.material, *v.polygon, *bounding_box(*v.polygon)};
+    return true;
+  });
+  return out;
+}
+
+RC_GTEST_PROP(LandscapeProperty, EditsKeepEveryInvariantAndReportWhatChanged, ()) {
+  const LandscapeCase c = *landscape_case();
+  Landscape l(c.world, c.fill, c.config);
+  l.set_checked(true);
+  for (const LandscapeEdit& e : c.edits) {
+    const std::map<PolygonId, FlatPolygon> before = by_id(l);
+    std::array<Int128, 6> area_before{};
+    for (Material m = 0; m < 6; ++m) area_before[m] = l.twice_area(m);
+    const ChangeSet cs = apply(l, e);
+    const std::map<PolygonId, FlatPolygon> after = by_id(l);
+    std::map<PolygonId, FlatPolygon> expected = before;
+    for (PolygonId id : cs.removed) {
+      RC_ASSERT(before.count(id) == 1u);
+      RC_ASSERT(after.count(id) == 0u);
+      expected.erase(id);
+    }
+    for (const ChangeSet::Added& a : cs.added) {
+      RC_ASSERT(before.count(a.id) == 0u);
+      RC_ASSERT(after.count(a.id) == 1u);
+      RC_ASSERT(after.at(a.id).ring == a.polygon);
+      RC_ASSERT(after.at(a.id).material == a.material);
+      expected[a.id] = after.at(a.id);
+    }
+    RC_ASSERT(expected.size() == after.size());
+    // An unchanged polygon keeps its id (a game rebuilds only what changed).
+    std::map<std::pair<Material, Polygon>, PolygonId> old_ids;
+    for (const auto& [id, p] : before) old_ids[{p.material, p.ring}] = id;
+    for (const auto& [id, p] : after) {
+      const auto it = old_ids.find({p.material, p.ring});
+      if (it != old_ids.end()) RC_ASSERT(it->second == id);
+    }
+    for (const auto& [id, p] : after) RC_ASSERT(expected.count(id) == 1u && expected.at(id).ring == p.ring);
+    std::map<Material, Int128> delta;
+    for (const auto& [m, d] : cs.twice_area_delta) delta[m] = d;
+    Int128 total = 0;
+    for (Material m = 0; m < 6; ++m) {
+      RC_ASSERT(l.twice_area(m) - area_before[m] == delta[m]);
+      total += delta[m];
+    }
+    RC_ASSERT(total == 0);
+  }
+  const LandscapeReport report = l.check();
+  if (!report.ok()) RC_FAIL(report.problems.front());
+  RC_CLASSIFY(l.stats().cells > 1, "several cells");
+  RC_CLASSIFY(l.stats().polygons > 10, "more than 10 polygons");
+}
+
+// A loose but sound drift bound: each snap rounding moves a boundary by at most sqrt(2)/2 < 3/4,
+// and a boundary point is rounded at most by each edit and each level of splitting, twice over
+// for cells that merged and split again.
+Rational drift_bound(std::size_t edits, std::uint32_t deepest) {
+  return Rational(3, 4) * Rational(static_cast<long long>(2 * edits + 2 * deepest + 1));
+}
+
+// Whether q is farther than d from the boundary of every shape and of the world.
+bool clear_of_boundaries(const QPoint& q, const std::vector<ExactRegion>& shapes,
+                         const ExactRegion& world, const Rational& d) {
+  const Rational d2 = d * d;
+  if (world.boundary_within(q, d2)) return false;
+  for (const ExactRegion& s : shapes)
+    if (s.boundary_within(q, d2)) return false;
+  return true;
+}
+
+Material exact_material(const LandscapeCase& c, const std::vector<ExactRegion>& shapes,
+                        const ExactRegion& world, const QPoint& q) {
+  if (world.locate(q) != ExactRegion::Location::kInside) return kEmpty;
+  Material m = c.fill;
+  for (std::size_t i = 0; i < c.edits.size(); ++i)
+    m = apply_pointwise(c.edits[i], m, shapes[i].locate(q) == ExactRegion::Location::kInside);
+  return m;
+}
+
+Polygon box_polygon(const Box64& b) { return {b.min, {b.max.x, b.min.y}, b.max, {b.min.x, b.max.y}}; }
+
+RC_GTEST_PROP(LandscapeProperty, MaterialsAreTheExactHistoryAwayFromBoundaries, ()) {
+  const LandscapeCase c = *landscape_case(5);
+  std::uint32_t deepest = 0;
+  const Landscape tree = run_case(c, c.config, &deepest);
+  LandscapeConfig one_cell;
+  one_cell.edge_cap = 1u << 30;
+  one_cell.merge_below = 1u << 29;
+  const Landscape single = run_case(c, one_cell);
+  RC_ASSERT(single.stats().cells == 1u);
+  std::vector<ExactRegion> shapes;
+  for (const LandscapeEdit& e : c.edits) shapes.push_back(ExactRegion::of(e.shape));
+  const ExactRegion world = ExactRegion::of(box_polygon(c.world));
+  const Rational d = drift_bound(c.edits.size(), deepest);
+  const std::vector<FlatPolygon> tree_polys = flatten(tree), single_polys = flatten(single);
+  std::size_t tested = 0;
+  for (int k = 0; k < 150; ++k) {
+    const QPoint q{Rational(*gen::coord(4 * c.world.min.x - 8, 4 * c.world.max.x + 8), 4),
+                   Rational(*gen::coord(4 * c.world.min.y - 8, 4 * c.world.max.y + 8), 4)};
+    if (!clear_of_boundaries(q, shapes, world, d)) continue;
+    ++tested;
+    const Material want = exact_material(c, shapes, world, q);
+    RC_ASSERT(material_brute(tree_polys, q) == want);
+    RC_ASSERT(material_brute(single_polys, q) == want);
+  }
+  RC_TAG(tested > 0 ? "points tested" : "no point clear of boundaries");
+  // Areas against CGAL: the difference lies in the bands of width d around the boundaries.
+  std::map<Material, ExactRegion> exact;
+  if (c.fill != kEmpty) exact[c.fill] = world;
+  for (std::size_t i = 0; i < c.edits.size(); ++i) {
+    const LandscapeEdit& e = c.edits[i];
+    const ExactRegion s = shapes[i].apply(ClipOp::kIntersection, world);
+    ExactRegion solid;
+    for (const auto& [m, r] : exact) solid = solid.apply(ClipOp::kUnion, r);
+    std::map<Material, ExactRegion> next;
+    for (const auto& [m, r] : exact) {
+      next[m] = next[m].apply(ClipOp::kUnion, r.apply(ClipOp::kDifference, s));
+      const Material to = apply_pointwise(e, m, true);
+      if (to != kEmpty) next[to] = next[to].apply(ClipOp::kUnion, r.apply(ClipOp::kIntersection, s));
+    }
+    const Material from_empty = apply_pointwise(e, kEmpty, true);
+    if (from_empty != kEmpty)
+      next[from_empty] = next[from_empty].apply(ClipOp::kUnion, s.apply(ClipOp::kDifference, solid));
+    exact = std::move(next);
+  }
+  Rational band = 0;
+  for (const ExactRegion& s : shapes)
+    band += 2 * d * Rational(s.perimeter_ceil()) + Rational(22, 7) * d * d * Rational(static_cast<long long>(s.boundary_cycles()));
+  band += 2 * d * Rational(world.perimeter_ceil()) + Rational(22, 7) * d * d;
+  for (const auto& [m, r] : exact) {
+    for (const Landscape* l : {&tree, &single}) {
+      const Rational got = Rational(static_cast<long long>(l->twice_area(m))) / 2;
+      RC_ASSERT(abs(got - r.area()) <= band);
+    }
+  }
+}
+
+// Segment endpoints that hit the interesting places: vertices, cell lines, random points.
+Point64 probe_point(const Landscape& l, const std::vector<FlatPolygon>& polys) {
+  const Box64& w = l.world();
+  const int kind = *rc::gen::inRange(0, 4);
+  if (kind == 0 && !polys.empty()) {
+    const FlatPolygon& p = polys[*rc::gen::inRange<std::size_t>(0, polys.size())];
+    return p.ring[*rc::gen::inRange<std::size_t>(0, p.ring.size())];
+  }
+  if (kind == 1) {  // a cell line of a quadtree over the world
+    const std::int64_t mx = w.min.x + (w.max.x - w.min.x) / 2;
+    return {mx, *gen::coord(w.min.y - 4, w.max.y + 4)};
+  }
+  return {*gen::coord(w.min.x - 4, w.max.x + 4), *gen::coord(w.min.y - 4, w.max.y + 4)};
+}
+
+Rational rational(const Fraction& f) {
+  auto big = [](Int128 v) {
+    const bool negative = v < 0;
+    const unsigned __int128 u = negative ? -static_cast<unsigned __int128>(v) : static_cast<unsigned __int128>(v);
+    BigInt r(static_cast<unsigned long long>(u >> 64));
+    r <<= 64;
+    r += BigInt(static_cast<unsigned long long>(u));
+    return negative ? BigInt(-r) : r;
+  };
+  return Rational(big(f.num), big(f.den));
+}
+
+RC_GTEST_PROP(LandscapeProperty, QueriesAgreeWithBruteForce, ()) {
+  const LandscapeCase c = *landscape_case(5);
+  const Landscape l = run_case(c, c.config);
+  const std::vector<FlatPolygon> polys = flatten(l);
+  for (int k = 0; k < 20; ++k) {
+    const Point64 p = probe_point(l, polys);
+    RC_ASSERT(l.material_at(p) == material_brute(polys, {Rational(p.x), Rational(p.y)}));
+  }
+  for (int k = 0; k < 4; ++k) {
+    const Point64 a = probe_point(l, polys);
+    Point64 b = probe_point(l, polys);
+    if (*rc::gen::inRange(0, 3) == 0) b = {a.x + *gen::coord(-300, 300), a.y};  // horizontal
+    if (a == b) continue;
+    const std::vector<MaterialCrossing> got = l.crossings(a, b);
+    const std::vector<BruteCrossing> want = profile_brute(polys, a, b);
+    RC_ASSERT(got.size() == want.size());
+    for (std::size_t i = 0; i < got.size(); ++i) {
+      RC_ASSERT(rational(got[i].t) == want[i].t);
+      RC_ASSERT(got[i].before == want[i].before);
+      RC_ASSERT(got[i].after == want[i].after);
+    }
+    std::optional<BruteCrossing> first;
+    for (const BruteCrossing& w : want)
+      if (w.after != kEmpty) {
+        first = w;
+        break;
+      }
+    const auto hit = l.raycast(a, b);
+    RC_ASSERT(hit.has_value() == first.has_value());
+    if (hit) {
+      RC_ASSERT(rational(hit->t) == first->t);
+      RC_ASSERT(hit->after == first->after);
+      RC_ASSERT(round_to_grid(hit->point) == hit->rounded);
+    }
+  }
+  for (int k = 0; k < 6; ++k) {
+    const Point64 a = probe_point(l, polys);
+    const Box64 box{a, {a.x + *gen::coord(1, 40), a.y + *gen::coord(1, 40)}};
+    const ExactRegion region = ExactRegion::of(box_polygon(box));
+    std::set<Material> want;
+    for (const FlatPolygon& p : polys)
+      if (!ExactRegion::of(p.ring).apply(ClipOp::kIntersection, region).empty()) want.insert(p.material);
+    const std::vector<Material> got = l.overlaps(box);
+    RC_ASSERT(std::set<Material>(got.begin(), got.end()) == want);
+    const std::vector<Material> general = l.overlaps(ValidSet(PolygonSet{box_polygon(box)}));
+    RC_ASSERT(general == got);
+  }
+}
+
+RC_GTEST_PROP(LandscapeProperty, RestoringASnapshotRestoresTheState, ()) {
+  const LandscapeCase c = *landscape_case(6);
+  Landscape l(c.world, c.fill, c.config);
+  const std::size_t at = *rc::gen::inRange<std::size_t>(0, c.edits.size());
+  for (std::size_t i = 0; i < at; ++i) apply(l, c.edits[i]);
+  const Landscape snapshot = l;
+  const std::uint64_t hash = l.state_hash();
+  for (std::size_t i = at; i < c.edits.size(); ++i) apply(l, c.edits[i]);
+  RC_ASSERT(snapshot.state_hash() == hash);
+  l = snapshot;
+  RC_ASSERT(l.state_hash() == hash);
+  RC_ASSERT(l.check().ok());
+}
+
+RC_GTEST_PROP(LandscapeProperty, SaveAndLoadGiveTheSameState, ()) {
+  const LandscapeCase c = *landscape_case(6);
+  const Landscape l = run_case(c, c.config);
+  std::stringstream file;
+  l.save(file);
+  const Landscape back = Landscape::load(file);
+  RC_ASSERT(back.state_hash() == l.state_hash());
+  RC_ASSERT(flatten(back).size() == flatten(l).size());
+  for (Material m = 0; m < 6; ++m) RC_ASSERT(back.twice_area(m) == l.twice_area(m));
+}
+
+}  // namespace
+}  // namespace edgeland::test
