@@ -96,6 +96,17 @@ void BitmapWorld::paint(const PolygonSet& shape, Material material) {
   }
 }
 
+void BitmapWorld::restore(const BitmapWorld& source, const Box64& box) {
+  const std::int64_t x0 = std::max(box.min.x - world_.min.x, std::int64_t{0});
+  const std::int64_t x1 = std::min(box.max.x - world_.min.x, width_);
+  for (std::int64_t y = std::max(box.min.y - world_.min.y, std::int64_t{0});
+       y < std::min(box.max.y - world_.min.y, height_); ++y) {
+    if (x0 < x1)
+      std::memcpy(cells_.data() + y * width_ + x0, source.cells_.data() + y * width_ + x0,
+                  static_cast<std::size_t>(x1 - x0));
+  }
+}
+
 Material BitmapWorld::material_at(Point64 p) const {
   return at_local(p.x - world_.min.x, p.y - world_.min.y);
 }

@@ -43,6 +43,10 @@ class BitmapWorld {
   void carve(const PolygonSet& shape) { paint(shape, kEmpty); }
   void fill(const PolygonSet& shape, Material material) { paint(shape, material); }
 
+  // Copies the squares of the box (clipped to the world) from `source`, a world of the same
+  // box: how the benchmarks undo an edit without copying the whole array.
+  void restore(const BitmapWorld& source, const Box64& box);
+
   // The material of the square holding p + eps (1, eps), i.e. square (p.x, p.y); kEmpty outside.
   Material material_at(Point64 p) const;
   // Walks the squares the segment from -> to passes (the segment moved by eps (1, eps)) and

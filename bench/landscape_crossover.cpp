@@ -1,2 +1,136 @@
+// The crossover (thesis chapter 5: "the same operation on a polygon-based landscape can
+// actually be faster for very large areas at some point because the number of edges of a
+// polygon is linear to the area it encloses"; the thesis did not measure where). One carve of a
+// circle of radius R = 4 ... 2048 with game_sides(R) vertices (one per 8 units of
+// circumference, 16 to 512), into a 16384 x 16384 cave terrain (material 1, 4 x CAVES circles
+// of radius 24-160 carved: the density of the query terrain), at CROSSOVER_REPS seeded centres
+// (EDGELAND_LANDSCAPE_CROSSOVER_REPS, default 30) with the whole circle inside the world.
+//
+// Every carve starts from the same terrain: the landscape carves a copy (O(1), untimed), the
+// bitmap carves its array and gets the circle's box back from a second copy afterwards
+// (untimed). Each carve's time is its fastest of REPEATS; reported is the median over the
+// centres. Names landscape_crossover/RIVAL/R; the landscape's median_vs_bitmap crosses 1 at the
+// crossover radius (run_landscape.sh interpolates it and plots both curves).
+#include <map>
+#include <optional>
+#include <string>
+
 #include "landscape_common.hpp"
-namespace edgeland::bench { void register_crossover_benchmarks() {} }
+#include "landscape_shapes.hpp"
+
+namespace edgeland::bench {
+namespace {
+
+constexpr std::int64_t kSide = 16384;
+constexpr Box64 kWorld{{0, 0}, {kSide, kSide}};
+
+const World& terrain(Rival rival) {
+  static std::map<Rival, World> cache;
+  auto it = cache.find(rival);
+  if (it == cache.end()) {
+    World world = make_world(rival, kWorld, 1);
+    const std::size_t count = 4 * env_count("EDGELAND_LANDSCAPE_CAVES", 300);
+    for (const ValidSet& cave : as_shapes(caves(0xC405, count, kWorld)))
+      apply(world, EditKind::kCarve, cave, kEmpty);
+    it = cache.emplace(rival, std::move(world)).first;
+  }
+  return it->second;
+}
+
+std::vector<ValidSet> circles(std::int64_t radius) {
+  const std::size_t n = env_count("EDGELAND_LANDSCAPE_CROSSOVER_REPS", 30);
+  std::vector<Polygon> polygons;
+  for (const Point64& c : random_points(0xC2055 + static_cast<std::uint64_t>(radius), n, inset(kWorld, radius)))
+    polygons.push_back(ngon(c, static_cast<double>(radius), game_sides(static_cast<double>(radius))));
+  return as_shapes(polygons);
+}
+
+// One carve from the terrain, repeats() times: the fastest.
+double carve_landscape(const Landscape& base, const ValidSet& shape) {
+  double best = 0;
+  for (std::size_t r = 0; r < repeats(); ++r) {
+    Landscape copy = base;
+    const double s = seconds_of([&] { copy.carve(shape); });
+    best = r == 0 ? s : std::min(best, s);
+  }
+  return best;
+}
+
+double carve_bitmap(BitmapWorld& work, const BitmapWorld& base, const ValidSet& shape) {
+  const Box64 box = *bounding_box(shape.polygons());
+  double best = 0;
+  for (std::size_t r = 0; r < repeats(); ++r) {
+    const double s = seconds_of([&] { work.carve(shape.polygons()); });
+    work.restore(base, box);
+    best = r == 0 ? s : std::min(best, s);
+  }
+  return best;
+}
+
+std::vector<double> carve_times(Rival rival, const std::vector<ValidSet>& shapes) {
+  const World& base = terrain(rival);
+  std::vector<double> seconds;
+  if (const auto* l = std::get_if<Landscape>(&base)) {
+    for (const ValidSet& shape : shapes) seconds.push_back(carve_landscape(*l, shape));
+    return seconds;
+  }
+  const auto& b = std::get<BitmapWorld>(base);
+  BitmapWorld work = b;
+  for (const ValidSet& shape : shapes) seconds.push_back(carve_bitmap(work, b, shape));
+  return seconds;
+}
+
+// The bitmap's median per radius, from its own benchmark or made here.
+std::map<std::int64_t, double>& bitmap_medians() {
+  static std::map<std::int64_t, double> cache;
+  return cache;
+}
+
+double bitmap_median_us(std::int64_t radius) {
+  auto& cache = bitmap_medians();
+  auto it = cache.find(radius);
+  if (it == cache.end())
+    it = cache.emplace(radius, quantile(carve_times(Rival::kBitmap, circles(radius)), 0.5) * 1e6).first;
+  return it->second;
+}
+
+void run_crossover_benchmark(benchmark::State& state, Rival rival) {
+  const std::int64_t radius = state.range(0);
+  std::vector<ValidSet> shapes;
+  std::vector<double> seconds;
+  for (auto _ : state) {
+    if (!guarded(state, [&] {
+          shapes = circles(radius);
+          seconds = carve_times(rival, shapes);
+        }))
+      return;
+    double total = 0;
+    for (double s : seconds) total += s;
+    state.SetIterationTime(total);
+  }
+  if (!verify(state, terrain(rival))) return;
+  const double median_us = quantile(seconds, 0.5) * 1e6;
+  state.counters["median_us"] = median_us;
+  state.counters["p90_us"] = quantile(seconds, 0.9) * 1e6;
+  state.counters["shape_vertices"] = static_cast<double>(shapes.front().polygons().front().size());
+  if (rival == Rival::kBitmap) {
+    bitmap_medians().insert_or_assign(radius, median_us);
+    return;
+  }
+  report_stats(state, terrain(rival));
+  guarded(state, [&] { state.counters["median_vs_bitmap"] = median_us / bitmap_median_us(radius); });
+}
+
+}  // namespace
+
+void register_crossover_benchmarks() {
+  for (Rival rival : {Rival::kBitmap, Rival::kQuadtree}) {
+    auto* b = benchmark::RegisterBenchmark(
+        (std::string("landscape_crossover/") + rival_name(rival)).c_str(),
+        [rival](benchmark::State& state) { run_crossover_benchmark(state, rival); });
+    for (std::int64_t radius = 4; radius <= 2048; radius *= 2) b->Arg(radius);
+    b->Iterations(1)->UseManualTime()->Unit(benchmark::kMillisecond);
+  }
+}
+
+}  // namespace edgeland::bench
