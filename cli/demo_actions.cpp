@@ -48,28 +48,28 @@ ActionCounts run_actions(DemoEditor& editor, const Box64& world, const Terrain& 
   while (left() > 0) {
     const Point64 at = point_in_ground(world, terrain, random);
     const std::int64_t roll = random.between(0, 99);
-    if (roll < 52) {
-      const std::int64_t r = s(random.between(12, 130));
+    if (roll < 60) {
+      const std::int64_t r = s(random.between(8, 64));
       editor.carve(rough_ngon(at, r, static_cast<int>(random.between(8, 24)), 30, random));
       ++counts.explosions;
-    } else if (roll < 76) {
+    } else if (roll < 74) {
       const std::int64_t r = s(random.between(10, 24));
-      walk(at, std::min(left(), static_cast<int>(random.between(5, 14))), s(random.between(40, 80)),
+      walk(at, std::min(left(), static_cast<int>(random.between(4, 10))), s(random.between(40, 80)),
            random, [&](Point64 a, Point64 b, int heading) {
              editor.carve(capsule(a, b, heading, r));
              ++counts.tunnel_steps;
            });
-    } else if (roll < 86) {
-      editor.fill_empty(rough_ngon(at, s(random.between(40, 220)), 20, 20, random), kWater);
+    } else if (roll < 82) {
+      editor.fill_empty(rough_ngon(at, s(random.between(30, 140)), 20, 20, random), kWater);
       ++counts.floods;
-    } else if (roll < 92) {
+    } else if (roll < 90) {
       const std::int64_t r = s(random.between(6, 14));
       walk(at, std::min(left(), static_cast<int>(random.between(3, 7))), s(random.between(30, 60)),
            random, [&](Point64 a, Point64 b, int heading) {
              editor.replace(capsule(a, b, heading, r), kRock, kOre);
              ++counts.vein_steps;
            });
-    } else if (roll < 96) {
+    } else if (roll < 94) {
       editor.fill(rough_ngon(at, s(random.between(30, 120)), 16, 25, random), kDirt);
       ++counts.landslides;
     } else {

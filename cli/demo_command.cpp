@@ -29,7 +29,7 @@ constexpr Box64 kDemoWorld{{0, 0}, {8192, 8192}};
 
 struct DemoOptions {
   std::string out = ".";
-  std::size_t edits = 3000;
+  std::size_t edits = 6000;
   std::uint64_t seed = 1;
   bool cells = false;
   bool unchecked = false;
@@ -66,7 +66,7 @@ void print_summary(const Landscape& landscape, const DemoRun& run, const Landsca
   const std::size_t edits = run.world_edits + action_edits;
   const LandscapeStats stats = landscape.stats();
   std::ostringstream rate;
-  rate << std::fixed << std::setprecision(0) << (run.seconds > 0 ? edits / run.seconds : 0.0)
+  rate << std::fixed << std::setprecision(0) << (run.seconds > 0 ? static_cast<double>(edits) / run.seconds : 0.0)
        << " (" << std::setprecision(2) << run.seconds << " s)";
   print_line("world built", std::to_string(run.world_edits) +
                                 " edits (layers, grass, ore and sand bands, caves, pools)");

@@ -85,7 +85,7 @@ nlohmann::ordered_json summary(const Landscape& landscape, const Applied& applie
   out["depth"] = stats.depth;
   out["area"] = std::move(areas);
   out["state_hash"] = state_hash_hex(landscape.state_hash());
-  out["edits_per_second"] = applied.seconds > 0 ? applied.edits / applied.seconds : 0.0;
+  out["edits_per_second"] = applied.seconds > 0 ? static_cast<double>(applied.edits) / applied.seconds : 0.0;
   return out;
 }
 
