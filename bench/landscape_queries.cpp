@@ -3,7 +3,9 @@
 // (radii 24-160, EDGELAND_LANDSCAPE_CAVES, default 300), asked at QUERIES seeded random places
 // (EDGELAND_LANDSCAPE_QUERIES, default 10000):
 //
-//   material_at: a point anywhere; the bitmap reads one byte.
+//   material_at: a point anywhere; the bitmap reads one byte (from DRAM: 64 MiB, random places).
+//   material_at_walk: the points of a random walk, 3 units a step (a character's feet): the
+//                bitmap's bytes and the landscape's cells stay in the cache.
 //   raycast:     200 units from a point in empty space in a random direction (both ends in the
 //                world); the bitmap walks the squares (integer DDA); Box2D 2.4 casts against the
 //                same terrain loaded as static chain loops (b2World::RayCast, closest hit).
@@ -36,9 +38,15 @@ constexpr double kRayLength = 200;
 // 1 x 2 m, and the shortest terrain edge (1 unit) still 12x Box2D's linear slop.
 constexpr float kMetresPerUnit = 1.0f / 16.0f;
 
-enum class Query : std::uint8_t { kMaterialAt, kRaycast, kOverlaps };
+enum class Query : std::uint8_t { kMaterialAt, kMaterialAtWalk, kRaycast, kOverlaps };
 const char* query_name(Query q) {
-  return q == Query::kMaterialAt ? "material_at" : q == Query::kRaycast ? "raycast" : "overlaps";
+  switch (q) {
+    case Query::kMaterialAt: return "material_at";
+    case Query::kMaterialAtWalk: return "material_at_walk";
+    case Query::kRaycast: return "raycast";
+    case Query::kOverlaps: return "overlaps";
+  }
+  return "?";
 }
 
 std::size_t query_count() { return env_count("EDGELAND_LANDSCAPE_QUERIES", 10000); }
@@ -115,6 +123,13 @@ const std::vector<Point64>& points() {
   return cache;
 }
 
+const std::vector<Point64>& walk() {
+  static const std::vector<Point64> cache = random_walk(0x3A1C, query_count() - 1, 3.0, inset(kWorld, 16));
+  return cache;
+}
+
+const std::vector<Point64>& points(Query q) { return q == Query::kMaterialAt ? points() : walk(); }
+
 const std::vector<Box64>& boxes() {
   static std::vector<Box64> cache;
   if (cache.empty())
@@ -147,7 +162,10 @@ double fraction(const Fraction& f) { return static_cast<double>(f.num) / static_
 
 QueryRun run_world(Query q, const World& world) {
   if (const auto* l = std::get_if<Landscape>(&world)) {
-    if (q == Query::kMaterialAt) return run_batches(points().size(), [&](std::size_t i) { return double(l->material_at(points()[i])); });
+    if (q == Query::kMaterialAt || q == Query::kMaterialAtWalk) {
+      const std::vector<Point64>& p = points(q);
+      return run_batches(p.size(), [&](std::size_t i) { return double(l->material_at(p[i])); });
+    }
     if (q == Query::kOverlaps) return run_batches(boxes().size(), [&](std::size_t i) { return double(!l->overlaps(boxes()[i]).empty()); });
     return run_batches(rays().size(), [&](std::size_t i) {
       const auto hit = l->raycast(rays()[i].from, rays()[i].to);
@@ -155,7 +173,10 @@ QueryRun run_world(Query q, const World& world) {
     });
   }
   const auto& b = std::get<BitmapWorld>(world);
-  if (q == Query::kMaterialAt) return run_batches(points().size(), [&](std::size_t i) { return double(b.material_at(points()[i])); });
+  if (q == Query::kMaterialAt || q == Query::kMaterialAtWalk) {
+    const std::vector<Point64>& p = points(q);
+    return run_batches(p.size(), [&](std::size_t i) { return double(b.material_at(p[i])); });
+  }
   if (q == Query::kOverlaps) return run_batches(boxes().size(), [&](std::size_t i) { return double(!b.overlaps(boxes()[i]).empty()); });
   return run_batches(rays().size(), [&](std::size_t i) {
     const auto hit = b.raycast(rays()[i].from, rays()[i].to);
@@ -253,16 +274,16 @@ void run_query_benchmark(benchmark::State& state, Query q, const std::string& wh
   }
   guarded(state, [&] {
     if (who != "bitmap") compare_with(state, q, *run, "bitmap", median_ns);
-    if (who != "box2d" && who != "bitmap" && q != Query::kMaterialAt) compare_with(state, q, *run, "box2d", median_ns);
+    if (who != "box2d" && who != "bitmap" && (q == Query::kRaycast || q == Query::kOverlaps)) compare_with(state, q, *run, "box2d", median_ns);
   });
 }
 
 }  // namespace
 
 void register_query_benchmarks() {
-  for (Query q : {Query::kMaterialAt, Query::kRaycast, Query::kOverlaps}) {
+  for (Query q : {Query::kMaterialAt, Query::kMaterialAtWalk, Query::kRaycast, Query::kOverlaps}) {
     std::vector<std::string> who{"bitmap"};
-    if (q != Query::kMaterialAt) who.push_back("box2d");
+    if (q == Query::kRaycast || q == Query::kOverlaps) who.push_back("box2d");
     for (const char* r : {"quadtree", "kdtree", "grid"}) who.push_back(r);
     for (const std::string& w : who) {
       const std::string name = std::string("landscape_query/") + query_name(q) + "/" + w;

@@ -79,7 +79,7 @@ std::vector<Point64> random_walk(std::uint64_t seed, std::size_t count, double s
   double heading = 2.0 * kPi * random.unit();
   std::vector<Point64> out{{std::llround(x), std::llround(y)}};
   while (out.size() <= count) {
-    heading += (random.unit() - 0.5) * (kPi / 3.0);
+    heading += (random.unit() - 0.5) * (kPi / 9.0);
     const double nx = x + step * std::cos(heading), ny = y + step * std::sin(heading);
     if (nx < static_cast<double>(box.min.x) || nx > static_cast<double>(box.max.x) ||
         ny < static_cast<double>(box.min.y) || ny > static_cast<double>(box.max.y)) {

@@ -28,7 +28,8 @@ Polygon capsule(Point64 a, Point64 b, double radius, std::size_t sides);
 std::vector<Point64> random_points(std::uint64_t seed, std::size_t count, const Box64& box);
 
 // A random walk of `count` + 1 positions, `step` units apart (rounded), starting at the box's
-// centre and turning by up to 30 degrees per step; it turns back when it would leave the box.
+// centre and turning by up to 10 degrees either way per step (a digger heads somewhere, so it
+// mostly meets fresh rock); it turns back when it would leave the box.
 std::vector<Point64> random_walk(std::uint64_t seed, std::size_t count, double step,
                                  const Box64& box);
 
