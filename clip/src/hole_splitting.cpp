@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <optional>
 #include <stdexcept>
-#include <unordered_map>
 
 #include "assembly.hpp"
 #include "edgeland/kernel/angle.hpp"
@@ -12,6 +11,7 @@
 #include "edgeland/kernel/point_in_polygon.hpp"
 #include "edgeland/kernel/predicates.hpp"
 #include "planar_graph.hpp"
+#include "point_key.hpp"
 
 namespace edgeland::detail {
 namespace {
@@ -93,7 +93,9 @@ std::optional<Point64> ray_candidate(Point64 o, const std::vector<Segment>& obst
   for (Point64 raw : vertices) {
     const Point64 v = frame(raw, s);
     if (v == o || v == p) continue;
-    if (upper ? v.y <= o.y : v.y >= o.y) continue;
+    // Only vertices in the triangle's box: strictly between the rows of o and p, not east of o.
+    if (upper ? v.y <= o.y || v.y > p.y : v.y >= o.y || v.y < p.y) continue;
+    if (v.x > o.x) continue;
     if (!sign_matches(side_of_edge, orientation(hit.edge.a, hit.edge.b, v))) continue;
     if (!sign_matches(side_of_op, orientation(o, p, v))) continue;
     const Point64 u1{v.x - o.x, v.y - o.y}, u2{best.x - o.x, best.y - o.y};
@@ -104,10 +106,16 @@ std::optional<Point64> ray_candidate(Point64 o, const std::vector<Segment>& obst
   return best;
 }
 
-// The open segment o-t touches no obstacle and no obstacle overlaps it.
+// The open segment o-t touches no obstacle and no obstacle overlaps it. Obstacles whose box
+// misses the bridge's box are passed over by comparisons alone.
 bool visible(Point64 o, Point64 t, const std::vector<Segment>& obstacles) {
   const Segment bridge{o, t};
+  const std::int64_t x0 = std::min(o.x, t.x), x1 = std::max(o.x, t.x);
+  const std::int64_t y0 = std::min(o.y, t.y), y1 = std::max(o.y, t.y);
   for (const Segment& e : obstacles) {
+    if (std::max(e.a.x, e.b.x) < x0 || std::min(e.a.x, e.b.x) > x1 ||
+        std::max(e.a.y, e.b.y) < y0 || std::min(e.a.y, e.b.y) > y1)
+      continue;
     const SegmentIntersection r = intersect(bridge, e);
     if (r.relation == SegmentRelation::kDisjoint) continue;
     if (r.relation != SegmentRelation::kTouching) return false;
@@ -142,6 +150,82 @@ std::optional<Point64> bridge_target(Point64 o, const std::vector<Segment>& obst
   return std::nullopt;
 }
 
+// The loops of a closed walk of points split where it revisits a point, each visiting every
+// point once.
+void split_at_repeats(std::vector<Point64> walk, std::vector<Ring>& out) {
+  // Most walks visit every point once: one sorted copy tells, and then the walk is the loop.
+  std::vector<std::uint64_t> keys(walk.size());
+  for (std::size_t i = 0; i < walk.size(); ++i) keys[i] = point_key(walk[i]);
+  std::sort(keys.begin(), keys.end());
+  if (std::adjacent_find(keys.begin(), keys.end()) == keys.end()) {
+    out.push_back(std::move(walk));
+    return;
+  }
+  std::vector<Point64> stack;
+  for (Point64 p : walk) {
+    const auto it = std::find(stack.begin(), stack.end(), p);
+    if (it != stack.end()) {
+      out.emplace_back(it, stack.end());
+      stack.erase(it, stack.end());
+    }
+    stack.push_back(p);
+  }
+  if (!stack.empty()) out.push_back(std::move(stack));
+}
+
+// The faces left of directed edges that meet only at shared endpoints (ring edges with the
+// inside on their left, bridges both ways), traced by the sharpest-left-turn rule of
+// assembly: at the end of an edge, turn clockwise from its reverse to the first edge leaving
+// there. Each edge is walked once; walks revisiting a point are split there. O(n log n).
+std::vector<Ring> trace_faces(const std::vector<Segment>& edges) {
+  const std::size_t m = edges.size();
+  auto direction = [&](std::uint32_t e) {
+    return Point64{edges[e].b.x - edges[e].a.x, edges[e].b.y - edges[e].a.y};
+  };
+  // Edges grouped by origin (one packed key each), a group of several counter-clockwise by
+  // angle: most points have one edge leaving them, and then there is nothing to choose.
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> by_origin(m);
+  for (std::uint32_t i = 0; i < m; ++i) by_origin[i] = {point_key(edges[i].a), i};
+  std::sort(by_origin.begin(), by_origin.end());
+  for (std::size_t i = 0; i < m;) {
+    std::size_t j = i + 1;
+    while (j < m && by_origin[j].first == by_origin[i].first) ++j;
+    if (j - i > 1)
+      std::sort(by_origin.begin() + static_cast<std::ptrdiff_t>(i), by_origin.begin() + static_cast<std::ptrdiff_t>(j),
+                [&](const auto& x, const auto& y) { return angle_less(direction(x.second), direction(y.second)); });
+    i = j;
+  }
+  // The edge after e: clockwise from e's reverse at its end, the first edge leaving there.
+  auto next_of = [&](std::uint32_t e) {
+    const std::uint64_t key = point_key(edges[e].b);
+    const auto lo = std::lower_bound(by_origin.begin(), by_origin.end(), std::make_pair(key, std::uint32_t{0}));
+    auto hi = lo;
+    while (hi != by_origin.end() && hi->first == key) ++hi;
+    if (lo == hi) throw std::logic_error("hole splitting: a face does not close");
+    if (hi - lo == 1) return lo->second;
+    const Point64 reverse{-direction(e).x, -direction(e).y};
+    const auto it = std::lower_bound(lo, hi, reverse, [&](const auto& x, Point64 d) {
+      return angle_less(direction(x.second), d);
+    });
+    return (it == lo ? hi - 1 : it - 1)->second;
+  };
+  std::vector<std::uint8_t> used(m, 0);
+  std::vector<Ring> out;
+  for (std::uint32_t start = 0; start < m; ++start) {
+    if (used[start]) continue;
+    std::vector<Point64> walk;
+    std::uint32_t e = start;
+    do {
+      used[e] = 1;
+      walk.push_back(edges[e].a);
+      e = next_of(e);
+    } while (e != start && !used[e]);
+    if (e != start) throw std::logic_error("hole splitting: a face does not close");
+    split_at_repeats(std::move(walk), out);
+  }
+  return out;
+}
+
 std::vector<Ring> split_holes_at_depth(std::vector<Ring> outers, std::vector<Ring> holes,
                                       int depth);
 
@@ -151,17 +235,23 @@ std::vector<Ring> split_holes_at_depth(std::vector<Ring> outers, std::vector<Rin
 std::vector<Ring> split_one(const Ring& outer, std::vector<const Ring*> holes, int depth) {
   std::vector<Segment> obstacles;
   std::vector<Point64> vertices;
-  std::unordered_map<Point64, int, Point64Hash> degree;
   auto add_ring = [&](const Ring& r) {
     for (std::size_t i = 0; i < r.size(); ++i) {
       obstacles.push_back(ring_edge(r, i));
       vertices.push_back(r[i]);
-      ++degree[r[i]];
     }
   };
   add_ring(outer);
   for (const Ring* h : holes) add_ring(*h);
   const std::size_t ring_edges = obstacles.size();
+  // Vertices of more than one ring (each ring visits a vertex once): where a hole already
+  // touches another ring.
+  std::vector<Point64> shared = vertices;
+  std::sort(shared.begin(), shared.end());
+  auto touches_another_ring = [&](Point64 o) {
+    const auto range = std::equal_range(shared.begin(), shared.end(), o);
+    return range.second - range.first > 1;
+  };
 
   std::sort(holes.begin(), holes.end(), [](const Ring* a, const Ring* b) {
     return *std::min_element(a->begin(), a->end()) < *std::min_element(b->begin(), b->end());
@@ -171,7 +261,7 @@ std::vector<Ring> split_one(const Ring& outer, std::vector<const Ring*> holes, i
       // s = 1: from the smallest vertex leftwards; s = -1: from the largest rightwards.
       const Point64 o = s == 1 ? *std::min_element(h->begin(), h->end())
                                : *std::max_element(h->begin(), h->end());
-      if (degree[o] > 1) continue;  // the hole already touches another ring here
+      if (touches_another_ring(o)) continue;
       const auto t = bridge_target(o, obstacles, vertices, s);
       if (!t) throw std::logic_error("hole splitting: no visible vertex for a bridge");
       obstacles.push_back({o, *t});
@@ -179,40 +269,15 @@ std::vector<Ring> split_one(const Ring& outer, std::vector<const Ring*> holes, i
   }
 
   // Trace the faces of rings + bridges (each bridge usable once in each direction).
-  std::vector<Fragment> frags;
-  std::vector<std::uint8_t> channel;
-  std::vector<std::int32_t> polygon;
-  for (std::size_t i = 0; i < obstacles.size(); ++i) {
-    const bool bridge = i >= ring_edges;
-    frags.push_back({obstacles[i], static_cast<std::uint32_t>(channel.size())});
-    channel.push_back(bridge ? 1 : 0);
-    polygon.push_back(0);
-    if (bridge) {
-      frags.push_back({{obstacles[i].b, obstacles[i].a}, static_cast<std::uint32_t>(channel.size())});
-      channel.push_back(1);
-      polygon.push_back(1);
-    }
+  std::vector<Segment> directed(obstacles.begin(), obstacles.begin() + static_cast<std::ptrdiff_t>(ring_edges));
+  for (std::size_t i = ring_edges; i < obstacles.size(); ++i) {
+    directed.push_back(obstacles[i]);
+    directed.push_back({obstacles[i].b, obstacles[i].a});
   }
-  // Every piece is its own segment, all touched: no chains here.
-  std::vector<Segment> segments(frags.size());
-  for (std::size_t i = 0; i < frags.size(); ++i) segments[i] = frags[i].seg;
-  std::vector<std::uint32_t> next(channel.size());
-  for (std::uint32_t i = 0; i < next.size(); ++i) next[i] = i;
-  const PlaneGraph g =
-      build_plane_graph(segments, frags, channel, polygon, next, std::vector<std::uint8_t>(channel.size(), 1));
-  std::vector<FaceLabel> emitted(2 * g.edge_count(), -1);
-  for (std::uint32_t e = 0; e < g.edge_count(); ++e)
-    for (std::uint32_t k = g.mult_begin[e]; k < g.mult_begin[e + 1]; ++k)
-      emitted[2 * e + (g.mults[k].net > 0 ? 0 : 1)] = 0;
   std::vector<Ring> pieces, left_holes;
-  std::vector<std::int32_t> position(g.vertices.size(), -1);
-  const BoundaryWalks walks = trace_boundaries(g, emitted);
-  for (std::size_t w = 0; w < walks.size(); ++w) {
-    for (const auto& loop : split_at_repeated_vertices(g, walks.first(w), walks.last(w), position)) {
-      Ring ring = ring_along(g, loop.data(), loop.data() + loop.size());
-      if (ring.size() < 3) continue;
-      (twice_signed_area(ring) > 0 ? pieces : left_holes).push_back(std::move(ring));
-    }
+  for (Ring& ring : trace_faces(directed)) {
+    if (ring.size() < 3) continue;
+    (twice_signed_area(ring) > 0 ? pieces : left_holes).push_back(std::move(ring));
   }
   if (left_holes.empty()) return pieces;
   constexpr int kMaxDepth = 16;
