@@ -1,7 +1,7 @@
 #include "bitmap_world.hpp"
 
 #include <algorithm>
-#include <bitset>
+#include <array>
 #include <cstring>
 #include <stdexcept>
 #include <string>
@@ -145,19 +145,21 @@ std::optional<BitmapHit> BitmapWorld::raycast(Point64 from, Point64 to) const {
   return std::nullopt;
 }
 
+// Every square is read (the landscape's answer lists every material, so no early exit); a byte
+// per material, as a bitset's shifts would cost more than the read.
 std::vector<Material> BitmapWorld::overlaps(const Box64& box) const {
-  std::bitset<kMaterialCount> found;
+  std::array<std::uint8_t, kMaterialCount> found{};
   const std::int64_t x0 = std::max(box.min.x - world_.min.x, std::int64_t{0});
   const std::int64_t x1 = std::min(box.max.x - world_.min.x, width_);
   const std::int64_t y0 = std::max(box.min.y - world_.min.y, std::int64_t{0});
   const std::int64_t y1 = std::min(box.max.y - world_.min.y, height_);
   for (std::int64_t y = y0; y < y1; ++y) {
     const Material* line = cells_.data() + y * width_;
-    for (std::int64_t x = x0; x < x1; ++x) found[line[x]] = true;
+    for (std::int64_t x = x0; x < x1; ++x) found[line[x]] = 1;
   }
   std::vector<Material> out;
   for (std::size_t m = 1; m < kMaterialCount; ++m)
-    if (found[m]) out.push_back(static_cast<Material>(m));
+    if (found[m] != 0) out.push_back(static_cast<Material>(m));
   return out;
 }
 

@@ -1,15 +1,16 @@
 // The crossover (thesis chapter 5: "the same operation on a polygon-based landscape can
 // actually be faster for very large areas at some point because the number of edges of a
 // polygon is linear to the area it encloses"; the thesis did not measure where). One carve of a
-// circle of radius R = 4 ... 2048 with game_sides(R) vertices (one per 8 units of
-// circumference, 16 to 512), into a 16384 x 16384 cave terrain (material 1, 4 x CAVES circles
-// of radius 24-160 carved: the density of the query terrain), at CROSSOVER_REPS seeded centres
-// (EDGELAND_LANDSCAPE_CROSSOVER_REPS, default 30) with the whole circle inside the world.
+// circle of radius R = 4 ... 4096 with game_sides(R) vertices (one per 8 units of
+// circumference, 16 to 512), at CROSSOVER_REPS seeded centres (EDGELAND_LANDSCAPE_CROSSOVER_REPS,
+// default 30) with the whole circle inside a 16384 x 16384 world of material 1, which is
+//   caves: 4 x CAVES circles of radius 24-160 carved (the density of the query terrain), or
+//   solid: untouched rock (the landscape's best case: one cell until the first edit).
 //
 // Every carve starts from the same terrain: the landscape carves a copy (O(1), untimed), the
 // bitmap carves its array and gets the circle's box back from a second copy afterwards
 // (untimed). Each carve's time is its fastest of REPEATS; reported is the median over the
-// centres. Names landscape_crossover/RIVAL/R; the landscape's median_vs_bitmap crosses 1 at the
+// centres. Names landscape_crossover/TERRAIN/RIVAL/R; the landscape's median_vs_bitmap crosses 1 at the
 // crossover radius (run_landscape.sh interpolates it and plots both curves).
 #include <map>
 #include <optional>
@@ -24,15 +25,18 @@ namespace {
 constexpr std::int64_t kSide = 16384;
 constexpr Box64 kWorld{{0, 0}, {kSide, kSide}};
 
-const World& terrain(Rival rival) {
-  static std::map<Rival, World> cache;
-  auto it = cache.find(rival);
+enum class Terrain : std::uint8_t { kCaves, kSolid };
+const char* terrain_name(Terrain t) { return t == Terrain::kCaves ? "caves" : "solid"; }
+
+const World& terrain(Terrain t, Rival rival) {
+  static std::map<std::pair<Terrain, Rival>, World> cache;
+  auto it = cache.find({t, rival});
   if (it == cache.end()) {
     World world = make_world(rival, kWorld, 1);
-    const std::size_t count = 4 * env_count("EDGELAND_LANDSCAPE_CAVES", 300);
+    const std::size_t count = t == Terrain::kCaves ? 4 * env_count("EDGELAND_LANDSCAPE_CAVES", 300) : 0;
     for (const ValidSet& cave : as_shapes(caves(0xC405, count, kWorld)))
       apply(world, EditKind::kCarve, cave, kEmpty);
-    it = cache.emplace(rival, std::move(world)).first;
+    it = cache.emplace(std::make_pair(t, rival), std::move(world)).first;
   }
   return it->second;
 }
@@ -67,8 +71,8 @@ double carve_bitmap(BitmapWorld& work, const BitmapWorld& base, const ValidSet& 
   return best;
 }
 
-std::vector<double> carve_times(Rival rival, const std::vector<ValidSet>& shapes) {
-  const World& base = terrain(rival);
+std::vector<double> carve_times(Terrain t, Rival rival, const std::vector<ValidSet>& shapes) {
+  const World& base = terrain(t, rival);
   std::vector<double> seconds;
   if (const auto* l = std::get_if<Landscape>(&base)) {
     for (const ValidSet& shape : shapes) seconds.push_back(carve_landscape(*l, shape));
@@ -81,55 +85,57 @@ std::vector<double> carve_times(Rival rival, const std::vector<ValidSet>& shapes
 }
 
 // The bitmap's median per radius, from its own benchmark or made here.
-std::map<std::int64_t, double>& bitmap_medians() {
-  static std::map<std::int64_t, double> cache;
+std::map<std::pair<Terrain, std::int64_t>, double>& bitmap_medians() {
+  static std::map<std::pair<Terrain, std::int64_t>, double> cache;
   return cache;
 }
 
-double bitmap_median_us(std::int64_t radius) {
+double bitmap_median_us(Terrain t, std::int64_t radius) {
   auto& cache = bitmap_medians();
-  auto it = cache.find(radius);
+  auto it = cache.find({t, radius});
   if (it == cache.end())
-    it = cache.emplace(radius, quantile(carve_times(Rival::kBitmap, circles(radius)), 0.5) * 1e6).first;
+    it = cache.emplace(std::make_pair(t, radius), quantile(carve_times(t, Rival::kBitmap, circles(radius)), 0.5) * 1e6).first;
   return it->second;
 }
 
-void run_crossover_benchmark(benchmark::State& state, Rival rival) {
+void run_crossover_benchmark(benchmark::State& state, Terrain t, Rival rival) {
   const std::int64_t radius = state.range(0);
   std::vector<ValidSet> shapes;
   std::vector<double> seconds;
   for (auto _ : state) {
     if (!guarded(state, [&] {
           shapes = circles(radius);
-          seconds = carve_times(rival, shapes);
+          seconds = carve_times(t, rival, shapes);
         }))
       return;
     double total = 0;
     for (double s : seconds) total += s;
     state.SetIterationTime(total);
   }
-  if (!verify(state, terrain(rival))) return;
+  if (!verify(state, terrain(t, rival))) return;
   const double median_us = quantile(seconds, 0.5) * 1e6;
   state.counters["median_us"] = median_us;
   state.counters["p90_us"] = quantile(seconds, 0.9) * 1e6;
   state.counters["shape_vertices"] = static_cast<double>(shapes.front().polygons().front().size());
   if (rival == Rival::kBitmap) {
-    bitmap_medians().insert_or_assign(radius, median_us);
+    bitmap_medians().insert_or_assign({t, radius}, median_us);
     return;
   }
-  report_stats(state, terrain(rival));
-  guarded(state, [&] { state.counters["median_vs_bitmap"] = median_us / bitmap_median_us(radius); });
+  report_stats(state, terrain(t, rival));
+  guarded(state, [&] { state.counters["median_vs_bitmap"] = median_us / bitmap_median_us(t, radius); });
 }
 
 }  // namespace
 
 void register_crossover_benchmarks() {
-  for (Rival rival : {Rival::kBitmap, Rival::kQuadtree}) {
-    auto* b = benchmark::RegisterBenchmark(
-        (std::string("landscape_crossover/") + rival_name(rival)).c_str(),
-        [rival](benchmark::State& state) { run_crossover_benchmark(state, rival); });
-    for (std::int64_t radius = 4; radius <= 2048; radius *= 2) b->Arg(radius);
-    b->Iterations(1)->UseManualTime()->Unit(benchmark::kMillisecond);
+  for (Terrain t : {Terrain::kCaves, Terrain::kSolid}) {
+    for (Rival rival : {Rival::kBitmap, Rival::kQuadtree}) {
+      auto* b = benchmark::RegisterBenchmark(
+          (std::string("landscape_crossover/") + terrain_name(t) + "/" + rival_name(rival)).c_str(),
+          [t, rival](benchmark::State& state) { run_crossover_benchmark(state, t, rival); });
+      for (std::int64_t radius = 4; radius <= 4096; radius *= 2) b->Arg(radius);
+      b->Iterations(1)->UseManualTime()->Unit(benchmark::kMillisecond);
+    }
   }
 }
 

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "edgeland/kernel/validate.hpp"
+
 namespace edgeland::bench {
 namespace {
 
@@ -44,6 +46,10 @@ void add_ngon_points(std::vector<Point64>& out, Point64 c, double radius, std::s
 Polygon ngon(Point64 centre, double radius, std::size_t sides) {
   std::vector<Point64> points;
   add_ngon_points(points, centre, radius, sides);
+  Polygon polygon = points;
+  polygon.erase(std::unique(polygon.begin(), polygon.end()), polygon.end());
+  while (polygon.size() > 1 && polygon.front() == polygon.back()) polygon.pop_back();
+  if (validate(PolygonSet{polygon}, 1).ok()) return polygon;
   return convex_hull(std::move(points));
 }
 

@@ -1,8 +1,7 @@
 #pragma once
 // Seeded shapes and positions of the landscape benchmarks (splitmix64, so every run and every
 // rival sees the same edits). Vertices come from double trigonometry (this is bench/, not the
-// library) and are rounded; each shape is the convex hull of its rounded vertices, so it is a
-// valid polygon at every radius (small n-gons would otherwise round to repeated vertices).
+// library) and are rounded, as a game would make them.
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -14,14 +13,17 @@
 
 namespace edgeland::bench {
 
-// A regular n-gon around an integer centre, vertices rounded, as its convex hull.
+// A regular n-gon around an integer centre, vertices rounded. Rounding moves vertices by more
+// than a large n-gon's sagitta, so the result is slightly non-convex, but simple and with all n
+// vertices; when rounding makes it invalid (small radii: repeated or crossing vertices) the
+// convex hull of the rounded vertices instead.
 Polygon ngon(Point64 centre, double radius, std::size_t sides);
 
 // The vertex count a game would give a circle of this radius: one vertex per 8 units of
 // circumference, at least 16, at most 512.
 std::size_t game_sides(double radius);
 
-// A stroke of the tunnel digger: the convex hull of the n-gons at both ends.
+// A stroke of the tunnel digger: the convex hull of the (rounded) n-gons at both ends.
 Polygon capsule(Point64 a, Point64 b, double radius, std::size_t sides);
 
 // `count` integer points uniform in the closed box.

@@ -3,10 +3,9 @@
 
     landscape_tables.py RESULTS.json [CROSSOVER.tsv]
 
-Prints the tables; with a second argument also writes the crossover curve as
-"radius landscape_us bitmap_us" lines for plot_crossover, and prints the crossover radius
-(where the landscape's median carve time, interpolated log-log between measured radii, falls
-to the bitmap's) on a last line "crossover_radius R" (R = 0: no crossover in the range).
+Prints the tables; with a second argument also writes the crossover curves for plot_crossover
+(write_plot_data). The crossover radius of a terrain is where the landscape's median carve
+time, interpolated log-log between measured radii, falls to the bitmap's.
 """
 import json
 import math
@@ -118,8 +117,9 @@ def scaling_tables(r):
     sizes = sorted({t[0] for t in rows})
     for side in sizes:
         if not any(t[0] == side and not t[1] for t in rows):
-            rows.append((side, False, [f"{side}^2", "bitmap", None, "not built: 4 GiB" if side > 16384 else "",
-                                       None, None, None, None, side * side]))
+            missing = [f"{side}^2", "bitmap", None, "not built: 4 GiB" if side > 16384 else "missing",
+                       None, None, None, None, side * side]
+            rows.append((side, False, missing + [None] * 6))
     rows.sort(key=lambda t: (t[0], t[1]))
     return ["#### World size (one 32-gon of radius 40 carved per 128 x 128 units; the last 1,000 edits timed)\n",
             table(["world", "rival", "edits", "edit median us", "edit p99 us", "material_at ns",
@@ -128,15 +128,19 @@ def scaling_tables(r):
                    "raycast / bitmap"], [t[2] for t in rows])]
 
 
-def crossover(r):
-    """[(radius, sides, landscape_us, bitmap_us)] and the interpolated crossover radius."""
+TERRAINS = [("caves", "cave terrain"), ("solid", "solid rock")]
+
+
+def crossover(r, terrain):
+    """[(radius, sides, landscape_us, bitmap_us)] of a terrain and the interpolated crossover
+    radius (0: none in the range)."""
     curve = []
     for name, b in r.items():
         parts = name.split("/")
-        if parts[0] == "landscape_crossover" and parts[1] == "quadtree":
-            other = r.get("landscape_crossover/bitmap/" + parts[2])
+        if parts[0] == "landscape_crossover" and parts[1] == terrain and parts[2] == "quadtree":
+            other = r.get(f"landscape_crossover/{terrain}/bitmap/{parts[3]}")
             if other and "median_us" in b and "median_us" in other:
-                curve.append((int(parts[2]), b["shape_vertices"], b["median_us"], other["median_us"]))
+                curve.append((int(parts[3]), b["shape_vertices"], b["median_us"], other["median_us"]))
     curve.sort()
     radius = 0.0
     for (r0, _, l0, b0), (r1, _, l1, b1) in zip(curve, curve[1:]):
@@ -148,13 +152,32 @@ def crossover(r):
     return curve, radius
 
 
-def crossover_tables(curve, radius):
-    rows = [[str(r), s, l, b, l / b] for r, s, l, b in curve]
-    verdict = (f"Crossover (log-log interpolation): radius ~{radius:.0f}."
-               if radius > 0 else "No crossover in the measured range.")
-    return ["#### Crossover (one carve into a 16384 x 16384 cave terrain; median over the centres)\n",
-            table(["radius", "shape vertices", "landscape us", "bitmap us", "landscape / bitmap"], rows),
-            "\n" + verdict]
+def crossover_tables(curves):
+    out = []
+    for (terrain, title), (curve, radius) in zip(TERRAINS, curves):
+        rows = [[str(r), s, l, b, l / b] for r, s, l, b in curve]
+        verdict = (f"Crossover (log-log interpolation): radius ~{radius:.0f}."
+                   if radius > 0 else "No crossover in the measured range.")
+        out += [f"#### Crossover, {title} (one carve into a 16384 x 16384 world; median over the centres)\n",
+                table(["radius", "shape vertices", "landscape us", "bitmap us", "landscape / bitmap"], rows),
+                "\n" + verdict + "\n"]
+    return out
+
+
+def write_plot_data(path, curves):
+    """plot_crossover's input: a names line, one line per radius with (bitmap, landscape) per
+    terrain, and a crossover line per terrain."""
+    with open(path, "w") as f:
+        f.write("names\t" + "\t".join(title for _, title in TERRAINS) + "\n")
+        by_radius = {}
+        for k, (curve, _) in enumerate(curves):
+            for rad, _, l, b in curve:
+                by_radius.setdefault(rad, [None] * (2 * len(curves)))[2 * k:2 * k + 2] = [b, l]
+        for rad in sorted(by_radius):
+            if None not in by_radius[rad]:
+                f.write(f"{rad}\t" + "\t".join(str(v) for v in by_radius[rad]) + "\n")
+        for k, (_, radius) in enumerate(curves):
+            f.write(f"crossover\t{k}\t{radius:.1f}\n")
 
 
 def snapshot_tables(r):
@@ -163,23 +186,22 @@ def snapshot_tables(r):
         b = r.get("landscape_snapshot/" + rival)
         if b:
             rows.append([rival, error_or(b, "copy_us"), b.get("copy_reuse_us"), b.get("carve_us"),
-                         b.get("copy_and_carve_us"), b.get("copy_and_carve_vs_bitmap")])
+                         b.get("copy_and_carve_us"), b.get("copy_reuse_and_carve_us"),
+                         b.get("copy_and_carve_vs_bitmap"), b.get("copy_and_carve_vs_bitmap_reuse")])
     return ["#### Snapshot + one carve (the 8192 x 8192 world after the carve workload; medians)\n",
             table(["rival", "copy us", "copy into an existing array us", "carve us",
-                   "copy + carve us", "copy + carve / bitmap"], rows)]
+                   "copy + carve us", "copy into existing + carve us", "copy + carve / bitmap",
+                   "copy + carve / bitmap into existing"], rows)]
 
 
 def main():
     r = load(sys.argv[1])
     parts = edit_tables(r) + [""] + query_tables(r) + [""] + scaling_tables(r) + [""]
-    curve, radius = crossover(r)
-    parts += crossover_tables(curve, radius) + [""] + snapshot_tables(r)
+    curves = [crossover(r, terrain) for terrain, _ in TERRAINS]
+    parts += crossover_tables(curves) + snapshot_tables(r)
     print("\n".join(parts))
     if len(sys.argv) > 2:
-        with open(sys.argv[2], "w") as f:
-            for rad, _, l, b in curve:
-                f.write(f"{rad} {l} {b}\n")
-        print(f"\ncrossover_radius {radius:.1f}")
+        write_plot_data(sys.argv[2], curves)
 
 
 if __name__ == "__main__":

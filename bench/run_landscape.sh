@@ -27,8 +27,7 @@ cp "$build/bench/edgeland_landscape_bench" "$out/"
 "$out/edgeland_landscape_bench" "--benchmark_filter=$filter" \
   "--benchmark_out=$out/landscape.json" --benchmark_out_format=json >&2
 python3 "$repo/bench/landscape_tables.py" "$out/landscape.json" "$out/crossover.tsv" | tee "$out/tables.md"
-radius=$(awk '/^crossover_radius/ {print $2}' "$out/tables.md")
-if [[ $(wc -l <"$out/crossover.tsv") -ge 2 ]]; then
-  "$build/bench/plot_crossover" "$out/crossover.tsv" "$plot" "$radius"
+if [[ $(grep -c '^[0-9]' "$out/crossover.tsv") -ge 2 ]]; then
+  "$build/bench/plot_crossover" "$out/crossover.tsv" "$plot"
   echo "plot: $plot" >&2
 fi
