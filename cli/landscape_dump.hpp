@@ -5,7 +5,8 @@
 // with every polygon of that material (the pieces cut at cell lines included) as the kernel's
 // to_wkt writes them. Each line's MULTIPOLYGON is a valid set (`edgeland validate` accepts it),
 // and `world ...` followed by `fill MATERIAL WKT` for each line is a landscape log of the same
-// regions.
+// regions (what Landscape::start_log writes for an edited landscape), though in other cells
+// under other ids.
 #include <string>
 
 #include "edgeland/spatial/landscape.hpp"
