@@ -32,17 +32,20 @@ Terrain lay_layers(DemoEditor& editor, const Box64& world, SplitMix64& random) {
 
 // Thin wavy bands turn rock into ore and dirt into sand where they cross it.
 void lay_bands(DemoEditor& editor, const Box64& world, SplitMix64& random) {
+  // Each random number in its own statement: argument evaluation order is unspecified.
   for (int i = 0; i < 5; ++i) {
-    const WavyLine vein = random_wavy_line(height(world, random.between(140, 540)),
-                                           scaled(world, random.between(10, 30)), random);
-    editor.replace(band_along(vein, 0, scaled(world, random.between(3, 8)), world, kStep), kRock,
-                   kOre);
+    const std::int64_t base = height(world, random.between(140, 540));
+    const std::int64_t amplitude = scaled(world, random.between(10, 30));
+    const WavyLine vein = random_wavy_line(base, amplitude, random);
+    const std::int64_t thickness = scaled(world, random.between(3, 8));
+    editor.replace(band_along(vein, 0, thickness, world, kStep), kRock, kOre);
   }
   for (int i = 0; i < 2; ++i) {
-    const WavyLine pocket = random_wavy_line(height(world, random.between(600, 660)),
-                                             scaled(world, random.between(10, 20)), random);
-    editor.replace(band_along(pocket, 0, scaled(world, random.between(6, 12)), world, kStep),
-                   kDirt, kSand);
+    const std::int64_t base = height(world, random.between(600, 660));
+    const std::int64_t amplitude = scaled(world, random.between(10, 20));
+    const WavyLine pocket = random_wavy_line(base, amplitude, random);
+    const std::int64_t thickness = scaled(world, random.between(6, 12));
+    editor.replace(band_along(pocket, 0, thickness, world, kStep), kDirt, kSand);
   }
 }
 
@@ -52,7 +55,8 @@ void carve_caves(DemoEditor& editor, const Box64& world, SplitMix64& random) {
     const Point64 c{world.min.x + (world.max.x - world.min.x) * random.between(30, 970) / 1000,
                     height(world, random.between(130, 520))};
     const std::int64_t r = scaled(world, random.between(12, 45));
-    editor.carve(rough_ngon(c, r, static_cast<int>(random.between(14, 28)), 35, random));
+    const auto n = static_cast<int>(random.between(14, 28));
+    editor.carve(rough_ngon(c, r, n, 35, random));
     if (i % 3 == 0) {
       const Ring pool{{c.x - r, c.y - r}, {c.x + r, c.y - r}, {c.x + r, c.y - r / 3},
                       {c.x - r, c.y - r / 3}};
