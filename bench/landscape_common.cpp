@@ -74,7 +74,7 @@ std::vector<double> time_edits(World& world, EditKind kind, const std::vector<Va
   return seconds;
 }
 
-std::size_t repeats() { return std::max<std::size_t>(1, env_count("EDGELAND_LANDSCAPE_REPEATS", 3)); }
+std::size_t repeats() { return std::max<std::size_t>(1, env_count("EDGELAND_LANDSCAPE_REPEATS", 5)); }
 
 std::vector<double> fastest_edits(const World& start, EditKind kind,
                                   const std::vector<ValidSet>& shapes, Material material,

@@ -53,7 +53,7 @@ double seconds_of(F&& f) {
 std::vector<double> time_edits(World& world, EditKind kind, const std::vector<ValidSet>& shapes,
                                Material material);
 
-// EDGELAND_LANDSCAPE_REPEATS (default 3): how often a timed run is repeated from the same start,
+// EDGELAND_LANDSCAPE_REPEATS (default 5): how often a timed run is repeated from the same start,
 // keeping each edit's (or batch's) fastest time. The edits are deterministic, so every repeat
 // does the same work; on a shared machine a preemption rarely hits the same edit twice.
 std::size_t repeats();

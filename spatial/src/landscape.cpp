@@ -96,8 +96,8 @@ Int128 Landscape::twice_area(Material m) const {
   if (m != kEmpty) return (*areas_)[m];
   Int128 solid = 0;
   for (std::size_t i = 1; i < kMaterialCount; ++i) solid += (*areas_)[i];
-  const Int128 world = 2 * Int128(world_.max.x - world_.min.x) * (world_.max.y - world_.min.y);
-  return world - solid;
+  const Ring world{world_.min, {world_.max.x, world_.min.y}, world_.max, {world_.min.x, world_.max.y}};
+  return twice_signed_area(world) - solid;
 }
 
 std::uint64_t Landscape::state_hash() const noexcept {

@@ -5,6 +5,7 @@
 #include <edgeland/kernel/predicates.hpp>
 #include <edgeland/kernel/validate.hpp>
 #include <edgeland/kernel/wkt_writer.hpp>
+#include <edgeland/spatial/landscape.hpp>
 #include <iostream>
 
 int main() {
@@ -31,6 +32,13 @@ int main() {
   check(!report.ok() && report.violations.front().rule == Rule::kNotCounterClockwise,
         "the clockwise square breaks the counter-clockwise rule");
   check(to_wkt(square) == "POLYGON ((0 0, 10 0, 10 10, 0 10, 0 0))", "to_wkt(square)");
+
+  // The landscape: carve a square out of a filled world, query it.
+  Landscape world({{0, 0}, {100, 100}}, 1);
+  const ChangeSet changes = world.carve(PolygonSet{{{40, 40}, {60, 40}, {60, 60}, {40, 60}}});
+  check(!changes.added.empty() && changes.removed.size() == 1, "the carve replaced the world's polygon");
+  check(world.twice_area(1) == 2 * (10000 - 400), "the carved area is exact");
+  check(world.material_at({50, 50}) == kEmpty && world.material_at({10, 10}) == 1, "material_at");
 
   if (failures == 0) std::cout << "consumer: ok\n";
   return failures == 0 ? 0 : 1;

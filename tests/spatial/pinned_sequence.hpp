@@ -1,0 +1,63 @@
+#pragma once
+// A fixed edit sequence whose state hash is pinned (issue 15, "Determinism"): the same edits must
+// give the same hash under gcc and clang, at -O0, -O2 and -O3. Built from integers only (a
+// splitmix64 stream and a table of integer points on a circle), so the sequence itself cannot
+// vary between builds. A deliberate change of results (a different canonical decomposition, a
+// different snap rounding) changes the pins: update them and say why in the commit.
+#include <cstdint>
+
+#include "edgeland/spatial/landscape.hpp"
+
+namespace edgeland::pinned {
+
+inline std::uint64_t splitmix64(std::uint64_t& s) {
+  std::uint64_t z = (s += 0x9E3779B97F4A7C15ull);
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  return z ^ (z >> 31);
+}
+
+// 16 points on a circle of radius 1000 (rounded), counter-clockwise.
+inline constexpr std::int64_t kCircle[16][2] = {
+    {1000, 0},   {924, 383},   {707, 707},   {383, 924},  {0, 1000},  {-383, 924},
+    {-707, 707}, {-924, 383},  {-1000, 0},   {-924, -383}, {-707, -707}, {-383, -924},
+    {0, -1000},  {383, -924},  {707, -707},  {924, -383}};
+
+inline Polygon blob(Point64 c, std::int64_t r) {
+  Polygon p;
+  for (const auto& v : kCircle) p.push_back({c.x + v[0] * r / 1000, c.y + v[1] * r / 1000});
+  return p;
+}
+
+// 400 edits of every kind on a 4096^2 world filled with material 1.
+inline Landscape run(const LandscapeConfig& config) {
+  Landscape l({{0, 0}, {4096, 4096}}, 1, config);
+  std::uint64_t seed = 15;
+  for (int i = 0; i < 400; ++i) {
+    const Point64 c{static_cast<std::int64_t>(splitmix64(seed) % 4400) - 150,
+                    static_cast<std::int64_t>(splitmix64(seed) % 4400) - 150};
+    const std::int64_t r = 20 + static_cast<std::int64_t>(splitmix64(seed) % 120);
+    const PolygonSet shape{blob(c, r)};
+    switch (splitmix64(seed) % 5) {
+      case 0: l.fill(shape, 2); break;
+      case 1: l.replace(shape, 1, 3); break;
+      case 2: l.fill_empty(shape, 4); break;
+      default: l.carve(shape); break;
+    }
+  }
+  return l;
+}
+
+inline LandscapeConfig kd_tree_config() {
+  LandscapeConfig c;
+  c.tree = TreeKind::kKdTree;
+  c.edge_cap = 64;
+  c.merge_below = 20;
+  return c;
+}
+
+// Pinned on gcc 12 -O2; every other build must agree.
+inline constexpr std::uint64_t kQuadtreeHash = 0xeb9c337d6adba819ull;
+inline constexpr std::uint64_t kKdTreeHash = 0xfc3e95d670d6a8c6ull;
+
+}  // namespace edgeland::pinned
