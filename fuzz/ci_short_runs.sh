@@ -9,10 +9,10 @@ cd "$(dirname "$0")/.."
 seconds="${EDGELAND_FUZZ_CI_SECONDS:-60}"
 build="${EDGELAND_FUZZ_BUILD_DIR:-build/fuzz}"
 passed=0 failed=0
-for target in clip_pair clip_sequence normalize parse; do
+for target in clip_pair clip_sequence normalize parse edit_sequence load; do
   if fuzz/campaign "$target" "$seconds"; then passed=$((passed + 1)); else failed=$((failed + 1)); fi
 done
-for target in clip_pair clip_sequence normalize parse; do
+for target in clip_pair clip_sequence normalize parse edit_sequence load; do
   dirs=()
   for dir in "tests/regress/$target" "fuzz/corpus/$target"; do
     [ -d "$dir" ] && dirs+=("$dir")

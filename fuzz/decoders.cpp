@@ -794,6 +794,8 @@ Runner runner_for(std::string_view target) {
   if (target == "clip_sequence") return run_clip_sequence;
   if (target == "normalize") return run_normalize;
   if (target == "parse") return run_parse;
+  if (target == "edit_sequence") return run_edit_sequence;
+  if (target == "load") return run_load;
   return nullptr;
 }
 
@@ -806,6 +808,7 @@ std::string input_as_log(std::string_view target, const std::uint8_t* data, std:
       return text;
     }
     if (target == "clip_sequence") return run_sequence(data, size).log;
+    if (target == "edit_sequence") return edit_sequence_log(data, size);
   } catch (const std::exception&) {
     // decoding itself failed: there is no log to give
   }

@@ -41,6 +41,23 @@ std::optional<Finding> run_normalize(const std::uint8_t* data, std::size_t size)
 // The WKT reader and the log parser on arbitrary bytes: a result or their typed error.
 std::optional<Finding> run_parse(const std::uint8_t* data, std::size_t size);
 
+// A landscape (spatial/) built from a decoded world and configuration, then up to 24 edits whose
+// shapes lie on cell lines, reuse the landscape's own vertices, are one unit thin, cross
+// themselves (InvalidInput) or leave the coordinate range (CoordinateOutOfRange), all in checked
+// mode: a rejected edit leaves the state hash unchanged; check() holds at the end;
+// material_at, raycast and overlaps(box) agree with a scan of every polygon; save -> load
+// keeps the state hash; a snapshot taken along the way is untouched by later edits.
+// landscape_decoders.cpp.
+std::optional<Finding> run_edit_sequence(const std::uint8_t* data, std::size_t size);
+
+// Arbitrary bytes into Landscape::load (after the first byte: odd asks for the checksum to be
+// made right first, so mutations reach the parser): a LoadError, or a world that passes
+// check() and survives save -> load with its state hash. landscape_decoders.cpp.
+std::optional<Finding> run_load(const std::uint8_t* data, std::size_t size);
+
+// The landscape edit log an edit_sequence input decodes to (recorded by the landscape itself).
+std::string edit_sequence_log(const std::uint8_t* data, std::size_t size);
+
 // The target's run_* function by name ("clip_pair", ...); nullptr for an unknown name.
 using Runner = std::optional<Finding> (*)(const std::uint8_t*, std::size_t);
 Runner runner_for(std::string_view target);

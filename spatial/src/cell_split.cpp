@@ -16,7 +16,7 @@ void require_config(const Box64& world, const LandscapeConfig& c) {
     throw InvalidConfig("world box beyond the coordinate bound");
   if (world.min.x >= world.max.x || world.min.y >= world.max.y)
     throw InvalidConfig("world box without positive width and height");
-  if (c.edge_cap < 4) throw InvalidConfig("edge_cap below 4");
+  if (c.edge_cap < kMinEdgeCap) throw InvalidConfig("edge_cap below " + std::to_string(kMinEdgeCap));
   if (c.merge_below >= c.edge_cap) throw InvalidConfig("merge_below not below edge_cap");
   if (c.min_cell_size < 1) throw InvalidConfig("min_cell_size below 1");
   if (c.grid_depth < -1 || c.grid_depth > kMaxGridDepth)

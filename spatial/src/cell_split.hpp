@@ -12,6 +12,11 @@
 
 namespace edgeland::detail {
 
+// The smallest edge cap: a cell crossed by one or two boundaries (a few polygons of a few edges
+// each) must not split, or a long slanted boundary would split every cell along it down to
+// min_cell_size.
+inline constexpr std::uint32_t kMinEdgeCap = 32;
+
 // A grid of depth d has up to 4^d cells.
 inline constexpr int kMaxGridDepth = 10;
 

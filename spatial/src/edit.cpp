@@ -39,10 +39,29 @@ NodePtr LandscapeEditor::cell_from(const Box64& box, std::uint32_t depth, Labele
   return detail::make_cell(box, depth, std::move(content), std::move(ids));
 }
 
+void LandscapeEditor::grow(std::size_t before, std::size_t after) {
+  if (after <= before) return;
+  growth_ += after - before;
+  const std::size_t could_be = l_.root_->vertices + growth_;
+  if (could_be > l_.limits_.max_vertices)
+    throw LimitExceeded(LimitExceeded::Limit::kVertices, l_.limits_.max_vertices, could_be);
+}
+
+namespace {
+
+std::size_t vertices_of(const LabeledSet& s) {
+  std::size_t n = 0;
+  for (const Polygon& p : s.set.polygons()) n += p.size();
+  return n;
+}
+
+}  // namespace
+
 NodePtr LandscapeEditor::edit_cell(const NodePtr& cell) {
   LabeledClipResult r = relabel(cell->content.set, cell->content.labels, shape_, cell->box,
                                 table_.table, clip_options());
   if (same_content(r.regions, cell->content)) return cell;
+  grow(cell->vertices, vertices_of(r.regions));
   return split_if_needed(cell_from(cell->box, cell->depth, std::move(r.regions),
                                    detail::IdSource::of(*cell)));
 }
@@ -54,6 +73,9 @@ NodePtr LandscapeEditor::split_if_needed(const NodePtr& cell) {
   const std::vector<Box64> boxes = detail::split_boxes(cell->box, config);
   std::vector<LabeledSet> parts =
       cut_to_windows(cell->content.set, cell->content.labels, boxes, clip_options());
+  std::size_t children_vertices = 0;
+  for (const LabeledSet& part : parts) children_vertices += vertices_of(part);
+  grow(cell->vertices, children_vertices);
   const detail::IdSource previous = detail::IdSource::of(*cell);
   std::vector<NodePtr> children;
   for (std::size_t i = 0; i < boxes.size(); ++i)

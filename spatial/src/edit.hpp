@@ -41,12 +41,16 @@ class LandscapeEditor {
   detail::NodePtr cell_from(const Box64& box, std::uint32_t depth, LabeledSet content,
                             const detail::IdSource& previous);
   ClipOptions clip_options() const { return ClipOptions{.checked = l_.checked_}; }
+  // Counts the vertices a new cell adds over what it replaces, and throws LimitExceeded as
+  // soon as the landscape could pass its vertex limit (a runaway split stops early).
+  void grow(std::size_t before, std::size_t after);
 
   const Landscape& l_;
   const ValidSet& shape_;
   EditTable table_;
   Box64 shape_box_;
   PolygonId next_id_;
+  std::size_t growth_ = 0;
 };
 
 }  // namespace edgeland

@@ -64,7 +64,7 @@ rc::Gen<LandscapeCase> landscape_case(int max_edits = 8) {
     c.world = {origin, {origin.x + size, origin.y + size / (*rc::gen::inRange(1, 3))}};
     c.fill = static_cast<Material>(*rc::gen::element(0, 0, 1, 2));
     c.config.tree = *rc::gen::element(TreeKind::kQuadtree, TreeKind::kKdTree);
-    c.config.edge_cap = *rc::gen::element<std::uint32_t>(8, 12, 24, 64, 1000);
+    c.config.edge_cap = *rc::gen::element<std::uint32_t>(32, 40, 64, 1000);
     c.config.merge_below = c.config.edge_cap / 3;
     c.config.min_cell_size = *rc::gen::element<std::int64_t>(1, 2, 8);
     if (*rc::gen::inRange(0, 10) == 0) c.config.grid_depth = *rc::gen::inRange(1, 4);

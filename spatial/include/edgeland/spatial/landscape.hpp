@@ -67,7 +67,8 @@ struct LandscapeConfig {
   // A cell whose polygons have more edges than this splits (unless both its sides are at most
   // min_cell_size); siblings whose cells together have at most merge_below edges merge back.
   // merge_below < edge_cap is the hysteresis that keeps a digger going back and forth over a
-  // cell line from splitting and merging on every edit.
+  // cell line from splitting and merging on every edit. edge_cap >= 32: a cell crossed by a
+  // boundary or two must not split (a long slanted boundary would split every cell along it).
   std::uint32_t edge_cap = 128;
   std::uint32_t merge_below = 48;
   std::int64_t min_cell_size = 16;
@@ -90,7 +91,8 @@ class EDGELAND_EXPORT LandscapeError : public Error {
 };
 
 // The world box or the configuration is unusable (inverted or degenerate box, box beyond the
-// coordinate bound, edge_cap 0, merge_below >= edge_cap, min_cell_size < 1, grid too deep).
+// coordinate bound, edge_cap < 32, merge_below >= edge_cap, min_cell_size < 1, grid_depth
+// outside -1..10).
 class EDGELAND_EXPORT InvalidConfig : public LandscapeError {
  public:
   explicit InvalidConfig(const std::string& what) : LandscapeError(what) {}

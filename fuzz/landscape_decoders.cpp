@@ -1,0 +1,316 @@
+// The landscape's fuzz targets (issue 15, "Verification"): edit sequences in checked mode, and
+// arbitrary bytes as save files. Declared in decoders.hpp beside the clipper's targets.
+#include <fuzzer/FuzzedDataProvider.h>
+
+#include <algorithm>
+#include <exception>
+#include <sstream>
+#include <vector>
+
+#include "decoders.hpp"
+#include "edgeland/kernel/angle.hpp"
+#include "edgeland/kernel/box_queries.hpp"
+#include "edgeland/kernel/point_in_polygon.hpp"
+#include "edgeland/kernel/wkt_writer.hpp"
+#include "edgeland/spatial/landscape.hpp"
+
+namespace edgeland::fuzz {
+namespace {
+
+using Provider = FuzzedDataProvider;
+
+constexpr int kMaxEdits = 24;
+constexpr std::size_t kMaxShapePoints = 24;
+// Small enough that a run stays fast; an edit that would pass it is a typed LimitExceeded.
+constexpr LandscapeLimits kLimits{.max_vertices = 6000, .max_shape_vertices = 200};
+
+std::int64_t clamp_coord(std::int64_t v) { return std::clamp(v, -kCoordBound, kCoordBound); }
+
+// ---- decoding ---------------------------------------------------------------------------------
+// The world, its configuration, and shapes whose points come from the places that matter: the
+// cell lines of the world's first levels, the vertices already in the landscape, one-unit
+// offsets from those, and (rarely) coordinates past the bound.
+// The points as a fan around the lowest one, by angle: counter-clockwise and simple unless
+// points repeat or line up with the pivot.
+Polygon fan(Polygon pts) {
+  std::iter_swap(pts.begin(), std::min_element(pts.begin(), pts.end(), [](Point64 a, Point64 b) {
+    return a.y != b.y ? a.y < b.y : a.x < b.x;
+  }));
+  const Point64 o = pts.front();
+  std::sort(pts.begin() + 1, pts.end(), [o](Point64 a, Point64 b) {
+    return angle_less({a.x - o.x, a.y - o.y}, {b.x - o.x, b.y - o.y});
+  });
+  return pts;
+}
+
+class EditDecoder {
+ public:
+  explicit EditDecoder(Provider& in) : in_(in) {}
+
+  Box64 world() {
+    const int bits = in_.PickValueInArray({4, 6, 8, 10, 14, 31});
+    const std::int64_t span = bits == 31 ? kCoordBound : std::int64_t{1} << bits;
+    const std::int64_t x0 = in_.ConsumeIntegralInRange<std::int64_t>(-span, span - 1);
+    const std::int64_t y0 = in_.ConsumeIntegralInRange<std::int64_t>(-span, span - 1);
+    const std::int64_t x1 = in_.ConsumeIntegralInRange<std::int64_t>(x0 + 1, span);
+    const std::int64_t y1 = in_.ConsumeIntegralInRange<std::int64_t>(y0 + 1, span);
+    world_ = {{x0, y0}, {x1, y1}};
+    return world_;
+  }
+
+  LandscapeConfig config() {
+    LandscapeConfig c;
+    c.tree = in_.ConsumeBool() ? TreeKind::kQuadtree : TreeKind::kKdTree;
+    c.edge_cap = in_.PickValueInArray<std::uint32_t>({32, 40, 64, 256});
+    c.merge_below = c.edge_cap / 3;
+    c.min_cell_size = in_.PickValueInArray<std::int64_t>({1, 2, 16});
+    if (in_.ConsumeIntegralInRange(0, 6) == 0) c.grid_depth = in_.ConsumeIntegralInRange(0, 3);
+    return c;
+  }
+
+  // A point near the world: a cell line, a landscape vertex, or anywhere, nudged by a unit.
+  Point64 point(const Landscape& l) {
+    Point64 p;
+    switch (in_.ConsumeIntegralInRange(0, 5)) {
+      case 0: p = cell_line_point(); break;
+      case 1: p = landscape_vertex(l); break;
+      case 2: p = {world_.min.x, in_.ConsumeIntegralInRange(world_.min.y, world_.max.y)}; break;
+      default: p = anywhere(); break;
+    }
+    const std::int64_t dx = in_.ConsumeIntegralInRange(-1, 1), dy = in_.ConsumeIntegralInRange(-1, 1);
+    return {clamp_coord(p.x + dx), clamp_coord(p.y + dy)};
+  }
+
+  // A shape: a rectangle, a triangle, or a ring of up to kMaxShapePoints points (which may
+  // cross itself: then the edit must fail with InvalidInput and change nothing), sometimes with
+  // a coordinate past the bound (CoordinateOutOfRange).
+  PolygonSet shape(const Landscape& l) {
+    const int kind = in_.ConsumeIntegralInRange(0, 9);
+    Polygon ring;
+    if (kind <= 3) {
+      const Point64 a = point(l), b = point(l);
+      ring = {{std::min(a.x, b.x), std::min(a.y, b.y)}, {std::max(a.x, b.x), std::min(a.y, b.y)},
+              {std::max(a.x, b.x), std::max(a.y, b.y)}, {std::min(a.x, b.x), std::max(a.y, b.y)}};
+    } else {
+      const std::size_t n = kind <= 5 ? 3 : in_.ConsumeIntegralInRange<std::size_t>(3, kMaxShapePoints);
+      for (std::size_t i = 0; i < n; ++i) ring.push_back(point(l));
+      // Mostly valid shapes (a fan around the lowest point, counter-clockwise); kind 8 keeps
+      // the points as drawn (often crossing itself), kind 9 also leaves the coordinate range.
+      if (kind < 8) ring = fan(std::move(ring));
+      if (kind == 9 && !ring.empty()) ring.back().x = kCoordBound + 1 + in_.ConsumeIntegralInRange(0, 5);
+    }
+    PolygonSet set{ring};
+    if (in_.ConsumeIntegralInRange(0, 4) == 0) set.push_back(shape_rectangle(l));
+    return set;
+  }
+
+ private:
+  Polygon shape_rectangle(const Landscape& l) {
+    const Point64 a = point(l);
+    const std::int64_t w = in_.ConsumeIntegralInRange(1, 40), h = in_.ConsumeIntegralInRange(1, 40);
+    return {a, {clamp_coord(a.x + w), a.y}, {clamp_coord(a.x + w), clamp_coord(a.y + h)}, {a.x, clamp_coord(a.y + h)}};
+  }
+  Point64 anywhere() {
+    const std::int64_t mx = (world_.max.x - world_.min.x) / 4 + 2, my = (world_.max.y - world_.min.y) / 4 + 2;
+    return {clamp_coord(in_.ConsumeIntegralInRange(world_.min.x - mx, world_.max.x + mx)),
+            clamp_coord(in_.ConsumeIntegralInRange(world_.min.y - my, world_.max.y + my))};
+  }
+  Point64 cell_line_point() {
+    // The midpoint lines of the first three levels of a quadtree over the world.
+    const int level = in_.ConsumeIntegralInRange(1, 3);
+    const int k = in_.ConsumeIntegralInRange(0, (1 << level) - 1);
+    const std::int64_t x = world_.min.x + (world_.max.x - world_.min.x) * (2 * k + 1) / (2 << level);
+    return in_.ConsumeBool() ? Point64{x, in_.ConsumeIntegralInRange(world_.min.y, world_.max.y)}
+                             : Point64{in_.ConsumeIntegralInRange(world_.min.x, world_.max.x), world_.min.y + (world_.max.y - world_.min.y) / 2};
+  }
+  Point64 landscape_vertex(const Landscape& l) {
+    std::vector<Point64> seen;
+    l.polygons_in(l.world(), [&](const PolygonView& v) {
+      seen.insert(seen.end(), v.polygon->begin(), v.polygon->end());
+      return seen.size() < 256;
+    });
+    if (seen.empty()) return anywhere();
+    return seen[in_.ConsumeIntegralInRange<std::size_t>(0, seen.size() - 1)];
+  }
+
+  Provider& in_;
+  Box64 world_;
+};
+
+// ---- checks -----------------------------------------------------------------------------------
+
+std::string edit_text(int kind, const PolygonSet& shape, Material a, Material b) {
+  const std::string wkt = to_wkt(shape);
+  switch (kind) {
+    case 0: return "carve " + wkt;
+    case 1: return "fill " + std::to_string(a) + " " + wkt;
+    case 2: return "fill_empty " + std::to_string(a) + " " + wkt;
+    default: return "replace " + std::to_string(a) + " " + std::to_string(b) + " " + wkt;
+  }
+}
+
+void apply(Landscape& l, int kind, const PolygonSet& shape, Material a, Material b) {
+  switch (kind) {
+    case 0: l.carve(shape); break;
+    case 1: l.fill(shape, a); break;
+    case 2: l.fill_empty(shape, a); break;
+    default: l.replace(shape, a, b); break;
+  }
+}
+
+Finding finding(const std::string& what, const Landscape& l) {
+  return {what + "\n  world after the last good edit: state hash " + std::to_string(l.state_hash()), l.log()};
+}
+
+// material_at, raycast and overlaps against a scan of every polygon (no tree), at a few points.
+std::optional<std::string> check_queries(const Landscape& l, Provider& in, EditDecoder& decode) {
+  std::vector<PolygonView> all;
+  l.polygons_in(l.world(), [&](const PolygonView& v) {
+    all.push_back(v);
+    return true;
+  });
+  for (int k = 0; k < 4 && in.remaining_bytes() > 0; ++k) {
+    const Point64 p = decode.point(l);
+    Material want = kEmpty;
+    for (const PolygonView& v : all)
+      if (inside_half_open(p, *v.polygon)) want = v.material;
+    if (l.material_at(p) != want) return "material_at disagrees with a scan of all polygons at (" + std::to_string(p.x) + " " + std::to_string(p.y) + ")";
+    const Point64 q = decode.point(l);
+    if (p == q) continue;
+    std::optional<MaterialCrossing> first;
+    for (const MaterialCrossing& c : l.crossings(p, q))
+      if (c.after != kEmpty) {
+        first = c;
+        break;
+      }
+    const auto hit = l.raycast(p, q);
+    if (hit.has_value() != first.has_value() || (hit && compare(hit->t, first->t) != 0))
+      return "raycast disagrees with the first solid crossing of crossings()";
+    const Box64 box{{std::min(p.x, q.x), std::min(p.y, q.y)}, {std::max(p.x, q.x), std::max(p.y, q.y)}};
+    std::vector<Material> scan;
+    for (const PolygonView& v : all)
+      if (interiors_overlap(box, *v.polygon)) scan.push_back(v.material);
+    std::sort(scan.begin(), scan.end());
+    scan.erase(std::unique(scan.begin(), scan.end()), scan.end());
+    if (l.overlaps(box) != scan) return "overlaps(box) disagrees with a scan of all polygons";
+  }
+  return std::nullopt;
+}
+
+std::optional<std::string> check_round_trips(const Landscape& l, const Landscape& snapshot,
+                                             std::uint64_t snapshot_hash) {
+  std::stringstream file;
+  l.save(file);
+  const Landscape back = Landscape::load(file, kLimits);
+  if (back.state_hash() != l.state_hash()) return "save -> load changed the state hash";
+  if (snapshot.state_hash() != snapshot_hash) return "a snapshot changed when its original was edited";
+  return std::nullopt;
+}
+
+std::uint64_t fnv1a64(const std::uint8_t* data, std::size_t n) {
+  std::uint64_t h = 0xcbf29ce484222325ull;
+  for (std::size_t i = 0; i < n; ++i) h = (h ^ data[i]) * 0x100000001b3ull;
+  return h;
+}
+
+}  // namespace
+
+std::optional<Finding> run_edit_sequence(const std::uint8_t* data, std::size_t size) {
+  Provider in(data, size);
+  EditDecoder decode(in);
+  const Box64 world = decode.world();
+  const Material fill = in.ConsumeIntegralInRange<Material>(0, 3);
+  const LandscapeConfig config = decode.config();
+  Landscape l(world, fill, config, kLimits);
+  l.set_checked(true);
+  l.start_log();
+  Landscape snapshot = l;
+  std::uint64_t snapshot_hash = l.state_hash();
+  for (int i = 0; i < kMaxEdits && in.remaining_bytes() > 0; ++i) {
+    const int kind = in.ConsumeIntegralInRange(0, 3);
+    const Material a = in.ConsumeIntegralInRange<Material>(kind == 3 ? 0 : 1, 4);
+    const Material b = in.ConsumeIntegralInRange<Material>(0, 4);
+    const PolygonSet shape = decode.shape(l);
+    if (in.ConsumeBool()) {
+      snapshot = l;
+      snapshot_hash = l.state_hash();
+    }
+    const std::uint64_t before = l.state_hash();
+    try {
+      apply(l, kind, shape, a, b);
+    } catch (const LandscapeInternalError& e) {
+      return Finding{std::string(e.what()) + "\n  edit: " + edit_text(kind, shape, a, b), e.log};
+    } catch (const InvalidInput&) {
+      if (l.state_hash() != before) return finding("a rejected shape changed the landscape", l);
+    } catch (const CoordinateOutOfRange&) {
+      if (l.state_hash() != before) return finding("a shape out of range changed the landscape", l);
+    } catch (const LimitExceeded&) {
+      if (l.state_hash() != before) return finding("an edit over a limit changed the landscape", l);
+    } catch (const std::exception& e) {
+      return finding(std::string("an edit threw ") + e.what() + "\n  edit: " + edit_text(kind, shape, a, b), l);
+    }
+  }
+  const LandscapeReport report = l.check();
+  if (!report.ok()) return finding("check() after the sequence: " + report.problems.front(), l);
+  if (auto q = check_queries(l, in, decode)) return finding(*q, l);
+  if (auto r = check_round_trips(l, snapshot, snapshot_hash)) return finding(*r, l);
+  return std::nullopt;
+}
+
+std::optional<Finding> run_load(const std::uint8_t* data, std::size_t size) {
+  // An odd first byte asks for the rest to be read with a correct checksum, so that mutations
+  // reach the parser and the checks behind it instead of stopping at the checksum.
+  std::string bytes(reinterpret_cast<const char*>(data), size);
+  if (!bytes.empty()) {
+    const bool fix = (bytes[0] & 1) != 0;
+    bytes.erase(0, 1);
+    if (fix && bytes.size() >= 8) {
+      const std::uint64_t h = fnv1a64(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size() - 8);
+      for (int i = 0; i < 8; ++i) bytes[bytes.size() - 8 + i] = static_cast<char>(h >> (8 * i));
+    }
+  }
+  std::istringstream file(bytes);
+  try {
+    const Landscape l = Landscape::load(file, kLimits);
+    const LandscapeReport report = l.check();
+    if (!report.ok()) return Finding{"load accepted a world that fails check(): " + report.problems.front(), ""};
+    std::stringstream again;
+    l.save(again);
+    if (Landscape::load(again, kLimits).state_hash() != l.state_hash())
+      return Finding{"a loaded world saved and loaded again has another state hash", ""};
+  } catch (const LoadError&) {
+  } catch (const std::exception& e) {
+    return Finding{std::string("load threw something other than LoadError: ") + e.what(), ""};
+  }
+  return std::nullopt;
+}
+
+std::string edit_sequence_log(const std::uint8_t* data, std::size_t size) {
+  // Replays the decoding with recording on; a rejected edit becomes a comment.
+  Provider in(data, size);
+  EditDecoder decode(in);
+  const Box64 world = decode.world();
+  const Material fill = in.ConsumeIntegralInRange<Material>(0, 3);
+  Landscape l(world, fill, decode.config(), kLimits);
+  l.start_log();
+  std::string text = l.log();
+  for (int i = 0; i < kMaxEdits && in.remaining_bytes() > 0; ++i) {
+    const int kind = in.ConsumeIntegralInRange(0, 3);
+    const Material a = in.ConsumeIntegralInRange<Material>(kind == 3 ? 0 : 1, 4);
+    const Material b = in.ConsumeIntegralInRange<Material>(0, 4);
+    const PolygonSet shape = decode.shape(l);
+    in.ConsumeBool();
+    try {
+      apply(l, kind, shape, a, b);
+      const std::string full = l.log();
+      text += full.substr(std::min(text.size(), full.size()));
+    } catch (const std::exception& e) {
+      std::string why = e.what();
+      std::replace(why.begin(), why.end(), '\n', ' ');
+      text += "# rejected (" + why + "): " + edit_text(kind, shape, a, b) + "\n";
+    }
+  }
+  return text;
+}
+
+}  // namespace edgeland::fuzz
