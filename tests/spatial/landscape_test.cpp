@@ -222,3 +222,46 @@ TEST(Landscape, OverlapsFindsMaterialsUnderABox) {
 
 }  // namespace
 }  // namespace edgeland::test
+
+namespace edgeland::test {
+namespace {
+
+TEST(LandscapeLimits, ASplitThatWouldPassTheVertexLimitStopsEarlyAndChangesNothing) {
+  LandscapeConfig config;
+  config.edge_cap = 32;
+  config.merge_below = 10;
+  Landscape l({{0, 0}, {1 << 20, 1 << 20}}, 1, config, LandscapeLimits{.max_vertices = 200});
+  const std::uint64_t before = l.state_hash();
+  // A comb of 40 teeth: far more edges than a cell may hold, so cells split, each split adding
+  // vertices along its cut lines, until the limit stops it.
+  const std::int64_t step = 12000, tooth = 4000, base = 1000, top = 1 << 18;
+  const int teeth = 40;
+  Polygon comb{{0, 0}, {teeth * step, 0}, {teeth * step, base}};
+  for (int i = teeth - 1; i >= 0; --i) {
+    const std::int64_t x = i * step + 4000;
+    comb.insert(comb.end(), {{x + tooth, base}, {x + tooth, top}, {x, top}, {x, base}});
+  }
+  comb.push_back({0, base});
+  try {
+    l.carve(ValidSet(PolygonSet{comb}));
+  } catch (const LimitExceeded& e) {
+    EXPECT_EQ(e.limit, LimitExceeded::Limit::kVertices);
+    EXPECT_GT(e.requested, e.maximum);
+  } catch (const InvalidInput& e) {
+    FAIL() << "the comb is not valid: " << e.what();
+  }
+  EXPECT_EQ(l.state_hash(), before);
+}
+
+TEST(LandscapeLimits, ConfigurationsThatCannotWorkAreRefused) {
+  LandscapeConfig small_cap;
+  small_cap.edge_cap = 16;
+  small_cap.merge_below = 4;
+  EXPECT_THROW(Landscape({{0, 0}, {100, 100}}, kEmpty, small_cap), InvalidConfig);
+  LandscapeConfig deep_grid;
+  deep_grid.grid_depth = 11;
+  EXPECT_THROW(Landscape({{0, 0}, {100, 100}}, kEmpty, deep_grid), InvalidConfig);
+}
+
+}  // namespace
+}  // namespace edgeland::test
