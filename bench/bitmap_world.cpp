@@ -76,7 +76,8 @@ void BitmapWorld::paint(const PolygonSet& shape, Material material) {
   std::size_t next = 0, active_end = 0;  // edges_[0, active_end) : entered, maybe finished
   std::int64_t row = edges_.empty() ? 0 : edges_.front().first_row;
   while (next < edges_.size() || active_end > 0) {
-    while (next < edges_.size() && edges_[next].first_row == row) std::swap(edges_[active_end++], edges_[next++]);
+    while (next < edges_.size() && edges_[next].first_row == row)
+      std::swap(edges_[active_end++], edges_[next++]);
     crossings_.clear();
     for (std::size_t i = 0; i < active_end;) {
       ScanEdge& e = edges_[i];
@@ -87,12 +88,16 @@ void BitmapWorld::paint(const PolygonSet& shape, Material material) {
         e.r -= e.den;
         ++e.q;
       }
-      if (e.last_row == row) std::swap(e, edges_[--active_end]);
-      else ++i;
+      if (e.last_row == row)
+        std::swap(e, edges_[--active_end]);
+      else
+        ++i;
     }
     fill_row(row, material);
-    if (active_end == 0 && next < edges_.size()) row = edges_[next].first_row;
-    else ++row;
+    if (active_end == 0 && next < edges_.size())
+      row = edges_[next].first_row;
+    else
+      ++row;
   }
 }
 

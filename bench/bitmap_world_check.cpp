@@ -47,10 +47,11 @@ std::vector<PolygonSet> shapes() {
   for (double r : {1.0, 2.5, 4.0, 9.0, 17.0, 40.0})
     out.push_back({ngon({20, 23}, r, game_sides(r))});
   out.push_back({capsule({5, 5}, {31, 12}, 6, 32)});
-  out.push_back({capsule({-12, 40}, {60, 50}, 9, 20)});  // past the world on both sides
+  out.push_back({capsule({-12, 40}, {60, 50}, 9, 20)});       // past the world on both sides
   out.push_back({{{10, 10}, {30, 20}, {10, 30}, {20, 20}}});  // concave arrow
   out.push_back({{{20, 0}, {40, 20}, {20, 40}, {0, 20}}});    // edges through square centres
-  out.push_back({{{0, 0}, {8, 0}, {8, 8}, {0, 8}}, {{8, 0}, {16, 0}, {16, 8}, {8, 8}}});  // shared edge
+  out.push_back(
+      {{{0, 0}, {8, 0}, {8, 8}, {0, 8}}, {{8, 0}, {16, 0}, {16, 8}, {8, 8}}});  // shared edge
   for (std::size_t points : {5, 7, 11})
     for (const Polygon& p : star({24, 26}, 22, 7, points)) out.push_back({p});
   return out;
@@ -69,8 +70,9 @@ void check_paint(const PolygonSet& shape, std::size_t index) {
     for (std::int64_t i = kWorld.min.x; i < kWorld.max.x; ++i) {
       const Material expected = inside(shape, i, j) ? 7 : 1;
       if (world.material_at({i, j}) != expected) {
-        std::printf("paint: shape %zu square (%lld %lld): %d, expected %d\n", index, static_cast<long long>(i),
-                    static_cast<long long>(j), world.material_at({i, j}), expected);
+        std::printf("paint: shape %zu square (%lld %lld): %d, expected %d\n", index,
+                    static_cast<long long>(i), static_cast<long long>(j), world.material_at({i, j}),
+                    expected);
         ++failures;
       }
     }
@@ -83,7 +85,8 @@ bool meets(Point64 square, Point64 a, Point64 b) {
   if (box.contains(a) || box.contains(b)) return true;
   const Point64 c[4] = {box.min, {box.max.x, box.min.y}, box.max, {box.min.x, box.max.y}};
   for (int k = 0; k < 4; ++k)
-    if (intersect({a, b}, {c[k], c[(k + 1) % 4]}).relation != SegmentRelation::kDisjoint) return true;
+    if (intersect({a, b}, {c[k], c[(k + 1) % 4]}).relation != SegmentRelation::kDisjoint)
+      return true;
   return false;
 }
 
@@ -92,9 +95,9 @@ void check_ray(const BitmapWorld& world, Point64 from, Point64 to) {
   const std::optional<BitmapHit> hit = world.raycast(from, to);
   if (hit && !meets(hit->square, from, to)) {
     std::printf("raycast (%lld %lld)->(%lld %lld): hit square (%lld %lld) off the segment\n",
-                static_cast<long long>(from.x), static_cast<long long>(from.y), static_cast<long long>(to.x),
-                static_cast<long long>(to.y), static_cast<long long>(hit->square.x),
-                static_cast<long long>(hit->square.y));
+                static_cast<long long>(from.x), static_cast<long long>(from.y),
+                static_cast<long long>(to.x), static_cast<long long>(to.y),
+                static_cast<long long>(hit->square.x), static_cast<long long>(hit->square.y));
     ++failures;
   }
 }
@@ -114,13 +117,16 @@ void check_walk(Point64 from, Point64 to) {
       if (probe.raycast(from, to)) visited.push_back({x, y});
     }
   }
-  const auto expected = static_cast<std::size_t>(std::llabs(to.x - from.x) + std::llabs(to.y - from.y));
+  const auto expected =
+      static_cast<std::size_t>(std::llabs(to.x - from.x) + std::llabs(to.y - from.y));
   bool ok = visited.size() == expected;
   for (const Point64& s : visited) ok = ok && meets(s, from, to);
   if (!ok) {
-    std::printf("walk (%lld %lld)->(%lld %lld): %zu squares visited, expected %zu, or one off the segment\n",
-                static_cast<long long>(from.x), static_cast<long long>(from.y), static_cast<long long>(to.x),
-                static_cast<long long>(to.y), visited.size(), expected);
+    std::printf(
+        "walk (%lld %lld)->(%lld %lld): %zu squares visited, expected %zu, or one off the "
+        "segment\n",
+        static_cast<long long>(from.x), static_cast<long long>(from.y),
+        static_cast<long long>(to.x), static_cast<long long>(to.y), visited.size(), expected);
     ++failures;
   }
 }
@@ -139,7 +145,8 @@ int main() {
   for (int k = 0; k < 300; ++k) {
     const Point64 from{20 + static_cast<std::int64_t>(random.next() % 9) - 4,
                        23 + static_cast<std::int64_t>(random.next() % 9) - 4};
-    const Point64 to{static_cast<std::int64_t>(random.next() % 50), static_cast<std::int64_t>(random.next() % 50)};
+    const Point64 to{static_cast<std::int64_t>(random.next() % 50),
+                     static_cast<std::int64_t>(random.next() % 50)};
     check_ray(terrain, from, to);
     if (k < 40) check_walk(from, to);
   }

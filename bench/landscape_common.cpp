@@ -19,10 +19,14 @@ std::size_t env_count(const char* name, std::size_t fallback) {
 
 const char* rival_name(Rival rival) {
   switch (rival) {
-    case Rival::kQuadtree: return "quadtree";
-    case Rival::kKdTree: return "kdtree";
-    case Rival::kGrid: return "grid";
-    case Rival::kBitmap: return "bitmap";
+    case Rival::kQuadtree:
+      return "quadtree";
+    case Rival::kKdTree:
+      return "kdtree";
+    case Rival::kGrid:
+      return "grid";
+    case Rival::kBitmap:
+      return "bitmap";
   }
   return "?";
 }
@@ -51,8 +55,10 @@ World make_world(Rival rival, const Box64& box, Material fill) {
 
 void apply(World& world, EditKind kind, const ValidSet& shape, Material material) {
   if (auto* l = std::get_if<Landscape>(&world)) {
-    if (kind == EditKind::kCarve) l->carve(shape);
-    else l->fill(shape, material);
+    if (kind == EditKind::kCarve)
+      l->carve(shape);
+    else
+      l->fill(shape, material);
     return;
   }
   auto& b = std::get<BitmapWorld>(world);
@@ -74,7 +80,9 @@ std::vector<double> time_edits(World& world, EditKind kind, const std::vector<Va
   return seconds;
 }
 
-std::size_t repeats() { return std::max<std::size_t>(1, env_count("EDGELAND_LANDSCAPE_REPEATS", 5)); }
+std::size_t repeats() {
+  return std::max<std::size_t>(1, env_count("EDGELAND_LANDSCAPE_REPEATS", 5));
+}
 
 std::vector<double> fastest_edits(const World& start, EditKind kind,
                                   const std::vector<ValidSet>& shapes, Material material,
@@ -92,7 +100,8 @@ std::vector<double> fastest_edits(const World& start, EditKind kind,
 double quantile(std::vector<double> values, double q) {
   if (values.empty()) return 0;
   const auto rank = static_cast<std::size_t>(q * static_cast<double>(values.size() - 1) + 0.5);
-  std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(rank), values.end());
+  std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(rank),
+                   values.end());
   return values[rank];
 }
 
@@ -105,9 +114,10 @@ EditSummary summarize(const std::vector<double>& seconds, std::size_t block) {
                 static_cast<double>(seconds.size());
   for (std::size_t from = 0; block > 0 && from < seconds.size(); from += block) {
     const std::size_t to = std::min(from + block, seconds.size());
-    s.block_median_us.push_back(
-        quantile({seconds.begin() + static_cast<std::ptrdiff_t>(from),
-                  seconds.begin() + static_cast<std::ptrdiff_t>(to)}, 0.5) * 1e6);
+    s.block_median_us.push_back(quantile({seconds.begin() + static_cast<std::ptrdiff_t>(from),
+                                          seconds.begin() + static_cast<std::ptrdiff_t>(to)},
+                                         0.5) *
+                                1e6);
   }
   return s;
 }
@@ -137,7 +147,8 @@ void report_stats(benchmark::State& state, const World& world) {
   state.counters["depth"] = static_cast<double>(s.depth);
   state.counters["bytes"] = static_cast<double>(s.bytes);
   if (s.vertices > 0)
-    state.counters["bytes_per_vertex"] = static_cast<double>(s.bytes) / static_cast<double>(s.vertices);
+    state.counters["bytes_per_vertex"] =
+        static_cast<double>(s.bytes) / static_cast<double>(s.vertices);
 }
 
 void fail(benchmark::State& state, const std::string& message) {

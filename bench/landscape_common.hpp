@@ -7,9 +7,9 @@
 
 #include <algorithm>
 #include <chrono>
-#include <optional>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
@@ -75,10 +75,13 @@ std::vector<double> batch_seconds(std::size_t n, Ask&& ask) {
     for (std::size_t from = 0, b = 0; from < n; from += kQueryBatch, ++b) {
       const std::size_t to = std::min(from + kQueryBatch, n);
       const double s = seconds_of([&] {
-        for (std::size_t i = from; i < to; ++i) ask(i);
-      }) / static_cast<double>(to - from);
-      if (pass == 0) out.push_back(s);
-      else out[b] = std::min(out[b], s);
+                         for (std::size_t i = from; i < to; ++i) ask(i);
+                       }) /
+                       static_cast<double>(to - from);
+      if (pass == 0)
+        out.push_back(s);
+      else
+        out[b] = std::min(out[b], s);
     }
   }
   return out;

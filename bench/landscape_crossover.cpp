@@ -25,13 +25,16 @@ namespace {
 
 // EDGELAND_LANDSCAPE_CROSSOVER_SIDE (default 16384; the smoke test's is smaller, sparing it
 // four 256 MiB bitmaps): radii up to a quarter of it are registered.
-std::int64_t side() { return static_cast<std::int64_t>(env_count("EDGELAND_LANDSCAPE_CROSSOVER_SIDE", 16384)); }
+std::int64_t side() {
+  return static_cast<std::int64_t>(env_count("EDGELAND_LANDSCAPE_CROSSOVER_SIDE", 16384));
+}
 Box64 world_box() { return {{0, 0}, {side(), side()}}; }
 
 // The density of the query terrain: CAVES circles per 8192 x 8192 (4 x CAVES at 16384).
 std::size_t cave_count() {
   const double scale = static_cast<double>(side()) / 8192.0;
-  return static_cast<std::size_t>(static_cast<double>(env_count("EDGELAND_LANDSCAPE_CAVES", 300)) * scale * scale);
+  return static_cast<std::size_t>(static_cast<double>(env_count("EDGELAND_LANDSCAPE_CAVES", 300)) *
+                                  scale * scale);
 }
 
 enum class Terrain : std::uint8_t { kCaves, kSolid };
@@ -53,8 +56,10 @@ const World& terrain(Terrain t, Rival rival) {
 std::vector<ValidSet> circles(std::int64_t radius) {
   const std::size_t n = env_count("EDGELAND_LANDSCAPE_CROSSOVER_REPS", 30);
   std::vector<Polygon> polygons;
-  for (const Point64& c : random_points(0xC2055 + static_cast<std::uint64_t>(radius), n, inset(world_box(), radius)))
-    polygons.push_back(ngon(c, static_cast<double>(radius), game_sides(static_cast<double>(radius))));
+  for (const Point64& c :
+       random_points(0xC2055 + static_cast<std::uint64_t>(radius), n, inset(world_box(), radius)))
+    polygons.push_back(
+        ngon(c, static_cast<double>(radius), game_sides(static_cast<double>(radius))));
   return as_shapes(polygons);
 }
 
@@ -79,8 +84,9 @@ std::vector<double> carve_times(Terrain t, Rival rival, const std::vector<ValidS
   std::vector<double> fastest(shapes.size());
   for (std::size_t r = 0; r < repeats(); ++r) {
     for (std::size_t i = 0; i < shapes.size(); ++i) {
-      const double s = landscape != nullptr ? carve_landscape(*landscape, shapes[i])
-                                            : carve_bitmap(*work, std::get<BitmapWorld>(base), shapes[i]);
+      const double s = landscape != nullptr
+                           ? carve_landscape(*landscape, shapes[i])
+                           : carve_bitmap(*work, std::get<BitmapWorld>(base), shapes[i]);
       fastest[i] = r == 0 ? s : std::min(fastest[i], s);
     }
   }
@@ -97,7 +103,10 @@ double bitmap_median_us(Terrain t, std::int64_t radius) {
   auto& cache = bitmap_medians();
   auto it = cache.find({t, radius});
   if (it == cache.end())
-    it = cache.emplace(std::make_pair(t, radius), quantile(carve_times(t, Rival::kBitmap, circles(radius)), 0.5) * 1e6).first;
+    it = cache
+             .emplace(std::make_pair(t, radius),
+                      quantile(carve_times(t, Rival::kBitmap, circles(radius)), 0.5) * 1e6)
+             .first;
   return it->second;
 }
 
@@ -125,7 +134,8 @@ void run_crossover_benchmark(benchmark::State& state, Terrain t, Rival rival) {
     return;
   }
   report_stats(state, terrain(t, rival));
-  guarded(state, [&] { state.counters["median_vs_bitmap"] = median_us / bitmap_median_us(t, radius); });
+  guarded(state,
+          [&] { state.counters["median_vs_bitmap"] = median_us / bitmap_median_us(t, radius); });
 }
 
 }  // namespace
@@ -136,7 +146,8 @@ void register_crossover_benchmarks() {
       auto* b = benchmark::RegisterBenchmark(
           (std::string("landscape_crossover/") + terrain_name(t) + "/" + rival_name(rival)).c_str(),
           [t, rival](benchmark::State& state) { run_crossover_benchmark(state, t, rival); });
-      for (std::int64_t radius = 4; radius <= 4096 && 4 * radius <= side(); radius *= 2) b->Arg(radius);
+      for (std::int64_t radius = 4; radius <= 4096 && 4 * radius <= side(); radius *= 2)
+        b->Arg(radius);
       b->Iterations(1)->UseManualTime()->Unit(benchmark::kMillisecond);
     }
   }

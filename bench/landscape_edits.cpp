@@ -11,10 +11,10 @@
 //
 // Names landscape_edit/WORKLOAD/RIVAL/EDITS, EDITS from EDGELAND_LANDSCAPE_EDITS (default
 // 10000), blocks of EDGELAND_LANDSCAPE_BLOCK (1000); each edit's time is its fastest of
-// EDGELAND_LANDSCAPE_REPEATS runs from the same start (landscape_common.hpp). Every rival gets the same shapes as
-// ValidSets built before any clock starts (the bitmap reads their polygons): neither side
-// validates on the clock. Ratios against the bitmap (X_vs_bitmap = landscape time / bitmap time)
-// come from the same process: the bitmap is registered first, and run here if it was filtered
+// EDGELAND_LANDSCAPE_REPEATS runs from the same start (landscape_common.hpp). Every rival gets the
+// same shapes as ValidSets built before any clock starts (the bitmap reads their polygons): neither
+// side validates on the clock. Ratios against the bitmap (X_vs_bitmap = landscape time / bitmap
+// time) come from the same process: the bitmap is registered first, and run here if it was filtered
 // out.
 #include <map>
 #include <optional>
@@ -54,9 +54,11 @@ const std::vector<ValidSet>& shapes(Workload w) {
   auto it = cache.find(w);
   if (it == cache.end()) {
     const std::size_t n = edit_count();
-    it = cache.emplace(w, w == Workload::kCarve ? circles(0xCA4'F1A6, n)
-                          : w == Workload::kDig ? strokes(n)
-                                                : circles(0xF111'0002, n)).first;
+    it = cache
+             .emplace(w, w == Workload::kCarve ? circles(0xCA4'F1A6, n)
+                         : w == Workload::kDig ? strokes(n)
+                                               : circles(0xF111'0002, n))
+             .first;
   }
   return it->second;
 }
@@ -102,7 +104,8 @@ std::map<Workload, EditSummary>& bitmap_summaries() {
 const EditSummary& bitmap_summary(Workload w, std::size_t block) {
   auto& cache = bitmap_summaries();
   auto it = cache.find(w);
-  if (it == cache.end()) it = cache.emplace(w, summarize(run_once(w, Rival::kBitmap).seconds, block)).first;
+  if (it == cache.end())
+    it = cache.emplace(w, summarize(run_once(w, Rival::kBitmap).seconds, block)).first;
   return it->second;
 }
 
@@ -143,9 +146,9 @@ void register_edit_benchmarks() {
     for (Rival rival : {Rival::kBitmap, Rival::kQuadtree, Rival::kKdTree, Rival::kGrid}) {
       const std::string name =
           std::string("landscape_edit/") + workload_name(w) + "/" + rival_name(rival) + "/" + edits;
-      benchmark::RegisterBenchmark(name.c_str(), [w, rival](benchmark::State& state) {
-        run_edit_benchmark(state, w, rival);
-      })
+      benchmark::RegisterBenchmark(
+          name.c_str(),
+          [w, rival](benchmark::State& state) { run_edit_benchmark(state, w, rival); })
           ->Iterations(1)
           ->UseManualTime()
           ->Unit(benchmark::kMillisecond);

@@ -41,10 +41,14 @@ constexpr float kMetresPerUnit = 1.0f / 16.0f;
 enum class Query : std::uint8_t { kMaterialAt, kMaterialAtWalk, kRaycast, kOverlaps };
 const char* query_name(Query q) {
   switch (q) {
-    case Query::kMaterialAt: return "material_at";
-    case Query::kMaterialAtWalk: return "material_at_walk";
-    case Query::kRaycast: return "raycast";
-    case Query::kOverlaps: return "overlaps";
+    case Query::kMaterialAt:
+      return "material_at";
+    case Query::kMaterialAtWalk:
+      return "material_at_walk";
+    case Query::kRaycast:
+      return "raycast";
+    case Query::kOverlaps:
+      return "overlaps";
   }
   return "?";
 }
@@ -56,7 +60,8 @@ const World& terrain(Rival rival) {
   auto it = cache.find(rival);
   if (it == cache.end()) {
     World world = make_world(rival, kWorld, 1);
-    for (const ValidSet& cave : as_shapes(caves(0xCA7E, env_count("EDGELAND_LANDSCAPE_CAVES", 300), kWorld)))
+    for (const ValidSet& cave :
+         as_shapes(caves(0xCA7E, env_count("EDGELAND_LANDSCAPE_CAVES", 300), kWorld)))
       apply(world, EditKind::kCarve, cave, kEmpty);
     it = cache.emplace(rival, std::move(world)).first;
   }
@@ -124,7 +129,8 @@ const std::vector<Point64>& points() {
 }
 
 const std::vector<Point64>& walk() {
-  static const std::vector<Point64> cache = random_walk(0x3A1C, query_count() - 1, 3.0, inset(kWorld, 16));
+  static const std::vector<Point64> cache =
+      random_walk(0x3A1C, query_count() - 1, 3.0, inset(kWorld, 16));
   return cache;
 }
 
@@ -133,7 +139,8 @@ const std::vector<Point64>& points(Query q) { return q == Query::kMaterialAt ? p
 const std::vector<Box64>& boxes() {
   static std::vector<Box64> cache;
   if (cache.empty())
-    for (const Point64& p : random_points(0xB0C5, query_count(), {{0, 0}, {kSide - 16, kSide - 32}}))
+    for (const Point64& p :
+         random_points(0xB0C5, query_count(), {{0, 0}, {kSide - 16, kSide - 32}}))
       cache.push_back({p, {p.x + 16, p.y + 32}});
   return cache;
 }
@@ -154,33 +161,28 @@ QueryRun run_batches(std::size_t n, Ask&& ask) {
   return run;
 }
 
-double distance(std::int64_t t_num, std::int64_t t_den) {
-  return kRayLength * static_cast<double>(t_num) / static_cast<double>(t_den);
+// Distance along the ray to a hit, -1 for none: the landscape's exact t, the bitmap's square.
+double hit_distance(const std::optional<MaterialCrossing>& hit) {
+  if (!hit) return -1.0;
+  return kRayLength * static_cast<double>(hit->t.num) / static_cast<double>(hit->t.den);
+}
+double hit_distance(const std::optional<BitmapHit>& hit) {
+  if (!hit) return -1.0;
+  return kRayLength * static_cast<double>(hit->t_num) / static_cast<double>(hit->t_den);
 }
 
-double fraction(const Fraction& f) { return static_cast<double>(f.num) / static_cast<double>(f.den); }
-
-QueryRun run_world(Query q, const World& world) {
-  if (const auto* l = std::get_if<Landscape>(&world)) {
-    if (q == Query::kMaterialAt || q == Query::kMaterialAtWalk) {
-      const std::vector<Point64>& p = points(q);
-      return run_batches(p.size(), [&](std::size_t i) { return double(l->material_at(p[i])); });
-    }
-    if (q == Query::kOverlaps) return run_batches(boxes().size(), [&](std::size_t i) { return double(!l->overlaps(boxes()[i]).empty()); });
-    return run_batches(rays().size(), [&](std::size_t i) {
-      const auto hit = l->raycast(rays()[i].from, rays()[i].to);
-      return hit ? kRayLength * fraction(hit->t) : -1.0;
-    });
-  }
-  const auto& b = std::get<BitmapWorld>(world);
+// A landscape or the bitmap: the same member names answer the same questions.
+template <class W>
+QueryRun run_world(Query q, const W& w) {
   if (q == Query::kMaterialAt || q == Query::kMaterialAtWalk) {
     const std::vector<Point64>& p = points(q);
-    return run_batches(p.size(), [&](std::size_t i) { return double(b.material_at(p[i])); });
+    return run_batches(p.size(), [&](std::size_t i) { return double(w.material_at(p[i])); });
   }
-  if (q == Query::kOverlaps) return run_batches(boxes().size(), [&](std::size_t i) { return double(!b.overlaps(boxes()[i]).empty()); });
+  if (q == Query::kOverlaps)
+    return run_batches(boxes().size(),
+                       [&](std::size_t i) { return double(!w.overlaps(boxes()[i]).empty()); });
   return run_batches(rays().size(), [&](std::size_t i) {
-    const auto hit = b.raycast(rays()[i].from, rays()[i].to);
-    return hit ? distance(hit->t_num, hit->t_den) : -1.0;
+    return hit_distance(w.raycast(rays()[i].from, rays()[i].to));
   });
 }
 
@@ -222,7 +224,7 @@ QueryRun run_box2d(Query q) {
 // The contenders: a rival's terrain or "box2d".
 QueryRun run_query(Query q, const std::string& who) {
   if (who == "box2d") return run_box2d(q);
-  return run_world(q, terrain(*rival_named(who)));
+  return std::visit([q](const auto& w) { return run_world(q, w); }, terrain(*rival_named(who)));
 }
 
 // Runs of each (query, contender), kept for the ratios and the agreement counters.
@@ -242,7 +244,8 @@ double agreement(const QueryRun& a, const QueryRun& b, double tolerance) {
     const double x = a.answers[i], y = b.answers[i];
     if ((x < 0) == (y < 0) && std::abs(x - y) <= tolerance) ++same;
   }
-  return a.answers.empty() ? 1.0 : static_cast<double>(same) / static_cast<double>(a.answers.size());
+  return a.answers.empty() ? 1.0
+                           : static_cast<double>(same) / static_cast<double>(a.answers.size());
 }
 
 void compare_with(benchmark::State& state, Query q, const QueryRun& mine, const std::string& other,
@@ -265,7 +268,8 @@ void run_query_benchmark(benchmark::State& state, Query q, const std::string& wh
   state.counters["median_ns"] = median_ns;
   std::size_t answered = 0;
   for (double a : run->answers) answered += a > 0 ? 1 : 0;
-  state.counters["nonzero_answers"] = static_cast<double>(answered) / static_cast<double>(run->answers.size());
+  state.counters["nonzero_answers"] =
+      static_cast<double>(answered) / static_cast<double>(run->answers.size());
   if (who == "box2d") {
     state.counters["chain_loops"] = static_cast<double>(box2d_terrain().loops);
     state.counters["chain_edges"] = static_cast<double>(box2d_terrain().edges);
@@ -274,7 +278,8 @@ void run_query_benchmark(benchmark::State& state, Query q, const std::string& wh
   }
   guarded(state, [&] {
     if (who != "bitmap") compare_with(state, q, *run, "bitmap", median_ns);
-    if (who != "box2d" && who != "bitmap" && (q == Query::kRaycast || q == Query::kOverlaps)) compare_with(state, q, *run, "box2d", median_ns);
+    if (who != "box2d" && who != "bitmap" && (q == Query::kRaycast || q == Query::kOverlaps))
+      compare_with(state, q, *run, "box2d", median_ns);
   });
 }
 
@@ -287,9 +292,8 @@ void register_query_benchmarks() {
     for (const char* r : {"quadtree", "kdtree", "grid"}) who.push_back(r);
     for (const std::string& w : who) {
       const std::string name = std::string("landscape_query/") + query_name(q) + "/" + w;
-      benchmark::RegisterBenchmark(name.c_str(), [q, w](benchmark::State& state) {
-        run_query_benchmark(state, q, w);
-      })
+      benchmark::RegisterBenchmark(
+          name.c_str(), [q, w](benchmark::State& state) { run_query_benchmark(state, q, w); })
           ->Iterations(1)
           ->UseManualTime()
           ->Unit(benchmark::kMillisecond);

@@ -32,9 +32,11 @@ const std::vector<ValidSet>& edits(std::int64_t side) {
   auto it = cache.find(side);
   if (it == cache.end()) {
     const double area = env_number("EDGELAND_LANDSCAPE_SCALING_AREA", 16384);
-    const auto n = static_cast<std::size_t>(static_cast<double>(side) * static_cast<double>(side) / area);
+    const auto n =
+        static_cast<std::size_t>(static_cast<double>(side) * static_cast<double>(side) / area);
     std::vector<Polygon> polygons;
-    for (const Point64& c : random_points(0x5CA1E + static_cast<std::uint64_t>(side), n, world_of(side)))
+    for (const Point64& c :
+         random_points(0x5CA1E + static_cast<std::uint64_t>(side), n, world_of(side)))
       polygons.push_back(ngon(c, 40, 32));
     it = cache.emplace(side, as_shapes(polygons)).first;
   }
@@ -49,14 +51,17 @@ struct Scaled {
 
 // Seeded rays of 200 units from points the reference landscape calls empty, both ends in the
 // world; the same rays for both rivals of a size.
-std::vector<std::pair<Point64, Point64>> rays(const World& reference, std::int64_t side, std::size_t n) {
+std::vector<std::pair<Point64, Point64>> rays(const World& reference, std::int64_t side,
+                                              std::size_t n) {
   SplitMix64 random(0x5CA1E7 + static_cast<std::uint64_t>(side));
   std::vector<std::pair<Point64, Point64>> out;
   for (std::size_t tries = 0; out.size() < n && tries < 100 * n; ++tries) {
     const Point64 from = random_points(random.next(), 1, world_of(side)).front();
     const double angle = 2.0 * 3.14159265358979323846 * random.unit();
-    const Point64 to{from.x + std::llround(200 * std::cos(angle)), from.y + std::llround(200 * std::sin(angle))};
-    if (world_of(side).contains(to) && material_at(reference, from) == kEmpty) out.push_back({from, to});
+    const Point64 to{from.x + std::llround(200 * std::cos(angle)),
+                     from.y + std::llround(200 * std::sin(angle))};
+    if (world_of(side).contains(to) && material_at(reference, from) == kEmpty)
+      out.push_back({from, to});
   }
   return out;
 }
@@ -66,12 +71,15 @@ void time_queries(Scaled& s, const World& reference, std::int64_t side) {
   const std::vector<Point64> points = random_points(0x5CA1E9, n, {{0, 0}, {side - 1, side - 1}});
   const auto ray_set = rays(reference, side, n);
   std::size_t sink = 0;
-  std::visit([&](const auto& w) {
-    s.point_seconds = batch_seconds(points.size(), [&](std::size_t i) { sink += w.material_at(points[i]); });
-    s.ray_seconds = batch_seconds(ray_set.size(), [&](std::size_t i) {
-      sink += w.raycast(ray_set[i].first, ray_set[i].second).has_value();
-    });
-  }, *s.world);
+  std::visit(
+      [&](const auto& w) {
+        s.point_seconds =
+            batch_seconds(points.size(), [&](std::size_t i) { sink += w.material_at(points[i]); });
+        s.ray_seconds = batch_seconds(ray_set.size(), [&](std::size_t i) {
+          sink += w.raycast(ray_set[i].first, ray_set[i].second).has_value();
+        });
+      },
+      *s.world);
   benchmark::DoNotOptimize(sink);
 }
 
@@ -83,9 +91,11 @@ std::map<std::int64_t, World>& quadtree_worlds() {
 
 Scaled run_scaled(Rival rival, std::int64_t side) {
   const std::vector<ValidSet>& all = edits(side);
-  const std::size_t timed = std::min(all.size(), env_count("EDGELAND_LANDSCAPE_SCALING_TIMED", 1000));
+  const std::size_t timed =
+      std::min(all.size(), env_count("EDGELAND_LANDSCAPE_SCALING_TIMED", 1000));
   World start = make_world(rival, world_of(side), 1);
-  for (std::size_t i = 0; i + timed < all.size(); ++i) apply(start, EditKind::kCarve, all[i], kEmpty);
+  for (std::size_t i = 0; i + timed < all.size(); ++i)
+    apply(start, EditKind::kCarve, all[i], kEmpty);
   const std::vector<ValidSet> last(all.end() - static_cast<std::ptrdiff_t>(timed), all.end());
   Scaled s;
   s.edit_seconds = fastest_edits(start, EditKind::kCarve, last, kEmpty, s.world);
@@ -109,7 +119,8 @@ ScaledSummary summary_of(const Scaled& s) {
 const ScaledSummary& bitmap_summary(std::int64_t side) {
   static std::map<std::int64_t, ScaledSummary> cache;
   auto it = cache.find(side);
-  if (it == cache.end()) it = cache.emplace(side, summary_of(run_scaled(Rival::kBitmap, side))).first;
+  if (it == cache.end())
+    it = cache.emplace(side, summary_of(run_scaled(Rival::kBitmap, side))).first;
   return it->second;
 }
 

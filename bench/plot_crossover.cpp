@@ -32,8 +32,12 @@ constexpr double kLeft = 90, kRight = 30, kTop = 50, kBottom = 70;
 
 struct Axes {
   double x0, x1, y0, y1;  // log10 of the ranges
-  double x(double radius) const { return kLeft + (std::log10(radius) - x0) / (x1 - x0) * (kWidth - kLeft - kRight); }
-  double y(double us) const { return kHeight - kBottom - (std::log10(us) - y0) / (y1 - y0) * (kHeight - kTop - kBottom); }
+  double x(double radius) const {
+    return kLeft + (std::log10(radius) - x0) / (x1 - x0) * (kWidth - kLeft - kRight);
+  }
+  double y(double us) const {
+    return kHeight - kBottom - (std::log10(us) - y0) / (y1 - y0) * (kHeight - kTop - kBottom);
+  }
 };
 
 std::vector<std::string> split_tabs(const std::string& line) {
@@ -82,15 +86,19 @@ void text(cairo_t* cr, double x, double y, const std::string& s, double align) {
 
 std::string us_label(double us) {
   char buf[32];
-  if (us >= 1000) std::snprintf(buf, sizeof buf, "%g ms", us / 1000);
-  else std::snprintf(buf, sizeof buf, "%g us", us);
+  if (us >= 1000)
+    std::snprintf(buf, sizeof buf, "%g ms", us / 1000);
+  else
+    std::snprintf(buf, sizeof buf, "%g us", us);
   return buf;
 }
 
 // Colour by rival (blue landscape, orange bitmap), dash pattern by terrain.
 void set_style(cairo_t* cr, bool landscape, std::size_t terrain) {
-  if (landscape) cairo_set_source_rgb(cr, 0.12, 0.35, 0.75);
-  else cairo_set_source_rgb(cr, 0.85, 0.35, 0.1);
+  if (landscape)
+    cairo_set_source_rgb(cr, 0.12, 0.35, 0.75);
+  else
+    cairo_set_source_rgb(cr, 0.85, 0.35, 0.1);
   const double dash[] = {8, 5};
   cairo_set_dash(cr, dash, terrain == 0 ? 0 : 2, 0);
 }
@@ -116,7 +124,8 @@ void draw_grid(cairo_t* cr, const Axes& a, const Data& d) {
     cairo_set_source_rgb(cr, 0, 0, 0);
     text(cr, x, kHeight - kBottom + 18, std::to_string(static_cast<long>(r)), 0.5);
   }
-  text(cr, (kLeft + kWidth - kRight) / 2, kHeight - 20, "circle radius (units; 16-512 vertices)", 0.5);
+  text(cr, (kLeft + kWidth - kRight) / 2, kHeight - 20, "circle radius (units; 16-512 vertices)",
+       0.5);
   cairo_save(cr);
   cairo_translate(cr, 22, (kTop + kHeight - kBottom) / 2);
   cairo_rotate(cr, -M_PI / 2);
@@ -130,8 +139,10 @@ void draw_curve(cairo_t* cr, const Axes& a, const Data& d, std::size_t column) {
   cairo_set_line_width(cr, 2.5);
   for (std::size_t i = 0; i < d.radii.size(); ++i) {
     const double x = a.x(d.radii[i]), y = a.y(d.values[i][column]);
-    if (i == 0) cairo_move_to(cr, x, y);
-    else cairo_line_to(cr, x, y);
+    if (i == 0)
+      cairo_move_to(cr, x, y);
+    else
+      cairo_line_to(cr, x, y);
   }
   cairo_stroke(cr);
   cairo_set_dash(cr, nullptr, 0, 0);
@@ -141,7 +152,8 @@ void draw_curve(cairo_t* cr, const Axes& a, const Data& d, std::size_t column) {
   }
 }
 
-void draw_crossover(cairo_t* cr, const Axes& a, double radius, std::size_t terrain, const std::string& name) {
+void draw_crossover(cairo_t* cr, const Axes& a, double radius, std::size_t terrain,
+                    const std::string& name) {
   const double x = a.x(radius);
   const double dash[] = {3, 3};
   cairo_set_source_rgb(cr, 0.1, 0.55, 0.2);
@@ -172,7 +184,9 @@ void draw_legend_and_title(cairo_t* cr, const Data& d) {
       cairo_stroke(cr);
       cairo_set_dash(cr, nullptr, 0, 0);
       cairo_set_source_rgb(cr, 0, 0, 0);
-      std::string label = std::string(landscape ? "landscape (quadtree), " : "bitmap (1 byte per square), ") + d.terrains[t];
+      std::string label =
+          std::string(landscape ? "landscape (quadtree), " : "bitmap (1 byte per square), ") +
+          d.terrains[t];
       if (landscape && d.crossovers[t] <= 0) label += ": no crossover in this range";
       text(cr, kLeft + 52, y, label, 0.0);
       y += 18;
@@ -192,14 +206,16 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "plot_crossover: %s: fewer than two radii\n", argv[1]);
     return 2;
   }
-  cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_RGB24, static_cast<int>(kWidth), static_cast<int>(kHeight));
+  cairo_surface_t* surface = cairo_image_surface_create(
+      CAIRO_FORMAT_RGB24, static_cast<int>(kWidth), static_cast<int>(kHeight));
   cairo_t* cr = cairo_create(surface);
   cairo_set_source_rgb(cr, 1, 1, 1);
   cairo_paint(cr);
   cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
   const Axes a = axes_for(d);
   draw_grid(cr, a, d);
-  for (std::size_t column = 0; column < 2 * d.terrains.size(); ++column) draw_curve(cr, a, d, column);
+  for (std::size_t column = 0; column < 2 * d.terrains.size(); ++column)
+    draw_curve(cr, a, d, column);
   for (std::size_t t = 0; t < d.terrains.size(); ++t)
     if (d.crossovers[t] > 0) draw_crossover(cr, a, d.crossovers[t], t, d.terrains[t]);
   draw_legend_and_title(cr, d);
@@ -207,7 +223,8 @@ int main(int argc, char** argv) {
   cairo_destroy(cr);
   cairo_surface_destroy(surface);
   if (status != CAIRO_STATUS_SUCCESS) {
-    std::fprintf(stderr, "plot_crossover: cannot write %s: %s\n", argv[2], cairo_status_to_string(status));
+    std::fprintf(stderr, "plot_crossover: cannot write %s: %s\n", argv[2],
+                 cairo_status_to_string(status));
     return 1;
   }
   return 0;
