@@ -51,7 +51,9 @@ void check_canonical(const Landscape::Node& c, std::vector<std::string>& problem
 
 void check_sums(const Landscape::Node& n, const NodePtr& rebuilt, std::vector<std::string>& problems) {
   if (rebuilt->polygons != n.polygons || rebuilt->vertices != n.vertices ||
-      rebuilt->cells != n.cells || rebuilt->deepest != n.deepest || rebuilt->hash != n.hash)
+      rebuilt->cells != n.cells || rebuilt->deepest != n.deepest || rebuilt->hash != n.hash ||
+      rebuilt->cut_x != n.cut_x || rebuilt->cut_y != n.cut_y || rebuilt->x_line != n.x_line ||
+      rebuilt->y_line != n.y_line)
     problems.push_back(name(n) + ": stored sums or hash differ from its content");
 }
 

@@ -48,6 +48,11 @@ NodePtr make_inner(const Box64& box, std::uint32_t depth, const std::vector<Node
     h.add(c->hash);
   }
   node->hash = h.value();
+  const Box64& first = children.front()->box;
+  node->cut_x = first.max.x != box.max.x;
+  node->cut_y = first.max.y != box.max.y;
+  node->x_line = first.max.x;
+  node->y_line = first.max.y;
   return node;
 }
 

@@ -18,6 +18,11 @@ struct Landscape::Node {
   std::uint32_t depth = 0;        // the root is 0
   std::uint32_t child_count = 0;  // 0 for a cell
   std::array<std::shared_ptr<const Node>, 4> children;
+  // Where the children meet (inner nodes): a point at or past a cut line belongs to the high
+  // child (the half-open rule), so a descent picks a child by two comparisons without reading
+  // the children.
+  bool cut_x = false, cut_y = false;
+  std::int64_t x_line = 0, y_line = 0;
 
   // A cell's content: canonical order; labels are materials (1..255).
   LabeledSet content;
@@ -30,6 +35,12 @@ struct Landscape::Node {
   std::uint64_t hash = 0;
 
   bool is_cell() const noexcept { return child_count == 0; }
+  // The child whose half-open box holds p (p in this node's box).
+  const Node& child_at(Point64 p) const noexcept {
+    const std::uint32_t ix = cut_x && p.x >= x_line ? 1 : 0;
+    const std::uint32_t iy = cut_y && p.y >= y_line ? 1 : 0;
+    return *children[ix + (cut_x ? 2 : 1) * iy];
+  }
   const PolygonSet& polygon_set() const noexcept { return content.set.polygons(); }
 };
 

@@ -17,17 +17,6 @@ bool open_overlap(const Box64& a, const Box64& b) {
   return a.min.x < b.max.x && b.min.x < a.max.x && a.min.y < b.max.y && b.min.y < a.max.y;
 }
 
-// The child whose half-open box holds p (a child on its parent's max side holds that side).
-const Landscape::Node* child_holding(const Landscape::Node& n, Point64 p) {
-  for (std::uint32_t i = 0; i < n.child_count; ++i) {
-    const Box64& c = n.children[i]->box;
-    const bool x = c.min.x <= p.x && (p.x < c.max.x || c.max.x == n.box.max.x);
-    const bool y = c.min.y <= p.y && (p.y < c.max.y || c.max.y == n.box.max.y);
-    if (x && y) return n.children[i].get();
-  }
-  return n.children[n.child_count - 1].get();
-}
-
 template <class F>
 bool visit_cells_meeting(const NodePtr& n, const Box64& box, bool open, F&& f) {
   if (open ? !open_overlap(n->box, box) : !n->box.overlaps(box)) return true;
@@ -51,7 +40,7 @@ Material Landscape::material_at(Point64 p) const {
   if (p.x < world_.min.x || p.y < world_.min.y || p.x >= world_.max.x || p.y >= world_.max.y)
     return kEmpty;
   const Node* n = root_.get();
-  while (!n->is_cell()) n = child_holding(*n, p);
+  while (!n->is_cell()) n = &n->child_at(p);
   const PolygonSet& polys = n->polygon_set();
   for (std::size_t i = 0; i < polys.size(); ++i) {
     const Box64& b = n->boxes[i];
@@ -71,6 +60,12 @@ void Landscape::polygons_in(const Box64& box, const std::function<bool(const Pol
       if (!visit(v)) return false;
     }
     return true;
+  });
+}
+
+void Landscape::cells_in(const Box64& box, const std::function<bool(const CellView&)>& visit) const {
+  visit_cells_meeting(root_, box, false, [&](const Node& cell) {
+    return visit(CellView{cell.box, cell.depth, cell.polygons, cell.vertices});
   });
 }
 

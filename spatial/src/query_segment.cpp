@@ -3,7 +3,6 @@
 // the material profile. Crossings at one parameter are taken together, so a seam between two
 // pieces of one material (a cell line, a hole-splitting bridge) changes nothing.
 #include <algorithm>
-#include <map>
 
 #include "edgeland/kernel/box_queries.hpp"
 #include "edgeland/kernel/segment_crossings.hpp"
@@ -20,14 +19,17 @@ struct CellOnSegment {
   const Landscape::Node* cell;
 };
 
-void cells_on(const NodePtr& n, const Segment& s, std::vector<CellOnSegment>& out) {
+// The cells whose closed box meets the segment (whose box is `reach`), with the parameter
+// where it enters each. Boxes missing the segment's box are passed over by comparisons alone.
+void cells_on(const NodePtr& n, const Segment& s, const Box64& reach, std::vector<CellOnSegment>& out) {
+  if (!n->box.overlaps(reach)) return;
   const auto range = clip_parameters(s, n->box);
   if (!range) return;
   if (n->is_cell()) {
     out.push_back({range->t0, n.get()});
     return;
   }
-  for (std::uint32_t i = 0; i < n->child_count; ++i) cells_on(n->children[i], s, out);
+  for (std::uint32_t i = 0; i < n->child_count; ++i) cells_on(n->children[i], s, reach, out);
 }
 
 struct Event {
@@ -40,13 +42,15 @@ struct Event {
 // polygon of the cells met so far that are not processed yet.
 class Profile {
  public:
-  explicit Profile(const Segment& s) : s_(s) {}
+  explicit Profile(const Segment& s)
+      : s_(s),
+        reach_{{std::min(s.a.x, s.b.x), std::min(s.a.y, s.b.y)}, {std::max(s.a.x, s.b.x), std::max(s.a.y, s.b.y)}} {}
 
   // Adds the crossings of the polygons of one cell.
   void add_cell(const Landscape::Node& cell) {
     const PolygonSet& polys = cell.polygon_set();
     for (std::uint32_t i = 0; i < polys.size(); ++i) {
-      if (!clip_parameters(s_, cell.boxes[i])) continue;
+      if (!cell.boxes[i].overlaps(reach_) || !clip_parameters(s_, cell.boxes[i])) continue;
       const bool near_start = cell.boxes[i].contains(s_.a);
       const RingCrossings rc = segment_crossings(s_, polys[i], CrossingCulling::kNone, near_start);
       if (rc.inside_before) active_ = {&cell, i};
@@ -91,13 +95,23 @@ class Profile {
   // net count leaves it inside (the one before, unless it left).
   template <class F>
   bool group(std::size_t i, std::size_t j, F&& report) {
-    std::map<std::pair<const Landscape::Node*, std::uint32_t>, int> net;
-    for (std::size_t k = i; k < j; ++k)
-      net[{pending_[k].cell, pending_[k].polygon}] += pending_[k].c.entering ? 1 : -1;
+    // Net count per polygon: a handful of crossings share a parameter, a flat list will do.
+    struct Net {
+      Active polygon;
+      int count;
+    };
+    std::vector<Net> net;
+    for (std::size_t k = i; k < j; ++k) {
+      const Active a{pending_[k].cell, pending_[k].polygon};
+      auto it = std::find_if(net.begin(), net.end(), [&](const Net& n) { return n.polygon == a; });
+      if (it == net.end()) it = net.insert(net.end(), {a, 0});
+      it->count += pending_[k].c.entering ? 1 : -1;
+    }
     Active after = active_;
-    if (active_.cell && net[{active_.cell, active_.polygon}] < 0) after = {};
-    for (const auto& [key, count] : net)
-      if (count > 0) after = {key.first, key.second};
+    for (const Net& n : net)
+      if (n.polygon == active_ && n.count < 0) after = {};
+    for (const Net& n : net)
+      if (n.count > 0) after = n.polygon;
     const Active before = active_;
     active_ = after;
     if (material(before) == material(after)) return true;
@@ -125,6 +139,7 @@ class Profile {
   }
 
   Segment s_;
+  Box64 reach_;
   Active active_;
   std::vector<Event> pending_;
 };
@@ -136,7 +151,9 @@ void walk(const NodePtr& root, Point64 from, Point64 to, F&& report) {
   if (from == to) return;
   const Segment s{from, to};
   std::vector<CellOnSegment> cells;
-  cells_on(root, s, cells);
+  const Box64 reach{{std::min(from.x, to.x), std::min(from.y, to.y)},
+                    {std::max(from.x, to.x), std::max(from.y, to.y)}};
+  cells_on(root, s, reach, cells);
   std::stable_sort(cells.begin(), cells.end(), [](const CellOnSegment& x, const CellOnSegment& y) {
     return compare(x.t0, y.t0) < 0;
   });

@@ -120,6 +120,16 @@ TEST(Landscape, SplitsCrowdedCellsAndMergesThemBack) {
   for (const Polygon& h : holes) l.carve(PolygonSet{h});
   EXPECT_GT(l.stats().cells, 1u);
   EXPECT_TRUE(l.check().ok()) << l.check().problems.front();
+  // The cells tile the world: their areas add up to it, and they hold every polygon.
+  Int128 cell_area = 0;
+  std::size_t polygons = 0;
+  l.cells_in(l.world(), [&](const CellView& c) {
+    cell_area += Int128(c.box.max.x - c.box.min.x) * (c.box.max.y - c.box.min.y);
+    polygons += c.polygons;
+    return true;
+  });
+  EXPECT_EQ(cell_area, Int128(4096) * 4096);
+  EXPECT_EQ(polygons, l.stats().polygons);
   // Fill everything again: the cells shrink to one rectangle each and merge back to one.
   l.fill(PolygonSet{box_polygon(0, 0, 4096, 4096)}, 1);
   EXPECT_EQ(l.stats().cells, 1u);

@@ -134,6 +134,13 @@ struct PolygonView {
   Box64 cell;                        // the closed box of its cell
 };
 
+// One cell of the tree.
+struct CellView {
+  Box64 box;
+  std::uint32_t depth = 0;
+  std::size_t polygons = 0, vertices = 0;
+};
+
 // What an edit changed.
 struct ChangeSet {
   std::vector<PolygonId> removed;  // ids that no longer exist, ascending
@@ -213,6 +220,9 @@ class EDGELAND_EXPORT Landscape {
   // Calls visit for every polygon whose bounding box meets the closed box; stop by returning
   // false. Order: cell by cell in tree order, canonical order within a cell.
   void polygons_in(const Box64& box, const std::function<bool(const PolygonView&)>& visit) const;
+  // Calls visit for every cell whose closed box meets the closed box (empty cells included),
+  // in tree order; stop by returning false.
+  void cells_in(const Box64& box, const std::function<bool(const CellView&)>& visit) const;
   // Twice the area of a material (exact), over the whole world (material 0: the empty area).
   Int128 twice_area(Material m) const;
   LandscapeStats stats() const;
@@ -231,8 +241,11 @@ class EDGELAND_EXPORT Landscape {
   void set_checked(bool on) noexcept { checked_ = on; }
   bool checked() const noexcept { return checked_; }
   // Recording: every successful edit is appended to log() as a line of the landscape edit log
-  // format (README.md "Landscape edit logs"). Starting a recording writes the current state
-  // first (a `world` line, then one fill per material), which replays to the same regions.
+  // format (README.md "Landscape edit logs"). Started on a landscape that was never edited, the
+  // log replays to the same state bit for bit. Started later, it begins with the current state
+  // (a `world` line, then one fill per material): that replays to the same regions, but the
+  // replayed world has its own cells, so later edits may round differently there (within the
+  // accuracy contract) and the state hashes differ.
   void start_log();
   void stop_log() noexcept { logging_ = false; }
   bool logging() const noexcept { return logging_; }
