@@ -57,7 +57,7 @@ inline LandscapeConfig kd_tree_config() {
 }
 
 // Pinned on gcc 12 -O2; every other build must agree.
-inline constexpr std::uint64_t kQuadtreeHash = 0xeb9c337d6adba819ull;
+inline constexpr std::uint64_t kQuadtreeHash = 0x9aecf94db0dae87cull;
 inline constexpr std::uint64_t kKdTreeHash = 0xfc3e95d670d6a8c6ull;
 
 }  // namespace edgeland::pinned

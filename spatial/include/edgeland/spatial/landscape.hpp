@@ -69,8 +69,8 @@ struct LandscapeConfig {
   // merge_below < edge_cap is the hysteresis that keeps a digger going back and forth over a
   // cell line from splitting and merging on every edit. edge_cap >= 32: a cell crossed by a
   // boundary or two must not split (a long slanted boundary would split every cell along it).
-  std::uint32_t edge_cap = 128;
-  std::uint32_t merge_below = 48;
+  std::uint32_t edge_cap = 64;
+  std::uint32_t merge_below = 24;
   std::int64_t min_cell_size = 16;
   // >= 0: a uniform grid (thesis 4.4): the tree is built to this depth at once and never
   // splits or merges. -1: adaptive.
