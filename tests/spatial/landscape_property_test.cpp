@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include "cgal_reference.hpp"
+#include "edgeland/clip/relabel.hpp"
 #include "generators.hpp"
 #include "landscape_oracle.hpp"
 #include "polygon_set_helpers.hpp"
@@ -328,6 +329,65 @@ RC_GTEST_PROP(LandscapeProperty, SaveAndLoadGiveTheSameState, ()) {
   RC_ASSERT(back.state_hash() == l.state_hash());
   RC_ASSERT(flatten(back).size() == flatten(l).size());
   for (Material m = 0; m < 6; ++m) RC_ASSERT(back.twice_area(m) == l.twice_area(m));
+}
+
+}  // namespace
+}  // namespace edgeland::test
+
+namespace edgeland::test {
+namespace {
+
+// Seams (issue 15, "Seams leave no trace"): a convex shape filled into an empty world cut into
+// a grid comes out as pieces, one per cell it covers; re-united across the cell lines they must
+// form one polygon again without any rounding: every piece meets its neighbour exactly along
+// the line, with no gap, no sliver of empty space and no overlap.
+RC_GTEST_PROP(LandscapeSeams, PiecesAcrossCellLinesReuniteExactly, ()) {
+  const std::int64_t size = *rc::gen::element<std::int64_t>(64, 256, 4096);
+  LandscapeConfig grid;
+  grid.grid_depth = *rc::gen::inRange(1, 5);
+  grid.min_cell_size = 1;
+  Landscape l({{0, 0}, {size, size}}, kEmpty, grid);
+  l.set_checked(true);
+  const Polygon shape = *gen::convex({size / 2, size / 2}, size / 2);
+  l.fill(PolygonSet{shape}, 1);
+  PolygonSet pieces;
+  l.polygons_in(l.world(), [&](const PolygonView& v) {
+    pieces.push_back(*v.polygon);
+    return true;
+  });
+  RC_ASSERT(!pieces.empty());
+  const std::vector<RegionLabel> ones(pieces.size(), 1);
+  const LabeledClipResult united =
+      relabel(ValidSet(pieces), ones, ValidSet(), l.world(), {}, ClipOptions{.checked = true});
+  RC_ASSERT(united.stats.vertices_snapped == 0u);
+  RC_ASSERT(united.regions.set.polygons().size() == 1u);
+  RC_ASSERT(twice_area(united.regions.set.polygons()) == l.twice_area(1));
+}
+
+// A single edit rounds once, in a tree cut in advance as in one cell: the two worlds may differ
+// only within 1.5 units (the clipper's accuracy contract) of the shape's or the world's
+// boundary, and there both are within it of the exact answer.
+RC_GTEST_PROP(LandscapeSeams, ATreeAndOneCellDifferOnlyNearTheShape, ()) {
+  const LandscapeCase c = *landscape_case(1);
+  LandscapeConfig grid;
+  grid.grid_depth = *rc::gen::inRange(1, 4);
+  grid.min_cell_size = 1;
+  grid.tree = c.config.tree;
+  LandscapeConfig one_cell;
+  one_cell.edge_cap = 1u << 30;
+  one_cell.merge_below = 1u << 29;
+  const Landscape tree = run_case(c, grid), single = run_case(c, one_cell);
+  const std::vector<ExactRegion> shapes{ExactRegion::of(c.edits[0].shape)};
+  const ExactRegion world = ExactRegion::of(box_polygon(c.world));
+  const std::vector<FlatPolygon> tree_polys = flatten(tree), single_polys = flatten(single);
+  for (int k = 0; k < 150; ++k) {
+    const QPoint q{Rational(*gen::coord(4 * c.world.min.x - 8, 4 * c.world.max.x + 8), 4),
+                   Rational(*gen::coord(4 * c.world.min.y - 8, 4 * c.world.max.y + 8), 4)};
+    if (!clear_of_boundaries(q, shapes, world, Rational(3, 2))) continue;
+    const Material want = exact_material(c, shapes, world, q);
+    RC_ASSERT(material_brute(tree_polys, q) == want);
+    RC_ASSERT(material_brute(single_polys, q) == want);
+  }
 }
 
 }  // namespace
