@@ -13,7 +13,6 @@
 #include <sstream>
 #include <string>
 
-#include "cell_tracker.hpp"
 #include "commands.hpp"
 #include "demo_actions.hpp"
 #include "demo_editor.hpp"
@@ -43,8 +42,8 @@ struct DemoRun {
   double seconds = 0;
 };
 
-DemoRun run_edits(Landscape& landscape, CellTracker& cells, const DemoOptions& options) {
-  demo::DemoEditor editor(landscape, cells);
+DemoRun run_edits(Landscape& landscape, const DemoOptions& options) {
+  demo::DemoEditor editor(landscape);
   SplitMix64 random(options.seed);
   DemoRun run;
   const auto start = std::chrono::steady_clock::now();
@@ -109,11 +108,11 @@ int report_internal_error(const LandscapeInternalError& error, const std::filesy
   return kExitInternal;
 }
 
-int write_outputs(const Landscape& landscape, const CellTracker& cells,
+int write_outputs(const Landscape& landscape,
                   const DemoOptions& options) {
   const std::string png = (std::filesystem::path(options.out) / "landscape.png").string();
   try {
-    write_landscape_png(landscape, png, PngOptions{.cells = options.cells ? &cells.cells() : nullptr});
+    write_landscape_png(landscape, png, PngOptions{.cells = options.cells});
   } catch (const PngError& error) {
     std::cerr << "edgeland demo: " << error.what() << '\n';
     return kExitUnreadable;
@@ -142,18 +141,17 @@ int run_demo(const DemoOptions& options) {
   Landscape landscape(kDemoWorld);
   landscape.set_checked(!options.unchecked);
   if (!options.log.empty()) landscape.start_log();
-  CellTracker cells(landscape.world());
   std::cout << "edgeland demo: world 0 0 8192 8192, seed " << options.seed << ", checked mode "
             << (options.unchecked ? "off" : "on") << '\n';
   DemoRun run;
   try {
-    run = run_edits(landscape, cells, options);
+    run = run_edits(landscape, options);
   } catch (const LandscapeInternalError& failure) {
     return report_internal_error(failure, options.out);
   }
   const LandscapeReport report = landscape.check();
   print_summary(landscape, run, report);
-  const int written = write_outputs(landscape, cells, options);
+  const int written = write_outputs(landscape, options);
   return report.ok() ? written : kExitInternal;
 }
 

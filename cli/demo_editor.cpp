@@ -9,7 +9,7 @@ void DemoEditor::edit(log::LandscapeEditKind kind, const Ring& ring, Material ma
   const ClipOptions options{.checked = landscape_.checked()};
   const PolygonSet shape = import_polygons({{ring}}, options).polygons;
   if (shape.empty()) return;
-  cells_.apply(log::apply_edit(landscape_, kind, shape, material, from));
+  log::apply_edit(landscape_, kind, shape, material, from);
   ++edits_;
 }
 

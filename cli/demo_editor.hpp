@@ -1,9 +1,8 @@
 #pragma once
 // The landscape demo's hand on its world: turns each generated ring into a valid shape and
-// applies one edit with it, counting the edits and following the cells for the picture.
+// applies one edit with it, counting the edits.
 #include <cstddef>
 
-#include "cell_tracker.hpp"
 #include "edgeland/kernel/polygon.hpp"
 #include "edgeland/spatial/landscape.hpp"
 #include "landscape_log.hpp"
@@ -22,7 +21,7 @@ inline constexpr Material kCrystal = 8;
 
 class DemoEditor {
  public:
-  DemoEditor(Landscape& landscape, CellTracker& cells) : landscape_(landscape), cells_(cells) {}
+  explicit DemoEditor(Landscape& landscape) : landscape_(landscape) {}
 
   // Imports `ring` as an OGC polygon (clip.hpp import_polygons: integer rounding of the
   // trigonometry may leave a ring that is not strictly simple) and applies the edit of `kind`
@@ -44,7 +43,6 @@ class DemoEditor {
 
  private:
   Landscape& landscape_;
-  CellTracker& cells_;
   std::size_t edits_ = 0;
 };
 

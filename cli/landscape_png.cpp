@@ -67,7 +67,12 @@ void draw_material(cairo_t* cr, const Frame& f, const std::vector<const Polygon*
   cairo_fill(cr);
 }
 
-void draw_cells(cairo_t* cr, const Frame& f, const std::vector<Box64>& cells) {
+void draw_cells(cairo_t* cr, const Frame& f, const Landscape& landscape) {
+  std::vector<Box64> cells;
+  landscape.cells_in(landscape.world(), [&](const CellView& c) {
+    cells.push_back(c.box);
+    return true;
+  });
   cairo_new_path(cr);
   for (const Box64& b : cells) {
     cairo_rectangle(cr, f.x(b.min.x), f.y(b.max.y), f.x(b.max.x) - f.x(b.min.x),
@@ -100,7 +105,7 @@ void write_landscape_png(const Landscape& landscape, const std::string& path,
     const auto material = static_cast<Material>(m);
     draw_material(cr.get(), f, by_material[m], material_colour(material));
   }
-  if (options.cells) draw_cells(cr.get(), f, *options.cells);
+  if (options.cells) draw_cells(cr.get(), f, landscape);
   require_ok(cairo_status(cr.get()), path);
   cairo_surface_flush(surface.get());
   require_ok(cairo_surface_write_to_png(surface.get(), path.c_str()), path);

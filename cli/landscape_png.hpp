@@ -22,7 +22,7 @@ struct PngOptions {
   // (a 10 x 20 world is drawn 256 pixels high, an 8192 x 8192 one 2048 wide).
   int min_long_side = 256;
   int max_long_side = 2048;
-  const std::vector<Box64>* cells = nullptr;  // drawn as thin lines when given
+  bool cells = false;  // draw the cell lines (Landscape::cells_in) as thin lines
 };
 
 // Writes `path`. North (+y) is up. O(vertices + cells). Throws PngError.

@@ -7,7 +7,6 @@
 #include <optional>
 #include <string>
 
-#include "cell_tracker.hpp"
 #include "command.hpp"
 #include "edgeland/clip/clip.hpp"
 #include "landscape_dump.hpp"
@@ -47,14 +46,12 @@ struct Applied {
   std::optional<Failure> failure;
 };
 
-Applied apply_edits(Landscape& landscape, const std::vector<log::LandscapeEdit>& edits,
-                    CellTracker* tracker) {
+Applied apply_edits(Landscape& landscape, const std::vector<log::LandscapeEdit>& edits) {
   Applied out;
   const auto start = std::chrono::steady_clock::now();
   for (const log::LandscapeEdit& edit : edits) {
     try {
-      const ChangeSet changes = log::apply_edit(landscape, edit);
-      if (tracker) tracker->apply(changes);
+      log::apply_edit(landscape, edit);
       ++out.edits;
     } catch (const LandscapeInternalError& error) {
       out.failure = edit_failure(edit, error.what(), kExitInternal);
@@ -108,8 +105,7 @@ void print_json(nlohmann::ordered_json out, const std::optional<Failure>& failur
 }
 
 // --dump and --png; a file that cannot be written is exit 2.
-int write_outputs(const Landscape& landscape, const ReplayOptions& options,
-                  const CellTracker& tracker) {
+int write_outputs(const Landscape& landscape, const ReplayOptions& options) {
   if (options.dump == "-") {
     std::cout << landscape_dump(landscape) << std::flush;
   } else if (!options.dump.empty()) {
@@ -123,7 +119,7 @@ int write_outputs(const Landscape& landscape, const ReplayOptions& options,
   if (!options.png.empty()) {
     try {
       write_landscape_png(landscape, options.png,
-                          PngOptions{.cells = options.cells ? &tracker.cells() : nullptr});
+                          PngOptions{.cells = options.cells});
     } catch (const PngError& error) {
       std::cerr << "edgeland replay: " << error.what() << '\n';
       return kExitUnreadable;
@@ -152,8 +148,7 @@ int replay_landscape_log(std::string_view text, const ReplayOptions& options) {
   }
   Landscape landscape = log::make_landscape(*parsed.world);
   landscape.set_checked(options.check);
-  CellTracker tracker(landscape.world());
-  Applied applied = apply_edits(landscape, parsed.edits, options.cells ? &tracker : nullptr);
+  Applied applied = apply_edits(landscape, parsed.edits);
   std::optional<Failure> failure = applied.failure;
   if (!failure && parsed.error) {
     failure = Failure{parsed.error->line, parsed.error->what(), kExitUnreadable};
@@ -162,7 +157,7 @@ int replay_landscape_log(std::string_view text, const ReplayOptions& options) {
     if (std::optional<Failure> broken = final_check(landscape)) failure = broken;
   }
   print_json(summary(landscape, applied), failure);
-  const int written = write_outputs(landscape, options, tracker);
+  const int written = write_outputs(landscape, options);
   if (failure) return report_failure(options, *failure);
   return written;
 }

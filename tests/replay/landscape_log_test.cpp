@@ -1,6 +1,6 @@
 // Landscape edit logs (cli/landscape_log.hpp): the parser's typed line errors, the reading of
 // shapes and materials, the round trip of the library's own recording (Landscape::start_log)
-// through the parser to the same state_hash, and the cell tracker (cli/cell_tracker.hpp) against
+// through the parser to the same state_hash, and the cells Landscape::cells_in lists against
 // the landscape's own cell count.
 #include "landscape_log.hpp"
 
@@ -11,7 +11,6 @@
 #include <string>
 #include <tuple>
 
-#include "cell_tracker.hpp"
 #include "edgeland/clip/clip.hpp"
 #include "integer_trig.hpp"
 #include "splitmix64.hpp"
@@ -212,7 +211,7 @@ Ring random_ring(cli::SplitMix64& random, const Box64& area) {
 
 // `count` random edits of every kind (materials 0..6, so fill 0 and replace from or to 0 too),
 // each shape a valid set made by the OGC import; some reach past the world box.
-void random_edits(Landscape& l, std::uint64_t seed, int count, cli::CellTracker* cells = nullptr) {
+void random_edits(Landscape& l, std::uint64_t seed, int count) {
   cli::SplitMix64 random(seed);
   const Box64 area{{l.world().min.x - 50, l.world().min.y - 50},
                    {l.world().max.x + 50, l.world().max.y + 50}};
@@ -223,8 +222,7 @@ void random_edits(Landscape& l, std::uint64_t seed, int count, cli::CellTracker*
     const auto kind = static_cast<LandscapeEditKind>(random.between(0, 3));
     const auto material = static_cast<Material>(random.between(0, 6));
     const auto from = static_cast<Material>(random.between(0, 6));
-    const ChangeSet changes = apply_edit(l, kind, shape, material, from);
-    if (cells) cells->apply(changes);
+    apply_edit(l, kind, shape, material, from);
   }
 }
 
@@ -266,16 +264,27 @@ TEST(LandscapeLogRoundTrip, LogStartedAfterEditsReplaysToTheSameRegions) {
   }
 }
 
-// --- the cell tracker ----------------------------------------------------------------------
+// --- the cells (Landscape::cells_in), as --cells draws them ---------------------------------
 
-TEST(CellTracker, FollowsSplitsAndMergesToTheLandscapesCells) {
+std::vector<Box64> cells_of(const Landscape& l) {
+  std::vector<Box64> out;
+  l.cells_in(l.world(), [&](const CellView& c) {
+    out.push_back(c.box);
+    return true;
+  });
+  return out;
+}
+
+TEST(LandscapeCells, TileTheWorldAfterSplitsAndMerges) {
   Landscape l({{0, 0}, {800, 800}});
-  cli::CellTracker cells(l.world());
-  random_edits(l, 7, 300, &cells);
+  random_edits(l, 7, 300);
   // Carve everything: the cells merge back towards the root.
-  const ChangeSet cleared = l.carve(PolygonSet{{{0, 0}, {800, 0}, {800, 800}, {0, 800}}});
-  cells.apply(cleared);
-  random_edits(l, 8, 100, &cells);
+  l.carve(PolygonSet{{{0, 0}, {800, 0}, {800, 800}, {0, 800}}});
+  random_edits(l, 8, 100);
+  struct Cells {
+    std::vector<Box64> list;
+    const std::vector<Box64>& cells() const { return list; }
+  } cells{cells_of(l)};
 
   EXPECT_EQ(cells.cells().size(), l.stats().cells);
   // The boxes tile the world: disjoint interiors and areas summing to the world's.

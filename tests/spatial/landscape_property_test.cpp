@@ -337,10 +337,41 @@ RC_GTEST_PROP(LandscapeProperty, SaveAndLoadGiveTheSameState, ()) {
 namespace edgeland::test {
 namespace {
 
+// Whether every line x = k * step or y = k * step that meets the convex polygon cuts it along a
+// stretch at least w long (or misses it): then no cut is thin enough for snap rounding to
+// close it on one side. Exact: each crossing is a fraction of small integers.
+bool cuts_are_wide(const Polygon& p, std::int64_t w, std::int64_t step) {
+  for (int axis = 0; axis < 2; ++axis) {
+    auto along = [axis](Point64 v) { return axis == 0 ? v.x : v.y; };
+    auto across = [axis](Point64 v) { return axis == 0 ? v.y : v.x; };
+    std::int64_t lo = along(p[0]), hi = lo;
+    for (Point64 v : p) lo = std::min(lo, along(v)), hi = std::max(hi, along(v));
+    for (std::int64_t line = (lo / step) * step; line <= hi; line += step) {
+      if (line < lo) continue;
+      // The crossings as fractions num / den with den > 0; the cut is their spread.
+      std::vector<std::pair<Int128, Int128>> at;
+      for (std::size_t i = 0, n = p.size(); i < n; ++i) {
+        const Point64 a = p[i], b = p[(i + 1) % n];
+        if ((along(a) - line) * (along(b) - line) > 0 || along(a) == along(b)) continue;
+        Int128 num = Int128(across(a)) * (along(b) - along(a)) + Int128(line - along(a)) * (across(b) - across(a));
+        Int128 den = along(b) - along(a);
+        if (den < 0) num = -num, den = -den;
+        at.push_back({num, den});
+      }
+      for (const auto& [n1, d1] : at)
+        for (const auto& [n2, d2] : at)
+          if (n1 * d2 > n2 * d1 && n1 * d2 - n2 * d1 < Int128(w) * d1 * d2) return false;
+    }
+  }
+  return true;
+}
+
 // Seams (issue 15, "Seams leave no trace"): a convex shape filled into an empty world cut into
-// a grid comes out as pieces, one per cell it covers; re-united across the cell lines they must
-// form one polygon again without any rounding: every piece meets its neighbour exactly along
-// the line, with no gap, no sliver of empty space and no overlap.
+// a grid comes out as pieces, one per cell it covers; re-united across the cell lines they form
+// one polygon again without any rounding: every piece meets its neighbour exactly along the
+// line, with no gap, no sliver of empty space and no overlap. (A part of a shape thinner than a
+// unit where a line cuts it may round away on one side: snap rounding, not a seam; such shapes
+// are left out.)
 RC_GTEST_PROP(LandscapeSeams, PiecesAcrossCellLinesReuniteExactly, ()) {
   const std::int64_t size = *rc::gen::element<std::int64_t>(64, 256, 4096);
   LandscapeConfig grid;
@@ -349,6 +380,9 @@ RC_GTEST_PROP(LandscapeSeams, PiecesAcrossCellLinesReuniteExactly, ()) {
   Landscape l({{0, 0}, {size, size}}, kEmpty, grid);
   l.set_checked(true);
   const Polygon shape = *gen::convex({size / 2, size / 2}, size / 2);
+  const std::int64_t step = std::max<std::int64_t>(1, size >> grid.grid_depth);
+  RC_PRE(cuts_are_wide(shape, 2, step));
+  RC_LOG() << "grid depth " << grid.grid_depth << " size " << size << " shape " << to_wkt(shape) << "\n";
   l.fill(PolygonSet{shape}, 1);
   PolygonSet pieces;
   l.polygons_in(l.world(), [&](const PolygonView& v) {
