@@ -4,6 +4,7 @@
 
 #include <sstream>
 
+#include "check.hpp"  // spatial/src: the error checked mode throws
 #include "edgeland/spatial/landscape.hpp"
 #include "polygon_set_helpers.hpp"
 
@@ -271,6 +272,35 @@ TEST(LandscapeLimits, ConfigurationsThatCannotWorkAreRefused) {
   LandscapeConfig deep_grid;
   deep_grid.grid_depth = 11;
   EXPECT_THROW(Landscape({{0, 0}, {100, 100}}, kEmpty, deep_grid), InvalidConfig);
+}
+
+}  // namespace
+}  // namespace edgeland::test
+
+
+namespace edgeland::test {
+namespace {
+
+// What a checked-mode failure carries (check.hpp internal_error, thrown by every failed check):
+// the world before the edit as a save file, and a log replaying to it followed by the edit.
+TEST(LandscapeInternalError, CarriesTheStateAndAReplayableLog) {
+  Landscape recorded({{0, 0}, {1000, 1000}}, 1);
+  recorded.start_log();
+  recorded.carve(PolygonSet{ngon({300, 300}, 80, 32)});
+  recorded.fill(PolygonSet{ngon({600, 600}, 120, 32)}, 2);
+  const std::string edit = "carve MULTIPOLYGON (((0 0, 10 0, 10 10, 0 10, 0 0)))\n";
+  const LandscapeInternalError e = detail::internal_error(recorded, "a test", edit);
+  std::istringstream state(e.state);
+  EXPECT_EQ(Landscape::load(state).state_hash(), recorded.state_hash());
+  EXPECT_EQ(e.log, recorded.log() + edit);
+  EXPECT_EQ(e.log.rfind("world 0 0 1000 1000 1\n", 0), 0u);
+  EXPECT_NE(std::string(e.what()).find("a test"), std::string::npos);
+  // Not recording: the world and one fill per material, then the edit.
+  Landscape quiet({{0, 0}, {1000, 1000}}, 1);
+  quiet.carve(PolygonSet{ngon({300, 300}, 80, 32)});
+  const LandscapeInternalError q = detail::internal_error(quiet, "a test", edit);
+  EXPECT_EQ(q.log.rfind("world 0 0 1000 1000\nfill 1 MULTIPOLYGON", 0), 0u);
+  EXPECT_EQ(q.log.substr(q.log.size() - edit.size()), edit);
 }
 
 }  // namespace
