@@ -49,6 +49,7 @@ std::optional<ParameterRange> clip_parameters(const Segment& s, const Box64& box
 }
 
 bool segment_meets_open_box(const Segment& s, const Box64& box) noexcept {
+  if (box.min.x >= box.max.x || box.min.y >= box.max.y) return false;  // no interior
   if (std::max(s.a.x, s.b.x) <= box.min.x || std::min(s.a.x, s.b.x) >= box.max.x) return false;
   if (std::max(s.a.y, s.b.y) <= box.min.y || std::min(s.a.y, s.b.y) >= box.max.y) return false;
   if (s.a == s.b) return true;  // inside both open ranges

@@ -23,7 +23,8 @@ EDGELAND_EXPORT std::optional<ParameterRange> clip_parameters(const Segment& s, 
 
 // Whether the closed segment has a point in the open box (min.x, max.x) x (min.y, max.y):
 // separating axes x, y and the segment's normal (a segment touching the box only along its
-// boundary or at a corner does not meet it). O(1).
+// boundary or at a corner does not meet it; a box of zero width or height has no interior).
+// O(1).
 EDGELAND_EXPORT bool segment_meets_open_box(const Segment& s, const Box64& box) noexcept;
 
 // Whether the interiors of the box and of a simple ring (either orientation) share a point: an
