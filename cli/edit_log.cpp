@@ -203,13 +203,7 @@ std::string fnv1a64_hex(std::string_view text) {
     hash ^= static_cast<unsigned char>(c);
     hash *= 0x100000001b3ull;  // FNV-1a 64 prime
   }
-  static constexpr char kHex[] = "0123456789abcdef";
-  std::string out(16, '0');
-  for (int i = 15; i >= 0; --i) {
-    out[static_cast<std::size_t>(i)] = kHex[hash & 0xf];
-    hash >>= 4;
-  }
-  return out;
+  return hex16(hash);
 }
 
 std::string state_hash(const PolygonSet& set) { return fnv1a64_hex(to_wkt(set)); }

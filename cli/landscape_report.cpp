@@ -1,16 +1,10 @@
 #include "landscape_report.hpp"
 
+#include "log_text.hpp"
+
 namespace edgeland::cli {
 
-std::string state_hash_hex(std::uint64_t hash) {
-  static constexpr char kHex[] = "0123456789abcdef";
-  std::string out(16, '0');
-  for (int i = 15; i >= 0; --i) {
-    out[static_cast<std::size_t>(i)] = kHex[hash & 0xf];
-    hash >>= 4;
-  }
-  return out;
-}
+std::string state_hash_hex(std::uint64_t hash) { return log::hex16(hash); }
 
 std::vector<std::pair<Material, Int128>> material_areas(const Landscape& landscape) {
   std::vector<std::pair<Material, Int128>> out;

@@ -1,6 +1,7 @@
 #pragma once
 // Line and word splitting shared by the two log readers (edit_log.hpp, landscape_log.hpp):
 // both take one command per line, words separated by spaces or tabs, a final '\r' ignored.
+#include <cstdint>
 #include <string>
 #include <string_view>
 
@@ -23,6 +24,9 @@ std::string_view take_line(std::string_view& text) noexcept;
 // Removes the first word of `rest` (up to the first blank) and returns it; `rest` keeps what
 // follows, without its leading blanks.
 std::string_view take_word(std::string_view& rest) noexcept;
+
+// A 64-bit hash as 16 lower-case hex digits (the state hashes both replays print).
+std::string hex16(std::uint64_t value);
 
 // A printable excerpt of a word for an error message (the line may be binary junk): at most
 // 24 characters, other bytes shown as '?'.

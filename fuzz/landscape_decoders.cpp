@@ -137,24 +137,50 @@ class EditDecoder {
   Box64 world_;
 };
 
+// One edit as decoded: what to do, with which materials and shape, and whether to take a
+// snapshot of the landscape before it.
+struct DecodedEdit {
+  int kind;  // 0 carve, 1 fill, 2 fill_empty, 3 replace
+  Material a, b;
+  PolygonSet shape;
+  bool snapshot;
+};
+
+DecodedEdit next_edit(Provider& in, EditDecoder& decode, const Landscape& l) {
+  DecodedEdit e;
+  e.kind = in.ConsumeIntegralInRange(0, 3);
+  e.a = in.ConsumeIntegralInRange<Material>(e.kind == 3 ? 0 : 1, 4);
+  e.b = in.ConsumeIntegralInRange<Material>(0, 4);
+  e.shape = decode.shape(l);
+  e.snapshot = in.ConsumeBool();
+  return e;
+}
+
+// The world and configuration an input starts with.
+Landscape decode_world(Provider& in, EditDecoder& decode) {
+  const Box64 world = decode.world();
+  const Material fill = in.ConsumeIntegralInRange<Material>(0, 3);
+  return Landscape(world, fill, decode.config(), kLimits);
+}
+
 // ---- checks -----------------------------------------------------------------------------------
 
-std::string edit_text(int kind, const PolygonSet& shape, Material a, Material b) {
-  const std::string wkt = to_wkt(shape);
-  switch (kind) {
+std::string edit_text(const DecodedEdit& d) {
+  const std::string wkt = to_wkt(d.shape);
+  switch (d.kind) {
     case 0: return "carve " + wkt;
-    case 1: return "fill " + std::to_string(a) + " " + wkt;
-    case 2: return "fill_empty " + std::to_string(a) + " " + wkt;
-    default: return "replace " + std::to_string(a) + " " + std::to_string(b) + " " + wkt;
+    case 1: return "fill " + std::to_string(d.a) + " " + wkt;
+    case 2: return "fill_empty " + std::to_string(d.a) + " " + wkt;
+    default: return "replace " + std::to_string(d.a) + " " + std::to_string(d.b) + " " + wkt;
   }
 }
 
-void apply(Landscape& l, int kind, const PolygonSet& shape, Material a, Material b) {
-  switch (kind) {
-    case 0: l.carve(shape); break;
-    case 1: l.fill(shape, a); break;
-    case 2: l.fill_empty(shape, a); break;
-    default: l.replace(shape, a, b); break;
+void apply(Landscape& l, const DecodedEdit& d) {
+  switch (d.kind) {
+    case 0: l.carve(d.shape); break;
+    case 1: l.fill(d.shape, d.a); break;
+    case 2: l.fill_empty(d.shape, d.a); break;
+    default: l.replace(d.shape, d.a, d.b); break;
   }
 }
 
@@ -218,28 +244,22 @@ std::uint64_t fnv1a64(const std::uint8_t* data, std::size_t n) {
 std::optional<Finding> run_edit_sequence(const std::uint8_t* data, std::size_t size) {
   Provider in(data, size);
   EditDecoder decode(in);
-  const Box64 world = decode.world();
-  const Material fill = in.ConsumeIntegralInRange<Material>(0, 3);
-  const LandscapeConfig config = decode.config();
-  Landscape l(world, fill, config, kLimits);
+  Landscape l = decode_world(in, decode);
   l.set_checked(true);
   l.start_log();
   Landscape snapshot = l;
   std::uint64_t snapshot_hash = l.state_hash();
   for (int i = 0; i < kMaxEdits && in.remaining_bytes() > 0; ++i) {
-    const int kind = in.ConsumeIntegralInRange(0, 3);
-    const Material a = in.ConsumeIntegralInRange<Material>(kind == 3 ? 0 : 1, 4);
-    const Material b = in.ConsumeIntegralInRange<Material>(0, 4);
-    const PolygonSet shape = decode.shape(l);
-    if (in.ConsumeBool()) {
+    const DecodedEdit d = next_edit(in, decode, l);
+    if (d.snapshot) {
       snapshot = l;
       snapshot_hash = l.state_hash();
     }
     const std::uint64_t before = l.state_hash();
     try {
-      apply(l, kind, shape, a, b);
+      apply(l, d);
     } catch (const LandscapeInternalError& e) {
-      return Finding{std::string(e.what()) + "\n  edit: " + edit_text(kind, shape, a, b), e.log};
+      return Finding{std::string(e.what()) + "\n  edit: " + edit_text(d), e.log};
     } catch (const InvalidInput&) {
       if (l.state_hash() != before) return finding("a rejected shape changed the landscape", l);
     } catch (const CoordinateOutOfRange&) {
@@ -247,7 +267,7 @@ std::optional<Finding> run_edit_sequence(const std::uint8_t* data, std::size_t s
     } catch (const LimitExceeded&) {
       if (l.state_hash() != before) return finding("an edit over a limit changed the landscape", l);
     } catch (const std::exception& e) {
-      return finding(std::string("an edit threw ") + e.what() + "\n  edit: " + edit_text(kind, shape, a, b), l);
+      return finding(std::string("an edit threw ") + e.what() + "\n  edit: " + edit_text(d), l);
     }
   }
   const LandscapeReport report = l.check();
@@ -289,25 +309,19 @@ std::string edit_sequence_log(const std::uint8_t* data, std::size_t size) {
   // Replays the decoding with recording on; a rejected edit becomes a comment.
   Provider in(data, size);
   EditDecoder decode(in);
-  const Box64 world = decode.world();
-  const Material fill = in.ConsumeIntegralInRange<Material>(0, 3);
-  Landscape l(world, fill, decode.config(), kLimits);
+  Landscape l = decode_world(in, decode);
   l.start_log();
   std::string text = l.log();
   for (int i = 0; i < kMaxEdits && in.remaining_bytes() > 0; ++i) {
-    const int kind = in.ConsumeIntegralInRange(0, 3);
-    const Material a = in.ConsumeIntegralInRange<Material>(kind == 3 ? 0 : 1, 4);
-    const Material b = in.ConsumeIntegralInRange<Material>(0, 4);
-    const PolygonSet shape = decode.shape(l);
-    in.ConsumeBool();
+    const DecodedEdit d = next_edit(in, decode, l);
     try {
-      apply(l, kind, shape, a, b);
+      apply(l, d);
       const std::string full = l.log();
       text += full.substr(std::min(text.size(), full.size()));
     } catch (const std::exception& e) {
       std::string why = e.what();
       std::replace(why.begin(), why.end(), '\n', ' ');
-      text += "# rejected (" + why + "): " + edit_text(kind, shape, a, b) + "\n";
+      text += "# rejected (" + why + "): " + edit_text(d) + "\n";
     }
   }
   return text;
