@@ -21,7 +21,6 @@
 #include <algorithm>
 #include <cstddef>
 #include <iterator>
-#include <memory_resource>
 #include <optional>
 #include <set>
 #include <vector>
@@ -30,6 +29,7 @@
 #include "edgeland/kernel/point.hpp"
 #include "edgeland/kernel/polygon.hpp"
 #include "edgeland/kernel/validate.hpp"
+#include "node_arena.hpp"
 #include "validate_event_sort.hpp"
 #include "validate_exact.hpp"
 
@@ -158,9 +158,9 @@ std::optional<Violation> run_sweep(const std::vector<SweepEdge>& edges, Check& c
 
   Point64 q{};
   // Status nodes come from one arena released at the end: no allocator call per event.
-  std::pmr::monotonic_buffer_resource arena;
-  using Status = std::pmr::set<std::size_t, StatusOrder>;
-  Status status(StatusOrder(edges.data(), &q), &arena);
+  NodeArena arena;
+  using Status = std::set<std::size_t, StatusOrder, ArenaAllocator<std::size_t>>;
+  Status status(StatusOrder(edges.data(), &q), ArenaAllocator<std::size_t>(&arena));
   std::vector<Status::iterator> handle(n, status.end());
   std::vector<std::size_t> ending, through, starting, block;
   const auto through_q = [&](std::size_t e) { return side_of_point(edges[e], q) == 0; };
