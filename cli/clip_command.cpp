@@ -1,9 +1,11 @@
 // `edgeland clip --op OP [--fill-rule RULE] [--check] SUBJECT CLIP`: a boolean operation on two
 // WKT operands, printed as one WKT MULTIPOLYGON of CCW polygons without holes.
+#include <cctype>
 #include <iostream>
 #include <map>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "commands.hpp"
 #include "edgeland/clip/clip.hpp"
@@ -14,7 +16,21 @@
 namespace edgeland::cli {
 namespace {
 
+// IsMember has accepted the name in any case; the tables hold it in lower case.
+std::string lower(std::string name) {
+  for (char& c : name) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return name;
+}
+
+template <class Value>
+std::vector<std::string> names_of(const std::map<std::string, Value>& table) {
+  std::vector<std::string> names;
+  for (const auto& entry : table) names.push_back(entry.first);
+  return names;
+}
+
 struct ClipCommandOptions {
+  std::string op_name, fill_rule_name;  // as given; --op and --fill-rule set the enums below
   ClipOp op = ClipOp::kUnion;
   bool has_fill_rule = false;
   FillRule fill_rule = FillRule::kNonZero;
@@ -93,29 +109,36 @@ Command add_clip_command(CLI::App& parent) {
       "clip",
       "Boolean operation on two WKT POLYGON/MULTIPOLYGON operands (integer coordinates); prints "
       "the result as one WKT MULTIPOLYGON of counter-clockwise polygons without holes.");
-  const std::map<std::string, ClipOp> ops{{"union", ClipOp::kUnion},
-                                          {"intersection", ClipOp::kIntersection},
-                                          {"difference", ClipOp::kDifference},
-                                          {"xor", ClipOp::kXor}};
-  const std::map<std::string, FillRule> rules{{"evenodd", FillRule::kEvenOdd},
-                                              {"nonzero", FillRule::kNonZero},
-                                              {"positive", FillRule::kPositive},
-                                              {"negative", FillRule::kNegative}};
-  app->add_option("--op", o->op, "union, intersection, difference or xor")
+  // Options take names only: a transformer over the enums would print their values as raw
+  // bytes in --help and in its errors.
+  static const std::map<std::string, ClipOp> ops{{"union", ClipOp::kUnion},
+                                                 {"intersection", ClipOp::kIntersection},
+                                                 {"difference", ClipOp::kDifference},
+                                                 {"xor", ClipOp::kXor}};
+  static const std::map<std::string, FillRule> rules{{"evenodd", FillRule::kEvenOdd},
+                                                     {"nonzero", FillRule::kNonZero},
+                                                     {"positive", FillRule::kPositive},
+                                                     {"negative", FillRule::kNegative}};
+  app->add_option("--op", o->op_name, "union, intersection, difference or xor")
       ->required()
-      ->transform(CLI::CheckedTransformer(ops, CLI::ignore_case));
-  app->add_option("--fill-rule", o->fill_rule,
+      ->check(CLI::IsMember(names_of(ops), CLI::ignore_case))
+      ->each([o](const std::string& name) { o->op = ops.at(lower(name)); });
+  app->add_option("--fill-rule", o->fill_rule_name,
                   "Fill all rings of each operand by this rule (evenodd, nonzero, positive, "
                   "negative) instead of reading them as OGC polygons")
-      ->transform(CLI::CheckedTransformer(rules, CLI::ignore_case))
-      ->each([o](const std::string&) { o->has_fill_rule = true; });
+      ->check(CLI::IsMember(names_of(rules), CLI::ignore_case))
+      ->each([o](const std::string& name) {
+        o->fill_rule = rules.at(lower(name));
+        o->has_fill_rule = true;
+      });
   app->add_flag("--check", o->check, "Validate every intermediate and final result");
   app->add_flag("--stats", o->stats, "Print the operation's statistics to standard error");
   app->add_option("SUBJECT", o->subject_path, "WKT file, or - for standard input")->required();
   app->add_option("CLIP", o->clip_path, "WKT file, or - for standard input")->required();
   app->footer(
       "Exit status: 0 with the result on stdout; 2 and a one-line message on unreadable input; "
-      "3 if a checked result failed validation (a bug: the message carries the inputs).");
+      "3 if a checked result failed validation (a bug: the message carries the inputs); 4 out of "
+      "memory.");
   return {app, [o] { return run_clip(*o); }};
 }
 

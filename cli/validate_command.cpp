@@ -1,5 +1,6 @@
 // `edgeland validate FILE`: reads a WKT POLYGON or MULTIPOLYGON and checks it against the
 // kernel's invariants (kernel/validate.hpp). A MULTIPOLYGON is checked as a polygon set.
+#include <cstdint>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -24,7 +25,7 @@ bool report_holes(const WktGeometry& geometry) {
   for (std::size_t i = 0; i < geometry.polygons.size(); ++i) {
     const std::size_t holes = geometry.polygons[i].holes.size();
     if (holes == 0) continue;
-    std::cout << "invalid: polygon " << i << " has " << holes
+    std::cout << "invalid: holes: polygon " << i << " has " << holes
               << " hole(s): holes are not part of the kernel model; use `edgeland clip` "
                  "(normalize) to import them\n";
     return true;
@@ -32,14 +33,27 @@ bool report_holes(const WktGeometry& geometry) {
   return false;
 }
 
-ValidationReport validate_geometry(const WktGeometry& geometry) {
+ValidationReport validate_geometry(const WktGeometry& geometry, std::size_t max_violations) {
   if (geometry.type == WktGeometry::Type::kPolygon) {
-    return validate(geometry.polygons.front().exterior);
+    return validate(geometry.polygons.front().exterior, max_violations);
   }
   PolygonSet set;
   set.reserve(geometry.polygons.size());
   for (const WktPolygon& polygon : geometry.polygons) set.push_back(polygon.exterior);
-  return validate(set);
+  return validate(set, max_violations);
+}
+
+// The first violation, and how many more the check found. It stops at kDefaultMaxViolations,
+// so a full report says that there may be others beyond it.
+void print_first(const ValidationReport& report) {
+  std::cout << "invalid: " << report.violations.front().describe();
+  const std::size_t more = report.violations.size() - 1;
+  if (report.violations.size() >= kDefaultMaxViolations) {
+    std::cout << " (+" << more << " more, and the check stopped there; --all lists every one)";
+  } else if (more > 0) {
+    std::cout << " (+" << more << " more; --all lists them)";
+  }
+  std::cout << '\n';
 }
 
 int run_validate(const ValidateOptions& options) {
@@ -56,21 +70,19 @@ int run_validate(const ValidateOptions& options) {
   }
   if (report_holes(geometry)) return kExitInvalid;
 
-  const ValidationReport report = validate_geometry(geometry);
+  // --all: no limit (each further violation costs one more sweep).
+  const ValidationReport report =
+      validate_geometry(geometry, options.all ? SIZE_MAX : kDefaultMaxViolations);
   if (report.ok()) {
     std::cout << "valid\n";
     return kExitOk;
   }
-  if (options.all) {
-    for (const Violation& violation : report.violations) {
-      std::cout << "invalid: " << violation.describe() << '\n';
-    }
-  } else {
-    std::cout << "invalid: " << report.violations.front().describe();
-    if (report.violations.size() > 1) {
-      std::cout << " (+" << report.violations.size() - 1 << " more; --all lists them)";
-    }
-    std::cout << '\n';
+  if (!options.all) {
+    print_first(report);
+    return kExitInvalid;
+  }
+  for (const Violation& violation : report.violations) {
+    std::cout << "invalid: " << violation.describe() << '\n';
   }
   return kExitInvalid;
 }

@@ -1,12 +1,14 @@
 #!/usr/bin/env bash
 # CI's fuzz step (.ci/run, last step): every fuzz target for a short budget through
-# fuzz/campaign (builds build/fuzz with clang 14 + ASan + UBSan), then the whole regression
-# corpus and the seed corpora run once through the sanitized fuzz binaries. (The gcc build
-# already replays the same corpus in ctest, label `regress`.)
-# EDGELAND_FUZZ_CI_SECONDS sets the budget per target (default 60). Exit 1 on any crash.
+# fuzz/campaign (builds build/fuzz with clang 14 + ASan + UBSan, or uses the build given by
+# EDGELAND_FUZZ_BUILD_DIR: CI passes build/sanitize, which scripts/test_sanitizers.sh configures
+# with the fuzz targets), then the whole regression corpus and the seed corpora run once
+# through the sanitized fuzz binaries. (The gcc build replays the same corpus in ctest, label
+# `regress`; the sanitizer pass leaves the seed replay to this step.)
+# EDGELAND_FUZZ_CI_SECONDS sets the budget per target (default 30). Exit 1 on any crash.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-seconds="${EDGELAND_FUZZ_CI_SECONDS:-60}"
+seconds="${EDGELAND_FUZZ_CI_SECONDS:-30}"
 build="${EDGELAND_FUZZ_BUILD_DIR:-build/fuzz}"
 passed=0 failed=0
 for target in clip_pair clip_sequence normalize parse edit_sequence load; do

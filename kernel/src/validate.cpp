@@ -46,11 +46,13 @@ ValidationReport validate_polygons(std::span<const Polygon> polygons, std::size_
     // One sweep finds one overlapping pair; drop the later member and look again, so each
     // further sweep can only report a new pair. Members found disjoint by the one-sweep
     // acceptance have no pair left to report (when every ring is valid, the acceptance of
-    // them all has just failed: no need to try it again).
-    bool tried = valid_rings.size() == polygons.size();
+    // them all has just failed: no need to try it again). It is tried once only: after a
+    // pair is found, more pairs are the likely case (a file of copies), where trying it before
+    // every reporting sweep doubled the work.
+    if (valid_rings.size() < polygons.size() && detail::accepted_by_one_sweep(polygons, valid_rings)) {
+      return ValidationReport{sink.take()};
+    }
     while (!sink.full()) {
-      if (!tried && detail::accepted_by_one_sweep(polygons, valid_rings)) break;
-      tried = false;
       const auto v = detail::find_overlap(edges);
       if (!v) break;
       sink.add(*v);
