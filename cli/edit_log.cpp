@@ -98,7 +98,7 @@ std::optional<Step> parse_log_line(std::string_view raw, std::size_t line_number
     step.shape = read_wkt(wkt);
   } catch (const WktError& error) {
     LogError log_error(LogErrorKind::kBadShape, line_number,
-                       std::string(keyword->word) + ": " + error.what());
+                       std::string(keyword->word) + ": " + shape_error_message(wkt, error.what()));
     log_error.wkt_error = error.kind;
     throw log_error;
   }

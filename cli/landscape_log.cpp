@@ -85,7 +85,7 @@ WktGeometry parse_shape(std::string_view wkt, std::string_view keyword, std::siz
     return read_wkt(wkt);
   } catch (const WktError& error) {
     LandscapeLogError log_error(LandscapeLogErrorKind::kBadShape, line,
-                                std::string(keyword) + ": " + error.what());
+                                std::string(keyword) + ": " + shape_error_message(wkt, error.what()));
     log_error.wkt_error = error.kind;
     throw log_error;
   }

@@ -44,4 +44,15 @@ std::string hex16(std::uint64_t value) {
   return out;
 }
 
+std::string shape_error_message(std::string_view wkt, std::string_view reader_message) {
+  std::int64_t open = 0;
+  for (const char c : wkt) open += c == '(' ? 1 : c == ')' ? -1 : 0;
+  std::string message(reader_message);
+  if (open > 0) {
+    message += " (the line ends with " + std::to_string(open) +
+               " parenthesis(es) open: a step's shape must fit on its one line)";
+  }
+  return message;
+}
+
 }  // namespace edgeland::log

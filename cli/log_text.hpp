@@ -32,4 +32,9 @@ std::string hex16(std::uint64_t value);
 // 24 characters, other bytes shown as '?'.
 std::string printable_excerpt(std::string_view word);
 
+// The message for a step's shape the WKT reader refused, given the reader's own message: when
+// the line ends with parentheses still open, the shape most likely went on over the next line,
+// so the message says that a shape must fit on its step's line.
+std::string shape_error_message(std::string_view wkt, std::string_view reader_message);
+
 }  // namespace edgeland::log

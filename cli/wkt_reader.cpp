@@ -70,7 +70,12 @@ class RingConverter {
       out.push_back(p);
     }
     const std::size_t last = in.size() - 1;
-    if (in.size() < 2 || out.front() != out.back()) {
+    if (in.size() < 2) {  // two points close a ring (of one vertex, for validate to refuse)
+      fail(WktErrorKind::kTooFewPoints, polygon, ring, last, out.back(), first_point + last,
+           "ring has " + std::to_string(in.size()) +
+               " point(s); a ring needs at least 3 points, the last repeating the first");
+    }
+    if (out.front() != out.back()) {
       fail(WktErrorKind::kUnclosedRing, polygon, ring, last, out.back(), first_point + last,
            "ring is not closed; its last point must repeat its first point (" +
                std::to_string(out.front().x) + " " + std::to_string(out.front().y) + ")");
@@ -133,6 +138,8 @@ const char* wkt_error_kind_name(WktErrorKind kind) noexcept {
       return "unsupported-geometry";
     case WktErrorKind::kEmptyGeometry:
       return "empty-geometry";
+    case WktErrorKind::kTooFewPoints:
+      return "too-few-points";
     case WktErrorKind::kUnclosedRing:
       return "unclosed-ring";
     case WktErrorKind::kCoordinateOutOfRange:
@@ -161,11 +168,11 @@ WktGeometry read_wkt(std::string_view text) {
       out.type = WktGeometry::Type::kPolygon;
       BgPolygon parsed;
       bg::read_wkt(checked.canonical, parsed);
-      // read_wkt gives "POLYGON EMPTY" an empty exterior ring; a polygon needs one.
-      if (parsed.outer().empty() && parsed.inners().empty()) {
-        WktError error(WktErrorKind::kEmptyGeometry, "POLYGON EMPTY has no ring");
-        error.polygon = 0;
-        throw error;
+      // read_wkt gives "POLYGON EMPTY" an empty exterior ring: the empty set (OGC), read as
+      // a set without members, since there is no polygon to name.
+      if (checked.empty_polygon) {
+        out.type = WktGeometry::Type::kMultiPolygon;
+        return out;
       }
       out.polygons.push_back(convert_polygon(parsed, 0, rings));
     }

@@ -9,9 +9,12 @@
 //   * every coordinate is an integer literal ("1.5", "1e3", "0x10" are rejected), and every
 //     point has exactly two of them (no stray 3rd coordinate, no missing y, no Z/M);
 //   * no empty points, stray commas or missing commas (",,", "(,", ",)", ")(") and no "()";
-//   * every ring is closed (its last point repeats its first) and every coordinate satisfies
-//     |c| <= kCoordBound (the error names the polygon, ring and vertex).
-// "MULTIPOLYGON EMPTY" is an empty set; "POLYGON EMPTY" is rejected (a polygon needs a ring).
+//   * every ring has at least 3 points and is closed (its last point repeats its first), and
+//     every coordinate satisfies |c| <= kCoordBound (the error names the polygon, ring and
+//     vertex).
+// As in OGC, "MULTIPOLYGON EMPTY", "POLYGON EMPTY" and EMPTY members of a MULTIPOLYGON are the
+// empty set (POLYGON EMPTY reads as a MULTIPOLYGON without members: there is no polygon). A
+// UTF-8 byte-order mark before the text is skipped.
 // Nothing else about the shape is checked here: simplicity, orientation and vertex count are
 // the kernel's validate() (kernel/validate.hpp).
 //
@@ -38,6 +41,7 @@ enum class WktErrorKind : std::uint8_t {
   kWrongDimension,        // a point without exactly two coordinates, or a Z/M qualifier
   kUnsupportedGeometry,   // a geometry other than POLYGON / MULTIPOLYGON
   kEmptyGeometry,         // "POLYGON EMPTY" or "()"
+  kTooFewPoints,          // a ring of fewer than 3 points ("POLYGON ((0 0))")
   kUnclosedRing,          // a ring whose last point is not its first
   kCoordinateOutOfRange,  // |c| > kCoordBound
 };

@@ -28,9 +28,13 @@ bool equals_upper(std::string_view word, std::string_view upper) {
 
 // Quotes a token for a message, cut short so a megabyte of junk stays a one-line message.
 std::string quoted(std::string_view token) {
+  // Appended piece by piece: g++ 12 warns (-Wrestrict, a false positive) on "'" + string.
   constexpr std::size_t kMaxShown = 32;
-  if (token.size() <= kMaxShown) return "'" + std::string(token) + "'";
-  return "'" + std::string(token.substr(0, kMaxShown)) + "...'";
+  const bool cut = token.size() > kMaxShown;
+  std::string out;
+  out.reserve(kMaxShown + 5);
+  out.append(1, '\'').append(token.substr(0, kMaxShown)).append(cut ? "...'" : "'");
+  return out;
 }
 
 [[noreturn]] void fail(WktErrorKind kind, TextPosition at, const std::string& what) {
@@ -228,15 +232,63 @@ std::string describe_position(TextPosition at) {
   return "line " + std::to_string(at.line) + ", column " + std::to_string(at.column);
 }
 
-CheckedText check_tokens(std::string_view text) {
+namespace {
+
+// OGC: an EMPTY member of a MULTIPOLYGON is the empty set, so it is dropped with one comma
+// beside it (read_wkt takes none); with no member left the text is MULTIPOLYGON EMPTY.
+std::vector<Token> drop_empty_members(const std::vector<Token>& tokens) {
+  std::vector<Token> kept;
+  kept.reserve(tokens.size());
+  int depth = 0;
+  bool dropped = false;
+  for (std::size_t i = 0; i < tokens.size(); ++i) {
+    const Token& token = tokens[i];
+    depth += token.kind == Kind::kOpen ? 1 : token.kind == Kind::kClose ? -1 : 0;
+    const bool member = depth == 1 && i > 0 && i + 1 < tokens.size() &&
+                        (tokens[i - 1].kind == Kind::kOpen || tokens[i - 1].kind == Kind::kComma) &&
+                        (tokens[i + 1].kind == Kind::kClose || tokens[i + 1].kind == Kind::kComma);
+    if (!member || token.kind != Kind::kWord || !equals_upper(token.text, "EMPTY")) {
+      kept.push_back(token);
+      continue;
+    }
+    dropped = true;
+    if (kept.back().kind == Kind::kComma) {
+      kept.pop_back();
+    } else if (tokens[i + 1].kind == Kind::kComma) {
+      ++i;
+    }
+  }
+  if (dropped && kept.size() == 3 && kept[1].kind == Kind::kOpen && kept[2].kind == Kind::kClose) {
+    kept.pop_back();
+    kept.back() = Token{Kind::kWord, "EMPTY", kept.back().at};
+  }
+  return kept;
+}
+
+// A UTF-8 byte-order mark (which some editors write) is not part of the text.
+std::string_view without_bom(std::string_view text) {
+  constexpr std::string_view kBom = "\xEF\xBB\xBF";
+  if (text.substr(0, kBom.size()) == kBom) text.remove_prefix(kBom.size());
+  return text;
+}
+
+}  // namespace
+
+CheckedText check_tokens(std::string_view input) {
+  const std::string_view text = without_bom(input);
   check_bytes(text);
-  const std::vector<Token> tokens = split(text);
+  std::vector<Token> tokens = split(text);
+  if (!tokens.empty() && equals_upper(tokens.front().text, "MULTIPOLYGON")) {
+    tokens = drop_empty_members(tokens);
+  }
   if (tokens.empty()) {
     throw WktError(WktErrorKind::kEmptyInput,
                    "empty input; expected a WKT POLYGON or MULTIPOLYGON");
   }
   CheckedText checked;
   checked.multi = check_words(tokens);
+  // check_words allows one word after the type: EMPTY.
+  checked.empty_polygon = !checked.multi && tokens.size() == 2 && tokens[1].kind == Kind::kWord;
   checked.points = check_points(tokens);
   check_pairs(tokens);
   for (const Token& token : tokens) {

@@ -28,6 +28,8 @@ struct CheckedText {
   std::string canonical;
   // Whether the first token is MULTIPOLYGON (else POLYGON).
   bool multi = false;
+  // The text is POLYGON EMPTY: the empty set.
+  bool empty_polygon = false;
   // Where each point starts, in the order read_wkt returns the points (polygons, then rings,
   // then vertices), so errors found after reading can name the line and column too.
   std::vector<TextPosition> points;

@@ -205,8 +205,40 @@ TEST(WktReaderRejects, MissingCommaBetweenRings) {
             WktErrorKind::kSyntax);
 }
 
+// OGC's empty geometries are the empty set (issue 16): POLYGON EMPTY, and EMPTY members of a
+// MULTIPOLYGON, which leave the other members and their numbering as if they were absent.
+TEST(WktReader, EmptyGeometriesAreTheEmptySet) {
+  for (const char* text : {"POLYGON EMPTY", "polygon empty", "MULTIPOLYGON (EMPTY)",
+                           "MULTIPOLYGON (EMPTY, EMPTY)", "MULTIPOLYGON EMPTY"}) {
+    const WktGeometry g = read_wkt(text);
+    EXPECT_EQ(g.type, WktGeometry::Type::kMultiPolygon) << text;
+    EXPECT_TRUE(g.polygons.empty()) << text;
+  }
+  const Ring square{{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  const Ring far{{5, 5}, {6, 5}, {6, 6}};
+  for (const char* text :
+       {"MULTIPOLYGON (EMPTY, ((0 0, 1 0, 1 1, 0 1, 0 0)), EMPTY, ((5 5, 6 5, 6 6, 5 5)))",
+        "MULTIPOLYGON (((0 0, 1 0, 1 1, 0 1, 0 0)), EMPTY, EMPTY, ((5 5, 6 5, 6 6, 5 5)), EMPTY)"}) {
+    const WktGeometry g = read_wkt(text);
+    ASSERT_EQ(g.polygons.size(), 2u) << text;
+    EXPECT_EQ(g.polygons[0].exterior, square) << text;
+    EXPECT_EQ(g.polygons[1].exterior, far) << text;
+  }
+  // A stray comma is still an error, EMPTY or not.
+  EXPECT_EQ(rejection_kind("MULTIPOLYGON (EMPTY,, ((0 0, 1 0, 1 1, 0 0)))"), WktErrorKind::kSyntax);
+  EXPECT_EQ(rejection_kind("MULTIPOLYGON (((0 0, 1 0, 1 1, 0 0)) EMPTY)"), WktErrorKind::kSyntax);
+  EXPECT_EQ(rejection_kind("POLYGON (EMPTY)"), WktErrorKind::kSyntax);
+}
+
+// A UTF-8 byte-order mark is not text; elsewhere its bytes are.
+TEST(WktReader, SkipsAByteOrderMark) {
+  const WktGeometry g = read_wkt("\xEF\xBB\xBFPOLYGON ((0 0, 1 0, 1 1, 0 0))");
+  ASSERT_EQ(g.polygons.size(), 1u);
+  EXPECT_EQ(g.polygons[0].exterior.size(), 3u);
+  EXPECT_EQ(rejection_kind("POLYGON \xEF\xBB\xBF((0 0, 1 0, 1 1, 0 0))"), WktErrorKind::kNotText);
+}
+
 TEST(WktReaderRejects, EmptyGeometries) {
-  EXPECT_EQ(rejection_kind("POLYGON EMPTY"), WktErrorKind::kEmptyGeometry);
   EXPECT_EQ(rejection_kind("POLYGON ()"), WktErrorKind::kEmptyGeometry);
   EXPECT_EQ(rejection_kind("POLYGON (())"), WktErrorKind::kEmptyGeometry);
   EXPECT_EQ(rejection_kind("MULTIPOLYGON (())"), WktErrorKind::kEmptyGeometry);
@@ -223,8 +255,11 @@ TEST(WktReaderRejects, UnclosedRingNamingItsLastVertex) {
   const WktError hole = rejection("POLYGON ((0 0, 9 0, 9 9, 0 0), (1 1, 2 1, 2 2))");
   EXPECT_EQ(hole.kind, WktErrorKind::kUnclosedRing);
   EXPECT_EQ(hole.ring, 1u);
-  // A single point cannot close a ring.
-  EXPECT_EQ(rejection_kind("POLYGON ((1 1))"), WktErrorKind::kUnclosedRing);
+  // One point is too few to close a ring (two close one of one vertex, which validate refuses).
+  EXPECT_EQ(rejection_kind("POLYGON ((1 1))"), WktErrorKind::kTooFewPoints);
+  const WktError few = rejection("POLYGON ((0 0))");
+  EXPECT_NE(std::string(few.what()).find("a ring needs at least 3 points"), std::string::npos)
+      << few.what();
 }
 
 TEST(WktReaderRejects, OtherGeometryTypes) {
