@@ -260,10 +260,8 @@ std::optional<Finding> run_edit_sequence(const std::uint8_t* data, std::size_t s
       apply(l, d);
     } catch (const LandscapeInternalError& e) {
       return Finding{std::string(e.what()) + "\n  edit: " + edit_text(d), e.log};
-    } catch (const InvalidInput&) {
+    } catch (const InvalidInput&) {  // CoordinateOutOfRange too
       if (l.state_hash() != before) return finding("a rejected shape changed the landscape", l);
-    } catch (const CoordinateOutOfRange&) {
-      if (l.state_hash() != before) return finding("a shape out of range changed the landscape", l);
     } catch (const LimitExceeded&) {
       if (l.state_hash() != before) return finding("an edit over a limit changed the landscape", l);
     } catch (const std::exception& e) {

@@ -34,15 +34,6 @@ ClipResult run_clip(const Pipeline& p, std::vector<Box64>* moved_boxes = nullptr
   return detail::run(p, moved_boxes).clipped;
 }
 
-const char* operand_name(Operand o) {
-  switch (o) {
-    case Operand::kSubject: return "subject";
-    case Operand::kClip: return "clip";
-    case Operand::kRings: return "rings";
-  }
-  return "?";
-}
-
 Box64 grown(Box64 b, std::int64_t by) {
   return {{b.min.x - by, b.min.y - by}, {b.max.x + by, b.max.y + by}};
 }
@@ -112,7 +103,7 @@ void require_valid_box(const Box64& box) {
     Violation v;
     v.rule = Rule::kCoordinateOutOfRange;
     v.where = in_range(box.min) ? box.max : box.min;
-    throw InvalidInput(Operand::kClip, v);
+    throw_invalid_input(Operand::kClip, v);
   }
 }
 
@@ -197,11 +188,6 @@ const char* fill_rule_name(FillRule rule) noexcept {
   return "?";
 }
 
-InvalidInput::InvalidInput(Operand which, Violation v)
-    : Error(std::string("invalid ") + operand_name(which) + ": " + v.describe()),
-      operand(which),
-      violation(v) {}
-
 InternalError::InternalError(const std::string& what, std::string subject, std::string clip)
     : Error("edgeland internal error (please report with the inputs): " + what),
       subject_wkt(std::move(subject)),
@@ -257,7 +243,7 @@ ClipResult normalize(const std::vector<Ring>& rings, FillRule rule, const ClipOp
         v.polygon = r;
         v.edge = i;
         v.where = rings[r][i];
-        throw InvalidInput(Operand::kRings, v);
+        throw_invalid_input(Operand::kRings, v);
       }
   return guarded(
       [&] {
@@ -298,7 +284,7 @@ ClipResult import_polygons(const std::vector<std::vector<Ring>>& polygons,
           v.polygon = static_cast<std::size_t>(&polygon - polygons.data());
           v.edge = i;
           v.where = ring[i];
-          throw InvalidInput(Operand::kRings, v);
+          throw_invalid_input(Operand::kRings, v);
         }
       // Repeated points (a closing point copied from WKT or GeoJSON among them) change no
       // winding number; without them a valid ring passes the simplicity test below.

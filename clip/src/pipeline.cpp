@@ -10,7 +10,7 @@ namespace edgeland::detail {
 
 void require_valid(const PolygonSet& set, Operand which) {
   const ValidationReport report = validate(set, 1);
-  if (!report.ok()) throw InvalidInput(which, report.violations.front());
+  if (!report.ok()) throw_invalid_input(which, report.violations.front());
 }
 
 namespace {

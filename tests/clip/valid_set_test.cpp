@@ -30,6 +30,37 @@ TEST(ValidSet, RefusesAnInvalidSetNamingTheOperand) {
   EXPECT_THROW(ValidSet{overlapping}, InvalidInput);
 }
 
+// Issue 16: a coordinate beyond the bound is one typed error wherever it comes in, a
+// CoordinateOutOfRange (which is an InvalidInput) naming the operand, polygon and vertex.
+TEST(ValidSet, ACoordinateOutOfRangeIsItsOwnError) {
+  const std::int64_t far = std::int64_t{1} << 40;
+  const PolygonSet shapes{{{0, 0}, {10, 0}, {10, 10}, {0, 10}},
+                          {{20, 0}, {30, 0}, {far, 9}}};
+  try {
+    ValidSet s(shapes, Operand::kClip);
+    FAIL() << "accepted " << to_wkt(s.polygons());
+  } catch (const CoordinateOutOfRange& e) {
+    EXPECT_EQ(e.operand, Operand::kClip);
+    EXPECT_EQ(e.violation.rule, Rule::kCoordinateOutOfRange);
+    EXPECT_EQ(e.polygon, 1u);
+    EXPECT_EQ(e.vertex, 2u);
+    EXPECT_EQ(e.where, (Point64{far, 9}));
+  }
+  const PolygonSet square{{{0, 0}, {10, 0}, {10, 10}, {0, 10}}};
+  EXPECT_THROW(clip(ClipOp::kUnion, square, shapes), CoordinateOutOfRange);
+  EXPECT_THROW(clip(ClipOp::kUnion, shapes, square), CoordinateOutOfRange);
+  // Any other broken rule stays a plain InvalidInput.
+  const PolygonSet bow_tie{{{0, 0}, {10, 10}, {10, 0}, {0, 10}}};
+  try {
+    clip(ClipOp::kUnion, square, bow_tie);
+    FAIL() << "accepted a bow tie";
+  } catch (const CoordinateOutOfRange&) {
+    FAIL() << "a bow tie reported as a coordinate out of range";
+  } catch (const InvalidInput& e) {
+    EXPECT_EQ(e.violation.rule, Rule::kSelfIntersection);
+  }
+}
+
 TEST(ValidSet, KeepsTheSetItWasGiven) {
   const PolygonSet s{{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{20, 0}, {30, 0}, {25, 9}}};
   EXPECT_EQ(ValidSet(s).polygons(), s);

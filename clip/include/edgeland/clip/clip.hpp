@@ -60,16 +60,8 @@ struct ClipResult {
   ClipStats stats;
 };
 
-// Which operand an InvalidInput error is about.
-enum class Operand : std::uint8_t { kSubject, kClip, kRings };
-
-// An operand failed validation; `violation` says which rule, polygon and edge.
-class EDGELAND_EXPORT InvalidInput : public Error {
- public:
-  InvalidInput(Operand operand, Violation violation);
-  Operand operand;
-  Violation violation;
-};
+// Operand, InvalidInput and CoordinateOutOfRange (an InvalidInput) are in
+// edgeland/kernel/errors.hpp.
 
 // A result failed the checkers in checked mode: a bug in edgeland. Carries the inputs.
 class EDGELAND_EXPORT InternalError : public Error {
