@@ -321,6 +321,24 @@ ClipResult import_polygons(const std::vector<std::vector<Ring>>& polygons,
   return out;
 }
 
+ValidClipResult normalize_to_valid_set(const std::vector<Ring>& rings, FillRule rule,
+                                       const ClipOptions& options) {
+  return ValidSetFactory::from(normalize(rings, rule, options));
+}
+
+ValidClipResult import_to_valid_set(const std::vector<std::vector<Ring>>& polygons,
+                                    const ClipOptions& options) {
+  return ValidSetFactory::from(import_polygons(polygons, options));
+}
+
+// The members of a valid set have disjoint interiors and turn counter-clockwise, so the
+// positive fill of their rings is exactly their union.
+ValidClipResult merge(const ValidSet& set, const ClipOptions& options) {
+  const PolygonSet& members = set.polygons();
+  return normalize_to_valid_set(std::vector<Ring>(members.begin(), members.end()),
+                                FillRule::kPositive, options);
+}
+
 ClipResult clip_to_box(const PolygonSet& set, const Box64& box, const ClipOptions& options) {
   require_valid_box(box);
   require_valid(set, Operand::kSubject);

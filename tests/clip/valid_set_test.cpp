@@ -8,6 +8,7 @@
 #include <random>
 
 #include "checked_clip.hpp"
+#include "edgeland/kernel/area.hpp"
 #include "generators.hpp"
 #include "polygon_set_helpers.hpp"
 
@@ -59,6 +60,43 @@ TEST(ValidSet, ACoordinateOutOfRangeIsItsOwnError) {
   } catch (const InvalidInput& e) {
     EXPECT_EQ(e.violation.rule, Rule::kSelfIntersection);
   }
+}
+
+// merge(): the region as maximal polygons. Two squares sharing an edge are one rectangle;
+// a frame of four bars around a hole is split along a diagonal as every output is; the area,
+// validity and region are kept.
+TEST(Merge, JoinsMembersThatShareEdges) {
+  const ValidSet halves(PolygonSet{{{0, 0}, {10, 0}, {10, 10}, {0, 10}},
+                                   {{10, 0}, {20, 0}, {20, 10}, {10, 10}}});
+  const PolygonSet merged = merge(halves).set.polygons();
+  EXPECT_EQ(merged, (PolygonSet{{{0, 0}, {20, 0}, {20, 10}, {0, 10}}}));
+}
+
+TEST(Merge, AFrameAroundAHoleBecomesHoleFreePieces) {
+  const ValidSet frame(PolygonSet{{{0, 0}, {30, 0}, {30, 10}, {0, 10}},
+                                  {{0, 20}, {30, 20}, {30, 30}, {0, 30}},
+                                  {{0, 10}, {10, 10}, {10, 20}, {0, 20}},
+                                  {{20, 10}, {30, 10}, {30, 20}, {20, 20}}});
+  const PolygonSet merged = merge(frame).set.polygons();
+  EXPECT_TRUE(validate(merged).ok());
+  EXPECT_EQ(twice_signed_area(merged), twice_signed_area(frame.polygons()));
+  // The hole cannot be one polygon's: at least two pieces, fewer than the four bars' corners.
+  EXPECT_GE(merged.size(), 2u);
+  std::size_t vertices = 0;
+  for (const Polygon& p : merged) vertices += p.size();
+  EXPECT_LT(vertices, 16u);
+}
+
+// On random valid sets: valid, same area, same region (the xor with the input is empty), and
+// merging again changes nothing.
+RC_GTEST_PROP(MergeProperty, KeepsTheRegionAndIsIdempotent, ()) {
+  const PolygonSet input = *gen::polygon_set({0, 0}, 1000);
+  const ValidSet set(input);
+  const PolygonSet merged = merge(set).set.polygons();
+  RC_ASSERT(validate(merged).ok());
+  RC_ASSERT(twice_signed_area(merged) == twice_signed_area(input));
+  RC_ASSERT(clip(ClipOp::kXor, input, merged).polygons.empty());
+  RC_ASSERT(merge(merge(set).set).set.polygons() == merged);
 }
 
 TEST(ValidSet, KeepsTheSetItWasGiven) {

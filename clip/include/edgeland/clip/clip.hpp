@@ -132,6 +132,22 @@ EDGELAND_EXPORT ClipResult normalize(const std::vector<Ring>& rings, FillRule ru
 EDGELAND_EXPORT ClipResult import_polygons(const std::vector<std::vector<Ring>>& polygons,
                                            const ClipOptions& options = {});
 
+// The same two imports with a ValidSet result, usable in the next operation without
+// validating it again (identical polygons).
+EDGELAND_EXPORT ValidClipResult normalize_to_valid_set(const std::vector<Ring>& rings,
+                                                       FillRule rule,
+                                                       const ClipOptions& options = {});
+EDGELAND_EXPORT ValidClipResult import_to_valid_set(
+    const std::vector<std::vector<Ring>>& polygons, const ClipOptions& options = {});
+
+// The same region as maximal polygons: members that touch along an edge become one polygon,
+// and a region enclosing a hole is split along diagonals into hole-free polygons as every
+// output is. Operations keep the subject's polygons apart (a union of two overlapping squares
+// is 2 polygons: the subject's square and the clip's part outside it), which keeps edits
+// local; a set that has grown through thousands of unions is merged to its fewest polygons
+// and vertices by this. O(n log n); the result is normalize(set, kPositive)'s.
+EDGELAND_EXPORT ValidClipResult merge(const ValidSet& set, const ClipOptions& options = {});
+
 // The part of a valid set inside a closed axis-aligned box (the landscape's cell cut).
 EDGELAND_EXPORT ClipResult clip_to_box(const PolygonSet& set, const Box64& box,
                                        const ClipOptions& options = {});
