@@ -100,10 +100,7 @@ ClipResult clip_near(ClipOp op, const PolygonSet& subject, const PolygonSet& cli
 
 void require_valid_box(const Box64& box) {
   if (!in_range(box.min) || !in_range(box.max) || box.min.x > box.max.x || box.min.y > box.max.y) {
-    Violation v;
-    v.rule = Rule::kCoordinateOutOfRange;
-    v.where = in_range(box.min) ? box.max : box.min;
-    throw_invalid_input(Operand::kClip, v);
+    throw CoordinateOutOfRange(Operand::kClip, 0, kNone, in_range(box.min) ? box.max : box.min);
   }
 }
 
@@ -237,14 +234,7 @@ ValidClipResult clip_to_box(const ValidSet& set, const Box64& box, const ClipOpt
 ClipResult normalize(const std::vector<Ring>& rings, FillRule rule, const ClipOptions& options) {
   for (std::size_t r = 0; r < rings.size(); ++r)
     for (std::size_t i = 0; i < rings[r].size(); ++i)
-      if (!in_range(rings[r][i])) {
-        Violation v;
-        v.rule = Rule::kCoordinateOutOfRange;
-        v.polygon = r;
-        v.edge = i;
-        v.where = rings[r][i];
-        throw_invalid_input(Operand::kRings, v);
-      }
+      if (!in_range(rings[r][i])) throw CoordinateOutOfRange(Operand::kRings, r, i, rings[r][i]);
   return guarded(
       [&] {
         Pipeline p;
@@ -279,12 +269,8 @@ ClipResult import_polygons(const std::vector<std::vector<Ring>>& polygons,
       Ring ring = polygon[k];
       for (std::size_t i = 0; i < ring.size(); ++i)
         if (!in_range(ring[i])) {
-          Violation v;
-          v.rule = Rule::kCoordinateOutOfRange;
-          v.polygon = static_cast<std::size_t>(&polygon - polygons.data());
-          v.edge = i;
-          v.where = ring[i];
-          throw_invalid_input(Operand::kRings, v);
+          const auto index = static_cast<std::size_t>(&polygon - polygons.data());
+          throw CoordinateOutOfRange(Operand::kRings, index, i, ring[i]);
         }
       // Repeated points (a closing point copied from WKT or GeoJSON among them) change no
       // winding number; without them a valid ring passes the simplicity test below.
