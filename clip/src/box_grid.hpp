@@ -52,6 +52,18 @@ void for_each_overlapping_pair_in_grid(const std::vector<Box64>& boxes, F&& visi
         f(static_cast<std::size_t>(c * rows + r));
   };
   for (const Box64& b : boxes) for_cells(b, [&](std::size_t k) { ++begin[k + 1]; });
+  // Cells sized for the typical box's longer side can hold thousands of thin ones (the teeth of
+  // a comb 10^8 long and 40 wide: one cell, all pairs). When the cells' pairs are many, count
+  // the sweep's and take the cheaper.
+  std::size_t cell_pairs = 0;
+  for (std::size_t k = 1; k <= cells; ++k) cell_pairs += std::size_t{begin[k]} * (begin[k] - 1) / 2;
+  if (cell_pairs > 8 * n + 1024) {
+    const std::vector<SweepBox> sorted = sorted_for_sweep(boxes);
+    if (x_overlapping_pairs(sorted, cell_pairs) < cell_pairs) {
+      for_each_overlapping_pair(sorted, visit);
+      return;
+    }
+  }
   for (std::size_t k = 1; k <= cells; ++k) begin[k] += begin[k - 1];
   std::vector<std::uint32_t> items(begin[cells]);
   std::vector<std::uint32_t> fill(begin.begin(), begin.end() - 1);

@@ -16,12 +16,17 @@ struct EdgeList {
   std::vector<std::uint8_t> channel;   // 0 = subject / normalize rings, 1 = clip operand
   std::vector<std::int32_t> polygon;   // index within its operand
   std::vector<std::uint32_t> next;
+  // Empty: every edge counts once. Otherwise edge i counts weight[i] times, in its direction
+  // (collinear_merge.hpp: merged stretches of many overlapping edges; winding labelings only).
+  std::vector<std::int32_t> weight;
   std::size_t size() const { return segments.size(); }
+  std::int32_t weight_of(std::uint32_t i) const { return weight.empty() ? 1 : weight[i]; }
   void clear() {
     segments.clear();
     channel.clear();
     polygon.clear();
     next.clear();
+    weight.clear();
   }
 };
 

@@ -33,6 +33,7 @@ Meeting collinear_axis_contact(const Segment& s, std::uint32_t i, const Segment&
   split_if_interior(c, i, s, from);
   split_if_interior(c, j, t, from);
   if (hi != lo) {
+    ++c.overlaps;
     split_if_interior(c, i, s, to);
     split_if_interior(c, j, t, to);
   }
@@ -47,6 +48,7 @@ Meeting classify_pair(const Segment& s, std::uint32_t i, const Segment& t, std::
   // partition): an overlap whose ends are both segments' ends, so nothing to split.
   if ((s.a == t.b && s.b == t.a) || (s.a == t.a && s.b == t.b)) {
     ++c.intersections;
+    ++c.overlaps;
     return Meeting::kOther;
   }
   // Ring neighbours share an endpoint: unless they are collinear that is their only contact.
@@ -93,6 +95,7 @@ Meeting classify_pair(const Segment& s, std::uint32_t i, const Segment& t, std::
       }
       case SegmentRelation::kOverlapping:
         ++c.intersections;
+        ++c.overlaps;
         for (Point64 p : {r.overlap_from, r.overlap_to}) {
           split_if_interior(c, i, s, p);
           split_if_interior(c, j, t, p);
@@ -122,8 +125,19 @@ Box64 segment_box(const Segment& s) {
 
 namespace {
 
-// Thrown by the pair visit to stop noding at the first contact proving an operand invalid.
-struct StopNoding {};
+// Whether the run index would propose fewer pairs than the grid's cells hold: a grid sized for
+// spikes fails on long parallel segments side by side (comb teeth 10^8 long and 80 apart: 10^4
+// of them per cell), whose runs' x-ranges barely overlap. Only counted when the cells hold many.
+bool grid_walk_is_worse(const SegmentGrid& grid, const SegmentIndex& index, std::size_t n) {
+  const std::size_t cell_pairs = grid.cell_pairs();
+  return cell_pairs > 16 * n + 4096 && index.x_overlapping_run_pairs(cell_pairs) < cell_pairs;
+}
+
+// Thrown by the pair visit to stop noding: at the first contact proving an operand invalid, or
+// once the overlapping pairs pass their budget.
+struct StopNoding {
+  bool overlap_heavy;
+};
 
 // Whether two segments of different rings of one operand meet in a way no valid set allows:
 // crossing properly (each ring's inside lies on one side of its edge, so near the crossing the
@@ -149,7 +163,8 @@ bool overlap_proof(const Segment& s, const Segment& t) {
 Contacts find_contacts(const std::vector<Segment>& segments, const std::vector<std::uint32_t>& next,
                        const SegmentIndex& index, bool simple_rings, std::vector<std::uint8_t>& touched,
                        std::unique_ptr<SegmentGrid>* grid,
-                       const std::vector<std::uint8_t>* screen_channel) {
+                       const std::vector<std::uint8_t>* screen_channel,
+                       std::size_t overlap_budget) {
   Contacts c;
   // Ring of each segment (rings occupy consecutive ids): needed to skip the pairs of one ring
   // on the grid walk when rings are simple, and to see a ring meet itself when screening.
@@ -173,26 +188,28 @@ Contacts find_contacts(const std::vector<Segment>& segments, const std::vector<s
                              ? m == Meeting::kOther || !neighbours
                              : m == Meeting::kOther && (*screen_channel)[i] == (*screen_channel)[j] &&
                                    overlap_proof(segments[i], segments[j]);
-      if (proof) throw StopNoding{};
+      if (proof) throw StopNoding{false};
     }
+    if (c.overlaps > overlap_budget) throw StopNoding{true};
     if (m == Meeting::kSharedEndpoint && neighbours) return;
     touched[i] = touched[j] = true;
   };
   try {
     // Short runs (spiky or zigzag rings) leave the run index little to group, and long
     // diagonal segments make box overlap a weak filter: walk the segments through a grid.
-    if (walk) {
-      auto walked = std::make_unique<SegmentGrid>(segments);
+    std::unique_ptr<SegmentGrid> walked;
+    if (walk) walked = std::make_unique<SegmentGrid>(segments);
+    if (walked && !grid_walk_is_worse(*walked, index, segments.size())) {
       walked->for_each_candidate_pair([&](std::uint32_t i, std::uint32_t j) {
         if (simple_rings && ring_of[i] == ring_of[j]) return;
         if (boxes_overlap(segments[i], segments[j])) visit(i, j);
       });
-      if (grid) *grid = std::move(walked);
     } else {
       index.for_each_overlapping_pair(visit, simple_rings);
     }
-  } catch (const StopNoding&) {
-    c.operand_invalid = true;
+    if (grid && walked) *grid = std::move(walked);
+  } catch (const StopNoding& stop) {
+    (stop.overlap_heavy ? c.overlap_heavy : c.operand_invalid) = true;
   }
   return c;
 }

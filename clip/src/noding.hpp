@@ -2,6 +2,7 @@
 // Noding (thesis 3.3): every contact between segments, found exactly.
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -22,6 +23,11 @@ struct Contacts {
   // Only when screening (below): noding stopped at a contact that proves an operand invalid;
   // the rest of the contacts are then incomplete.
   bool operand_invalid = false;
+  // Pairs of collinear segments sharing a stretch of positive length (counted by classify_pair).
+  std::size_t overlaps = 0;
+  // Noding stopped when `overlaps` passed its budget (find_contacts); the contacts are then
+  // incomplete.
+  bool overlap_heavy = false;
 };
 
 class SegmentIndex;
@@ -39,13 +45,16 @@ class SegmentGrid;
 // of different rings of one operand crossing properly or overlapping in the same direction
 // (their insides overlap). Stopping there keeps an invalid operand with n^2 such contacts from
 // costing n^2 before it is rejected.
+// overlap_budget: noding stops, setting c.overlap_heavy, once more pairs than this overlap along
+// a stretch (a stack of collinear edges: collinear_merge.hpp).
 // O(r log r + candidate pairs) for r runs of the index.
 // When it walks the segments through a SegmentGrid (short runs: spiky inputs) and `grid` is not
 // null, the grid is handed out there for snap rounding's point queries.
 Contacts find_contacts(const std::vector<Segment>& segments, const std::vector<std::uint32_t>& next,
                        const SegmentIndex& index, bool simple_rings, std::vector<std::uint8_t>& touched,
                        std::unique_ptr<SegmentGrid>* grid = nullptr,
-                       const std::vector<std::uint8_t>* screen_channel = nullptr);
+                       const std::vector<std::uint8_t>* screen_channel = nullptr,
+                       std::size_t overlap_budget = std::numeric_limits<std::size_t>::max());
 
 enum class Meeting : std::uint8_t {
   kNone,            // disjoint

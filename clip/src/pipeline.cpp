@@ -1,8 +1,11 @@
 // run(): the stages of clip/README.md in order, each handing its typed result to the next.
 #include "pipeline.hpp"
 
+#include <limits>
+
 #include "assembly.hpp"
 #include "canonical.hpp"
+#include "collinear_merge.hpp"
 #include "hole_splitting.hpp"
 #include "snap_rounding.hpp"
 
@@ -41,15 +44,29 @@ void split_holed_regions(std::vector<RegionRings>& holed, PipelineResult& out) {
   }
 }
 
+// More pairs overlapping along a stretch than any ordinary input has (valid sets: about one
+// per edge): a stack of collinear edges (collinear_merge.hpp), when merging them is allowed.
+std::size_t overlap_budget(const Pipeline& p) {
+  if (p.mode != LabelMode::kWinding) return std::numeric_limits<std::size_t>::max();
+  return p.overlap_budget.value_or(4 * p.edges.size() + 4096);
+}
+
 }  // namespace
 
 PipelineResult run(const Pipeline& p, std::vector<Box64>* moved_boxes, bool with_labels) {
   PipelineResult out;
-  const std::vector<Segment>& segs = p.edges.segments;
-  const std::vector<std::uint32_t>& next = p.edges.next;
   SnapStats snap;
-  const auto fragments =
-      snap_round(segs, next, p.simple_rings, snap, p.screening ? &p.edges.channel : nullptr);
+  const EdgeList* edges = &p.edges;
+  auto fragments = snap_round(edges->segments, edges->next, p.simple_rings, snap,
+                              p.screening ? &edges->channel : nullptr, overlap_budget(p));
+  MergedEdges merged;
+  if (snap.overlap_heavy) {  // noded again without the stacks
+    merged = merge_collinear_overlaps(p.edges);
+    edges = &merged.edges;
+    fragments = snap_round(edges->segments, edges->next, p.simple_rings, snap);
+    for (std::size_t s = 0; s < edges->size(); ++s)
+      if (merged.unchained[s]) snap.touched[s] = true;
+  }
   // The graph and the labels reuse per-thread storage (recycled_vector.hpp says why).
   Reused<PlaneGraph> graph;
   Reused<std::vector<SideState>> labels;
@@ -57,7 +74,7 @@ PipelineResult run(const Pipeline& p, std::vector<Box64>* moved_boxes, bool with
   std::vector<SideState>& left = *labels;
   bool check_cover = false;
   if (p.screening && !screen_after_snap(*p.screening, snap, check_cover)) return out;
-  build_plane_graph(segs, fragments, p.edges.channel, p.edges.polygon, next, snap.touched, g);
+  build_plane_graph(*edges, fragments, snap.touched, g);
   if (!label_sides(g, p.mode, left, check_cover)) {
     p.screening->suspect = true;
     return out;

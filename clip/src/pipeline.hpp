@@ -4,6 +4,7 @@
 // (relabel.hpp) each fill a Pipeline and call run().
 #include <functional>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -101,6 +102,10 @@ struct Pipeline {
   // touch (assembly.hpp), so the pieces depend on the region alone (relabel.hpp).
   bool corner_bridges = false;
   Screening* screening = nullptr;  // operands not validated yet (noding then tests all pairs)
+  // Winding labelings: how many pairs of edges may overlap along a stretch before stacks of
+  // collinear edges are merged (collinear_merge.hpp); unset: 4 per edge plus 4096. (Tests set
+  // 0 to merge every stack.)
+  std::optional<std::size_t> overlap_budget;
 };
 
 

@@ -31,7 +31,7 @@ struct Piece {
   std::uint32_t lo, hi;  // vertex ids, lo < hi
   std::int32_t polygon;
   std::uint8_t channel;
-  std::int8_t sign;  // +1 when the fragment runs lo -> hi
+  std::int32_t net;  // the segment's weight, negated when the fragment runs hi -> lo
 };
 
 // Sorts [first, last) stably: by insertion when it is short, by merge sort otherwise. For the
@@ -105,23 +105,19 @@ void PlaneGraph::append_points(std::uint32_t h, std::vector<Point64>& out) const
   }
 }
 
-PlaneGraph build_plane_graph(const std::vector<Segment>& segments,
-                             const std::vector<Fragment>& fragments,
-                             const std::vector<std::uint8_t>& channel_of,
-                             const std::vector<std::int32_t>& polygon_of,
-                             const std::vector<std::uint32_t>& next,
+PlaneGraph build_plane_graph(const EdgeList& edges, const std::vector<Fragment>& fragments,
                              const std::vector<std::uint8_t>& touched) {
   PlaneGraph g;
-  build_plane_graph(segments, fragments, channel_of, polygon_of, next, touched, g);
+  build_plane_graph(edges, fragments, touched, g);
   return g;
 }
 
-void build_plane_graph(const std::vector<Segment>& segments,
-                       const std::vector<Fragment>& fragments,
-                       const std::vector<std::uint8_t>& channel_of,
-                       const std::vector<std::int32_t>& polygon_of,
-                       const std::vector<std::uint32_t>& next, const std::vector<std::uint8_t>& touched,
-                       PlaneGraph& g) {
+void build_plane_graph(const EdgeList& input, const std::vector<Fragment>& fragments,
+                       const std::vector<std::uint8_t>& touched, PlaneGraph& g) {
+  const std::vector<Segment>& segments = input.segments;
+  const std::vector<std::uint8_t>& channel_of = input.channel;
+  const std::vector<std::int32_t>& polygon_of = input.polygon;
+  const std::vector<std::uint32_t>& next = input.next;
   const std::uint32_t n = static_cast<std::uint32_t>(next.size());
   // Listed fragments come in segment order; a segment with none listed is its own fragment
   // (always so for an untouched one).
@@ -291,11 +287,12 @@ void build_plane_graph(const std::vector<Segment>& segments,
     std::uint32_t i = 0;
     for (const std::uint32_t s : touched_ids) {
       const std::uint32_t count = listed(s) ? first_fragment[s + 1] - first_fragment[s] : 1;
+      const std::int32_t weight = input.weight_of(s);
       for (std::uint32_t k = 0; k < count; ++k, ++i) {
         const std::uint32_t a = occurrence_vertex[piece_base + i];
         const std::uint32_t b = k + 1 == count ? end_vertex(s) : occurrence_vertex[piece_base + i + 1];
         Piece& piece = pieces[i];
-        piece.sign = a < b ? 1 : -1;
+        piece.net = a < b ? weight : -weight;
         piece.lo = std::min(a, b);
         piece.hi = std::max(a, b);
       }
@@ -343,8 +340,9 @@ void build_plane_graph(const std::vector<Segment>& segments,
     std::size_t j = i + 1;
     while (j < pieces.size() && pieces[j].lo == lo && pieces[j].hi == hi) ++j;
     const std::uint32_t first_mult = mult_count;
-    if (j == i + 1) {
-      g.mults[mult_count++] = {pieces[i].channel, pieces[i].polygon, pieces[i].sign};
+    if (j == i + 1) {  // (a merged stretch of weight 0 cancels alone)
+      if (pieces[i].net != 0)
+        g.mults[mult_count++] = {pieces[i].channel, pieces[i].polygon, pieces[i].net};
     } else {
       if (!std::is_sorted(pieces.begin() + i, pieces.begin() + j, tag_less))
         std::stable_sort(pieces.begin() + i, pieces.begin() + j, tag_less);
@@ -352,7 +350,7 @@ void build_plane_graph(const std::vector<Segment>& segments,
         std::size_t m = k;
         std::int32_t net = 0;
         for (; m < j && pieces[m].channel == pieces[k].channel && pieces[m].polygon == pieces[k].polygon; ++m)
-          net += pieces[m].sign;
+          net += pieces[m].net;
         if (net != 0) g.mults[mult_count++] = {pieces[k].channel, pieces[k].polygon, net};
         k = m;
       }
@@ -367,12 +365,14 @@ void build_plane_graph(const std::vector<Segment>& segments,
     const std::uint32_t last = c.ring_begin + (c.first - c.ring_begin + c.count) % c.ring_len;
     std::uint32_t a = occurrence_vertex[first_occurrence[c.first]], b = end_vertex(last);
     if (a == b) throw std::logic_error("plane graph: a chain is a loop");
-    std::int32_t net = 1;
+    std::int32_t net = input.weight_of(c.first);
     if (b < a) {
       std::swap(a, b);
       c.reversed = true;
-      net = -1;
+      net = -net;
     }
+    if (net == 0) throw std::logic_error("plane graph: a chain of weight 0");  // (only merged
+    // stretches weigh 0, and they are never chained)
     g.mults[mult_count++] = {channel_of[c.first], polygon_of[c.first], net};
     close_edge(a, b, mult_count - 1);
     g.chain.push_back(c);

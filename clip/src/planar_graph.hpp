@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "edgeland/kernel/point.hpp"
+#include "input_edges.hpp"
 #include "snap_rounding.hpp"
 
 namespace edgeland::detail {
@@ -74,22 +75,14 @@ struct PlaneGraph {
 };
 
 // `fragments` lists the fragments of some segments (snap_round); a segment with none listed is
-// its own single fragment. `channel_of` / `polygon_of` / `next` / `touched` describe each input
-// segment: its tag, the segment after it along its ring, and whether it is untouched
-// (SnapStats::touched; an untouched segment is its own single fragment).
+// its own single fragment. `edges` describes each input segment: its tag, the segment after it
+// along its ring and its weight; `touched` whether it is touched (SnapStats::touched; an
+// untouched segment is its own single fragment).
 // O(f) for the f fragments of touched segments (radix sorts), plus O(n) for the rest.
-PlaneGraph build_plane_graph(const std::vector<Segment>& segments,
-                             const std::vector<Fragment>& fragments,
-                             const std::vector<std::uint8_t>& channel_of,
-                             const std::vector<std::int32_t>& polygon_of,
-                             const std::vector<std::uint32_t>& next,
+PlaneGraph build_plane_graph(const EdgeList& edges, const std::vector<Fragment>& fragments,
                              const std::vector<std::uint8_t>& touched);
 // The same into g, reusing its arrays' capacity.
-void build_plane_graph(const std::vector<Segment>& segments,
-                       const std::vector<Fragment>& fragments,
-                       const std::vector<std::uint8_t>& channel_of,
-                       const std::vector<std::int32_t>& polygon_of,
-                       const std::vector<std::uint32_t>& next, const std::vector<std::uint8_t>& touched,
-                       PlaneGraph& g);
+void build_plane_graph(const EdgeList& edges, const std::vector<Fragment>& fragments,
+                       const std::vector<std::uint8_t>& touched, PlaneGraph& g);
 
 }  // namespace edgeland::detail

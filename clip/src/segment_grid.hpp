@@ -55,6 +55,10 @@ class SegmentGrid {
   // Number of (segment, cell) registrations: the size of the structure, for tests.
   std::size_t entries() const { return items_.size(); }
 
+  // Pairs registered in a common cell, counted once per cell: what for_each_candidate_pair
+  // walks through.
+  std::size_t cell_pairs() const;
+
  private:
   // f(cell index) for every cell the walk registers s in, each cell once.
   template <class F>

@@ -45,6 +45,13 @@ class SegmentIndex {
   template <class F>
   void query(const std::vector<Box64>& boxes, F&& visit) const;
 
+  // Pairs of runs whose x-ranges overlap, counted up to a little past `limit`: about the work
+  // of for_each_overlapping_pair.
+  std::size_t x_overlapping_run_pairs(std::size_t limit) const {
+    build_runs();
+    return x_overlapping_pairs(run_sweep(), limit);
+  }
+
   // Segments per run on average, times 16 (an integer: the caller's choice of search only
   // needs a rough figure). Counts the runs without building them.
   std::size_t run_length_x16() const;

@@ -467,18 +467,23 @@ Fragments split_fragments(const AllFragments& all, std::size_t segment_count,
 
 }  // namespace
 
-Fragments snap_round(const std::vector<Segment>& segs,
-                                 const std::vector<std::uint32_t>& next, bool simple_rings,
-                                 SnapStats& stats,
-                                 const std::vector<std::uint8_t>* screen_channel) {
+Fragments snap_round(const std::vector<Segment>& segs, const std::vector<std::uint32_t>& next,
+                     bool simple_rings, SnapStats& stats,
+                     const std::vector<std::uint8_t>* screen_channel, std::size_t overlap_budget) {
   const SegmentIndex index(segs, next);
   stats.touched.assign(segs.size(), false);
   SegmentsNear near(segs);
-  Contacts contacts =
-      find_contacts(segs, next, index, simple_rings, stats.touched, &near.grid(), screen_channel);
+  Contacts contacts = find_contacts(segs, next, index, simple_rings, stats.touched, &near.grid(),
+                                    screen_channel, overlap_budget);
   stats.intersections = contacts.intersections;
   stats.operand_invalid = contacts.operand_invalid;
-  if (contacts.operand_invalid) return {};
+  stats.overlap_heavy = contacts.overlap_heavy;
+  if (contacts.operand_invalid || contacts.overlap_heavy) return {};
+  // The vertices below are every segment's start and every split point; an end that starts no
+  // segment (an open run's: collinear_merge.hpp) joins them as a split point at the end, which
+  // routing skips.
+  for (std::uint32_t s = 0; s < segs.size(); ++s)
+    if (segs[next[s]].a != segs[s].b) contacts.splits.emplace_back(s, segs[s].b);
   stats.moved_boxes.clear();
   // No crossing at a non-integer point: every contact is an exact split and nothing moves.
   if (contacts.hot.empty()) return route(segs, Closure{}, contacts.splits);

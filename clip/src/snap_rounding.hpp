@@ -3,6 +3,7 @@
 // meet only at shared endpoints or overlap exactly. See clip/README.md for the argument.
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "edgeland/kernel/bbox.hpp"
@@ -30,6 +31,8 @@ struct SnapStats {
   // Only with screen_channel: noding found a contact proving an operand invalid and stopped
   // (noding.hpp); snap_round then returns no fragments.
   bool operand_invalid = false;
+  // Noding stopped at its overlap budget (noding.hpp); snap_round then returns no fragments.
+  bool overlap_heavy = false;
 };
 
 // The fragments of the segments that snap rounding cuts or moves, in input order (each such
@@ -42,10 +45,12 @@ struct SnapStats {
 struct FragmentsBuffer;
 using Fragments = RecycledVector<FragmentsBuffer, Fragment>;
 
-// screen_channel: see find_contacts (noding.hpp).
-Fragments snap_round(const std::vector<Segment>& segments,
-                                 const std::vector<std::uint32_t>& next, bool simple_rings,
-                                 SnapStats& stats,
-                                 const std::vector<std::uint8_t>* screen_channel = nullptr);
+// A segment need not end where its `next` starts (collinear_merge.hpp cuts rings into open
+// runs); such an end is a vertex like any other.
+// screen_channel, overlap_budget: see find_contacts (noding.hpp).
+Fragments snap_round(const std::vector<Segment>& segments, const std::vector<std::uint32_t>& next,
+                     bool simple_rings, SnapStats& stats,
+                     const std::vector<std::uint8_t>* screen_channel = nullptr,
+                     std::size_t overlap_budget = std::numeric_limits<std::size_t>::max());
 
 }  // namespace edgeland::detail
