@@ -43,7 +43,8 @@ struct ClipCommandOptions {
 // Without a fill rule an operand is read as OGC polygons (exterior minus holes, members
 // united; a self-crossing ring counts for every lobe it winds around, clip.hpp
 // import_polygons); with one, all its rings form a single path set filled by that rule.
-PolygonSet operand(const WktGeometry& geometry, const ClipCommandOptions& o) {
+// The result is a valid set: the operation need not check it again.
+ValidSet operand(const WktGeometry& geometry, const ClipCommandOptions& o) {
   const ClipOptions checked{o.check};
   if (o.has_fill_rule) {
     std::vector<Ring> rings;
@@ -51,7 +52,7 @@ PolygonSet operand(const WktGeometry& geometry, const ClipCommandOptions& o) {
       rings.push_back(p.exterior);
       rings.insert(rings.end(), p.holes.begin(), p.holes.end());
     }
-    return normalize(rings, o.fill_rule, checked).polygons;
+    return normalize_to_valid_set(rings, o.fill_rule, checked).set;
   }
   std::vector<std::vector<Ring>> polygons;
   for (const WktPolygon& p : geometry.polygons) {
@@ -59,7 +60,7 @@ PolygonSet operand(const WktGeometry& geometry, const ClipCommandOptions& o) {
     rings.insert(rings.end(), p.holes.begin(), p.holes.end());
     polygons.push_back(std::move(rings));
   }
-  return import_polygons(polygons, checked).polygons;
+  return import_to_valid_set(polygons, checked).set;
 }
 
 int run_clip(const ClipCommandOptions& o) {
@@ -82,10 +83,10 @@ int run_clip(const ClipCommandOptions& o) {
     }
   }
   try {
-    const PolygonSet subject = operand(geometry[0], o);
-    const PolygonSet clip_set = operand(geometry[1], o);
-    const ClipResult result = clip(o.op, subject, clip_set, ClipOptions{o.check});
-    std::cout << to_wkt(result.polygons) << '\n';
+    const ValidSet subject = operand(geometry[0], o);
+    const ValidSet clip_set = operand(geometry[1], o);
+    const ValidClipResult result = clip(o.op, subject, clip_set, ClipOptions{o.check});
+    std::cout << to_wkt(result.set.polygons()) << '\n';
     if (o.stats) {
       std::cerr << "intersections " << result.stats.intersections << ", vertices snapped "
                 << result.stats.vertices_snapped << ", holes split " << result.stats.holes_split

@@ -282,6 +282,14 @@ ClipResult import_polygons(const std::vector<std::vector<Ring>>& polygons,
       if (k > 0) std::reverse(ring.begin(), ring.end());
       rings.push_back(std::move(ring));
     }
+  // One strictly simple ring without holes is a valid set already: its canonical form is what
+  // normalize would return, at the cost of the check above (a 4 * 10^5-vertex polygon minus the
+  // empty set spent 80% of its time re-noding it).
+  if (rings.size() == 1 && simple[0]) {
+    ClipResult out;
+    out.polygons.push_back(detail::canonical_ring(std::move(rings[0])));
+    return out;
+  }
   if (std::find(simple.begin(), simple.end(), false) == simple.end())
     return normalize(rings, FillRule::kPositive, options);  // valid OGC input: one pass
   // One rounding for everything: all rings are snapped together first, after which filling
