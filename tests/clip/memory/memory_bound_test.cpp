@@ -1,0 +1,104 @@
+// The working memory clip.hpp promises (MEMORY): the peak of heap bytes allocated during one
+// operation, beyond what was allocated before it, stays within a bound per input edge plus a
+// bound per crossing. Measured by replacing the global allocation functions, so this is its
+// own executable (tests/CMakeLists.txt).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <new>
+#include <numbers>
+
+#include "edgeland/clip/clip.hpp"
+
+namespace {
+
+// Heap bytes in use and their peak; malloc_usable_size would be glibc's, so each block carries
+// its size in a header of max_align_t.
+std::size_t g_in_use = 0, g_peak = 0;
+constexpr std::size_t kHeader = alignof(std::max_align_t);
+
+void* counted_alloc(std::size_t n) {
+  auto* p = static_cast<unsigned char*>(std::malloc(n + kHeader));
+  if (!p) throw std::bad_alloc();
+  *reinterpret_cast<std::size_t*>(p) = n;
+  g_in_use += n;
+  if (g_in_use > g_peak) g_peak = g_in_use;
+  return p + kHeader;
+}
+
+void counted_free(void* q) noexcept {
+  if (!q) return;
+  auto* p = static_cast<unsigned char*>(q) - kHeader;
+  g_in_use -= *reinterpret_cast<std::size_t*>(p);
+  std::free(p);
+}
+
+}  // namespace
+
+void* operator new(std::size_t n) { return counted_alloc(n); }
+void* operator new[](std::size_t n) { return counted_alloc(n); }
+void operator delete(void* p) noexcept { counted_free(p); }
+void operator delete[](void* p) noexcept { counted_free(p); }
+void operator delete(void* p, std::size_t) noexcept { counted_free(p); }
+void operator delete[](void* p, std::size_t) noexcept { counted_free(p); }
+
+namespace edgeland {
+namespace {
+
+// Bytes the operation needed on top of its inputs (the result included).
+template <class F>
+std::size_t peak_during(F&& operation) {
+  const std::size_t before = g_in_use;
+  g_peak = g_in_use;
+  operation();
+  return g_peak - before;
+}
+
+// n vertices round (cx, cy), radii alternating r and inner * r (a circle when inner is 1, a
+// zigzag star below), the angles turned by `turn`: integer coordinates, rounded (the test's own
+// input, not library arithmetic).
+Polygon ring_of(std::size_t n, std::int64_t cx, std::int64_t cy, double r, double inner,
+                double turn) {
+  Polygon p;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double a = 2 * std::numbers::pi * static_cast<double>(i) / static_cast<double>(n) + turn;
+    const double radius = i % 2 == 0 ? r : inner * r;
+    p.push_back({cx + std::llround(radius * std::cos(a)), cy + std::llround(radius * std::sin(a))});
+  }
+  return p;
+}
+
+// The bounds stated in clip.hpp (MEMORY).
+constexpr std::size_t kBytesPerEdge = 120, kBytesPerCrossing = 2000, kSlack = 1 << 20;
+
+TEST(ClipMemory, SmoothInputsStayWithinTheBytesPerEdge) {
+  // Two circles of 2 * 10^5 vertices, one moved off the other: 4 * 10^5 edges, 2 crossings.
+  const ValidSet a(PolygonSet{ring_of(200000, 0, 0, 1e8, 1, 0)}, Operand::kSubject);
+  const ValidSet b(PolygonSet{ring_of(200000, 50000000, 0, 1e8, 1, 0)}, Operand::kClip);
+  ClipStats stats;
+  const std::size_t peak = peak_during([&] { stats = clip(ClipOp::kDifference, a, b).stats; });
+  const std::size_t edges = 400000;
+  RecordProperty("bytes_per_edge", static_cast<int>(peak / edges));
+  EXPECT_LE(stats.intersections, 8u);
+  EXPECT_LE(peak, kBytesPerEdge * edges + kSlack) << peak / edges << " bytes per edge";
+}
+
+TEST(ClipMemory, CrossingsStayWithinTheBytesPerCrossing) {
+  // Two zigzag stars, one turned by a few millionths of a turn: every edge crosses one of the
+  // other's, and every crossing is rounded.
+  const ValidSet a(PolygonSet{ring_of(100000, 0, 0, 1e8, 0.9, 0)}, Operand::kSubject);
+  const ValidSet b(PolygonSet{ring_of(100000, 1234, -777, 1e8, 0.9, 2 * std::numbers::pi * 3e-6)},
+                   Operand::kClip);
+  ClipStats stats;
+  const std::size_t peak = peak_during([&] { stats = clip(ClipOp::kDifference, a, b).stats; });
+  const std::size_t edges = 200000;
+  ASSERT_GE(stats.intersections, 50000u);
+  RecordProperty("bytes_per_crossing",
+                 static_cast<int>((peak - std::min(peak, kBytesPerEdge * edges)) / stats.intersections));
+  EXPECT_LE(peak, kBytesPerEdge * edges + kBytesPerCrossing * stats.intersections + kSlack)
+      << peak << " bytes for " << edges << " edges and " << stats.intersections << " crossings";
+}
+
+}  // namespace
+}  // namespace edgeland
