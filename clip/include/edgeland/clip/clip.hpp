@@ -4,7 +4,15 @@
 //
 // ACCURACY CONTRACT. For valid integer inputs the output differs from the exact real-number
 // result R only by snap rounding (the kernel's round_to_grid, see clip/README.md):
-//   * every output vertex lies within one unit of the boundary of R;
+//   * every output vertex lies within one unit of the boundary of the exact piece it belongs
+//     to. Results are partitions (clip/README.md, Assembly): the pieces are, for a union, each
+//     subject member and each clip member minus the subject; for an intersection or a
+//     difference, each subject member's part; for xor, both differences; for normalize and
+//     import_polygons, the filled region. So a vertex where two output polygons meet lies
+//     near a member's boundary, which can be far inside R (a square united with a larger one
+//     around it keeps the small square's corners, inside R); hole splitting cuts only between
+//     vertices the pieces already have. (tests/support/accuracy_contract.hpp checks exactly
+//     this, against CGAL's exact pieces.)
 //   * |area(output) - area(R)| <= perimeter(R) (in coordinate units);
 //   * every point farther than 1.5 units from the boundary of R is inside the output iff it
 //     is inside R.
