@@ -5,10 +5,10 @@
 # with the fuzz targets), then the whole regression corpus and the seed corpora run once
 # through the sanitized fuzz binaries. (The gcc build replays the same corpus in ctest, label
 # `regress`; the sanitizer pass leaves the seed replay to this step.)
-# EDGELAND_FUZZ_CI_SECONDS sets the budget per target (default 30). Exit 1 on any crash.
+# EDGELAND_FUZZ_CI_SECONDS sets the budget per target (default 20). Exit 1 on any crash.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-seconds="${EDGELAND_FUZZ_CI_SECONDS:-30}"
+seconds="${EDGELAND_FUZZ_CI_SECONDS:-20}"
 build="${EDGELAND_FUZZ_BUILD_DIR:-build/fuzz}"
 passed=0 failed=0
 for target in clip_pair clip_sequence normalize parse edit_sequence load; do

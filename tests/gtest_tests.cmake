@@ -47,3 +47,13 @@ function(edgeland_gtest_tests target)
     endif()
   endforeach()
 endfunction()
+
+# edgeland_test_pch(TARGET)
+#
+# Precompiles GoogleTest and RapidCheck for a test executable that links both: parsing them
+# was about 4 of the 8 seconds of a small test file, once per file and per build (the gcc and
+# the sanitizer build of CI).
+function(edgeland_test_pch target)
+  target_precompile_headers(${target} PRIVATE <gtest/gtest.h> <rapidcheck.h> <rapidcheck/gtest.h>
+    <algorithm> <cstdint> <string> <vector>)
+endfunction()

@@ -51,12 +51,26 @@ std::vector<Point64> vertices_of(const std::vector<Ring>& rings) {
   return v;
 }
 
-// `o` is `exact`, the region of `rings` under some rule: valid, and within the contract.
-void expect_region(const FilledRegion& exact, const std::vector<Ring>& rings, const Outcome& o,
+// Under the sanitizers (EDGELAND_PEERS_WITHOUT_ORACLE) the exact reference is left out: its
+// CGAL lazy numbers, slow under ASan's allocator, were most of that pass's time, and the
+// sanitizers are there for edgeland's code, which runs the same without it. Every output is
+// still validated and fed on; the gcc pass checks each against the reference.
+#ifdef EDGELAND_PEERS_WITHOUT_ORACLE
+constexpr bool kExactOracle = false;
+#else
+constexpr bool kExactOracle = true;
+#endif
+
+// `o` is the region `exact_of()` computes, of `rings` under some rule: valid, and within the
+// contract.
+template <class Exact>
+void expect_region(Exact&& exact_of, const std::vector<Ring>& rings, const Outcome& o,
                    const std::string& what) {
   ASSERT_TRUE(o.ok()) << what << ": " << o.error;
   const ValidationReport report = validate(o.result->polygons);
   EXPECT_TRUE(report.ok()) << what << ": invalid output " << to_wkt(o.result->polygons);
+  if (!kExactOracle) return;
+  const FilledRegion exact = exact_of();
   ASSERT_EQ(exact.region.area(), exact.trapezoid_area) << "reference broken for " << what;
   const ContractReport contract =
       check_contract(exact_region(exact.region), *o.result, vertices_of(rings),
@@ -67,7 +81,8 @@ void expect_region(const FilledRegion& exact, const std::vector<Ring>& rings, co
 // `o` is the fill of `rings` by `rule`.
 void expect_fill(const std::vector<Ring>& rings, FillRule rule, const Outcome& o,
                  const std::string& what) {
-  expect_region(filled_region(rings, rule), rings, o, what + " " + fill_rule_name(rule));
+  expect_region([&] { return filled_region(rings, rule); }, rings, o,
+                what + " " + fill_rule_name(rule));
 }
 
 // One clip in checked mode: valid output meeting the contract. Returns the output if any.
@@ -79,6 +94,7 @@ std::optional<PolygonSet> expect_clip(ClipOp op, const PolygonSet& s, const Poly
   EXPECT_TRUE(validate(o.result->polygons).ok())
       << what << ": invalid output " << to_wkt(o.result->polygons) << "\n  "
       << describe_case(op, s, c);
+  if (!kExactOracle) return o.result->polygons;
   const ContractReport contract = check_clip(op, s, c, *o.result);
   EXPECT_TRUE(contract.ok()) << what << ": " << contract.failure;
   return o.result->polygons;
@@ -93,7 +109,7 @@ TEST_P(PeerCases, OperandsImportAsTheirExactOgcRegion) {
   const ScaledCase& c = peer_case();
   SCOPED_TRACE(describe(c));
   for (const IntegerPolygons* operand : {&c.a, &c.b})
-    expect_region(ogc_region(*operand), all_rings(*operand), run_import(*operand),
+    expect_region([&] { return ogc_region(*operand); }, all_rings(*operand), run_import(*operand),
                   operand == &c.a ? "import a" : "import b");
 }
 
