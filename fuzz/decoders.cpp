@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <exception>
+#include <functional>
 #include <numeric>
 #include <utility>
 #include <vector>
@@ -40,6 +41,10 @@ constexpr std::array<FillRule, 4> kRules{FillRule::kEvenOdd, FillRule::kNonZero,
 
 std::int64_t clamp_coord(std::int64_t v) { return std::clamp(v, -kCoordBound, kCoordBound); }
 Point64 clamped(std::int64_t x, std::int64_t y) { return {clamp_coord(x), clamp_coord(y)}; }
+
+// Text for findings and logs, built only when something is found: on the small inputs fuzzing
+// feeds, writing WKT for every operation cost as much as the operations (issue 18).
+using Text = std::function<std::string()>;
 
 // Turns geometry into text for findings and logs.
 std::string op_line(ClipOp op, const PolygonSet& a, const PolygonSet& b) {
@@ -406,14 +411,14 @@ std::string canonical_violation(const PolygonSet& out) {
   return "";
 }
 
-std::optional<Finding> invalid_output(const std::string& context, const PolygonSet& out,
-                                      std::string log_text) {
+std::optional<Finding> invalid_output(const Text& context, const PolygonSet& out,
+                                      const Text& log_text) {
   const ValidationReport report = validate(out, 1);
   std::string problem =
       report.ok() ? canonical_violation(out) : "invalid: " + report.violations.front().describe();
   if (problem.empty()) return std::nullopt;
-  return Finding{"output (" + problem + ") of " + context + "\n  output = " + to_wkt(out),
-                 std::move(log_text)};
+  return Finding{"output (" + problem + ") of " + context() + "\n  output = " + to_wkt(out),
+                 log_text()};
 }
 
 // ---- clip_pair --------------------------------------------------------------------------
@@ -490,19 +495,19 @@ std::optional<Finding> check_pair_points(const Pair& p, const std::array<ClipRes
 std::optional<Finding> clip_pair_checks(const Pair& p) {
   std::array<ClipResult, 4> results;
   for (std::size_t k = 0; k < kOps.size(); ++k) {
-    const std::string log_text = pair_log(kOps[k], p.a, p.b);
+    const Text log_text = [&] { return pair_log(kOps[k], p.a, p.b); };
+    const Text line = [&] { return op_line(kOps[k], p.a, p.b); };
     try {
       results[k] = clip(kOps[k], p.a, p.b, ClipOptions{.checked = true});
     } catch (const InternalError& e) {
       return Finding{
-          std::string("InternalError: ") + e.what() + "\n  " + op_line(kOps[k], p.a, p.b),
-          log_text};
+          std::string("InternalError: ") + e.what() + "\n  " + line(), log_text()};
     } catch (const std::exception& e) {
       return Finding{std::string("unexpected exception on valid inputs: ") + e.what() + "\n  " +
-                         op_line(kOps[k], p.a, p.b),
-                     log_text};
+                         line(),
+                     log_text()};
     }
-    if (auto f = invalid_output(op_line(kOps[k], p.a, p.b), results[k].polygons, log_text))
+    if (auto f = invalid_output(line, results[k].polygons, log_text))
       return f;
   }
   if (auto f = check_pair_areas(p, results)) return f;
@@ -514,34 +519,34 @@ std::optional<Finding> clip_pair_checks(const Pair& p) {
 // first violation; otherwise exactly the ValidSet overload's result (clip/README.md,
 // "Validating while clipping").
 std::optional<Finding> validating_clip_agrees(ClipOp op, const PolygonSet& a, const PolygonSet& b,
-                                              const std::string& log_text) {
+                                              const Text& log) {
   const ValidationReport va = validate(a, 1), vb = validate(b, 1);
-  const std::string line = op_line(op, a, b);
+  const Text line = [&] { return op_line(op, a, b); };
   try {
     const ClipResult r = clip(op, a, b, ClipOptions{.checked = true});
     if (!va.ok() || !vb.ok()) {
       return Finding{"clip() accepted an invalid operand (" +
-                         (va.ok() ? vb : va).violations.front().describe() + "): " + line,
-                     log_text};
+                         (va.ok() ? vb : va).violations.front().describe() + "): " + line(),
+                     log()};
     }
     const ValidClipResult v =
         clip(op, ValidSet(a), ValidSet(b, Operand::kClip), ClipOptions{.checked = true});
     if (v.set.polygons() != r.polygons)
-      return Finding{"clip() on PolygonSets and on ValidSets differ: " + line, log_text};
+      return Finding{"clip() on PolygonSets and on ValidSets differ: " + line(), log()};
   } catch (const InvalidInput& e) {
     if (va.ok() && vb.ok())
-      return Finding{std::string("InvalidInput on valid operands: ") + e.what() + "\n  " + line, log_text};
+      return Finding{std::string("InvalidInput on valid operands: ") + e.what() + "\n  " + line(), log()};
     const Operand which = va.ok() ? Operand::kClip : Operand::kSubject;
     const Violation& expected = (va.ok() ? vb : va).violations.front();
     if (e.operand != which || e.violation.describe() != expected.describe()) {
       return Finding{std::string("clip() reports ") + e.what() + " where validate() finds " +
-                         (va.ok() ? "clip: " : "subject: ") + expected.describe() + "\n  " + line,
-                     log_text};
+                         (va.ok() ? "clip: " : "subject: ") + expected.describe() + "\n  " + line(),
+                     log()};
     }
   } catch (const InternalError& e) {
-    return Finding{std::string("InternalError: ") + e.what() + "\n  " + line, log_text};
+    return Finding{std::string("InternalError: ") + e.what() + "\n  " + line(), log()};
   } catch (const std::exception& e) {
-    return Finding{std::string("unexpected exception: ") + e.what() + "\n  " + line, log_text};
+    return Finding{std::string("unexpected exception: ") + e.what() + "\n  " + line(), log()};
   }
   return std::nullopt;
 }
@@ -573,7 +578,8 @@ SequenceRun run_sequence(const std::uint8_t* data, std::size_t size) {
       operand = decoder.valid_set();
     }
     const PolygonSet before = state.current();
-    const std::string context = op_line(op, before, operand);
+    const Text context = [&] { return op_line(op, before, operand); };
+    const Text log_so_far = [&] { return recorder.text(); };
     // Now and then the validating clip() on operands that may be invalid: the raw operand, or
     // the state and the operand merged into one set (members overlapping, nested, sharing
     // edges in one direction, or a valid set after all). Chosen from what is already decoded,
@@ -584,13 +590,13 @@ SequenceRun run_sequence(const std::uint8_t* data, std::size_t size) {
         merged.insert(merged.end(), operand.begin(), operand.end());
         const bool merged_first = (s / 4) % 2 == 0;
         if (auto f = validating_clip_agrees(op, merged_first ? merged : operand,
-                                            merged_first ? operand : merged, recorder.text()))
+                                            merged_first ? operand : merged, log_so_far))
           return {f, recorder.text()};
         break;
       }
       case 1:
         if (raw) {
-          if (auto f = validating_clip_agrees(op, operand, before, recorder.text()))
+          if (auto f = validating_clip_agrees(op, operand, before, log_so_far))
             return {f, recorder.text()};
         }
         break;
@@ -601,13 +607,13 @@ SequenceRun run_sequence(const std::uint8_t* data, std::size_t size) {
       state.apply(op, operand, checked);
     } catch (const InvalidInput& e) {
       if (state.current() != before) {
-        return {Finding{"a step rejected with InvalidInput changed the set: " + context,
+        return {Finding{"a step rejected with InvalidInput changed the set: " + context(),
                         recorder.text()},
                 recorder.text()};
       }
       if (e.operand != Operand::kClip || validate(operand, 0).ok()) {
         return {Finding{std::string("InvalidInput (") + e.what() +
-                            ") for a step whose only bad operand could be the clip one: " + context,
+                            ") for a step whose only bad operand could be the clip one: " + context(),
                         recorder.text()},
                 recorder.text()};
       }
@@ -616,11 +622,11 @@ SequenceRun run_sequence(const std::uint8_t* data, std::size_t size) {
       recorder.comment(std::string("the next step failed: ") + e.what());
       recorder.record_clip(op, before, operand, before);
       return {
-          Finding{std::string("InternalError: ") + e.what() + "\n  " + context, recorder.text()},
+          Finding{std::string("InternalError: ") + e.what() + "\n  " + context(), recorder.text()},
           recorder.text()};
     }
     recorder.record_clip(op, before, operand, state.current());
-    if (auto f = invalid_output(context, state.current(), recorder.text())) {
+    if (auto f = invalid_output(context, state.current(), log_so_far)) {
       return {f, recorder.text()};
     }
   }
@@ -649,20 +655,20 @@ SequenceRun run_sequence(const std::uint8_t* data, std::size_t size) {
 // accepts such rings, or returns an invalid set; nullopt (unwrapped) when all is well, and a
 // wrapped nullopt when the typed error was rightly thrown (nothing more to check).
 template <class Fill>
-std::optional<std::optional<Finding>> filled_checks(const std::string& context, bool out_of_range,
+std::optional<std::optional<Finding>> filled_checks(const Text& context, bool out_of_range,
                                                     ClipResult& result, Fill&& fill) {
   try {
     result = fill();
   } catch (const InternalError& e) {
-    return Finding{std::string("InternalError: ") + e.what() + "\n  " + context, ""};
+    return Finding{std::string("InternalError: ") + e.what() + "\n  " + context(), ""};
   } catch (const InvalidInput& e) {
     if (out_of_range) return std::optional<Finding>{};  // the documented typed error
-    return Finding{std::string("in-range rings rejected: ") + e.what() + "\n  " + context, ""};
+    return Finding{std::string("in-range rings rejected: ") + e.what() + "\n  " + context(), ""};
   } catch (const std::exception& e) {
-    return Finding{std::string("unexpected exception: ") + e.what() + "\n  " + context, ""};
+    return Finding{std::string("unexpected exception: ") + e.what() + "\n  " + context(), ""};
   }
-  if (out_of_range) return Finding{"out-of-range coordinate accepted: " + context, ""};
-  if (auto f = invalid_output(context, result.polygons, "")) return f;
+  if (out_of_range) return Finding{"out-of-range coordinate accepted: " + context(), ""};
+  if (auto f = invalid_output(context, result.polygons, [] { return std::string(); })) return f;
   return std::nullopt;
 }
 
@@ -672,8 +678,10 @@ std::optional<std::optional<Finding>> filled_checks(const std::string& context, 
 std::optional<Finding> import_checks(const std::vector<Ring>& rings, bool out_of_range) {
   if (rings.empty()) return std::nullopt;
   const std::vector<std::vector<Ring>> polygons{rings};
-  const std::string context = "import_polygons of the polygon " + to_wkt(PolygonSet(rings.begin(), rings.end())) +
-                              " (ring 0 its exterior)";
+  const Text context = [&] {
+    return "import_polygons of the polygon " + to_wkt(PolygonSet(rings.begin(), rings.end())) +
+           " (ring 0 its exterior)";
+  };
   ClipResult result;
   if (auto f = filled_checks(context, out_of_range, result,
                              [&] { return import_polygons(polygons, ClipOptions{.checked = true}); }))
@@ -687,7 +695,7 @@ std::optional<Finding> import_checks(const std::vector<Ring>& rings, bool out_of
     const bool actual = locate(q, result.polygons) != PointLocation::kOutside;
     if ((value > 0) != actual)
       return Finding{"point " + point_text(q) + (actual ? " is" : " is not") + " in the output of " +
-                         context + "\n  output = " + to_wkt(result.polygons),
+                         context() + "\n  output = " + to_wkt(result.polygons),
                      ""};
   }
   return std::nullopt;
@@ -702,8 +710,10 @@ std::optional<Finding> normalize_checks(const std::uint8_t* data, std::size_t si
   for (const Ring& r : rings) {
     for (const Point64& p : r) out_of_range = out_of_range || !in_range(p);
   }
-  const std::string context = std::string("normalize ") + fill_rule_name(rule) +
-                              " rings = " + to_wkt(PolygonSet(rings.begin(), rings.end()));
+  const Text context = [&] {
+    return std::string("normalize ") + fill_rule_name(rule) +
+           " rings = " + to_wkt(PolygonSet(rings.begin(), rings.end()));
+  };
   ClipResult result;
   if (auto f = filled_checks(context, out_of_range, result,
                              [&] { return normalize(rings, rule, ClipOptions{.checked = true}); }))
@@ -718,7 +728,7 @@ std::optional<Finding> normalize_checks(const std::uint8_t* data, std::size_t si
     const bool actual = locate(q, result.polygons) != PointLocation::kOutside;
     if (expected != actual) {
       return Finding{"point " + point_text(q) + " with winding number " + std::to_string(w) +
-                         (actual ? " is" : " is not") + " in the output of " + context +
+                         (actual ? " is" : " is not") + " in the output of " + context() +
                          "\n  output = " + to_wkt(result.polygons),
                      ""};
     }
