@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "splitmix64.hpp"
+#include "workloads.hpp"
 
 namespace edgeland::bench {
 namespace {
@@ -12,11 +13,6 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr std::int64_t kToothWidth = 40;
 constexpr std::int64_t kGap = 40;
 constexpr std::int64_t kPitch = kToothWidth + kGap;
-
-// Polar point around (cx, cy), rounded to the nearest integer (halves away from zero).
-Point64 polar(double cx, double cy, double r, double angle) {
-  return {std::llround(cx + r * std::cos(angle)), std::llround(cy + r * std::sin(angle))};
-}
 
 // A star whose vertex i sits at angle 2*pi*i/n + turn and radius radius(i).
 template <class RadiusFn>

@@ -15,10 +15,6 @@ constexpr double kStarRadius = 1.0e7;
 
 using Random = SplitMix64;
 
-Point64 polar(double cx, double cy, double r, double angle) {
-  return {std::llround(cx + r * std::cos(angle)), std::llround(cy + r * std::sin(angle))};
-}
-
 // A star polygon: vertex i at angle 2*pi*(i + offset)/n and radius radius(i, angle).
 template <class RadiusFn>
 Polygon star(std::size_t n, double cx, double cy, double offset, RadiusFn radius) {
@@ -46,6 +42,10 @@ Polygon spiky_star(std::size_t n, double cx, double cy, double offset, Random& r
 }
 
 }  // namespace
+
+Point64 polar(double cx, double cy, double r, double angle) {
+  return {std::llround(cx + r * std::cos(angle)), std::llround(cy + r * std::sin(angle))};
+}
 
 void require_valid(const PolygonSet& set, const char* what) {
   const ValidationReport report = validate(set, 1);

@@ -40,4 +40,8 @@ Carving carving(std::size_t count);
 // Throws std::logic_error naming the workload if `set` is not a valid polygon set.
 void require_valid(const PolygonSet& set, const char* what);
 
+// The point at distance r and `angle` (radians) from (cx, cy), rounded to the nearest integer
+// (halves away from zero): the workloads' one use of floating point, in building inputs.
+Point64 polar(double cx, double cy, double r, double angle);
+
 }  // namespace edgeland::bench
