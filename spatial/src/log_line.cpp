@@ -26,7 +26,8 @@ std::string replace_line(const PolygonSet& shape, Material from, Material to) {
 std::string world_line(const Box64& w, Material fill) {
   std::string s = "world " + std::to_string(w.min.x) + " " + std::to_string(w.min.y) + " " +
                   std::to_string(w.max.x) + " " + std::to_string(w.max.y);
-  if (fill != kEmpty) s += " " + number(fill);
+  // (Appended piece by piece: `" " + string` here set off g++ 12's false -Wrestrict.)
+  if (fill != kEmpty) s.append(" ").append(number(fill));
   return s + "\n";
 }
 
