@@ -76,6 +76,35 @@ RC_GTEST_PROP(BoxGrid, ReportsEveryPairAmongManySmallBoxes, ()) {
   RC_ASSERT(got == expected);
 }
 
+// Twenty boxes covering a 10,000-unit square among 980 unit boxes: the cells follow the
+// typical box (about 200 units), so each big box fills every one of some 2,600 cells, far
+// past 32 cells per box; the grid hands over to the sweep, which must still report each
+// overlapping pair once.
+TEST(BoxGrid, FallsBackToTheSweepWhenBigBoxesFillEveryCell) {
+  std::vector<Box64> boxes;
+  for (std::int64_t k = 0; k < 20; ++k) boxes.push_back({{k, 0}, {10000, 10000 - k}});
+  std::uint64_t state = 12345;  // a fixed linear congruential sequence places the small ones
+  auto next = [&] {
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    return static_cast<std::int64_t>((state >> 33) % 10000);
+  };
+  while (boxes.size() < 1000) {
+    const Point64 corner{next(), next()};
+    boxes.push_back({corner, {corner.x + 1, corner.y + 1}});
+  }
+  Pairs expected, got;
+  for (std::uint32_t i = 0; i < boxes.size(); ++i)
+    for (std::uint32_t j = i + 1; j < boxes.size(); ++j)
+      if (boxes[i].overlaps(boxes[j])) expected.emplace_back(i, j);
+  for_each_overlapping_pair_in_grid(boxes, [&](std::uint32_t i, std::uint32_t j) {
+    EXPECT_LT(i, j);
+    got.emplace_back(i, j);
+  });
+  std::sort(got.begin(), got.end());
+  EXPECT_EQ(got.size(), expected.size());
+  EXPECT_TRUE(got == expected);  // sorted, so a duplicate would show as an extra element
+}
+
 RC_GTEST_PROP(SegmentIndex, ProposesEveryBoxOverlappingPairButRunNeighbours, ()) {
   const auto ring_sizes = *rc::gen::container<std::vector<int>>(rc::gen::inRange(2, 40));
   std::vector<Segment> segs;
