@@ -71,6 +71,8 @@ BoundaryWalks trace_boundaries(const PlaneGraph& g, const std::vector<FaceLabel>
       for (std::uint32_t tried = 1; emitted[next] != label; ++tried) {
         const std::uint32_t w = g.target(cur);
         if (tried >= g.around_begin[w + 1] - g.around_begin[w]) {
+          // Not reached by tests: a region's boundary always continues at its vertex (an
+          // internal error otherwise, thrown just below).
           next = cur;
           break;
         }
@@ -169,7 +171,7 @@ Assembled assemble(const PlaneGraph& g, const std::vector<SideState>& left,
     Ring ring = canonical_ring_from(points, chains ? check.data() : nullptr, least, turn);
     if (turn == 0) {
       // Not expected of a face boundary (simple, so nonzero area means a convex smallest
-      // vertex); decided by the area as before, should it happen.
+      // vertex); decided by the area as before, should it happen. Not reached by tests.
       const Int128 area = points.size() < 3 ? 0 : twice_signed_area(points);
       if (area == 0) return false;
       ring = canonical_ring(Ring(points.begin(), points.end()));

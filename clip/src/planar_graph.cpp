@@ -105,13 +105,6 @@ void PlaneGraph::append_points(std::uint32_t h, std::vector<Point64>& out) const
   }
 }
 
-PlaneGraph build_plane_graph(const EdgeList& edges, const std::vector<Fragment>& fragments,
-                             const std::vector<std::uint8_t>& touched) {
-  PlaneGraph g;
-  build_plane_graph(edges, fragments, touched, g);
-  return g;
-}
-
 void build_plane_graph(const EdgeList& input, const std::vector<Fragment>& fragments,
                        const std::vector<std::uint8_t>& touched, PlaneGraph& g) {
   const std::vector<Segment>& segments = input.segments;
@@ -252,12 +245,12 @@ void build_plane_graph(const EdgeList& input, const std::vector<Fragment>& fragm
     Point64 expected = segments[s].a;
     for (std::uint32_t k = first_fragment[s]; k < first_fragment[s + 1]; ++k) {
       const Segment& f = fragments[k].seg;
-      if (f.a != expected)
+      if (f.a != expected)  // Not reached by tests: snap rounding's fragments run end to end.
         throw std::logic_error("plane graph: the fragments of a segment do not run end to end");
       expected = f.b;
       add_piece(f.a, polygon, channel);
     }
-    if (expected != segments[s].b)
+    if (expected != segments[s].b)  // Not reached by tests (as above).
       throw std::logic_error("plane graph: the fragments of a segment do not run end to end");
   }
   // Segments that are not in rings (hole splitting's pieces) end where nothing starts.

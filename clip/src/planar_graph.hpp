@@ -78,10 +78,8 @@ struct PlaneGraph {
 // its own single fragment. `edges` describes each input segment: its tag, the segment after it
 // along its ring and its weight; `touched` whether it is touched (SnapStats::touched; an
 // untouched segment is its own single fragment).
-// O(f) for the f fragments of touched segments (radix sorts), plus O(n) for the rest.
-PlaneGraph build_plane_graph(const EdgeList& edges, const std::vector<Fragment>& fragments,
-                             const std::vector<std::uint8_t>& touched);
-// The same into g, reusing its arrays' capacity.
+// O(f) for the f fragments of touched segments (radix sorts), plus O(n) for the rest. Builds
+// into g, reusing its arrays' capacity.
 void build_plane_graph(const EdgeList& edges, const std::vector<Fragment>& fragments,
                        const std::vector<std::uint8_t>& touched, PlaneGraph& g);
 

@@ -20,7 +20,7 @@ const char* reason_text(InvalidOverlay::Reason r) {
     case InvalidOverlay::Reason::kBadWindow: return "a window is not a box of positive area within the coordinate bound";
     case InvalidOverlay::Reason::kWindowsOverlap: return "two windows overlap";
   }
-  return "?";
+  return "?";  // Not reached by tests: the switch covers every Reason.
 }
 
 Ring box_ring(const Box64& b) {
@@ -62,7 +62,7 @@ std::size_t high_half(detail::FaceLabel l) { return static_cast<std::size_t>(l >
 void check_inside(const PolygonSet& set, const Box64& window, const std::string& what,
                   const std::function<std::string()>& inputs) {
   for (const Polygon& p : set)
-    if (!inside(*bounding_box(p), window))
+    if (!inside(*bounding_box(p), window))  // Not reached by tests: an internal error.
       throw InternalError(what + ": output polygon outside its window", inputs(), to_wkt(PolygonSet{box_ring(window)}));
 }
 
@@ -95,6 +95,8 @@ LabeledClipResult relabel(const ValidSet& regions, std::span<const RegionLabel> 
   }
   const PolygonSet window_rings{box_ring(window)};
   detail::RelabelTable rt{labels.data(), table.data(), table.size(), all_inside ? 1 : 2};
+  // The two lambdas are called, and the unwinding of `p` below runs, only for an internal
+  // error: not reached by tests.
   auto inputs = [&] { return to_wkt(members); };
   auto shape_wkt = [&] { return to_wkt(shape.polygons()) + " within " + to_wkt(window_rings); };
   detail::PipelineResult r = detail::guarded(
@@ -133,6 +135,8 @@ std::vector<LabeledSet> cut_to_windows(const ValidSet& regions,
   if (!disjoint.ok())
     throw InvalidOverlay(InvalidOverlay::Reason::kWindowsOverlap, disjoint.violations.front().polygon);
   const PolygonSet& members = regions.polygons();
+  // As in relabel(): the lambdas and the unwinding of `p` below (and of `part`, further down)
+  // run only for an internal error, not reached by tests.
   auto inputs = [&] { return to_wkt(members); };
   auto windows_wkt = [&] { return to_wkt(window_rings); };
   detail::PipelineResult r = detail::guarded(

@@ -111,6 +111,8 @@ struct EdgeSigns {
     const int o3 = orient(b, a.left), o4 = orient(b, a.right);
     if (o3 * o4 > 0) return {false, false};
     if (o1 == 0 && o2 == 0) {  // collinear: on one line, lexicographic order is order along it
+      // Not reached by tests: new status neighbours never lie on one line (two collinear edges
+      // cut by the sweep line at q both contain q, so both sit in the run through q).
       return {std::max(a.left, b.left) <= std::min(a.right, b.right), false};
     }
     return {true, o1 != 0 && o2 != 0 && o3 != 0 && o4 != 0};
@@ -374,6 +376,8 @@ class OneSweep {
       if (b - a > 2 || (b - a == 2 && !may_touch(at_[a], at_[a + 1]))) return false;
       a = b;
     }
+    // Not reached by tests: this runs only when a ring is met twice at q, and such a ring has
+    // three or more edges there, which the loop rejects.
     return true;
   }
 
