@@ -71,14 +71,13 @@ BoundaryWalks trace_boundaries(const PlaneGraph& g, const std::vector<FaceLabel>
       for (std::uint32_t tried = 1; emitted[next] != label; ++tried) {
         const std::uint32_t w = g.target(cur);
         if (tried >= g.around_begin[w + 1] - g.around_begin[w]) {
-          // Not reached by tests: a region's boundary always continues at its vertex (an
-          // internal error otherwise, thrown just below).
+          // Not reached by tests: a region's boundary always continues at its vertex.
           next = cur;
           break;
         }
         next = g.around[g.turn_at[next ^ 1]];
       }
-      if (next == cur || (used[next] && next != start))
+      if (next == cur || (used[next] && next != start))  // Not reached by tests: an internal error.
         throw std::logic_error("assembly: region boundary does not close");
       cur = next;
     } while (cur != start);

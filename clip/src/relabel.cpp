@@ -135,8 +135,8 @@ std::vector<LabeledSet> cut_to_windows(const ValidSet& regions,
   if (!disjoint.ok())
     throw InvalidOverlay(InvalidOverlay::Reason::kWindowsOverlap, disjoint.violations.front().polygon);
   const PolygonSet& members = regions.polygons();
-  // As in relabel(): the lambdas and the unwinding of `p` below (and of `part`, further down)
-  // run only for an internal error, not reached by tests.
+  // As in relabel(): the lambdas and the unwinding of `p` below run only for an internal
+  // error, not reached by tests.
   auto inputs = [&] { return to_wkt(members); };
   auto windows_wkt = [&] { return to_wkt(window_rings); };
   detail::PipelineResult r = detail::guarded(
@@ -169,6 +169,8 @@ std::vector<LabeledSet> cut_to_windows(const ValidSet& regions,
     std::size_t end = begin;
     while (end < sorted.labels.size() && high_half(sorted.labels[end]) == w) ++end;
     if (options.checked) {
+      // gcov ascribes the unwinding of `part` (an internal error) to the next line: not
+      // reached by tests.
       const PolygonSet part(sorted.clipped.polygons.begin() + static_cast<std::ptrdiff_t>(begin),
                             sorted.clipped.polygons.begin() + static_cast<std::ptrdiff_t>(end));
       check_inside(part, windows[w], "cut_to_windows", inputs);
