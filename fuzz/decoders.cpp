@@ -13,6 +13,7 @@
 #include "edgeland/clip/clip.hpp"
 #include "edgeland/kernel/angle.hpp"
 #include "edgeland/kernel/area.hpp"
+#include "edgeland/kernel/canonical_form.hpp"
 #include "edgeland/kernel/int128.hpp"
 #include "edgeland/kernel/perimeter.hpp"
 #include "edgeland/kernel/point_in_polygon.hpp"
@@ -390,32 +391,15 @@ std::string point_text(Point64 p) {
   return "(" + std::to_string(p.x) + " " + std::to_string(p.y) + ")";
 }
 
-// clip.hpp's canonical output: each polygon starts at its lexicographically smallest vertex,
-// has no collinear consecutive vertices, and the polygons are sorted by that vertex.
-std::string canonical_violation(const PolygonSet& out) {
-  for (std::size_t k = 0; k < out.size(); ++k) {
-    const Polygon& p = out[k];
-    if (std::min_element(p.begin(), p.end()) != p.begin()) {
-      return "polygon " + std::to_string(k) + " does not start at its smallest vertex";
-    }
-    for (std::size_t i = 0; i < p.size(); ++i) {
-      const Point64 a = p[(i + p.size() - 1) % p.size()], b = p[i], c = p[(i + 1) % p.size()];
-      if (orientation(a, b, c) == Orientation::kCollinear) {
-        return "polygon " + std::to_string(k) + " has a collinear vertex " + point_text(b);
-      }
-    }
-    if (k > 0 && p.front() < out[k - 1].front()) {
-      return "polygons " + std::to_string(k - 1) + " and " + std::to_string(k) + " are not sorted";
-    }
-  }
-  return "";
-}
-
 std::optional<Finding> invalid_output(const Text& context, const PolygonSet& out,
                                       const Text& log_text) {
   const ValidationReport report = validate(out, 1);
-  std::string problem =
-      report.ok() ? canonical_violation(out) : "invalid: " + report.violations.front().describe();
+  std::string problem;
+  if (!report.ok()) {
+    problem = "invalid: " + report.violations.front().describe();
+  } else if (const auto order = canonical_violation(out)) {
+    problem = "not canonical: " + order->describe();
+  }
   if (problem.empty()) return std::nullopt;
   return Finding{"output (" + problem + ") of " + context() + "\n  output = " + to_wkt(out),
                  log_text()};

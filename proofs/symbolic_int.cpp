@@ -64,6 +64,12 @@ SymInt operator-(const SymInt& a) {
   return SymInt(a.prover(), a.prover().require_in_range("neg", r, a.bits()), a.bits());
 }
 
+SymInt magnitude(const SymInt& a) {
+  // As arith::magnitude: a, or -a when a < 0 (the negation is the operation that can overflow).
+  const z3::expr r = z3::ite(a.term() < 0, -a.term(), a.term());
+  return SymInt(a.prover(), a.prover().require_in_range("abs", r, a.bits()), a.bits());
+}
+
 SymInt floor_div(const SymInt& n, const SymInt& d) {
   const unsigned bits = common_width(n, d);
   Prover& p = n.prover();

@@ -38,6 +38,8 @@ class SymInt {
   friend SymInt operator-(const SymInt& a, const SymInt& b);
   friend SymInt operator*(const SymInt& a, const SymInt& b);
   friend SymInt operator-(const SymInt& a);
+  // The absolute value as arith::magnitude: obliges |a| to be in range.
+  friend SymInt magnitude(const SymInt& a);
   // Floor division as arith::floor_div: obliges the divisor to be positive (the only case the
   // kernel's floor_div supports) and the quotient to be in range. For a positive divisor
   // Z3's integer `div` is exactly floor division.

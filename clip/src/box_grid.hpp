@@ -10,6 +10,7 @@
 
 #include "edgeland/kernel/bbox.hpp"
 #include "box_sweep.hpp"
+#include "edgeland/kernel/grid_cells.hpp"
 #include "edgeland/kernel/int128.hpp"
 
 namespace edgeland::detail {
@@ -27,21 +28,19 @@ void for_each_overlapping_pair_in_grid(const std::vector<Box64>& boxes, F&& visi
     extent += std::max(b.max.x - b.min.x, b.max.y - b.min.y);
   }
   // Cells about as large as a typical box, and never many more cells than boxes.
-  const Int128 w = all.max.x - all.min.x + 1, h = all.max.y - all.min.y + 1;
-  std::int64_t cell = std::max<std::int64_t>(1, static_cast<std::int64_t>(extent / static_cast<Int128>(n)));
-  while (((w + cell - 1) / cell) * ((h + cell - 1) / cell) > 4 * static_cast<Int128>(n) + 16)
-    cell *= 2;
-  const std::int64_t rows = static_cast<std::int64_t>((h + cell - 1) / cell);
+  std::int64_t cell = std::max<std::int64_t>(1, static_cast<std::int64_t>(extent / n));
+  while (cells_covering(all, cell) > 4 * std::uint64_t{n} + 16) cell *= 2;
   auto column = [&](std::int64_t x) { return (x - all.min.x) / cell; };
   auto row = [&](std::int64_t y) { return (y - all.min.y) / cell; };
+  const std::int64_t rows = row(all.max.y) + 1;
   const std::size_t cells = static_cast<std::size_t>(column(all.max.x) + 1) * static_cast<std::size_t>(rows);
 
   // A few huge boxes among many small ones would fill every cell: past 32 cells per box on
   // average, the sweep is the better tool.
   Int128 entries = 0;
   for (const Box64& b : boxes)
-    entries += Int128(column(b.max.x) - column(b.min.x) + 1) * (row(b.max.y) - row(b.min.y) + 1);
-  if (entries > 32 * static_cast<Int128>(n)) {
+    entries += block_size(column(b.max.x) - column(b.min.x) + 1, row(b.max.y) - row(b.min.y) + 1);
+  if (entries > 32 * std::uint64_t{n}) {
     for_each_overlapping_pair(sorted_for_sweep(boxes), visit);
     return;
   }

@@ -10,6 +10,7 @@
 #include "edgeland/kernel/bbox.hpp"
 #include "edgeland/kernel/point_in_polygon.hpp"
 #include "edgeland/kernel/predicates.hpp"
+#include "edgeland/kernel/ray.hpp"
 #include "planar_graph.hpp"
 #include "point_key.hpp"
 
@@ -38,39 +39,25 @@ Point64 frame(Point64 p, int s) { return {s * p.x, s * p.y}; }
 struct Hit {
   bool found = false;
   bool at_vertex = false;
-  Point64 vertex;       // when at_vertex
-  Segment edge;         // otherwise: the edge crossed (framed coordinates)
-  Int128 num = 0, den = 1;  // x of the hit
+  Point64 vertex;  // when at_vertex
+  Segment edge;    // otherwise: the edge crossed (framed coordinates)
 };
-
-void offer(Hit& best, const Hit& h) {
-  if (!best.found || h.num * best.den > best.num * h.den) best = h;
-}
 
 // Nearest hit of the ray from o towards -x (framed coordinates), ignoring edges at o.
 Hit cast_west(Point64 o, const std::vector<Segment>& obstacles, int s) {
-  Hit best;
+  NearestHit nearest(Ray{o, -1, 0});
+  Segment best;
   for (const Segment& raw : obstacles) {
-    const Point64 a = frame(raw.a, s), b = frame(raw.b, s);
-    if (a == o || b == o) continue;
-    if (a.y == b.y) {
-      if (a.y != o.y) continue;
-      const Point64 near = a.x > b.x ? a : b;
-      if (near.x < o.x) offer(best, {true, true, near, {}, near.x, 1});
-      continue;
-    }
-    if (o.y < std::min(a.y, b.y) || o.y > std::max(a.y, b.y)) continue;
-    if (a.y == o.y || b.y == o.y) {
-      const Point64 v = a.y == o.y ? a : b;
-      if (v.x < o.x) offer(best, {true, true, v, {}, v.x, 1});
-      continue;
-    }
-    Int128 den = b.y - a.y;
-    Int128 num = Int128(a.x) * den + Int128(o.y - a.y) * (b.x - a.x);
-    if (den < 0) num = -num, den = -den;
-    if (num < Int128(o.x) * den) offer(best, {true, false, {}, {a, b}, num, den});
+    const Segment e{frame(raw.a, s), frame(raw.b, s)};
+    if (e.a == o || e.b == o) continue;
+    if (nearest.offer(e) == NearestHit::Offer::kNearest) best = e;
   }
-  return best;
+  if (!nearest.found()) return {};
+  // A hit at an end of the edge (an edge along the ray is met at its nearer end) is a vertex.
+  const RationalPoint at = nearest.point();
+  if (is_exactly(at, best.a)) return {true, true, best.a, {}};
+  if (is_exactly(at, best.b)) return {true, true, best.b, {}};
+  return {true, false, {}, best};
 }
 
 bool sign_matches(Orientation want, Orientation got) {
@@ -137,12 +124,8 @@ std::optional<Point64> bridge_target(Point64 o, const std::vector<Segment>& obst
   std::vector<Point64> smaller;
   for (Point64 v : vertices)
     if (frame(v, s) < fo) smaller.push_back(v);
-  auto dist2 = [&](Point64 v) {
-    const Int128 dx = v.x - o.x, dy = v.y - o.y;
-    return dx * dx + dy * dy;
-  };
   std::sort(smaller.begin(), smaller.end(), [&](Point64 a, Point64 b) {
-    const Int128 da = dist2(a), db = dist2(b);
+    const Int128 da = squared_distance(o, a), db = squared_distance(o, b);
     return da != db ? da < db : a < b;
   });
   for (Point64 v : smaller)

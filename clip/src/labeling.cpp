@@ -6,6 +6,7 @@
 
 #include "edgeland/kernel/angle.hpp"
 #include "edgeland/kernel/predicates.hpp"
+#include "edgeland/kernel/ray.hpp"
 #include "edgeland/kernel/recycled_vector.hpp"
 
 namespace edgeland::detail {
@@ -169,11 +170,10 @@ class XStabbing {
 };
 
 // The highest feature of the labeled part of the graph directly below point p, and the state
-// just above it. Heights are compared exactly as fractions num / den, den > 0.
+// just above it.
 struct Below {
   bool found = false;
   SideState above;
-  Int128 num = 0, den = 1;
 };
 
 // The state just above point q, where q is point `index` (0 < index <= interior count) of edge
@@ -200,39 +200,12 @@ SideState state_above_point(const PlaneGraph& g, const std::vector<SideState>& l
 // queries).
 Below find_below(const PlaneGraph& g, const std::vector<Piece>& pieces, const XStabbing* stab,
                  const std::vector<std::uint8_t>& labeled, const std::vector<SideState>& left, Point64 p) {
-  Below best;
-  const Piece* best_piece = nullptr;
-  int best_kind = 0;  // 1: end a, 2: end b, 3: interior of the piece
-  auto offer = [&](const Piece& piece, int kind, Int128 num, Int128 den) {
-    if (best.found && num * best.den <= best.num * den) return;
-    best.found = true;
-    best.num = num;
-    best.den = den;
-    best_piece = &piece;
-    best_kind = kind;
-  };
+  NearestHit nearest(Ray{p, 0, -1});
+  const Piece* best = nullptr;
   auto consider = [&](std::uint32_t k) {
     const Piece& piece = pieces[k];
-    if (!labeled[g.from(piece.edge)]) return;
-    const Point64 a = piece.a, b = piece.b;
-    if (a.x == b.x) {  // vertical: its top end is the candidate
-      const bool a_top = a.y > b.y;
-      const Point64 top = a_top ? a : b;
-      if (top.y < p.y) offer(piece, a_top ? 1 : 2, top.y, 1);
-      return;
-    }
-    if (a.x == p.x) {
-      if (a.y < p.y) offer(piece, 1, a.y, 1);
-      return;
-    }
-    if (b.x == p.x) {
-      if (b.y < p.y) offer(piece, 2, b.y, 1);
-      return;
-    }
-    const Point64 lo = a.x < b.x ? a : b, hi = a.x < b.x ? b : a;
-    if (orientation(lo, hi, p) != Orientation::kCounterClockwise) return;  // not below p
-    const Int128 dx = hi.x - lo.x;
-    offer(piece, 3, Int128(lo.y) * dx + Int128(hi.y - lo.y) * (p.x - lo.x), dx);
+    if (labeled[g.from(piece.edge)] && nearest.offer({piece.a, piece.b}) == NearestHit::Offer::kNearest)
+      best = &piece;
   };
   if (stab) {
     stab->for_each_spanning(p.x, consider);
@@ -241,15 +214,15 @@ Below find_below(const PlaneGraph& g, const std::vector<Piece>& pieces, const XS
       if (std::min(pieces[k].a.x, pieces[k].b.x) <= p.x && p.x <= std::max(pieces[k].a.x, pieces[k].b.x))
         consider(k);
   }
-  if (!best.found) return best;
-  if (best_kind == 3) {
-    // Running east (a -> b with a.x < b.x), the piece's left side is above it.
-    const std::uint32_t e = best_piece->edge;
-    best.above = left[best_piece->a.x < best_piece->b.x ? 2 * e : 2 * e + 1];
-  } else {
-    best.above = state_above_point(g, left, *best_piece, best_kind == 1);
-  }
-  return best;
+  if (!best) return {};
+  // p lies on no labeled piece (components are disjoint), so the hit is strictly below it: at
+  // an end of the piece (a vertical piece is met at its top) or inside it.
+  const RationalPoint at = nearest.point();
+  if (is_exactly(at, best->a)) return {true, state_above_point(g, left, *best, true)};
+  if (is_exactly(at, best->b)) return {true, state_above_point(g, left, *best, false)};
+  // Running east (a -> b with a.x < b.x), the piece's left side is above it.
+  const std::uint32_t e = best->edge;
+  return {true, left[best->a.x < best->b.x ? 2 * e : 2 * e + 1]};
 }
 
 }  // namespace

@@ -105,7 +105,7 @@ Meeting classify_pair(const Segment& s, std::uint32_t i, const Segment& t, std::
         ++c.intersections;
         // Rounded once; the point is an integer exactly when the rounding is exact.
         const Point64 p = round_to_grid(r.point);
-        if (Int128(p.x) * r.point.den == r.point.x_num && Int128(p.y) * r.point.den == r.point.y_num) {
+        if (is_exactly(r.point, p)) {
           c.splits.emplace_back(i, p);
           c.splits.emplace_back(j, p);
         } else {

@@ -1,5 +1,7 @@
 #include "segment_grid.hpp"
 
+#include "edgeland/kernel/grid_cells.hpp"
+
 namespace edgeland::detail {
 
 void SegmentGrid::set_side(std::int64_t side) {
@@ -42,16 +44,15 @@ SegmentGrid::SegmentGrid(const std::vector<Segment>& segments) {
       min_y_ = std::min(min_y_, p.y);
       max_y_ = std::max(max_y_, p.y);
     }
-  const Int128 w = Int128(max_x_ - min_x_) + 1, h = Int128(max_y_ - min_y_) + 1;
-  const Int128 cell_limit = 4 * static_cast<Int128>(n) + 16;
+  const Box64 extent{{min_x_, min_y_}, {max_x_, max_y_}};
+  const std::uint64_t cell_limit = 4 * std::uint64_t{n} + 16;
   // One to four cells per segment (a power-of-two side). The work is registrations plus pairs
   // tested inside cells; on spiky stars, their fragments and checkerboards this size came within
   // 15% of the best of half and twice the side.
   std::int64_t side = 1;
-  while (Int128(side) * side * static_cast<Int128>(n) < w * h) side *= 2;
-  auto cell_count = [&](std::int64_t s) { return ((w + s - 1) / s) * ((h + s - 1) / s); };
+  while (cells_area(side, n) < point_count(extent)) side *= 2;
   if (side > 1) side /= 2;
-  while (cell_count(side) > cell_limit) side *= 2;
+  while (cells_covering(extent, side) > cell_limit) side *= 2;
   // Long segments cross many cells: a stack of 10^4 edges 10^5 long over a thin box took 10^8
   // registrations (1.5 GB) at the side above. Keep them within a few dozen per segment on
   // average (spiky stars of 4 * 10^5 segments ran as fast at 32 as with no bound, in two thirds

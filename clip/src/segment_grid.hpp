@@ -22,8 +22,8 @@
 #include <vector>
 
 #include "edgeland/kernel/bbox.hpp"
-#include "edgeland/kernel/int128.hpp"
 #include "edgeland/kernel/polygon.hpp"
+#include "edgeland/kernel/predicates.hpp"
 #include "edgeland/kernel/recycled_vector.hpp"
 
 namespace edgeland::detail {
@@ -101,14 +101,13 @@ void SegmentGrid::for_each_cell(const Segment& s, F&& f) const {
   // Column c spans the line's rows from where the segment enters it (a's row in the first) to
   // the row of its y at the column's right boundary X (b's row in the last); adjacent columns
   // share the boundary's row. That row is tracked by stepping, not dividing: the line reaches
-  // row boundary Y at X exactly when dy * (X - a.x) >= (Y - a.y) * dx (dx > 0), one comparison
-  // of products per column and per row crossed. (Two 64-bit divisions per segment were most of
-  // the grid's construction on spiky inputs.) Every X lies in (a.x, b.x] and every Y tested
-  // between a.y and b.y, so the products stay below 2^65 in magnitude: 128-bit, one widening
-  // multiply each.
-  const std::int64_t dx = b.x - a.x, dy = b.y - a.y;
+  // row boundary Y at X exactly when (X, Y) is not left of a -> b (a.x < b.x), one orientation
+  // per column and per row crossed. (Two 64-bit divisions per segment were most of the grid's
+  // construction on spiky inputs.) Every X lies in (a.x, b.x] and every Y tested between a.y
+  // and b.y, so (X, Y) is an in-range point.
+  const std::int64_t dy = b.y - a.y;
   auto reaches = [&](std::int64_t x, std::int64_t y) {  // the line's y at x is >= y
-    return Int128(dy) * (x - a.x) >= Int128(y - a.y) * dx;
+    return orient_det(a, b, {x, y}) <= 0;
   };
   const std::int64_t r_last = row(b.y);
   std::int64_t r_in = row(a.y), r = r_in;

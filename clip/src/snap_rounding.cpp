@@ -80,19 +80,6 @@ Ring route_of(const Segment& seg, std::vector<Point64> stops) {
 // walk along every segment than by box queries into the segment index.
 bool many(std::size_t queries, std::size_t segments) { return queries > 64 && 8 * queries > segments; }
 
-// Whether s meets the closed unit square centred at p. Separating axes of a square and a segment:
-// x, y and the segment's normal; along the normal the square reaches (|dx| + |dy|) / 2.
-bool meets_closed_pixel(const Segment& s, Point64 p) {
-  if (std::min(s.a.x, s.b.x) > p.x + 1 || std::max(s.a.x, s.b.x) < p.x - 1 ||
-      std::min(s.a.y, s.b.y) > p.y + 1 || std::max(s.a.y, s.b.y) < p.y - 1)
-    return false;
-  // Differences of in-range coordinates fit 64 bits (theorem orient_differences_int64), so each
-  // product is one widening 64 x 64 -> 128-bit multiply.
-  const std::int64_t dx = s.b.x - s.a.x, dy = s.b.y - s.a.y;
-  const Int128 det = Int128(dx) * (p.y - s.a.y) - Int128(dy) * (p.x - s.a.x);
-  return 2 * (det < 0 ? -det : det) <= Int128(dx < 0 ? -dx : dx) + (dy < 0 ? -dy : dy);
-}
-
 // The input segments near a point, found through a SegmentGrid of the input (find_contacts
 // hands its own over on spiky inputs; otherwise it is built on first use). With many hot pixels
 // or moved segments, asking at each point is far cheaper than walking every long segment
@@ -216,7 +203,7 @@ void close_hot_set(const std::vector<Segment>& segs, const SegmentIndex& index, 
     };
     auto consider = [&](std::uint32_t k, Point64 p) {
       const Segment& seg = segs[changed[k]];
-      if (meets_closed_pixel(seg, p)) pin_if_needed(k, p, on_segment(p, seg));
+      if (segment_meets_closed_pixel(seg, p)) pin_if_needed(k, p, on_segment(p, seg));
     };
     if (many(changed.size(), segs.size())) {
       // Every vertex asks for the changed segments near it (a pass over all vertices: only
@@ -228,7 +215,7 @@ void close_hot_set(const std::vector<Segment>& segs, const SegmentIndex& index, 
       const bool record = !c.near_vertex_complete;
       auto at_vertex = [&](Point64 p) {
         near.for_each(p, [&](std::uint32_t s) {
-          if ((slot[s] == kNoSlot && !record) || !meets_closed_pixel(segs[s], p)) return;
+          if ((slot[s] == kNoSlot && !record) || !segment_meets_closed_pixel(segs[s], p)) return;
           const bool on = on_segment(p, segs[s]);
           if (record && !on) c.near_vertex.emplace_back(s, p);
           if (slot[s] != kNoSlot) pin_if_needed(slot[s], p, on);
@@ -364,7 +351,7 @@ std::vector<bool> off_classic_routes(const std::vector<Segment>& segs, SegmentsN
   std::vector<bool> off(segs.size(), false);
   for (Point64 p : loose)
     near.for_each(p, [&](std::uint32_t s) {
-      if (!off[s] && meets_closed_pixel(segs[s], p) && !on_segment(p, segs[s])) off[s] = true;
+      if (!off[s] && segment_meets_closed_pixel(segs[s], p) && !on_segment(p, segs[s])) off[s] = true;
     });
   return off;
 }

@@ -19,31 +19,37 @@ struct Param {
 // a < b for fractions with positive denominators (|num|, den < 2^35: products < 2^70).
 bool less(const Param& a, const Param& b) { return a.num * b.den < b.num * a.den; }
 
+// pixel_line_slack: >= 0 when the closed pixel of c reaches the line of s (formulas.hpp).
+Int128 normal_slack(const Segment& s, Point64 c) noexcept {
+  return formulas::pixel_line_slack<arith::Checked<std::int64_t>, W>(s.a.x, s.a.y, s.b.x, s.b.y, c.x, c.y).v;
+}
+
 }  // namespace
+
+bool segment_meets_closed_pixel(const Segment& s, Point64 c) noexcept {
+  // Along x the closed pixel is [c.x - 1/2, c.x + 1/2], which holds one integer: an integer
+  // segment's x-range meets it exactly when it contains c.x. Likewise along y.
+  if (std::min(s.a.x, s.b.x) > c.x || std::max(s.a.x, s.b.x) < c.x ||
+      std::min(s.a.y, s.b.y) > c.y || std::max(s.a.y, s.b.y) < c.y)
+    return false;
+  return normal_slack(s, c) >= 0;
+}
 
 bool segment_meets_pixel(const Segment& s, Point64 c) noexcept {
   // Quick rejection by separating axes of the closed pixel (half-width 1/2) and the segment: its
-  // box, then its normal, along which the pixel reaches (|dx| + |dy|) / 2. Callers ask mostly
-  // about pixels near, not on, the segment; the exact clipping below costs several times more.
-  if (2 * std::min(s.a.x, s.b.x) > 2 * c.x + 1 || 2 * std::max(s.a.x, s.b.x) < 2 * c.x - 1 ||
-      2 * std::min(s.a.y, s.b.y) > 2 * c.y + 1 || 2 * std::max(s.a.y, s.b.y) < 2 * c.y - 1)
-    return false;
-  {
-    const Int128 ex = s.b.x - s.a.x, ey = s.b.y - s.a.y;
-    const Int128 det = ex * (c.y - s.a.y) - ey * (c.x - s.a.x);
-    const Int128 reach = (ex < 0 ? -ex : ex) + (ey < 0 ? -ey : ey);
-    if (2 * (det < 0 ? -det : det) > reach) return false;
-    // The same three axes with strict inequalities: the segment meets the open square, hence
-    // the half-open pixel. (Were it apart from the open square, some line would separate them,
-    // and the separating directions form an angular interval whose ends are edge normals of
-    // the square or of the segment, which are these axes; at such an end the projections meet
-    // at most at an end of the square's open interval.) The common case of a segment running
-    // through the pixel is answered here, without the exact clipping.
-    if (2 * std::min(s.a.x, s.b.x) < 2 * c.x + 1 && 2 * std::max(s.a.x, s.b.x) > 2 * c.x - 1 &&
-        2 * std::min(s.a.y, s.b.y) < 2 * c.y + 1 && 2 * std::max(s.a.y, s.b.y) > 2 * c.y - 1 &&
-        2 * (det < 0 ? -det : det) < reach)
-      return true;
-  }
+  // box, then its normal. Callers ask mostly about pixels near, not on, the segment; the exact
+  // clipping below costs several times more.
+  if (!segment_meets_closed_pixel(s, c)) return false;
+  // The same three axes with strict inequalities: the segment meets the open square, hence
+  // the half-open pixel. (Were it apart from the open square, some line would separate them,
+  // and the separating directions form an angular interval whose ends are edge normals of
+  // the square or of the segment, which are these axes; at such an end the projections meet
+  // at most at an end of the square's open interval.) The common case of a segment running
+  // through the pixel is answered here, without the exact clipping.
+  if (2 * std::min(s.a.x, s.b.x) < 2 * c.x + 1 && 2 * std::max(s.a.x, s.b.x) > 2 * c.x - 1 &&
+      2 * std::min(s.a.y, s.b.y) < 2 * c.y + 1 && 2 * std::max(s.a.y, s.b.y) > 2 * c.y - 1 &&
+      normal_slack(s, c) > 0)
+    return true;
   // Doubled coordinates relative to the pixel centre: the pixel is [-1, 1) x [-1, 1).
   const Int128 px = 2 * Int128(s.a.x - c.x), py = 2 * Int128(s.a.y - c.y);
   const Int128 dx = 2 * Int128(s.b.x - s.a.x), dy = 2 * Int128(s.b.y - s.a.y);

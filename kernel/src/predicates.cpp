@@ -99,6 +99,14 @@ SegmentIntersection intersect(const Segment& s, const Segment& t) noexcept {
   return r;
 }
 
+Int128 squared_distance(Point64 a, Point64 b) noexcept {
+  return formulas::dot_widening<arith::Checked<std::int64_t>, W>(a.x, a.y, b.x, b.y, b.x, b.y).v;
+}
+
+bool is_exactly(const RationalPoint& r, Point64 p) noexcept {
+  return formulas::scaled<W>(p.x, r.den) == W(r.x_num) && formulas::scaled<W>(p.y, r.den) == W(r.y_num);
+}
+
 Point64 round_to_grid(const RationalPoint& p) noexcept {
   const W x = formulas::round_half_up<W>(p.x_num, p.den);
   const W y = formulas::round_half_up<W>(p.y_num, p.den);

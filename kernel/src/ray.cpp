@@ -10,15 +10,17 @@ namespace {
 
 using W = arith::Checked<Int128>;
 
-// Sign of cross(direction, edge): < 0 front face, > 0 back face (counter-clockwise ring).
-Int128 facing(const Ray& ray, const Segment& edge) noexcept {
-  return formulas::cross<W>(ray.dx, ray.dy, W(edge.b.x) - W(edge.a.x), W(edge.b.y) - W(edge.a.y))
-      .v;
+formulas::RayEdge<W> parameters(const Ray& ray, const Segment& edge) noexcept {
+  return formulas::ray_edge<W>(ray.origin.x, ray.origin.y, ray.dx, ray.dy, edge.a.x, edge.a.y,
+                               edge.b.x, edge.b.y);
 }
+
+// Sign of cross(direction, edge): < 0 front face, > 0 back face (counter-clockwise ring).
+Int128 facing(const Ray& ray, const Segment& edge) noexcept { return parameters(ray, edge).den.v; }
 
 bool culled(RayCulling culling, Int128 face) noexcept {
   switch (culling) {
-    case RayCulling::kNone:
+    case RayCulling::kNoCulling:
       return false;
     case RayCulling::kOriginOutside:
       return face > 0;
@@ -28,50 +30,66 @@ bool culled(RayCulling culling, Int128 face) noexcept {
   return false;
 }
 
-// Where the ray first meets the closed edge p -> q: its smallest t >= 0, if any.
-// den_raw is cross(direction, edge), already computed for culling.
-std::optional<Fraction> contact(const Ray& ray, const Segment& edge, Int128 den_raw) noexcept {
+// An axis-parallel ray cannot meet a segment that lies wholly on one side of its line.
+bool off_axis_line(const Ray& ray, const Segment& e) noexcept {
+  const Point64 o = ray.origin;
+  if (ray.dy == 0 && ray.dx != 0) return std::min(e.a.y, e.b.y) > o.y || std::max(e.a.y, e.b.y) < o.y;
+  if (ray.dx == 0 && ray.dy != 0) return std::min(e.a.x, e.b.x) > o.x || std::max(e.a.x, e.b.x) < o.x;
+  return false;
+}
+
+// Parallel ray and edge: a contact only when the edge lies on the ray's line; then its nearer
+// end, clipped to the origin.
+std::optional<Fraction> contact_along(const Ray& ray, const Segment& edge) noexcept {
   const Point64 o = ray.origin, p = edge.a, q = edge.b;
-  if (ray.dx == 0 && ray.dy == 0) {
-    if (on_segment(o, edge)) return Fraction{0, 1};
-    return std::nullopt;
-  }
-  const W wx = W(p.x) - W(o.x), wy = W(p.y) - W(o.y);
-  if (den_raw != 0) {
-    // Solve o + t d = p + u e:  t = cross(w, e) / cross(d, e),  u = cross(w, d) / cross(d, e).
-    W t = formulas::orient<W>(o.x, o.y, p.x, p.y, q.x, q.y);  // == cross(w, e)
-    W u = formulas::cross<W>(wx, wy, ray.dx, ray.dy);
-    W den = den_raw;
-    if (den < W(0)) {
-      t = -t;
-      u = -u;
-      den = -den;
-    }
-    if (t < W(0) || u < W(0) || den < u) return std::nullopt;
-    return Fraction{t.v, den.v};
-  }
-  // Parallel: a contact only when the edge lies on the ray's line; then its nearer end,
-  // clipped to the origin. Parameters along the line are dot(x - o, d) / dot(d, d).
-  if (formulas::cross<W>(wx, wy, ray.dx, ray.dy) != W(0)) return std::nullopt;
-  const W tp = formulas::dot_from<W>(o.x, o.y, W(o.x) + W(ray.dx), W(o.y) + W(ray.dy), p.x, p.y);
-  const W tq = formulas::dot_from<W>(o.x, o.y, W(o.x) + W(ray.dx), W(o.y) + W(ray.dy), q.x, q.y);
+  if (formulas::cross<W>(W(p.x) - W(o.x), W(p.y) - W(o.y), ray.dx, ray.dy) != W(0)) return std::nullopt;
+  const W tp = formulas::ray_projection<W>(o.x, o.y, ray.dx, ray.dy, p.x, p.y);
+  const W tq = formulas::ray_projection<W>(o.x, o.y, ray.dx, ray.dy, q.x, q.y);
   if (std::max(tp, tq) < W(0)) return std::nullopt;
-  const W dd = formulas::dot_from<W>(0, 0, ray.dx, ray.dy, ray.dx, ray.dy);  // dot(d, d)
+  const W dd = formulas::squared_length<W>(ray.dx, ray.dy);
   return Fraction{std::max(W(0), std::min(tp, tq)).v, dd.v};
 }
 
-RationalPoint point_at(const Ray& ray, const Fraction& t) noexcept {
-  const W x = W(ray.origin.x) * W(t.den) + W(t.num) * W(ray.dx);
-  const W y = W(ray.origin.y) * W(t.den) + W(t.num) * W(ray.dy);
-  return RationalPoint{x.v, y.v, t.den};
+// Where the ray first meets the closed edge p -> q: its smallest t >= 0, if any.
+std::optional<Fraction> contact(const Ray& ray, const Segment& edge) noexcept {
+  if (ray.dx == 0 && ray.dy == 0) {
+    if (on_segment(ray.origin, edge)) return Fraction{0, 1};
+    return std::nullopt;
+  }
+  formulas::RayEdge<W> r = parameters(ray, edge);
+  if (r.den == W(0)) return contact_along(ray, edge);
+  // o + t d = p + u e with t = t_num / den, u = u_num / den: the hit needs t >= 0, u in [0, 1].
+  if (r.den < W(0)) r = {-r.t_num, -r.u_num, -r.den};
+  if (r.t_num < W(0) || r.u_num < W(0) || r.den < r.u_num) return std::nullopt;
+  return Fraction{r.t_num.v, r.den.v};
 }
 
 }  // namespace
 
+std::optional<Fraction> ray_contact(const Ray& ray, const Segment& e) noexcept {
+  if (off_axis_line(ray, e)) return std::nullopt;
+  return contact(ray, e);
+}
+
+RationalPoint ray_point(const Ray& ray, const Fraction& t) noexcept {
+  const auto h = formulas::ray_point<W>(ray.origin.x, ray.origin.y, ray.dx, ray.dy, t.num, t.den);
+  return RationalPoint{h.x_num.v, h.y_num.v, h.den.v};
+}
+
+NearestHit::Offer NearestHit::offer(const Segment& e) noexcept {
+  const std::optional<Fraction> t = ray_contact(ray_, e);
+  if (!t) return Offer::kMissed;
+  if (found_ && compare(*t, t_) >= 0) return Offer::kFarther;
+  found_ = true;
+  t_ = *t;
+  return Offer::kNearest;
+}
+
 std::optional<RayHit> first_hit(const Ray& ray, const Ring& ring, RayCulling culling,
                                 RingShape shape) {
   const std::size_t n = ring.size();
-  std::optional<RayHit> best;
+  NearestHit nearest(ray);
+  std::size_t best_edge = 0;
   bool in_group = false;         // the previous edge was hit
   bool group_collinear = false;  // the current group has an edge along the ray
   bool first_edge_hit = false;   // a group through edge 0 may continue at the ring's end
@@ -79,10 +97,9 @@ std::optional<RayHit> first_hit(const Ray& ray, const Ring& ring, RayCulling cul
   for (std::size_t i = 0; i < n; ++i) {
     const Segment edge = ring_edge(ring, i);
     const Int128 face = facing(ray, edge);
-    std::optional<Fraction> t;
-    if (!culled(culling, face)) t = contact(ray, edge, face);
-    if (t) {
-      if (!best || compare(*t, best->t) < 0) best = RayHit{i, *t, {}};
+    const NearestHit::Offer hit = culled(culling, face) ? NearestHit::Offer::kMissed : nearest.offer(edge);
+    if (hit != NearestHit::Offer::kMissed) {
+      if (hit == NearestHit::Offer::kNearest) best_edge = i;
       if (i == 0) first_edge_hit = true;
       if (face == 0) group_collinear = true;
       in_group = true;
@@ -91,13 +108,13 @@ std::optional<RayHit> first_hit(const Ray& ray, const Ring& ring, RayCulling cul
     if (in_group && shape == RingShape::kConvex && !first_edge_hit) {
       // A group of consecutive hit edges just ended (thesis 2.4.1, 2.4.2).
       ++groups;
-      if (culling != RayCulling::kNone || group_collinear || groups == 2) break;
+      if (culling != RayCulling::kNoCulling || group_collinear || groups == 2) break;
     }
     in_group = false;
     group_collinear = false;
   }
-  if (best) best->point = point_at(ray, best->t);
-  return best;
+  if (!nearest.found()) return std::nullopt;
+  return RayHit{best_edge, nearest.t(), nearest.point()};
 }
 
 }  // namespace edgeland

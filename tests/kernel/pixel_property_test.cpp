@@ -38,30 +38,35 @@ struct Interval {
   }
 };
 
-// lo <= a + t * d < hi (the coordinate's half-open range), as constraints on t.
+// lo <= a + t * d < hi (the coordinate's half-open range; <= hi when hi_closed), as
+// constraints on t.
 void constrain(Interval& t, std::int64_t a, std::int64_t d, const cpp_rational& lo,
-               const cpp_rational& hi) {
+               const cpp_rational& hi, bool hi_closed = false) {
   if (d == 0) {
-    if (!(lo <= cpp_rational(a) && cpp_rational(a) < hi)) t.empty = true;
+    const cpp_rational v(a);
+    if (!(lo <= v && (v < hi || (hi_closed && v == hi)))) t.empty = true;
     return;
   }
   const cpp_rational at_lo = (lo - a) / d, at_hi = (hi - a) / d;
   if (d > 0) {
     t.at_least(at_lo, false);
-    t.at_most(at_hi, true);
+    t.at_most(at_hi, !hi_closed);
   } else {
     t.at_most(at_lo, false);
-    t.at_least(at_hi, true);
+    t.at_least(at_hi, !hi_closed);
   }
 }
 
-bool reference_meets(const Segment& s, Point64 c) {
+bool reference_meets(const Segment& s, Point64 c, bool closed = false) {
   const cpp_rational half(1, 2);
   Interval t;
-  constrain(t, s.a.x, s.b.x - s.a.x, cpp_rational(c.x) - half, cpp_rational(c.x) + half);
-  constrain(t, s.a.y, s.b.y - s.a.y, cpp_rational(c.y) - half, cpp_rational(c.y) + half);
+  constrain(t, s.a.x, s.b.x - s.a.x, cpp_rational(c.x) - half, cpp_rational(c.x) + half, closed);
+  constrain(t, s.a.y, s.b.y - s.a.y, cpp_rational(c.y) - half, cpp_rational(c.y) + half, closed);
   return t.has_points();
 }
+
+// The closed square [c - 1/2, c + 1/2]^2 (snap rounding's "near a pixel").
+bool reference_meets_closed(const Segment& s, Point64 c) { return reference_meets(s, c, true); }
 
 rc::Gen<Point64> near_point(std::int64_t reach) {
   return rc::gen::apply([](std::int64_t x, std::int64_t y) { return Point64{x, y}; },
@@ -112,6 +117,44 @@ RC_GTEST_PROP(SegmentMeetsPixel, AgreesWithTheDefinitionForLongSegments, ()) {
                   on.y + *rc::gen::inRange<std::int64_t>(-2, 3)};
   RC_PRE(in_range(c));
   RC_ASSERT(segment_meets_pixel(s, c) == reference_meets(s, c));
+}
+
+TEST(SegmentMeetsClosedPixel, AgreesWithTheDefinitionForEverySmallSegment) {
+  std::size_t meeting = 0, only_closed = 0;
+  for (std::int64_t ax = -3; ax <= 3; ++ax)
+    for (std::int64_t ay = -3; ay <= 3; ++ay)
+      for (std::int64_t bx = -3; bx <= 3; ++bx)
+        for (std::int64_t by = -3; by <= 3; ++by) {
+          const Segment s{{ax, ay}, {bx, by}};
+          const bool expected = reference_meets_closed(s, {0, 0});
+          ASSERT_EQ(segment_meets_closed_pixel(s, {0, 0}), expected)
+              << "(" << ax << "," << ay << ")-(" << bx << "," << by << ")";
+          meeting += expected;
+          only_closed += expected && !reference_meets(s, {0, 0});
+        }
+  EXPECT_GT(meeting, 0u);
+  EXPECT_GT(only_closed, 0u);  // segments touching only the top or right side are among them
+}
+
+RC_GTEST_PROP(SegmentMeetsClosedPixel, AgreesWithTheDefinitionNearThePixel, ()) {
+  const Point64 c = *near_point(2);
+  const Segment s{*near_point(6), *near_point(6)};
+  RC_ASSERT(segment_meets_closed_pixel(s, c) == reference_meets_closed(s, c));
+}
+
+TEST(SegmentMeetsClosedPixel, FullRangeSegmentsAndTheirCorners) {
+  // The longest segments: the full-range diagonal passes through every pixel centre (c, c) and
+  // grazes the closed pixels of (c, c + 1) at their corners (c + 1/2, c + 1/2); the other
+  // diagonal's neighbours (c + 1, -c) are touched only at (c + 1/2, -c - 1/2).
+  const std::int64_t B = kCoordBound;
+  const Segment up{{-B, -B}, {B, B}}, down{{-B, B}, {B, -B}};
+  for (const std::int64_t c : {-B, std::int64_t{-12345}, std::int64_t{0}, B - 2}) {
+    EXPECT_TRUE(segment_meets_closed_pixel(up, {c, c}));
+    EXPECT_TRUE(segment_meets_closed_pixel(up, {c, c + 1}));
+    EXPECT_FALSE(segment_meets_closed_pixel(up, {c, c + 2}));
+    EXPECT_TRUE(segment_meets_closed_pixel(down, {c + 1, -c}));
+    EXPECT_FALSE(segment_meets_closed_pixel(down, {c + 2, -c}));
+  }
 }
 
 TEST(SegmentMeetsPixel, HalfOpenCorners) {

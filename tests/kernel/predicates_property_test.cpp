@@ -114,6 +114,39 @@ RC_GTEST_PROP(LineIntersectionProperty, MatchesRationalReference, ()) {
   RC_ASSERT(q(*r) == expected);
 }
 
+// is_exactly(r, p) says whether the rational point r is the integer point p; checked against
+// exact rationals at the rounded crossing (often exact on small grids) and at a neighbour.
+RC_GTEST_PROP(IsExactlyProperty, MatchesRationalEquality, ()) {
+  const Grid g = gen_grid();
+  const auto r = line_intersection(gen_segment(g), gen_segment(g));
+  RC_PRE(r.has_value());
+  const QPoint v = q(*r);
+  RC_PRE(abs(v.x) <= B && abs(v.y) <= B);  // is_exactly takes in-range integer points
+  const Point64 p = round_to_grid(*r);
+  RC_ASSERT(is_exactly(*r, p) == (v == q(p)));
+  RC_ASSERT(is_exactly(*r, p) == r->is_integer());
+  const Point64 next{p.x + (p.x < B ? 1 : -1), p.y};
+  RC_ASSERT(!is_exactly(*r, next));
+}
+
+TEST(IsExactly, TakesEveryDenominator) {
+  // Same point over different denominators, negative coordinates, and a near miss.
+  EXPECT_TRUE(is_exactly({-6, 9, 3}, {-2, 3}));
+  const Int128 big = Int128(1) << 66;  // above any crossing's denominator
+  EXPECT_TRUE(is_exactly({-Int128(B) * big, Int128(B) * big, big}, {-B, B}));
+  EXPECT_FALSE(is_exactly({-Int128(B) * big + 1, Int128(B) * big, big}, {-B, B}));
+  EXPECT_FALSE(is_exactly({-6, 10, 3}, {-2, 3}));
+  EXPECT_FALSE(is_exactly({7, 0, 2}, {3, 0}));
+}
+
+RC_GTEST_PROP(SquaredDistanceProperty, MatchesExactSum, ()) {
+  const Grid g = gen_grid();
+  const Point64 a = gen_point(g), b = gen_point(g);
+  const cpp_int dx = cpp_int(b.x) - a.x, dy = cpp_int(b.y) - a.y;
+  RC_ASSERT(cpp_int(squared_distance(a, b)) == dx * dx + dy * dy);
+  RC_ASSERT(squared_distance(a, b) == squared_distance(b, a));
+}
+
 // r is the nearest integer to v, halves going up: r - 1/2 <= v < r + 1/2.
 bool nearest_halves_up(std::int64_t r, const cpp_rational& v) {
   const cpp_rational half(1, 2);

@@ -19,7 +19,7 @@ TEST(FirstHit, LongestDirectionIntoFullRangeDiamond) {
   // From the corner (-B, -B) along (2B+1, 2B+1): the diamond |x| + |y| = B is entered at
   // (-B/2, -B/2), i.e. t = (B/2) / (2B+1).
   const Ring diamond{{0, -B}, {B, 0}, {0, B}, {-B, 0}};
-  for (const RayCulling c : {RayCulling::kNone, RayCulling::kOriginOutside}) {
+  for (const RayCulling c : {RayCulling::kNoCulling, RayCulling::kOriginOutside}) {
     const auto hit = first_hit({{-B, -B}, D, D}, diamond, c);
     ASSERT_TRUE(hit.has_value());
     EXPECT_EQ(hit->edge, 3u);
@@ -149,7 +149,7 @@ Ray gen_ray(const Grid& g, const Ring& ring) {
 }
 
 RayCulling gen_culling() {
-  return *rc::gen::element(RayCulling::kNone, RayCulling::kOriginOutside,
+  return *rc::gen::element(RayCulling::kNoCulling, RayCulling::kOriginOutside,
                            RayCulling::kOriginInside);
 }
 
@@ -199,6 +199,84 @@ RC_GTEST_PROP(FirstHitProperty, ConvexEarlyExitEqualsFullScan, ()) {
   const Ray ray = gen_ray(g, ring);
   const RayCulling culling = gen_culling();
   check_same(first_hit(ray, ring, culling, RingShape::kConvex), first_hit(ray, ring, culling));
+}
+
+// The reference's contact of the ray with one closed segment: first_hit's reference on the
+// two-vertex ring a -> b -> a, whose two edges are the segment.
+std::optional<cpp_rational> ref_contact(const Ray& ray, const Segment& e) {
+  const auto hit = ref_first_hit(ray, Ring{e.a, e.b}, RayCulling::kNoCulling);
+  if (!hit) return std::nullopt;
+  return hit->t;
+}
+
+// Half of the rays along an axis (the probes of the clipper, which take ray_contact's fast
+// rejection), the other half as gen_ray makes them.
+Ray gen_probe_ray(const Grid& g, const Ring& near) {
+  Ray ray = gen_ray(g, near);
+  if (*rc::gen::arbitrary<bool>()) {
+    const std::int64_t length = *rc::gen::element<std::int64_t>(1, 2, 7, D);
+    switch (*rc::gen::inRange(0, 4)) {
+      case 0: ray.dx = length, ray.dy = 0; break;
+      case 1: ray.dx = -length, ray.dy = 0; break;
+      case 2: ray.dx = 0, ray.dy = length; break;
+      default: ray.dx = 0, ray.dy = -length; break;
+    }
+  }
+  return ray;
+}
+
+RC_GTEST_PROP(RayContactProperty, MatchesRationalReference, ()) {
+  const Grid g = gen_grid();
+  const Segment e{gen_point(g), gen_point(g)};
+  const Ray ray = gen_probe_ray(g, Ring{e.a, e.b});
+  const auto t = ray_contact(ray, e);
+  const auto ref = ref_contact(ray, e);
+  RC_ASSERT(t.has_value() == ref.has_value());
+  if (!t) return;
+  RC_ASSERT(t->den > 0);
+  RC_ASSERT(value(*t) == *ref);
+  const QPoint expected{cpp_rational(ray.origin.x) + *ref * ray.dx, cpp_rational(ray.origin.y) + *ref * ray.dy};
+  RC_ASSERT(q(ray_point(ray, *t)) == expected);
+}
+
+// Offers report missed / farther / nearest exactly as the reference contacts say, the hit is
+// the smallest contact, and among equal contacts the first offered stays the hit.
+RC_GTEST_PROP(NearestHitProperty, KeepsTheFirstOfTheNearestContacts, ()) {
+  const Grid g = gen_grid();
+  const std::vector<Point64> ends = gen_points(g, 2, 16);
+  const Ray ray = gen_probe_ray(g, ends);
+  NearestHit nearest(ray);
+  std::optional<cpp_rational> best;
+  for (std::size_t i = 0; i + 1 < ends.size(); ++i) {
+    const Segment e{ends[i], ends[i + 1]};
+    const std::optional<cpp_rational> t = ref_contact(ray, e);
+    const NearestHit::Offer expected = !t                     ? NearestHit::Offer::kMissed
+                                       : best && *t >= *best ? NearestHit::Offer::kFarther
+                                                             : NearestHit::Offer::kNearest;
+    RC_ASSERT(nearest.offer(e) == expected);
+    if (expected == NearestHit::Offer::kNearest) best = t;
+  }
+  RC_ASSERT(nearest.found() == best.has_value());
+  if (!best) return;
+  RC_ASSERT(value(nearest.t()) == *best);
+  const QPoint expected{cpp_rational(ray.origin.x) + *best * ray.dx, cpp_rational(ray.origin.y) + *best * ray.dy};
+  RC_ASSERT(q(nearest.point()) == expected);
+}
+
+TEST(NearestHit, WestwardProbeMeetsTheNearestEdgeAndEndsAreVertices) {
+  // From (10, 0) towards -x: a vertical edge at x = 4, a vertex at (6, 0) of an edge leaving the
+  // line, a horizontal edge on the line from x = 1 to 3 (met at its nearer end, 3), and an edge
+  // behind the origin. The vertex at x = 6 is nearest (t = 4).
+  NearestHit west(Ray{{10, 0}, -1, 0});
+  EXPECT_EQ(west.offer({{4, -5}, {4, 5}}), NearestHit::Offer::kNearest);
+  EXPECT_EQ(west.offer({{12, -1}, {12, 1}}), NearestHit::Offer::kMissed);
+  EXPECT_EQ(west.offer({{1, 0}, {3, 0}}), NearestHit::Offer::kFarther);
+  EXPECT_EQ(west.offer({{6, 0}, {8, 9}}), NearestHit::Offer::kNearest);
+  EXPECT_EQ(west.offer({{6, 0}, {5, -9}}), NearestHit::Offer::kFarther);  // same point: first stays
+  ASSERT_TRUE(west.found());
+  EXPECT_EQ(compare(west.t(), Fraction{4, 1}), 0);
+  EXPECT_TRUE(is_exactly(west.point(), {6, 0}));
+  EXPECT_FALSE(is_exactly(west.point(), {6, 1}));
 }
 
 }  // namespace

@@ -94,6 +94,12 @@ struct Checked {
   friend constexpr auto operator<=>(Checked a, Checked b) { return a.v <=> b.v; }
 };
 
+// The absolute value (formulas find it by ADL; the proofs oblige -a to be in range).
+template <class T>
+constexpr Checked<T> magnitude(Checked<T> a) noexcept {
+  return a.v < 0 ? -a : a;
+}
+
 // Floor division for a positive divisor (the only kind the kernel uses).
 template <class T>
 constexpr Checked<T> floor_div(Checked<T> n, Checked<T> d) noexcept {

@@ -81,4 +81,92 @@ constexpr W round_half_up(W num, W den) {
   return floor_div(two * num + den, two * den);
 }
 
+// --- Rays (ray.hpp): the ray o + t d, t >= 0, with |d| components up to kMaxRayDirection ---
+
+// The ray against the line through edge p -> q. With den = cross(d, q - p) != 0 the lines meet
+// at t = t_num / den along the ray and u = u_num / den along the edge (u in [0, 1] on it).
+template <class W>
+struct RayEdge {
+  W t_num, u_num, den;
+};
+
+template <class W>
+constexpr RayEdge<W> ray_edge(W ox, W oy, W dx, W dy, W px, W py, W qx, W qy) {
+  return {orient(ox, oy, px, py, qx, qy),  // == cross(p - o, q - p)
+          cross(px - ox, py - oy, dx, dy), cross(dx, dy, qx - px, qy - py)};
+}
+
+// The parameter of point p projected on the ray's line, times dot(d, d): orders points along
+// the ray (a ray along an edge meets it at its nearer end).
+template <class W>
+constexpr W ray_projection(W ox, W oy, W dx, W dy, W px, W py) {
+  return (px - ox) * dx + (py - oy) * dy;
+}
+
+// dot(d, d): the denominator of ray_projection's parameter.
+template <class W>
+constexpr W squared_length(W dx, W dy) {
+  return dx * dx + dy * dy;
+}
+
+// The point o + (t_num / den) d as homogeneous coordinates over den.
+template <class W>
+constexpr Homogeneous<W> ray_point(W ox, W oy, W dx, W dy, W t_num, W den) {
+  return {ox * den + t_num * dx, oy * den + t_num * dy, den};
+}
+
+// --- Exact points ---
+
+// c * den: an integer coordinate c scaled to a homogeneous point's denominator, to test whether
+// that point is exactly c (x_num == c * den) without dividing.
+template <class W>
+constexpr W scaled(W c, W den) {
+  return c * den;
+}
+
+// --- Pixels (pixel.hpp) ---
+
+// |bx - ax| + |by - ay|, in the differences' type D (below 2^33 for in-range points).
+// `magnitude` (the absolute value) is found by ADL.
+template <class D>
+constexpr D taxicab_length(D ax, D ay, D bx, D by) {
+  return magnitude(bx - ax) + magnitude(by - ay);
+}
+
+// Separating axis along the normal of segment a -> b: the closed unit square centred at c
+// reaches the segment's line exactly when the result is >= 0, i.e. 2 |orient(a, b, c)| <=
+// |bx - ax| + |by - ay| (along the normal the square reaches (|dx| + |dy|) / 2). Differences in
+// D, products in W, as orient_widening.
+template <class D, class W>
+constexpr W pixel_line_slack(D ax, D ay, D bx, D by, D cx, D cy) {
+  const W det = orient_widening<D, W>(ax, ay, bx, by, cx, cy);
+  return W(taxicab_length<D>(ax, ay, bx, by)) - W(2) * magnitude(det);
+}
+
+// --- Grids of cells (segment and box grids of clip/) ---
+
+// The number of integer values in [lo, hi] (a box's width or height in points).
+template <class W>
+constexpr W extent(W lo, W hi) {
+  return hi - lo + W(1);
+}
+
+// How many cells of side s (>= 1) a box of w x h integer points spans: ceil(w/s) ceil(h/s).
+template <class W>
+constexpr W cells_covering(W w, W h, W s) {
+  return floor_div(w + s - W(1), s) * floor_div(h + s - W(1), s);
+}
+
+// The number of points of a w x h block (cells of a grid, points of a box).
+template <class W>
+constexpr W block_size(W w, W h) {
+  return w * h;
+}
+
+// The area of n cells of side s.
+template <class W>
+constexpr W cells_area(W s, W n) {
+  return s * s * n;
+}
+
 }  // namespace edgeland::formulas

@@ -14,6 +14,11 @@ namespace edgeland {
 // Whether the closed segment s has a point in the half-open pixel of c. O(1).
 EDGELAND_EXPORT bool segment_meets_pixel(const Segment& s, Point64 c) noexcept;
 
+// Whether the closed segment s meets the CLOSED unit square centred at c (snap rounding's
+// "near a hot pixel", which counts the pixel's top and right sides too). Separating axes: x, y
+// and the segment's normal (formulas::pixel_line_slack, theorem pixel_line_slack_int128). O(1).
+EDGELAND_EXPORT bool segment_meets_closed_pixel(const Segment& s, Point64 c) noexcept;
+
 // (p - s.a) . (s.b - s.a): orders points along the direction of s (exact). O(1).
 EDGELAND_EXPORT Int128 projection(const Segment& s, Point64 p) noexcept;
 

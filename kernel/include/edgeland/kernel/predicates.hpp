@@ -30,6 +30,9 @@ inline Orientation orientation(Point64 a, Point64 b, Point64 c) noexcept {
 // Sign of the dot product (b - a) . (c - a).
 EDGELAND_EXPORT int dot_sign(Point64 a, Point64 b, Point64 c) noexcept;
 
+// |b - a|^2, exact (formulas::dot_widening of b - a with itself). O(1).
+EDGELAND_EXPORT Int128 squared_distance(Point64 a, Point64 b) noexcept;
+
 // Whether p lies on the closed segment s (endpoints included). A degenerate segment
 // (a == b) contains only its single point.
 EDGELAND_EXPORT bool on_segment(Point64 p, const Segment& s) noexcept;
@@ -44,6 +47,11 @@ struct RationalPoint {
   friend bool operator==(const RationalPoint&, const RationalPoint&) = default;
   bool is_integer() const noexcept { return x_num % den == 0 && y_num % den == 0; }
 };
+
+// Whether r is exactly the in-range integer point p: p * den == num per coordinate, without
+// dividing (formulas::scaled; theorem scaled_int128 for |den| <= 2^95, far above the 2^67 of
+// any intersection or ray point). O(1).
+EDGELAND_EXPORT bool is_exactly(const RationalPoint& r, Point64 p) noexcept;
 
 // How two closed segments meet.
 enum class SegmentRelation : std::uint8_t {

@@ -39,14 +39,49 @@ struct Ray {
 // from its outer side to its inner side: cross(direction, e) < 0. Edges parallel to the ray
 // are never culled.
 enum class RayCulling : std::uint8_t {
-  kNone,
+  kNoCulling,  // (not kNone: that is validate.hpp's "no index")
   // Skip back faces (edges the ray leaves the interior through). When the origin is
-  // strictly outside a simple ring, the first hit is at the same t as with kNone (the edge
+  // strictly outside a simple ring, the first hit is at the same t as with kNoCulling (the edge
   // reported may differ where edges share that point).
   kOriginOutside,
   // Skip front faces (edges the ray enters through). When the origin is strictly inside
-  // a simple ring, the first hit is at the same t as with kNone.
+  // a simple ring, the first hit is at the same t as with kNoCulling.
   kOriginInside,
+};
+
+// Where the ray first meets the closed segment e: the smallest t >= 0 with origin + t *
+// direction on e, or nullopt when it misses. A ray running along e meets it at its nearer end
+// (t = 0 when the origin is on e); a zero direction meets e only when the origin is on it.
+// Axis-parallel rays (the clipper's probes) reject segments off their line by comparisons.
+// O(1).
+EDGELAND_EXPORT std::optional<Fraction> ray_contact(const Ray& ray, const Segment& e) noexcept;
+
+// The point origin + t * direction, exactly (den = t.den). O(1).
+EDGELAND_EXPORT RationalPoint ray_point(const Ray& ray, const Fraction& t) noexcept;
+
+// THE nearest-hit primitive: segments are offered one by one and the nearest contact along the
+// ray is kept (ties: the first offered). first_hit() below and the clipper's probes
+// (labeling's look below a component, hole bridging's look west) find their first hit through
+// it, so "first along a ray" has one definition and one proof (theorems ray_edge_int128 and
+// ray_point_*_int128). (The landscape's queries along a segment need every crossing, in order,
+// not the first: segment_crossings.hpp.)
+class NearestHit {
+ public:
+  enum class Offer : std::uint8_t {
+    kMissed,   // the ray misses the segment
+    kFarther,  // met, but not nearer than the hit so far
+    kNearest,  // met nearer than every earlier offer: now the hit
+  };
+  explicit NearestHit(const Ray& ray) noexcept : ray_(ray) {}
+  Offer offer(const Segment& e) noexcept;
+  bool found() const noexcept { return found_; }
+  const Fraction& t() const noexcept { return t_; }  // when found()
+  RationalPoint point() const noexcept { return ray_point(ray_, t_); }  // when found()
+
+ private:
+  Ray ray_;
+  bool found_ = false;
+  Fraction t_;
 };
 
 struct RayHit {
@@ -67,7 +102,7 @@ struct RayHit {
 //
 // O(n) (kConvex with culling: stops right after the hit, about half the edges on average).
 EDGELAND_EXPORT std::optional<RayHit> first_hit(const Ray& ray, const Ring& ring,
-                                                RayCulling culling = RayCulling::kNone,
+                                                RayCulling culling = RayCulling::kNoCulling,
                                                 RingShape shape = RingShape::kGeneral);
 
 }  // namespace edgeland
