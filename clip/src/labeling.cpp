@@ -200,7 +200,7 @@ SideState state_above_point(const PlaneGraph& g, const std::vector<SideState>& l
 // queries).
 Below find_below(const PlaneGraph& g, const std::vector<Piece>& pieces, const XStabbing* stab,
                  const std::vector<std::uint8_t>& labeled, const std::vector<SideState>& left, Point64 p) {
-  NearestHit nearest(Ray{p, 0, -1});
+  NearestHit nearest(Ray{p, 0, -1}, NearestHit::Origin::kExcluded);
   const Piece* best = nullptr;
   auto consider = [&](std::uint32_t k) {
     const Piece& piece = pieces[k];
@@ -215,8 +215,9 @@ Below find_below(const PlaneGraph& g, const std::vector<Piece>& pieces, const XS
         consider(k);
   }
   if (!best) return {};
-  // p lies on no labeled piece (components are disjoint), so the hit is strictly below it: at
-  // an end of the piece (a vertical piece is met at its top) or inside it.
+  // The hit is strictly below p (pieces through p are passed over; none is expected, as
+  // components are disjoint): at an end of the piece (a vertical piece is met at its top) or
+  // inside it.
   const RationalPoint at = nearest.point();
   if (is_exactly(at, best->a)) return {true, state_above_point(g, left, *best, true)};
   if (is_exactly(at, best->b)) return {true, state_above_point(g, left, *best, false)};

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "edgeland/clip/clip.hpp"
+#include "edgeland/kernel/canonical_form.hpp"
 #include "face_label.hpp"
 #include "input_edges.hpp"
 #include "labeling.hpp"
@@ -123,9 +124,10 @@ PipelineResult run(const Pipeline& p, std::vector<Box64>* moved_boxes = nullptr,
                    bool with_labels = false);
 
 // Runs the pipeline; any failure of an internal invariant becomes an InternalError with the
-// inputs, and in checked mode so does an output that fails validation. Operands not validated
-// yet are validated before an InternalError is thrown (`validate_inputs`): a pipeline fed an
-// invalid operand may fail anywhere, and that is the caller's InvalidInput, not a bug.
+// inputs, and in checked mode so does an output that fails validation or is not in canonical
+// form. Operands not validated yet are validated before an InternalError is thrown
+// (`validate_inputs`): a pipeline fed an invalid operand may fail anywhere, and that is the
+// caller's InvalidInput, not a bug.
 inline const PolygonSet& result_polygons(const ClipResult& r) { return r.polygons; }
 inline const PolygonSet& result_polygons(const PipelineResult& r) { return r.clipped.polygons; }
 
@@ -148,6 +150,9 @@ auto guarded(F&& body, const ClipOptions& options, const std::string& what,
     if (!report.ok())  // Not reached by tests: no test input yields an invalid output.
       throw InternalError(what + ": invalid output: " + report.violations.front().describe(),
                           subject_wkt(), clip_wkt());
+    if (const auto order = canonical_violation(result_polygons(r)))  // Not reached by tests, as above.
+      throw InternalError(what + ": output not in canonical form: " + order->describe(), subject_wkt(),
+                          clip_wkt());
   }
   return r;
 }

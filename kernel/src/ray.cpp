@@ -78,7 +78,7 @@ RationalPoint ray_point(const Ray& ray, const Fraction& t) noexcept {
 
 NearestHit::Offer NearestHit::offer(const Segment& e) noexcept {
   const std::optional<Fraction> t = ray_contact(ray_, e);
-  if (!t) return Offer::kMissed;
+  if (!t || (open_ && t->num == 0)) return Offer::kMissed;
   if (found_ && compare(*t, t_) >= 0) return Offer::kFarther;
   found_ = true;
   t_ = *t;

@@ -279,5 +279,23 @@ TEST(NearestHit, WestwardProbeMeetsTheNearestEdgeAndEndsAreVertices) {
   EXPECT_FALSE(is_exactly(west.point(), {6, 1}));
 }
 
+TEST(NearestHit, AnOpenRayPassesOverSegmentsThroughItsOrigin) {
+  // From (0, 0) downwards: a segment through the origin, one ending at it, one along the ray
+  // starting at it, and a horizontal one at y = -3. Closed, the first three are met at t = 0;
+  // open, only the last is met.
+  const Segment through{{-1, 1}, {1, -1}}, ending{{0, 0}, {4, -4}}, along{{0, 0}, {0, -9}};
+  const Segment below{{-5, -3}, {5, -3}};
+  NearestHit closed(Ray{{0, 0}, 0, -1});
+  NearestHit open(Ray{{0, 0}, 0, -1}, NearestHit::Origin::kExcluded);
+  for (const Segment& e : {through, ending, along}) {
+    closed.offer(e);
+    EXPECT_EQ(open.offer(e), NearestHit::Offer::kMissed);
+  }
+  EXPECT_EQ(compare(closed.t(), Fraction{0, 1}), 0);
+  EXPECT_FALSE(open.found());
+  EXPECT_EQ(open.offer(below), NearestHit::Offer::kNearest);
+  EXPECT_TRUE(is_exactly(open.point(), {0, -3}));
+}
+
 }  // namespace
 }  // namespace edgeland::test

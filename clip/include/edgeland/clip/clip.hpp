@@ -22,7 +22,8 @@
 // consecutive vertices, start at their lexicographically smallest vertex and are sorted by
 // that vertex; equal inputs give byte-identical outputs on every compiler and platform.
 // ERRORS. Invalid input throws InvalidInput (nothing is returned half-done). In checked mode
-// every output is re-validated; a violation throws InternalError carrying the inputs as WKT.
+// every output is re-validated and its canonical form checked (canonical_form.hpp); a violation
+// throws InternalError carrying the inputs as WKT.
 // MEMORY. An operation's working memory peaks at about 90 bytes per input edge on smooth
 // inputs (two circles of 2 * 10^5 vertices: 87), plus about 1,500 bytes per crossing when the
 // crossings must be rounded (zigzag stars of 10^5 vertices each, 10^5 crossings: 1,450; snap

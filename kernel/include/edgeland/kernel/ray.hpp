@@ -72,7 +72,12 @@ class NearestHit {
     kFarther,  // met, but not nearer than the hit so far
     kNearest,  // met nearer than every earlier offer: now the hit
   };
-  explicit NearestHit(const Ray& ray) noexcept : ray_(ray) {}
+  // Whether a segment through the ray's origin counts (its contact is at t = 0). The clipper's
+  // probes start at a vertex and look past what passes through it: kExcluded makes the ray
+  // open at its origin, so such segments are missed.
+  enum class Origin : std::uint8_t { kIncluded, kExcluded };
+  explicit NearestHit(const Ray& ray, Origin origin = Origin::kIncluded) noexcept
+      : ray_(ray), open_(origin == Origin::kExcluded) {}
   Offer offer(const Segment& e) noexcept;
   bool found() const noexcept { return found_; }
   const Fraction& t() const noexcept { return t_; }  // when found()
@@ -80,6 +85,7 @@ class NearestHit {
 
  private:
   Ray ray_;
+  bool open_;
   bool found_ = false;
   Fraction t_;
 };
