@@ -7,6 +7,8 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
+#include <string>
+
 #include "edgeland/kernel/pixel.hpp"
 #include "edgeland/kernel/point.hpp"
 #include "exact_reference.hpp"
@@ -68,6 +70,20 @@ bool reference_meets(const Segment& s, Point64 c, bool closed = false) {
 // The closed square [c - 1/2, c + 1/2]^2 (snap rounding's "near a pixel").
 bool reference_meets_closed(const Segment& s, Point64 c) { return reference_meets(s, c, true); }
 
+// f(s) for every segment with both ends in [-3, 3]^2 (degenerate ones included).
+template <class F>
+void for_each_small_segment(F&& f) {
+  for (std::int64_t ax = -3; ax <= 3; ++ax)
+    for (std::int64_t ay = -3; ay <= 3; ++ay)
+      for (std::int64_t bx = -3; bx <= 3; ++bx)
+        for (std::int64_t by = -3; by <= 3; ++by) f(Segment{{ax, ay}, {bx, by}});
+}
+
+std::string describe(const Segment& s) {
+  return "(" + std::to_string(s.a.x) + "," + std::to_string(s.a.y) + ")-(" + std::to_string(s.b.x) + "," +
+         std::to_string(s.b.y) + ")";
+}
+
 rc::Gen<Point64> near_point(std::int64_t reach) {
   return rc::gen::apply([](std::int64_t x, std::int64_t y) { return Point64{x, y}; },
                         rc::gen::inRange<std::int64_t>(-reach, reach + 1),
@@ -78,17 +94,12 @@ rc::Gen<Point64> near_point(std::int64_t reach) {
 // grazing a corner, running along a side's line or stopping on it.
 TEST(SegmentMeetsPixel, AgreesWithTheDefinitionForEverySmallSegment) {
   std::size_t meeting = 0, total = 0;
-  for (std::int64_t ax = -3; ax <= 3; ++ax)
-    for (std::int64_t ay = -3; ay <= 3; ++ay)
-      for (std::int64_t bx = -3; bx <= 3; ++bx)
-        for (std::int64_t by = -3; by <= 3; ++by) {
-          const Segment s{{ax, ay}, {bx, by}};
-          const bool expected = reference_meets(s, {0, 0});
-          ASSERT_EQ(segment_meets_pixel(s, {0, 0}), expected)
-              << "(" << ax << "," << ay << ")-(" << bx << "," << by << ")";
-          meeting += expected;
-          ++total;
-        }
+  for_each_small_segment([&](const Segment& s) {
+    const bool expected = reference_meets(s, {0, 0});
+    EXPECT_EQ(segment_meets_pixel(s, {0, 0}), expected) << describe(s);
+    meeting += expected;
+    ++total;
+  });
   EXPECT_GT(meeting, 0u);
   EXPECT_LT(meeting, total);
 }
@@ -121,17 +132,12 @@ RC_GTEST_PROP(SegmentMeetsPixel, AgreesWithTheDefinitionForLongSegments, ()) {
 
 TEST(SegmentMeetsClosedPixel, AgreesWithTheDefinitionForEverySmallSegment) {
   std::size_t meeting = 0, only_closed = 0;
-  for (std::int64_t ax = -3; ax <= 3; ++ax)
-    for (std::int64_t ay = -3; ay <= 3; ++ay)
-      for (std::int64_t bx = -3; bx <= 3; ++bx)
-        for (std::int64_t by = -3; by <= 3; ++by) {
-          const Segment s{{ax, ay}, {bx, by}};
-          const bool expected = reference_meets_closed(s, {0, 0});
-          ASSERT_EQ(segment_meets_closed_pixel(s, {0, 0}), expected)
-              << "(" << ax << "," << ay << ")-(" << bx << "," << by << ")";
-          meeting += expected;
-          only_closed += expected && !reference_meets(s, {0, 0});
-        }
+  for_each_small_segment([&](const Segment& s) {
+    const bool expected = reference_meets_closed(s, {0, 0});
+    EXPECT_EQ(segment_meets_closed_pixel(s, {0, 0}), expected) << describe(s);
+    meeting += expected;
+    only_closed += expected && !reference_meets(s, {0, 0});
+  });
   EXPECT_GT(meeting, 0u);
   EXPECT_GT(only_closed, 0u);  // segments touching only the top or right side are among them
 }
