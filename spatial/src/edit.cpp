@@ -1,6 +1,7 @@
-// An edit (spatial/README.md, "An edit"): one relabel overlay per touched cell, ids kept for
-// unchanged polygons, splits and merges, then the change set; the landscape changes only at
-// the commit at the very end.
+// An edit (spatial/README.md, "An edit"): one relabel overlay per touched cell, splits and
+// merges as a draft, then ids (unchanged polygons keep theirs, matched against the old cells
+// each new cell covers) and the change set; the landscape changes only at the commit at the
+// very end.
 #include "edit.hpp"
 
 #include <algorithm>
@@ -26,17 +27,17 @@ bool same_content(const LabeledSet& a, const LabeledSet& b) {
   return a.labels == b.labels && a.set.polygons() == b.set.polygons();
 }
 
+std::size_t vertices_of(const LabeledSet& s) {
+  std::size_t n = 0;
+  for (const Polygon& p : s.set.polygons()) n += p.size();
+  return n;
+}
+
 }  // namespace
 
 LandscapeEditor::LandscapeEditor(const Landscape& l, const ValidSet& shape, EditTable table)
     : l_(l), shape_(shape), table_(table), next_id_(l.next_id_) {
   if (const auto b = bounding_box(shape.polygons())) shape_box_ = *b;
-}
-
-NodePtr LandscapeEditor::cell_from(const Box64& box, std::uint32_t depth, LabeledSet content,
-                                   const detail::IdSource& previous) {
-  std::vector<PolygonId> ids = detail::match_ids(previous, content, next_id_);
-  return detail::make_cell(box, depth, std::move(content), std::move(ids));
 }
 
 void LandscapeEditor::grow(std::size_t before, std::size_t after) {
@@ -47,73 +48,114 @@ void LandscapeEditor::grow(std::size_t before, std::size_t after) {
     throw LimitExceeded(LimitExceeded::Limit::kVertices, l_.limits_.max_vertices, could_be);
 }
 
-namespace {
-
-std::size_t vertices_of(const LabeledSet& s) {
-  std::size_t n = 0;
-  for (const Polygon& p : s.set.polygons()) n += p.size();
-  return n;
+LandscapeEditor::Draft LandscapeEditor::Draft::keep(const NodePtr& node) {
+  Draft d;
+  d.kept = node;
+  d.vertices = node->vertices;
+  return d;
 }
 
-}  // namespace
+LandscapeEditor::Draft LandscapeEditor::Draft::cell(const Box64& box, std::uint32_t depth,
+                                                    LabeledSet content) {
+  Draft d;
+  d.box = box;
+  d.depth = depth;
+  d.vertices = vertices_of(content);
+  d.content = std::move(content);
+  return d;
+}
 
-NodePtr LandscapeEditor::edit_cell(const NodePtr& cell) {
+LandscapeEditor::Draft LandscapeEditor::Draft::inner(const Box64& box, std::uint32_t depth,
+                                                     std::vector<Draft> children) {
+  Draft d;
+  d.box = box;
+  d.depth = depth;
+  for (const Draft& c : children) d.vertices += c.vertices;
+  d.children = std::move(children);
+  return d;
+}
+
+LandscapeEditor::Draft LandscapeEditor::edit_cell(const NodePtr& cell) {
   LabeledClipResult r = relabel(cell->content.set, cell->content.labels, shape_, cell->box,
                                 table_.table, clip_options());
-  if (same_content(r.regions, cell->content)) return cell;
-  grow(cell->vertices, vertices_of(r.regions));
-  return split_if_needed(cell_from(cell->box, cell->depth, std::move(r.regions),
-                                   detail::IdSource::of(*cell)));
+  if (same_content(r.regions, cell->content)) return Draft::keep(cell);
+  Draft edited = Draft::cell(cell->box, cell->depth, std::move(r.regions));
+  grow(cell->vertices, edited.vertices);
+  return split_if_needed(std::move(edited));
 }
 
-NodePtr LandscapeEditor::split_if_needed(const NodePtr& cell) {
+LandscapeEditor::Draft LandscapeEditor::split_if_needed(Draft cell) {
   const LandscapeConfig& config = l_.config_;
-  if (config.grid_depth >= 0 || cell->vertices <= config.edge_cap || !detail::can_split(cell->box, config))
+  if (config.grid_depth >= 0 || cell.vertices <= config.edge_cap || !detail::can_split(cell.box, config))
     return cell;
-  const std::vector<Box64> boxes = detail::split_boxes(cell->box, config);
+  const std::vector<Box64> boxes = detail::split_boxes(cell.box, config);
   std::vector<LabeledSet> parts =
-      cut_to_windows(cell->content.set, cell->content.labels, boxes, clip_options());
-  std::size_t children_vertices = 0;
-  for (const LabeledSet& part : parts) children_vertices += vertices_of(part);
-  grow(cell->vertices, children_vertices);
-  const detail::IdSource previous = detail::IdSource::of(*cell);
-  std::vector<NodePtr> children;
+      cut_to_windows(cell.content.set, cell.content.labels, boxes, clip_options());
+  std::vector<Draft> children;
   for (std::size_t i = 0; i < boxes.size(); ++i)
-    children.push_back(split_if_needed(cell_from(boxes[i], cell->depth + 1, std::move(parts[i]), previous)));
-  return detail::make_inner(cell->box, cell->depth, children);
+    children.push_back(Draft::cell(boxes[i], cell.depth + 1, std::move(parts[i])));
+  std::size_t children_vertices = 0;
+  for (const Draft& child : children) children_vertices += child.vertices;
+  grow(cell.vertices, children_vertices);
+  for (Draft& child : children) child = split_if_needed(std::move(child));
+  return Draft::inner(cell.box, cell.depth, std::move(children));
 }
 
-NodePtr LandscapeEditor::merge_if_small(const NodePtr& inner) {
-  const LandscapeConfig& config = l_.config_;
-  if (config.grid_depth >= 0 || inner->vertices > config.merge_below) return inner;
+LandscapeEditor::Draft LandscapeEditor::merge_if_small(const NodePtr& old,
+                                                       std::vector<Draft> children) {
+  Draft inner = Draft::inner(old->box, old->depth, std::move(children));
+  const bool all_cells = std::all_of(inner.children.begin(), inner.children.end(),
+                                     [](const Draft& c) { return c.is_cell(); });
+  if (l_.config_.grid_depth >= 0 || inner.vertices > l_.config_.merge_below || !all_cells)
+    return inner;
   PolygonSet all;
   std::vector<RegionLabel> labels;
-  detail::IdSource previous;
-  for (std::uint32_t i = 0; i < inner->child_count; ++i) {
-    const NodePtr& c = inner->children[i];
-    if (!c->is_cell()) return inner;
-    all.insert(all.end(), c->polygon_set().begin(), c->polygon_set().end());
-    labels.insert(labels.end(), c->content.labels.begin(), c->content.labels.end());
-    previous.add(*c);
+  for (const Draft& c : inner.children) {
+    const LabeledSet& content = c.cell_content();
+    all.insert(all.end(), content.set.polygons().begin(), content.set.polygons().end());
+    labels.insert(labels.end(), content.labels.begin(), content.labels.end());
   }
   // The children lie in boxes with disjoint interiors: together a valid set (validated again
   // here: merges are rare and small), re-united without any crossing, so without rounding.
   LabeledClipResult merged =
-      relabel(ValidSet(std::move(all)), labels, ValidSet(), inner->box, {}, clip_options());
-  return cell_from(inner->box, inner->depth, std::move(merged.regions), previous);
+      relabel(ValidSet(std::move(all)), labels, ValidSet(), old->box, {}, clip_options());
+  return Draft::cell(old->box, old->depth, std::move(merged.regions));
 }
 
-NodePtr LandscapeEditor::rebuild(const NodePtr& node) {
-  if (!open_overlap(node->box, shape_box_)) return node;
+LandscapeEditor::Draft LandscapeEditor::rebuild(const NodePtr& node) {
+  if (!open_overlap(node->box, shape_box_)) return Draft::keep(node);
   if (node->is_cell()) return edit_cell(node);
-  std::vector<NodePtr> children(node->child_count);
+  std::vector<Draft> children(node->child_count);
   bool changed = false;
   for (std::uint32_t i = 0; i < node->child_count; ++i) {
     children[i] = rebuild(node->children[i]);
-    changed = changed || children[i] != node->children[i];
+    changed = changed || children[i].kept != node->children[i];
   }
-  if (!changed) return node;
-  return merge_if_small(detail::make_inner(node->box, node->depth, children));
+  if (!changed) return Draft::keep(node);
+  return merge_if_small(node, std::move(children));
+}
+
+// Stage "Ids": a new cell takes ids from the old cells its box covers (the old node in its
+// place, or the old cell it was split from). An unchanged polygon lies in one of those, so it
+// keeps its id however the cells around it split or merged. Fresh ids go out in tree order.
+NodePtr LandscapeEditor::finish(Draft& draft, const NodePtr& old) {
+  if (draft.kept) return draft.kept;
+  if (old->is_cell() || draft.is_cell()) return finish_within(draft, detail::IdSource(old));
+  std::vector<NodePtr> children;
+  for (std::size_t i = 0; i < draft.children.size(); ++i)
+    children.push_back(finish(draft.children[i], old->children[i]));
+  return detail::make_inner(draft.box, draft.depth, children);
+}
+
+// A draft lying within the old cells of `previous`, with its ids.
+NodePtr LandscapeEditor::finish_within(Draft& draft, const detail::IdSource& previous) {
+  if (draft.is_cell()) {
+    std::vector<PolygonId> ids = detail::match_ids(previous, draft.content, next_id_);
+    return detail::make_cell(draft.box, draft.depth, std::move(draft.content), std::move(ids));
+  }
+  std::vector<NodePtr> children;
+  for (Draft& c : draft.children) children.push_back(finish_within(c, previous));
+  return detail::make_inner(draft.box, draft.depth, children);
 }
 
 ChangeSet LandscapeEditor::run(Landscape& target, const std::function<std::string()>& log_line) {
@@ -127,7 +169,10 @@ ChangeSet LandscapeEditor::run(Landscape& target, const std::function<std::strin
                         shape_vertices);
   NodePtr root = l_.root_;
   try {
-    if (!shape_.polygons().empty() && open_overlap(l_.world_, shape_box_)) root = rebuild(l_.root_);
+    if (!shape_.polygons().empty() && open_overlap(l_.world_, shape_box_)) {
+      Draft draft = rebuild(l_.root_);
+      root = finish(draft, l_.root_);
+    }
   } catch (const InternalError& e) {
     throw detail::internal_error(l_, std::string(e.what()) + "\n  subject = " + e.subject_wkt +
                                          "\n  clip = " + e.clip_wkt, log_line());

@@ -34,12 +34,31 @@ class LandscapeEditor {
   ChangeSet run(Landscape& target, const std::function<std::string()>& log_line);
 
  private:
-  detail::NodePtr rebuild(const detail::NodePtr& node);
-  detail::NodePtr edit_cell(const detail::NodePtr& cell);
-  detail::NodePtr split_if_needed(const detail::NodePtr& cell);
-  detail::NodePtr merge_if_small(const detail::NodePtr& inner);
-  detail::NodePtr cell_from(const Box64& box, std::uint32_t depth, LabeledSet content,
-                            const detail::IdSource& previous);
+  // A part of the new tree before it has ids: an old node kept as it is (`kept`), a new cell
+  // (`content`), or a new inner node over `children` (split_boxes order). Ids are given only
+  // once the new tree's shape is final (finish), so a cell that a split or merge replaces
+  // within the edit never takes an id, and every new cell takes its ids from the old cells
+  // it covers, not from a cell the edit made and threw away.
+  struct Draft {
+    detail::NodePtr kept;
+    Box64 box;
+    std::uint32_t depth = 0;
+    LabeledSet content;
+    std::vector<Draft> children;
+    std::size_t vertices = 0;
+    static Draft keep(const detail::NodePtr& node);
+    static Draft cell(const Box64& box, std::uint32_t depth, LabeledSet content);
+    static Draft inner(const Box64& box, std::uint32_t depth, std::vector<Draft> children);
+    bool is_cell() const { return kept ? kept->is_cell() : children.empty(); }
+    const LabeledSet& cell_content() const { return kept ? kept->content : content; }
+  };
+
+  Draft rebuild(const detail::NodePtr& node);
+  Draft edit_cell(const detail::NodePtr& cell);
+  Draft split_if_needed(Draft cell);
+  Draft merge_if_small(const detail::NodePtr& old, std::vector<Draft> children);
+  detail::NodePtr finish(Draft& draft, const detail::NodePtr& old);
+  detail::NodePtr finish_within(Draft& draft, const detail::IdSource& previous);
   ClipOptions clip_options() const { return ClipOptions{.checked = l_.checked_}; }
   // Counts the vertices a new cell adds over what it replaces, and throws LimitExceeded as
   // soon as the landscape could pass its vertex limit (a runaway split stops early).

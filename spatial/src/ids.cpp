@@ -4,11 +4,13 @@
 
 namespace edgeland::detail {
 
-void IdSource::add(const Landscape::Node& cell) {
-  const PolygonSet& polys = cell.polygon_set();
-  for (std::size_t i = 0; i < polys.size(); ++i)
-    entries_.push_back({&polys[i], cell.content.labels[i], cell.ids[i]});
-  // One cell's content is in canonical order (sorted by ring); several need a sort.
+IdSource::IdSource(const NodePtr& old) {
+  for_each_cell(old, [&](const NodePtr& cell) {
+    const PolygonSet& polys = cell->polygon_set();
+    for (std::size_t i = 0; i < polys.size(); ++i)
+      entries_.push_back({&polys[i], cell->content.labels[i], cell->ids[i]});
+  });
+  // A valid landscape holds no two equal rings (disjoint interiors), so the order is total.
   std::sort(entries_.begin(), entries_.end(),
             [](const Entry& a, const Entry& b) { return *a.ring < *b.ring; });
 }

@@ -7,15 +7,13 @@
 
 namespace edgeland::detail {
 
-// The polygons a new cell's content may take ids from: those of the cell(s) it replaces.
+// The polygons a new cell may take ids from: those of the old cells its box covers, i.e. all
+// cells below the old node in its place (a merge), or the one old cell it lies in (an edit, a
+// split). A polygon equal to an old one lies in one of these, whatever the cells did.
 class IdSource {
  public:
-  static IdSource of(const Landscape::Node& cell) {
-    IdSource s;
-    s.add(cell);
-    return s;
-  }
-  void add(const Landscape::Node& cell);
+  // Every polygon of every cell below `old` (old itself when it is a cell). O(n log n).
+  explicit IdSource(const NodePtr& old);
   // The id of the polygon equal to (ring, material), or 0 if there is none. O(log n).
   PolygonId find(const Polygon& ring, RegionLabel material) const;
 

@@ -14,9 +14,13 @@
 //     when too crowded round once more where the new cell lines cut a boundary.
 //   * CANONICAL CELLS. A cell's content is the canonical decomposition of its material regions
 //     (relabel.hpp): the same regions give the same polygons whatever edits produced them.
-//   * IDS. A polygon keeps its id as long as it is unchanged (same vertices, same material, in
-//     the same cell). An edit's change set names every polygon removed and added, so a game
-//     rebuilds exactly the colliders and meshes of what changed.
+//   * IDS. A polygon keeps its id as long as it is unchanged (same vertices, same material),
+//     also when an edit splits or merges the cells around it and it ends up in another cell.
+//     An untouched region can still come out as other polygons: the canonical decomposition can
+//     cut it differently (a new cell line across it, a bridge to a new hole through it), and
+//     those are new polygons with new ids. Ids are never reused; fresh ones go only to polygons
+//     the edit leaves in the landscape. An edit's change set names every polygon removed and
+//     added, so a game rebuilds exactly the colliders and meshes of what changed.
 //   * DETERMINISM. Integer arithmetic only: the same edits give the same state and the same
 //     state_hash() on every compiler and optimisation level.
 //   * SNAPSHOTS. Copying a Landscape costs O(1): the tree is persistent and shared between
