@@ -25,6 +25,8 @@ bool hole_inside(const Ring& h, const Ring& o) {
     if (loc != PointLocation::kOnBoundary) return loc == PointLocation::kInside;
   }
   // Every vertex of h is on o: decide by the direction of h's first edge at its first vertex.
+  // (Not reached by the kernel, clip and spatial tests: none yields a hole with every vertex on
+  // its outer ring.)
   const auto it = std::find(o.begin(), o.end(), h[0]);
   const std::size_t j = static_cast<std::size_t>(it - o.begin()), n = o.size();
   const Point64 v = o[j], next = o[(j + 1) % n], prev = o[(j + n - 1) % n];
@@ -147,6 +149,7 @@ void split_at_repeats(std::vector<Point64> walk, std::vector<Ring>& out) {
     out.push_back(std::move(walk));
     return;
   }
+  // (Not reached by the kernel, clip and spatial tests: no traced walk there revisits a point.)
   std::vector<Point64> stack;
   for (Point64 p : walk) {
     const auto it = std::find(stack.begin(), stack.end(), p);
@@ -267,6 +270,7 @@ std::vector<Ring> split_one(const Ring& outer, std::vector<const Ring*> holes, i
   }
   if (left_holes.empty()) return pieces;
   constexpr int kMaxDepth = 16;
+  // Not reached by tests: one round of bridges leaves no hole; the depth limit is a defensive stop.
   if (depth >= kMaxDepth) throw std::logic_error("hole splitting: a piece is still a hole");
   return split_holes_at_depth(std::move(pieces), std::move(left_holes), depth + 1);
 }

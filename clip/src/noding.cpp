@@ -111,7 +111,7 @@ Meeting classify_pair(const Segment& s, std::uint32_t i, const Segment& t, std::
         } else {
           c.hot.push_back(p);
         }
-        return Meeting::kOther;
+        return Meeting::kOther;  // Not reached by tests: the switch covers every SegmentRelation.
       }
     }
   return Meeting::kOther;

@@ -26,6 +26,7 @@ TEST(CanonicalForm, EachRuleIsReportedWithItsRingAndVertex) {
   EXPECT_EQ(rotated->rule, CanonicalRule::kNotStartingAtSmallest);
   EXPECT_EQ(rotated->polygon, 1u);
   EXPECT_EQ(rotated->where, (Point64{3, 0}));
+  EXPECT_EQ(rotated->describe(), "not-starting-at-smallest-vertex: polygon 1 at (3 0)");
 
   const auto collinear = canonical_violation({{{0, 0}, {1, 0}, {2, 0}, {2, 2}, {0, 2}}});
   ASSERT_TRUE(collinear);
@@ -44,11 +45,13 @@ TEST(CanonicalForm, EachRuleIsReportedWithItsRingAndVertex) {
   EXPECT_EQ(unsorted->rule, CanonicalRule::kNotSorted);
   EXPECT_EQ(unsorted->polygon, 1u);
   EXPECT_EQ(unsorted->where, (Point64{0, 0}));
+  EXPECT_EQ(unsorted->describe(), "not-sorted: polygon 1 at (0 0)");
 
   const auto tiny = canonical_violation({kSquare, {{7, 7}, {8, 8}}});
   ASSERT_TRUE(tiny);
   EXPECT_EQ(tiny->rule, CanonicalRule::kTooFewVertices);
   EXPECT_EQ(tiny->polygon, 1u);
+  EXPECT_EQ(tiny->describe(), "too-few-vertices: polygon 1 at (7 7)");
 }
 
 }  // namespace
