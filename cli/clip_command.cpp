@@ -1,6 +1,7 @@
 // `edgeland clip --op OP [--fill-rule RULE] [--check] SUBJECT CLIP`: a boolean operation on two
 // WKT operands, printed as one WKT MULTIPOLYGON of CCW polygons without holes.
 #include <cctype>
+#include <initializer_list>
 #include <iostream>
 #include <map>
 #include <memory>
@@ -102,6 +103,14 @@ int run_clip(const ClipCommandOptions& o) {
   }
 }
 
+// Each value by its name.
+template <class E, class Name>
+std::map<std::string, E> by_name(std::initializer_list<E> values, Name name) {
+  std::map<std::string, E> out;
+  for (E v : values) out.emplace(name(v), v);
+  return out;
+}
+
 }  // namespace
 
 Command add_clip_command(CLI::App& parent) {
@@ -112,14 +121,10 @@ Command add_clip_command(CLI::App& parent) {
       "the result as one WKT MULTIPOLYGON of counter-clockwise polygons without holes.");
   // Options take names only: a transformer over the enums would print their values as raw
   // bytes in --help and in its errors.
-  static const std::map<std::string, ClipOp> ops{{"union", ClipOp::kUnion},
-                                                 {"intersection", ClipOp::kIntersection},
-                                                 {"difference", ClipOp::kDifference},
-                                                 {"xor", ClipOp::kXor}};
-  static const std::map<std::string, FillRule> rules{{"evenodd", FillRule::kEvenOdd},
-                                                     {"nonzero", FillRule::kNonZero},
-                                                     {"positive", FillRule::kPositive},
-                                                     {"negative", FillRule::kNegative}};
+  // The names are the library's own (op_name, fill_rule_name): one table of them.
+  static const auto ops = by_name({ClipOp::kUnion, ClipOp::kIntersection, ClipOp::kDifference, ClipOp::kXor}, op_name);
+  static const auto rules = by_name({FillRule::kEvenOdd, FillRule::kNonZero, FillRule::kPositive, FillRule::kNegative},
+                                    fill_rule_name);
   app->add_option("--op", o->op_name, "union, intersection, difference or xor")
       ->required()
       ->check(CLI::IsMember(names_of(ops), CLI::ignore_case))

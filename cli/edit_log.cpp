@@ -1,5 +1,6 @@
 #include "edit_log.hpp"
 
+#include <algorithm>
 #include <array>
 #include <utility>
 
@@ -10,15 +11,8 @@
 namespace edgeland::log {
 namespace {
 
-struct Keyword {
-  std::string_view word;
-  StepKind kind;
-};
-constexpr std::array<Keyword, 5> kKeywords{{{"set", StepKind::kSet},
-                                            {"union", StepKind::kUnion},
-                                            {"intersection", StepKind::kIntersection},
-                                            {"difference", StepKind::kDifference},
-                                            {"xor", StepKind::kXor}}};
+constexpr std::array<StepKind, 5> kAllSteps{StepKind::kSet, StepKind::kUnion, StepKind::kIntersection,
+                                            StepKind::kDifference, StepKind::kXor};
 
 ClipOp op_of(StepKind kind) {
   switch (kind) {
@@ -37,11 +31,9 @@ ClipOp op_of(StepKind kind) {
 
 }  // namespace
 
+// The operations' keywords are the library's own names (op_name): one table of them.
 const char* step_keyword(StepKind kind) noexcept {
-  for (const Keyword& k : kKeywords) {
-    if (k.kind == kind) return k.word.data();
-  }
-  return "?";
+  return kind == StepKind::kSet ? "set" : op_name(op_of(kind));
 }
 
 StepKind step_kind(ClipOp op) noexcept {
@@ -77,11 +69,9 @@ std::optional<Step> parse_log_line(std::string_view raw, std::size_t line_number
   std::string_view rest = trim_blanks(raw);
   if (is_skipped_line(rest)) return std::nullopt;
   const std::string_view word = take_word(rest);
-  const Keyword* keyword = nullptr;
-  for (const Keyword& k : kKeywords) {
-    if (k.word == word) keyword = &k;
-  }
-  if (keyword == nullptr) {
+  const auto kind = std::find_if(kAllSteps.begin(), kAllSteps.end(),
+                                 [&](StepKind k) { return word == step_keyword(k); });
+  if (kind == kAllSteps.end()) {
     throw LogError(LogErrorKind::kUnknownStep, line_number,
                    "unknown step '" + printable_excerpt(word) +
                        "' (expected set, union, intersection, difference or xor)");
@@ -89,16 +79,16 @@ std::optional<Step> parse_log_line(std::string_view raw, std::size_t line_number
   const std::string_view wkt = rest;
   if (wkt.empty()) {
     throw LogError(LogErrorKind::kMissingShape, line_number,
-                   std::string(keyword->word) + ": missing WKT shape");
+                   std::string(step_keyword(*kind)) + ": missing WKT shape");
   }
   Step step;
-  step.kind = keyword->kind;
+  step.kind = *kind;
   step.line = line_number;
   try {
     step.shape = read_wkt(wkt);
   } catch (const WktError& error) {
     LogError log_error(LogErrorKind::kBadShape, line_number,
-                       std::string(keyword->word) + ": " + shape_error_message(wkt, error.what()));
+                       std::string(step_keyword(*kind)) + ": " + shape_error_message(wkt, error.what()));
     log_error.wkt_error = error.kind;
     throw log_error;
   }
