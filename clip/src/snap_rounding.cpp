@@ -518,7 +518,6 @@ Fragments snap_round(const std::vector<Segment>& segs, const std::vector<std::ui
     fresh.clear();
     for (const auto& m : closure.meets) stats.touched[m.first] = true;
     Fragments frags = route(segs, closure, contacts.splits);
-    stats.rounds = round;
     stats.hot_pixels = closure.hot.size();
     stats.moved_boxes.clear();
     stats.moved_boxes.reserve(static_cast<std::size_t>(

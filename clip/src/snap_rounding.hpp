@@ -23,7 +23,6 @@ struct SnapStats {
   std::vector<Box64> moved_boxes;
   std::size_t intersections = 0;
   std::size_t hot_pixels = 0;
-  std::size_t rounds = 0;
   // touched[s] is false only for input segments that yield themselves as their one fragment and
   // share no point with any other fragment except their ring neighbours' at their common
   // endpoints. The plane graph chains such segments (planar_graph.hpp).
