@@ -15,8 +15,11 @@ formulas::RayEdge<W> parameters(const Ray& ray, const Segment& edge) noexcept {
                                edge.b.x, edge.b.y);
 }
 
-// Sign of cross(direction, edge): < 0 front face, > 0 back face (counter-clockwise ring).
-Int128 facing(const Ray& ray, const Segment& edge) noexcept { return parameters(ray, edge).den.v; }
+// Sign of cross(direction, edge): < 0 front face, > 0 back face (counter-clockwise ring). The
+// den of ray_edge alone (the same products, proven there), not all three of its parts.
+Int128 facing(const Ray& ray, const Segment& edge) noexcept {
+  return formulas::cross<W>(ray.dx, ray.dy, W(edge.b.x) - W(edge.a.x), W(edge.b.y) - W(edge.a.y)).v;
+}
 
 bool culled(RayCulling culling, Int128 face) noexcept {
   switch (culling) {
