@@ -1,11 +1,11 @@
 #include "assembly.hpp"
 
 #include <algorithm>
-#include <stdexcept>
 
 #include "canonical.hpp"
 #include "edgeland/kernel/area.hpp"
 #include "edgeland/kernel/recycled_vector.hpp"
+#include "stage_failure.hpp"
 
 namespace edgeland::detail {
 
@@ -41,6 +41,27 @@ Ring ring_along(const PlaneGraph& g, const std::uint32_t* first, const std::uint
   return ring;
 }
 
+namespace {
+
+// The half-edge after `cur` along the boundary of its region (label): the sharpest left turn.
+// From the reversed edge, turn clockwise to the first edge that bounds the same region.
+// turn_at[x] locates the half-edge clockwise after x's twin, so the candidate after h round the
+// same vertex is at turn_at[h ^ 1]; the vertex's degree bounds the search. Returns cur when
+// there is none.
+std::uint32_t next_on_boundary(const PlaneGraph& g, const std::vector<FaceLabel>& emitted,
+                               std::uint32_t cur, FaceLabel label) {
+  std::uint32_t next = g.around[g.turn_at[cur]];
+  const std::uint32_t w = g.target(cur), degree = g.around_begin[w + 1] - g.around_begin[w];
+  for (std::uint32_t tried = 1; emitted[next] != label; ++tried) {
+    // Not reached by tests: a region's boundary always continues at its vertex.
+    if (tried >= degree) return cur;
+    next = g.around[g.turn_at[next ^ 1]];
+  }
+  return next;
+}
+
+}  // namespace
+
 BoundaryWalks trace_boundaries(const PlaneGraph& g, const std::vector<FaceLabel>& emitted) {
   const std::size_t nh = emitted.size();
   BoundaryWalks walks;
@@ -56,31 +77,17 @@ BoundaryWalks trace_boundaries(const PlaneGraph& g, const std::vector<FaceLabel>
     if (label < 0 || used[start]) continue;
     const auto walk = static_cast<std::uint32_t>(walks.label.size() + 1);
     std::uint8_t revisits = 0;
-    std::uint32_t cur = start;
-    do {
+    for (std::uint32_t cur = start, next;; cur = next) {
       used[cur] = true;
       walks.half_edges.push_back(cur);
       std::uint32_t& left_by = left_in[g.origin(cur)];
       revisits |= static_cast<std::uint8_t>(left_by == walk);
       left_by = walk;
-      // Sharpest left turn: from the reversed edge, turn clockwise to the first edge that
-      // bounds the same region. turn_at[x] locates the half-edge clockwise after x's twin, so
-      // the candidate after h round the same vertex is at turn_at[h ^ 1]; the vertex's
-      // degree bounds the search.
-      std::uint32_t next = g.around[g.turn_at[cur]];
-      for (std::uint32_t tried = 1; emitted[next] != label; ++tried) {
-        const std::uint32_t w = g.target(cur);
-        if (tried >= g.around_begin[w + 1] - g.around_begin[w]) {
-          // Not reached by tests: a region's boundary always continues at its vertex.
-          next = cur;
-          break;
-        }
-        next = g.around[g.turn_at[next ^ 1]];
-      }
+      next = next_on_boundary(g, emitted, cur, label);
       if (next == cur || (used[next] && next != start))  // Not reached by tests: an internal error.
-        throw std::logic_error("assembly: region boundary does not close");
-      cur = next;
-    } while (cur != start);
+        fail_stage("assembly", "region boundary does not close");
+      if (next == start) break;
+    }
     walks.label.push_back(label);
     walks.revisits.push_back(revisits);
     walks.begin.push_back(static_cast<std::uint32_t>(walks.half_edges.size()));
@@ -111,9 +118,12 @@ void keep_corners_and_shared_points(RegionRings& region) {
 
 }  // namespace
 
-Assembled assemble(const PlaneGraph& g, const std::vector<SideState>& left,
-                   const LabelOf& label_of, bool collinear_free_operands, bool corner_bridges) {
-  RecycledVector<struct EmittedBuffer, FaceLabel> emitted;
+namespace {
+
+// emitted[h]: the label of the result region on the left of half-edge h, where the edge
+// separates two different labels (-1 elsewhere: not on any region's boundary).
+void label_boundary_half_edges(const PlaneGraph& g, const std::vector<SideState>& left,
+                               const LabelOf& label_of, std::vector<FaceLabel>& emitted) {
   emitted.assign(2 * g.edge_count(), -1);
   for (std::uint32_t e = 0; e < g.edge_count(); ++e) {
     const FaceLabel l = label_of(left[2 * e]), r = label_of(left[2 * e + 1]);
@@ -121,124 +131,187 @@ Assembled assemble(const PlaneGraph& g, const std::vector<SideState>& left,
     emitted[2 * e] = l;
     emitted[2 * e + 1] = r;
   }
-  // Rings are collected flat with their label. Only when there are holes are they grouped by
-  // label (in increasing order, what a map from label to region would give): most results have
-  // none, and then every ring is an output polygon as it stands, with no region per label.
-  Assembled out;
-  std::vector<FaceLabel> ring_label;
-  std::vector<bool> outer;
+}
+
+// Where a ring's half-edges are kept, to trace it again for hole splitting: its walk's stretch
+// of half-edges, or for a loop split off a walk, a copy.
+struct LoopSpan {
+  std::uint32_t begin, end;  // in the walks' half-edges, or in split_loops when `split`
+  bool split;
+};
+
+// The loops of the boundary walks, each written out in canonical form at once
+// (canonical.hpp): it starts at its smallest point, which is a graph vertex (no chain has an
+// interior point smaller than both its ends), and the turn there is its orientation, so
+// neither a pass for the area nor one to rotate is needed. Collinear points can only be graph
+// vertices, or chain points when an operand ring had collinear consecutive vertices.
+class RingWriter {
+ public:
+  RingWriter(const PlaneGraph& g, bool collinear_free_operands, std::size_t walks, Assembled& out)
+      : g_(g), check_chains_(collinear_free_operands ? 0 : 1), out_(out) {
+    out.rings.reserve(walks);
+    ring_label.reserve(walks);
+    outer.reserve(walks);
+  }
+  // Adds the loop [first, last) of half-edges; false when it encloses no area.
+  bool add_loop(FaceLabel label, const std::uint32_t* first, const std::uint32_t* last);
+
+  std::vector<FaceLabel> ring_label;  // of out.rings[i]
+  std::vector<bool> outer;            // out.rings[i] turns counter-clockwise
   std::size_t holes = 0;
+
+ private:
+  std::size_t gather_points(const std::uint32_t* first, const std::uint32_t* last, bool& chains);
+
+  const PlaneGraph& g_;
+  const std::uint8_t check_chains_;
+  Assembled& out_;
+  RecycledVector<struct LoopPointsBuffer, Point64> points_;
+  RecycledVector<struct LoopCheckBuffer, std::uint8_t> check_;  // which points may be dropped
+};
+
+// The loop's points into points_, with check_ marking those canonical_ring_from tests for
+// collinearity (every vertex; chain points only when operands may have collinear vertices).
+// Returns the position of the least point; `chains`: whether chain points are among them.
+std::size_t RingWriter::gather_points(const std::uint32_t* first, const std::uint32_t* last,
+                                      bool& chains) {
+  points_.clear();
+  check_.clear();
+  std::size_t least = 0;
+  chains = false;
+  for (const std::uint32_t* h = first; h != last; ++h) {
+    const std::size_t at = points_.size();
+    g_.append_points(*h, points_);
+    if (points_[at] < points_[least]) least = at;
+    if (points_.size() == at + 1) {  // a vertex alone
+      if (chains) check_.push_back(1);
+      continue;
+    }
+    // Marks are written from the first chain on: every point before it is a vertex.
+    if (!chains) check_.assign(at, 1);
+    chains = true;
+    check_.push_back(1);
+    check_.resize(points_.size(), check_chains_);
+  }
+  return least;
+}
+
+bool RingWriter::add_loop(FaceLabel label, const std::uint32_t* first, const std::uint32_t* last) {
+  bool chains = false;
+  const std::size_t least = gather_points(first, last, chains);
+  int turn = 0;
+  // Without chain points every point is a graph vertex, each one tested.
+  Ring ring = canonical_ring_from(points_, chains ? check_.data() : nullptr, least, turn);
+  if (turn == 0) {
+    // Not expected of a face boundary (simple, so nonzero area means a convex smallest
+    // vertex); decided by the area as before, should it happen. Not reached by tests.
+    const Int128 area = points_.size() < 3 ? 0 : twice_signed_area(points_);
+    if (area == 0) return false;
+    ring = canonical_ring(Ring(points_.begin(), points_.end()));
+    turn = area > 0 ? 1 : -1;
+  }
+  out_.rings.push_back(std::move(ring));
+  ring_label.push_back(label);
+  outer.push_back(turn > 0);
+  if (turn < 0) ++holes;
+  return true;
+}
+
+// Every walk's loops written out; a walk that revisits a vertex is split there first. The
+// half-edges of each ring written are recorded in `loops` (and split_loops).
+void write_loops(const PlaneGraph& g, const BoundaryWalks& walks, RingWriter& writer,
+                 std::vector<LoopSpan>& loops, std::vector<std::uint32_t>& split_loops) {
   RecycledVector<struct PositionBuffer, std::int32_t> position;  // split_at_repeated_vertices
-  // Each loop is written out in canonical form at once (canonical.hpp): it starts at its
-  // smallest point, which is a graph vertex (no chain has an interior point smaller than both
-  // its ends), and the turn there is its orientation, so neither a pass for the area nor one to
-  // rotate is needed. Collinear points can only be graph vertices, or chain points when an
-  // operand ring had collinear consecutive vertices.
-  // Hole splitting needs a region's rings as traced, every graph vertex on them (a bridge may
-  // end at one a canonical ring drops), so each ring's half-edges are kept to trace again: as
-  // its walk's stretch of half-edges, or for a loop split off a walk, a copy.
-  struct LoopSpan {
-    std::uint32_t begin, end;  // in the walks' half-edges, or in split_loops when `split`
-    bool split;
-  };
-  RecycledVector<struct LoopSpansBuffer, LoopSpan> loops;  // one per ring of out.rings
-  RecycledVector<struct SplitLoopsBuffer, std::uint32_t> split_loops;
-  RecycledVector<struct LoopPointsBuffer, Point64> points;
-  RecycledVector<struct LoopCheckBuffer, std::uint8_t> check;
-  const std::uint8_t check_chains = collinear_free_operands ? 0 : 1;
-  auto add_loop = [&](FaceLabel label, const std::uint32_t* first, const std::uint32_t* last) {
-    points.clear();
-    check.clear();
-    std::size_t least = 0;
-    bool chains = false;  // whether a chain's interior points are among the points
-    for (const std::uint32_t* h = first; h != last; ++h) {
-      const std::size_t at = points.size();
-      g.append_points(*h, points);
-      if (points[at] < points[least]) least = at;
-      if (points.size() == at + 1) {  // a vertex alone
-        if (chains) check.push_back(1);
-        continue;
-      }
-      // Marks are written from the first chain on: every point before it is a vertex.
-      if (!chains) check.assign(at, 1);
-      chains = true;
-      check.push_back(1);
-      check.resize(points.size(), check_chains);
-    }
-    int turn = 0;
-    // Without chain points every point is a graph vertex, each one tested.
-    Ring ring = canonical_ring_from(points, chains ? check.data() : nullptr, least, turn);
-    if (turn == 0) {
-      // Not expected of a face boundary (simple, so nonzero area means a convex smallest
-      // vertex); decided by the area as before, should it happen. Not reached by tests.
-      const Int128 area = points.size() < 3 ? 0 : twice_signed_area(points);
-      if (area == 0) return false;
-      ring = canonical_ring(Ring(points.begin(), points.end()));
-      turn = area > 0 ? 1 : -1;
-    }
-    out.rings.push_back(std::move(ring));
-    ring_label.push_back(label);
-    outer.push_back(turn > 0);
-    if (turn < 0) ++holes;
-    return true;
-  };
-  const BoundaryWalks walks = trace_boundaries(g, emitted);
-  auto half_edges = [&](const LoopSpan& l) {
-    return l.split ? split_loops.data() : walks.half_edges.data();
-  };
-  out.rings.reserve(walks.size());
-  ring_label.reserve(walks.size());
-  outer.reserve(walks.size());
   for (std::size_t w = 0; w < walks.size(); ++w) {
     const std::uint32_t *first = walks.first(w), *last = walks.last(w);
     // Most walks visit every vertex once: then the walk is the loop, with nothing to split.
     if (!walks.revisits[w]) {
-      if (add_loop(walks.label[w], first, last))
+      if (writer.add_loop(walks.label[w], first, last))
         loops.push_back({walks.begin[w], walks.begin[w + 1], false});
       continue;
     }
     if (position.empty()) position.assign(g.vertices.size(), -1);
-    for (const auto& loop : split_at_repeated_vertices(g, first, last, position))
-      if (add_loop(walks.label[w], loop.data(), loop.data() + loop.size())) {
-        const auto from = static_cast<std::uint32_t>(split_loops.size());
-        split_loops.insert(split_loops.end(), loop.begin(), loop.end());
-        loops.push_back({from, static_cast<std::uint32_t>(split_loops.size()), true});
-      }
+    for (const auto& loop : split_at_repeated_vertices(g, first, last, position)) {
+      if (!writer.add_loop(walks.label[w], loop.data(), loop.data() + loop.size())) continue;
+      const auto from = static_cast<std::uint32_t>(split_loops.size());
+      split_loops.insert(split_loops.end(), loop.begin(), loop.end());
+      loops.push_back({from, static_cast<std::uint32_t>(split_loops.size()), true});
+    }
   }
-  if (holes == 0) {
-    out.labels = std::move(ring_label);
-    return out;
+}
+
+// The rings written, grouped by label when some label has holes: regions with holes move to
+// out.holed (traced again along their half-edges, every graph vertex kept); the rest stay, in
+// their order.
+class RegionSorter {
+ public:
+  RegionSorter(const PlaneGraph& g, const BoundaryWalks& walks, const std::vector<LoopSpan>& loops,
+               const std::vector<std::uint32_t>& split_loops, const RingWriter& writer)
+      : g_(g), walks_(walks), loops_(loops), split_loops_(split_loops), writer_(writer) {}
+
+  void run(bool corner_bridges, Assembled& out) const;
+
+ private:
+  Ring traced(std::uint32_t r) const {
+    const LoopSpan& l = loops_[r];
+    const std::uint32_t* base = l.split ? split_loops_.data() : walks_.half_edges.data();
+    return ring_along(g_, base + l.begin, base + l.end);
   }
-  // Regions with holes move to out.holed; the rest of the rings stay, in their order.
+
+  const PlaneGraph& g_;
+  const BoundaryWalks& walks_;
+  const std::vector<LoopSpan>& loops_;
+  const std::vector<std::uint32_t>& split_loops_;
+  const RingWriter& writer_;
+};
+
+void RegionSorter::run(bool corner_bridges, Assembled& out) const {
+  const auto& label = writer_.ring_label;
   std::vector<std::uint32_t> order(out.rings.size());
   for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
   std::stable_sort(order.begin(), order.end(),
-                   [&](std::uint32_t x, std::uint32_t y) { return ring_label[x] < ring_label[y]; });
+                   [&](std::uint32_t x, std::uint32_t y) { return label[x] < label[y]; });
   std::vector<Ring> kept;
-  for (std::size_t i = 0; i < order.size();) {
-    std::size_t j = i;
+  for (std::size_t i = 0, j; i < order.size(); i = j) {
     bool with_holes = false;
-    for (; j < order.size() && ring_label[order[j]] == ring_label[order[i]]; ++j)
-      with_holes = with_holes || !outer[order[j]];
+    for (j = i; j < order.size() && label[order[j]] == label[order[i]]; ++j)
+      with_holes = with_holes || !writer_.outer[order[j]];
     if (!with_holes) {
       for (std::size_t k = i; k < j; ++k) {
         kept.push_back(std::move(out.rings[order[k]]));
-        out.labels.push_back(ring_label[order[k]]);
+        out.labels.push_back(label[order[k]]);
       }
-    } else {
-      RegionRings& region = out.holed.emplace_back();
-      region.label = ring_label[order[i]];
-      for (std::size_t k = i; k < j; ++k) {
-        const std::uint32_t r = order[k];
-        (outer[r] ? region.outers : region.holes)
-            .push_back(ring_along(g, half_edges(loops[r]) + loops[r].begin,
-                                  half_edges(loops[r]) + loops[r].end));
-      }
-      if (corner_bridges) keep_corners_and_shared_points(region);
+      continue;
     }
-    i = j;
+    RegionRings& region = out.holed.emplace_back();
+    region.label = label[order[i]];
+    for (std::size_t k = i; k < j; ++k)
+      (writer_.outer[order[k]] ? region.outers : region.holes).push_back(traced(order[k]));
+    if (corner_bridges) keep_corners_and_shared_points(region);
   }
   out.rings = std::move(kept);
+}
+
+}  // namespace
+
+// Rings are collected flat with their label. Only when there are holes are they grouped by
+// label (in increasing order, what a map from label to region would give): most results have
+// none, and then every ring is an output polygon as it stands, with no region per label.
+Assembled assemble(const PlaneGraph& g, const std::vector<SideState>& left,
+                   const LabelOf& label_of, bool collinear_free_operands, bool corner_bridges) {
+  RecycledVector<struct EmittedBuffer, FaceLabel> emitted;
+  label_boundary_half_edges(g, left, label_of, emitted);
+  const BoundaryWalks walks = trace_boundaries(g, emitted);
+  Assembled out;
+  RingWriter writer(g, collinear_free_operands, walks.size(), out);
+  RecycledVector<struct LoopSpansBuffer, LoopSpan> loops;  // one per ring of out.rings
+  RecycledVector<struct SplitLoopsBuffer, std::uint32_t> split_loops;
+  write_loops(g, walks, writer, loops, split_loops);
+  if (writer.holes == 0) {
+    out.labels = std::move(writer.ring_label);
+    return out;
+  }
+  RegionSorter(g, walks, loops, split_loops, writer).run(corner_bridges, out);
   return out;
 }
 

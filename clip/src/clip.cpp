@@ -12,6 +12,7 @@
 #include "edgeland/kernel/recycled_vector.hpp"
 #include "edgeland/kernel/validate.hpp"
 #include "edgeland/kernel/wkt_writer.hpp"
+#include "grown_box.hpp"
 #include "hole_splitting.hpp"
 #include "input_edges.hpp"
 #include "labeling.hpp"
@@ -27,15 +28,12 @@ namespace {
 using detail::Pipeline;
 using detail::Screening;
 using detail::require_valid;
+using detail::grown;
 using detail::guarded;
 using detail::SideState;
 
 ClipResult run_clip(const Pipeline& p, std::vector<Box64>* moved_boxes = nullptr) {
   return detail::run(p, moved_boxes).clipped;
-}
-
-Box64 grown(Box64 b, std::int64_t by) {
-  return {{b.min.x - by, b.min.y - by}, {b.max.x + by, b.max.y + by}};
 }
 
 // clip() restricted to the subject polygons that can interact with the clip operand.
@@ -58,15 +56,15 @@ ClipResult clip_near(ClipOp op, const PolygonSet& subject, const PolygonSet& cli
   }
   // Left-out subject polygons never reach the pipeline, so its checks cannot vouch for them.
   if (screening && std::find(included.begin(), included.end(), false) != included.end())
-    screening->validate_in_full(0);
+    screening->validate_in_full(Operand::kSubject);
   for (;;) {
     Pipeline p;
     p.screening = screening;
     std::vector<std::uint32_t> near;
     for (std::uint32_t i = 0; i < subject.size(); ++i)
       if (included[i]) near.push_back(i);
-    detail::append_ring_edges(subject, 0, true, p.edges, &near);
-    detail::append_ring_edges(clip_set, 1, true, p.edges);
+    detail::append_ring_edges(subject, detail::kSubjectChannel, true, p.edges, &near);
+    detail::append_ring_edges(clip_set, detail::kClipChannel, true, p.edges);
     p.mode = detail::LabelMode::kOwner;
     p.label_of = detail::LabelOf::operation(op);
     p.collinear_free_operands = collinear_free;
@@ -129,8 +127,8 @@ ClipResult box_of_valid(const PolygonSet& set, const Box64& box, const ClipOptio
   return guarded(
       [&] {
         Pipeline p;
-        detail::append_ring_edges(set, 0, true, p.edges, &near);
-        detail::append_ring_edges(cell, 1, true, p.edges);
+        detail::append_ring_edges(set, detail::kSubjectChannel, true, p.edges, &near);
+        detail::append_ring_edges(cell, detail::kClipChannel, true, p.edges);
         p.mode = detail::LabelMode::kOwner;
         p.label_of = detail::LabelOf::operation(ClipOp::kIntersection);
         p.collinear_free_operands = collinear_free;
@@ -144,11 +142,11 @@ ClipResult box_of_valid(const PolygonSet& set, const Box64& box, const ClipOptio
 // themselves only at shared vertices or along shared stretches, never crossing.
 std::vector<Ring> snapped_rings(const std::vector<Ring>& rings, ClipStats& stats) {
   detail::EdgeList edges;
-  detail::append_ring_edges(rings, 0, true, edges);
-  detail::SnapStats snap;
-  const auto fragments = detail::snap_round(edges.segments, edges.next, false, snap);
-  stats.intersections = snap.intersections;
-  stats.vertices_snapped = snap.hot_pixels;
+  detail::append_ring_edges(rings, detail::kSubjectChannel, true, edges);
+  const detail::Snapped snapped =
+      detail::node_and_snap_round(edges.segments, edges.next, false, &stats.intersections);
+  const auto& fragments = snapped.fragments;
+  stats.vertices_snapped = snapped.hot_pixels;
   // Listed fragments come in segment order, each segment's from its start to its end; a
   // segment with none listed is its own fragment.
   std::vector<Ring> out(rings.size());
@@ -248,7 +246,7 @@ ClipResult normalize(const std::vector<Ring>& rings, FillRule rule, const ClipOp
   return guarded(
       [&] {
         Pipeline p;
-        detail::append_ring_edges(rings, 0, false, p.edges);
+        detail::append_ring_edges(rings, detail::kSubjectChannel, false, p.edges);
         p.simple_rings = false;
         p.mode = detail::LabelMode::kWinding;
         p.label_of = detail::LabelOf::fill(rule);

@@ -4,16 +4,24 @@
 #include <cstdint>
 #include <vector>
 
+#include "edgeland/kernel/errors.hpp"
 #include "edgeland/kernel/polygon.hpp"
 
 namespace edgeland::detail {
+
+// The channel of an edge: which operand it belongs to (the API's Operand), as the small integer
+// the stages index their per-operand state by. normalize's rings all go in the subject channel.
+inline constexpr std::uint8_t kSubjectChannel = 0, kClipChannel = 1;
+constexpr std::uint8_t channel_of(Operand which) {
+  return which == Operand::kClip ? kClipChannel : kSubjectChannel;
+}
 
 // Edge i is segments[i], directed: its left side is the inside of polygon[i] of operand
 // channel[i] (for normalize: it adds +1 to the winding number on its left). next[i] is the edge
 // that follows it along its ring; the edges of a ring are consecutive.
 struct EdgeList {
   std::vector<Segment> segments;
-  std::vector<std::uint8_t> channel;   // 0 = subject / normalize rings, 1 = clip operand
+  std::vector<std::uint8_t> channel;   // kSubjectChannel (also normalize's rings) or kClipChannel
   std::vector<std::int32_t> polygon;   // index within its operand
   std::vector<std::uint32_t> next;
   // Empty: every edge counts once. Otherwise edge i counts weight[i] times, in its direction

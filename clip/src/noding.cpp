@@ -2,8 +2,6 @@
 
 #include <algorithm>
 
-#include "segment_grid.hpp"
-#include "segment_index.hpp"
 #include "edgeland/kernel/bbox.hpp"
 #include "edgeland/kernel/predicates.hpp"
 
@@ -158,56 +156,83 @@ bool overlap_proof(const Segment& s, const Segment& t) {
   return static_cast<int>(o3) * static_cast<int>(o4) < 0;
 }
 
+// Ring of each segment (rings occupy consecutive ids): needed to skip the pairs of one ring on
+// the grid walk when rings are simple, and to see a ring meet itself when screening.
+void number_rings(const std::vector<std::uint32_t>& next, std::vector<std::uint32_t>& ring_of) {
+  ring_of.resize(next.size());
+  for (std::uint32_t s = 0, ring = 0; s < ring_of.size(); ++s) {
+    if (s > 0 && next[s - 1] != s) ring = s;
+    ring_of[s] = ring;
+  }
+}
+
+// The visit of one candidate pair: classifies it, records what it finds, stops noding when
+// the screen or the overlap budget says so.
+class PairVisit {
+ public:
+  PairVisit(const std::vector<Segment>& segments, const std::vector<std::uint32_t>& next,
+            const std::vector<std::uint32_t>& ring_of, const NodingOptions& options, Contacts& c)
+      : segments_(segments), next_(next), ring_of_(ring_of), options_(options), c_(c) {}
+
+  void operator()(std::uint32_t i, std::uint32_t j) const {
+    const Meeting m = classify_pair(segments_[i], i, segments_[j], j, c_);
+    if (m == Meeting::kNone) return;
+    const bool neighbours = next_[i] == j || next_[j] == i;
+    if (options_.screen_channel && proves_invalid(i, j, m, neighbours)) throw StopNoding{false};
+    if (c_.overlaps > options_.overlap_budget) throw StopNoding{true};
+    if (m == Meeting::kSharedEndpoint && neighbours) return;
+    c_.touched[i] = c_.touched[j] = true;
+  }
+
+ private:
+  // Screening: two segments of one ring meeting other than as neighbours at their shared
+  // endpoint, or of two rings of one operand overlapping (overlap_proof).
+  bool proves_invalid(std::uint32_t i, std::uint32_t j, Meeting m, bool neighbours) const {
+    if (ring_of_[i] == ring_of_[j]) return m == Meeting::kOther || !neighbours;
+    return m == Meeting::kOther && (*options_.screen_channel)[i] == (*options_.screen_channel)[j] &&
+           overlap_proof(segments_[i], segments_[j]);
+  }
+
+  const std::vector<Segment>& segments_;
+  const std::vector<std::uint32_t>& next_;
+  const std::vector<std::uint32_t>& ring_of_;
+  const NodingOptions& options_;
+  Contacts& c_;
+};
+
+// Every candidate pair visited once. Short runs (spiky or zigzag rings) leave the run index
+// little to group, and long diagonal segments make box overlap a weak filter: then the segments
+// are walked through a grid, which is left in search.near for snap rounding's point queries.
+void visit_candidate_pairs(const std::vector<Segment>& segments, SegmentSearch& search,
+                           bool walk, bool simple_rings, const std::vector<std::uint32_t>& ring_of,
+                           const PairVisit& visit) {
+  std::unique_ptr<SegmentGrid> walked;
+  if (walk) walked = std::make_unique<SegmentGrid>(segments);
+  if (walked && !grid_walk_is_worse(*walked, search.index, segments.size())) {
+    walked->for_each_candidate_pair([&](std::uint32_t i, std::uint32_t j) {
+      if (simple_rings && ring_of[i] == ring_of[j]) return;
+      if (boxes_overlap(segments[i], segments[j])) visit(i, j);
+    });
+  } else {
+    search.index.for_each_overlapping_pair(visit, simple_rings);
+  }
+  if (walked) search.near.grid() = std::move(walked);
+}
+
 }  // namespace
 
 Contacts find_contacts(const std::vector<Segment>& segments, const std::vector<std::uint32_t>& next,
-                       const SegmentIndex& index, bool simple_rings, std::vector<std::uint8_t>& touched,
-                       std::unique_ptr<SegmentGrid>* grid,
-                       const std::vector<std::uint8_t>* screen_channel,
-                       std::size_t overlap_budget) {
+                       SegmentSearch& search, const NodingOptions& options) {
   Contacts c;
-  // Ring of each segment (rings occupy consecutive ids): needed to skip the pairs of one ring
-  // on the grid walk when rings are simple, and to see a ring meet itself when screening.
-  const bool walk = segments.size() >= kGridWalkFrom && index.run_length_x16() < kGridWalkBelowRunLengthX16;
-  const bool screening = screen_channel != nullptr;
-  if (screening) simple_rings = false;
+  c.touched.assign(segments.size(), false);
+  const bool walk = segments.size() >= kGridWalkFrom &&
+                    search.index.run_length_x16() < kGridWalkBelowRunLengthX16;
+  const bool screening = options.screen_channel != nullptr;
   RecycledVector<struct RingOfBuffer, std::uint32_t> ring_of;
-  if (walk || screening) {
-    ring_of.resize(segments.size());
-    for (std::uint32_t s = 0, ring = 0; s < ring_of.size(); ++s) {
-      if (s > 0 && next[s - 1] != s) ring = s;
-      ring_of[s] = ring;
-    }
-  }
-  auto visit = [&](std::uint32_t i, std::uint32_t j) {
-    const Meeting m = classify_pair(segments[i], i, segments[j], j, c);
-    if (m == Meeting::kNone) return;
-    const bool neighbours = next[i] == j || next[j] == i;
-    if (screening) {
-      const bool proof = ring_of[i] == ring_of[j]
-                             ? m == Meeting::kOther || !neighbours
-                             : m == Meeting::kOther && (*screen_channel)[i] == (*screen_channel)[j] &&
-                                   overlap_proof(segments[i], segments[j]);
-      if (proof) throw StopNoding{false};
-    }
-    if (c.overlaps > overlap_budget) throw StopNoding{true};
-    if (m == Meeting::kSharedEndpoint && neighbours) return;
-    touched[i] = touched[j] = true;
-  };
+  if (walk || screening) number_rings(next, ring_of);
   try {
-    // Short runs (spiky or zigzag rings) leave the run index little to group, and long
-    // diagonal segments make box overlap a weak filter: walk the segments through a grid.
-    std::unique_ptr<SegmentGrid> walked;
-    if (walk) walked = std::make_unique<SegmentGrid>(segments);
-    if (walked && !grid_walk_is_worse(*walked, index, segments.size())) {
-      walked->for_each_candidate_pair([&](std::uint32_t i, std::uint32_t j) {
-        if (simple_rings && ring_of[i] == ring_of[j]) return;
-        if (boxes_overlap(segments[i], segments[j])) visit(i, j);
-      });
-    } else {
-      index.for_each_overlapping_pair(visit, simple_rings);
-    }
-    if (grid && walked) *grid = std::move(walked);
+    visit_candidate_pairs(segments, search, walk, options.simple_rings && !screening, ring_of,
+                          PairVisit(segments, next, ring_of, options, c));
   } catch (const StopNoding& stop) {
     (stop.overlap_heavy ? c.overlap_heavy : c.operand_invalid) = true;
   }

@@ -2,6 +2,7 @@
 #include "pipeline.hpp"
 
 #include <limits>
+#include <optional>
 
 #include "assembly.hpp"
 #include "canonical.hpp"
@@ -18,30 +19,18 @@ void require_valid(const PolygonSet& set, Operand which) {
 
 namespace {
 
-// Screening after snap rounding: whether to go on, and whether labeling checks single cover.
-// Returns false when noding found an operand invalid (the caller validates in full).
-bool screen_after_snap(Screening& screen, const SnapStats& snap, bool& check_cover) {
-  if (snap.operand_invalid) {
-    screen.suspect = true;
-    return false;
-  }
-  if (snap.hot_pixels > 0) {  // moved: labeling's check would not be exact
-    for (int c = 0; c < 2; ++c)
-      if (screen.unchecked_multi_ring(c)) screen.validate_in_full(c);
-  }
-  check_cover = screen.unchecked_multi_ring(0) || screen.unchecked_multi_ring(1);
-  return true;
-}
+// The contacts and fragments of one edge list (noding.hpp, snap_rounding.hpp). Snap rounding
+// runs only when noding did not stop.
+struct Noded {
+  Contacts contacts;
+  Snapped snapped;
+};
 
-// Holed regions cut into hole-free pieces, appended in canonical form with their label.
-void split_holed_regions(std::vector<RegionRings>& holed, PipelineResult& out) {
-  for (RegionRings& region : holed) {
-    for (Ring& r : split_holes(std::move(region.outers), std::move(region.holes),
-                               out.clipped.stats.holes_split)) {
-      out.clipped.polygons.push_back(canonical_ring(std::move(r)));
-      out.labels.push_back(region.label);
-    }
-  }
+Noded node(const EdgeList& edges, const NodingOptions& options) {
+  SegmentSearch search(edges.segments, edges.next);
+  Noded n{find_contacts(edges.segments, edges.next, search, options), {}};
+  if (!n.contacts.stopped()) n.snapped = snap_round(edges.segments, edges.next, n.contacts, search);
+  return n;
 }
 
 // More pairs overlapping along a stretch than any ordinary input has (valid sets: about one
@@ -51,45 +40,74 @@ std::size_t overlap_budget(const Pipeline& p) {
   return p.overlap_budget.value_or(4 * p.edges.size() + 4096);
 }
 
+// Noding with the operands' screen (when not validated yet) and the overlap budget; when the
+// budget runs out, the stacks of collinear edges are merged (`merged`) and the merged edges
+// noded again.
+Noded node_operands(const Pipeline& p, std::optional<MergedEdges>& merged) {
+  Noded n = node(p.edges, {p.simple_rings, p.screening ? &p.edges.channel : nullptr, overlap_budget(p)});
+  if (!n.contacts.overlap_heavy) return n;
+  merged = merge_collinear_overlaps(p.edges);
+  n = node(merged->edges, {p.simple_rings});
+  for (std::size_t s = 0; s < merged->edges.size(); ++s)
+    if (merged->unchained[s]) n.snapped.touched[s] = true;
+  return n;
+}
+
+// Screening after noding: whether to go on, and whether labeling checks single cover. Returns
+// false when noding found an operand invalid (the caller validates in full).
+bool screen_after_noding(Screening& screen, const Noded& noded, bool& check_cover) {
+  if (noded.contacts.operand_invalid) {
+    screen.suspect = true;
+    return false;
+  }
+  if (noded.snapped.hot_pixels > 0) {  // moved: labeling's check would not be exact
+    for (Operand which : {Operand::kSubject, Operand::kClip})
+      if (screen.unchecked_multi_ring(which)) screen.validate_in_full(which);
+  }
+  check_cover = screen.unchecked_multi_ring(Operand::kSubject) ||
+                screen.unchecked_multi_ring(Operand::kClip);
+  return true;
+}
+
+// Rings -> polygons: holed regions cut into hole-free pieces (hole_splitting.hpp), appended in
+// canonical form with their label, and all of them in canonical order.
+void collect_polygons(Assembled&& assembled, bool with_labels, PipelineResult& out) {
+  out.clipped.polygons = std::move(assembled.rings);  // canonical rings
+  out.labels = std::move(assembled.labels);
+  for (RegionRings& region : assembled.holed) {
+    for (Ring& r : split_holes(std::move(region.outers), std::move(region.holes),
+                               out.clipped.stats.holes_split)) {
+      out.clipped.polygons.push_back(canonical_ring(std::move(r)));
+      out.labels.push_back(region.label);
+    }
+  }
+  sort_canonical(out.clipped.polygons, with_labels ? &out.labels : nullptr);
+  if (!with_labels) out.labels.clear();
+}
+
 }  // namespace
 
 PipelineResult run(const Pipeline& p, std::vector<Box64>* moved_boxes, bool with_labels) {
   PipelineResult out;
-  SnapStats snap;
-  const EdgeList* edges = &p.edges;
-  auto fragments = snap_round(edges->segments, edges->next, p.simple_rings, snap,
-                              p.screening ? &edges->channel : nullptr, overlap_budget(p));
-  MergedEdges merged;
-  if (snap.overlap_heavy) {  // noded again without the stacks
-    merged = merge_collinear_overlaps(p.edges);
-    edges = &merged.edges;
-    fragments = snap_round(edges->segments, edges->next, p.simple_rings, snap);
-    for (std::size_t s = 0; s < edges->size(); ++s)
-      if (merged.unchained[s]) snap.touched[s] = true;
-  }
+  std::optional<MergedEdges> merged;
+  Noded noded = node_operands(p, merged);  // edges -> contacts -> fragments
+  const EdgeList& edges = merged ? merged->edges : p.edges;
+  bool check_cover = false;
+  if (p.screening && !screen_after_noding(*p.screening, noded, check_cover)) return out;
   // The graph and the labels reuse per-thread storage (recycled_vector.hpp says why).
   Reused<PlaneGraph> graph;
   Reused<std::vector<SideState>> labels;
-  PlaneGraph& g = *graph;
-  std::vector<SideState>& left = *labels;
-  bool check_cover = false;
-  if (p.screening && !screen_after_snap(*p.screening, snap, check_cover)) return out;
-  build_plane_graph(*edges, fragments, snap.touched, g);
-  if (!label_sides(g, p.mode, left, check_cover)) {
+  build_plane_graph(edges, noded.snapped.fragments, noded.snapped.touched, *graph);
+  if (!label_sides(*graph, p.mode, *labels, check_cover)) {
     p.screening->suspect = true;
     return out;
   }
-  Assembled assembled = assemble(g, left, p.label_of, p.collinear_free_operands,
-                                 p.corner_bridges);
-  out.clipped.polygons = std::move(assembled.rings);  // canonical rings
-  out.labels = std::move(assembled.labels);
-  split_holed_regions(assembled.holed, out);
-  sort_canonical(out.clipped.polygons, with_labels ? &out.labels : nullptr);
-  if (!with_labels) out.labels.clear();
-  out.clipped.stats.intersections = snap.intersections;
-  out.clipped.stats.vertices_snapped = snap.hot_pixels;
-  out.clipped.stats.zero_area_dropped = g.cancelled_edges;
-  if (moved_boxes) *moved_boxes = std::move(snap.moved_boxes);
+  collect_polygons(assemble(*graph, *labels, p.label_of, p.collinear_free_operands, p.corner_bridges),
+                   with_labels, out);
+  out.clipped.stats.intersections = noded.contacts.intersections;
+  out.clipped.stats.vertices_snapped = noded.snapped.hot_pixels;
+  out.clipped.stats.zero_area_dropped = (*graph).cancelled_edges;
+  if (moved_boxes) *moved_boxes = std::move(noded.snapped.moved_boxes);
   return out;
 }
 

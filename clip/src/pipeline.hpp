@@ -79,16 +79,20 @@ void require_valid(const PolygonSet& set, Operand which);
 // wrong, the pipeline stops (`suspect`) and the caller validates both operands in full, which
 // names the violation, or finds none and clips them as valid.
 struct Screening {
-  const PolygonSet* operand[2];
+  const PolygonSet* operand[2];  // by channel (input_edges.hpp): the subject, then the clip
   bool validated[2] = {false, false};
   bool suspect = false;
 
-  void validate_in_full(int c) {
+  void validate_in_full(Operand which) {
+    const std::uint8_t c = channel_of(which);
     if (validated[c]) return;
-    require_valid(*operand[c], c == 0 ? Operand::kSubject : Operand::kClip);
+    require_valid(*operand[c], which);
     validated[c] = true;
   }
-  bool unchecked_multi_ring(int c) const { return !validated[c] && operand[c]->size() > 1; }
+  bool unchecked_multi_ring(Operand which) const {
+    const std::uint8_t c = channel_of(which);
+    return !validated[c] && operand[c]->size() > 1;
+  }
 };
 
 struct Pipeline {

@@ -2,7 +2,7 @@
 // The noded fragments as a plane graph: integer vertices, undirected edges with net
 // multiplicities per (channel, polygon), and half-edges sorted by angle around each vertex.
 //
-// An edge is a polyline. Fragments of untouched segments (SnapStats::touched: nothing else
+// An edge is a polyline. Fragments of untouched segments (Snapped::touched: nothing else
 // meets them) are chained along their ring into one edge, so a long stretch of boundary that the
 // operation does not touch costs the later stages one edge, not one per segment. Chain interior
 // points meet nothing else, and no chain has an interior point smaller (lexicographically) than
@@ -76,7 +76,7 @@ struct PlaneGraph {
 
 // `fragments` lists the fragments of some segments (snap_round); a segment with none listed is
 // its own single fragment. `edges` describes each input segment: its tag, the segment after it
-// along its ring and its weight; `touched` whether it is touched (SnapStats::touched; an
+// along its ring and its weight; `touched` whether it is touched (Snapped::touched; an
 // untouched segment is its own single fragment).
 // O(f) for the f fragments of touched segments (radix sorts), plus O(n) for the rest. Builds
 // into g, reusing its arrays' capacity.

@@ -102,9 +102,9 @@ LabeledClipResult relabel(const ValidSet& regions, std::span<const RegionLabel> 
   detail::PipelineResult r = detail::guarded(
       [&] {
         detail::Pipeline p;
-        detail::append_ring_edges(members, 0, true, p.edges);
-        detail::append_ring_edges(shape.polygons(), 1, true, p.edges, &near);
-        if (!all_inside) detail::append_ring_edges(window_rings, 1, true, p.edges);
+        detail::append_ring_edges(members, detail::kSubjectChannel, true, p.edges);
+        detail::append_ring_edges(shape.polygons(), detail::kClipChannel, true, p.edges, &near);
+        if (!all_inside) detail::append_ring_edges(window_rings, detail::kClipChannel, true, p.edges);
         p.mode = detail::LabelMode::kOwnerAndCount;
         p.label_of = detail::LabelOf::relabel(rt);
         p.collinear_free_operands = ValidSetFactory::collinear_free(regions) &&
@@ -142,8 +142,8 @@ std::vector<LabeledSet> cut_to_windows(const ValidSet& regions,
   detail::PipelineResult r = detail::guarded(
       [&] {
         detail::Pipeline p;
-        detail::append_ring_edges(members, 0, true, p.edges);
-        detail::append_ring_edges(window_rings, 1, true, p.edges);
+        detail::append_ring_edges(members, detail::kSubjectChannel, true, p.edges);
+        detail::append_ring_edges(window_rings, detail::kClipChannel, true, p.edges);
         p.mode = detail::LabelMode::kOwner;
         p.label_of = detail::LabelOf::windows(labels.data());
         p.collinear_free_operands = ValidSetFactory::collinear_free(regions);

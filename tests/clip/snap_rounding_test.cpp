@@ -75,8 +75,7 @@ bool within_half_unit(const Segment& s, Point64 p) {
 RC_GTEST_PROP(SnapRounding, FragmentsMeetOnlyAtCommonEndpoints, ()) {
   const Input in = *crowded_rings();
   RC_PRE(!in.segments.empty());
-  SnapStats stats;
-  const std::vector<Fragment> listed = snap_round(in.segments, in.next, false, stats);
+  const std::vector<Fragment> listed = node_and_snap_round(in.segments, in.next, false).fragments;
   const std::vector<Fragment> all = all_fragments(in, listed);
   // At twice as many fragments as segments the re-check takes its filtered grid path.
   RC_TAG(all.size() >= 2 * in.segments.size() ? "many fragments" : "few fragments");
@@ -107,8 +106,7 @@ RC_GTEST_PROP(SnapRounding, FragmentsMeetOnlyAtCommonEndpoints, ()) {
 RC_GTEST_PROP(SnapRounding, EachSegmentIsAChainOfNearbyFragments, ()) {
   const Input in = *crowded_rings();
   RC_PRE(!in.segments.empty());
-  SnapStats stats;
-  const std::vector<Fragment> listed = snap_round(in.segments, in.next, false, stats);
+  const std::vector<Fragment> listed = node_and_snap_round(in.segments, in.next, false).fragments;
   std::vector<std::vector<Segment>> of(in.segments.size());
   for (const Fragment& f : listed) of[f.parent].push_back(f.seg);
   for (std::uint32_t s = 0; s < in.segments.size(); ++s) {
