@@ -46,7 +46,8 @@ for line in text:
     m = re.match(r"(.*?):(\d+):\d+: warning: function '([^']*)' exceeds", line)
     if m:
         path = m.group(1)
-        path = path[path.find('/main/') + 6:] if '/main/' in path else path
+        inside = re.search(r'(kernel|clip|spatial)/.*', path)  # relative to the checkout
+        path = inside.group(0) if inside else path
         cur = (path, int(m.group(2)), m.group(3))
         funcs.setdefault(cur, [0, 0])
         continue

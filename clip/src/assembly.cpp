@@ -4,7 +4,7 @@
 
 #include "canonical.hpp"
 #include "edgeland/kernel/area.hpp"
-#include "edgeland/kernel/recycled_vector.hpp"
+#include "edgeland/kernel/scratch.hpp"
 #include "stage_failure.hpp"
 
 namespace edgeland::detail {
@@ -67,10 +67,10 @@ BoundaryWalks trace_boundaries(const PlaneGraph& g, const std::vector<FaceLabel>
   BoundaryWalks walks;
   walks.begin.push_back(0);
   walks.half_edges.reserve(nh);  // each half-edge is walked at most once
-  RecycledVector<struct UsedBuffer, std::uint8_t> used;
+  ScratchVector<std::uint8_t> used;
   used.assign(nh, false);
   // left_in[v]: 1 + the walk that last left vertex v (0: none yet), to see a walk revisit one.
-  RecycledVector<struct LeftInBuffer, std::uint32_t> left_in;
+  ScratchVector<std::uint32_t> left_in;
   left_in.assign(g.vertices.size(), 0);
   for (std::uint32_t start = 0; start < nh; ++start) {
     const FaceLabel label = emitted[start];
@@ -166,8 +166,8 @@ class RingWriter {
   const PlaneGraph& g_;
   const std::uint8_t check_chains_;
   Assembled& out_;
-  RecycledVector<struct LoopPointsBuffer, Point64> points_;
-  RecycledVector<struct LoopCheckBuffer, std::uint8_t> check_;  // which points may be dropped
+  ScratchVector<Point64> points_;
+  ScratchVector<std::uint8_t> check_;  // which points may be dropped
 };
 
 // The loop's points into points_, with check_ marking those canonical_ring_from tests for
@@ -221,7 +221,7 @@ bool RingWriter::add_loop(FaceLabel label, const std::uint32_t* first, const std
 // half-edges of each ring written are recorded in `loops` (and split_loops).
 void write_loops(const PlaneGraph& g, const BoundaryWalks& walks, RingWriter& writer,
                  std::vector<LoopSpan>& loops, std::vector<std::uint32_t>& split_loops) {
-  RecycledVector<struct PositionBuffer, std::int32_t> position;  // split_at_repeated_vertices
+  ScratchVector<std::int32_t> position;  // split_at_repeated_vertices
   for (std::size_t w = 0; w < walks.size(); ++w) {
     const std::uint32_t *first = walks.first(w), *last = walks.last(w);
     // Most walks visit every vertex once: then the walk is the loop, with nothing to split.
@@ -299,13 +299,13 @@ void RegionSorter::run(bool corner_bridges, Assembled& out) const {
 // none, and then every ring is an output polygon as it stands, with no region per label.
 Assembled assemble(const PlaneGraph& g, const std::vector<SideState>& left,
                    const LabelOf& label_of, bool collinear_free_operands, bool corner_bridges) {
-  RecycledVector<struct EmittedBuffer, FaceLabel> emitted;
+  ScratchVector<FaceLabel> emitted;
   label_boundary_half_edges(g, left, label_of, emitted);
   const BoundaryWalks walks = trace_boundaries(g, emitted);
   Assembled out;
   RingWriter writer(g, collinear_free_operands, walks.size(), out);
-  RecycledVector<struct LoopSpansBuffer, LoopSpan> loops;  // one per ring of out.rings
-  RecycledVector<struct SplitLoopsBuffer, std::uint32_t> split_loops;
+  ScratchVector<LoopSpan> loops;  // one per ring of out.rings
+  ScratchVector<std::uint32_t> split_loops;
   write_loops(g, walks, writer, loops, split_loops);
   if (writer.holes == 0) {
     out.labels = std::move(writer.ring_label);

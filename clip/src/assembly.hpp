@@ -9,7 +9,7 @@
 #include "face_label.hpp"
 #include "labeling.hpp"
 #include "planar_graph.hpp"
-#include "edgeland/kernel/recycled_vector.hpp"
+#include "edgeland/kernel/scratch.hpp"
 
 namespace edgeland::detail {
 
@@ -43,10 +43,10 @@ Assembled assemble(const PlaneGraph& g, const std::vector<SideState>& left,
 // half_edges[begin[i] .. begin[i + 1]) with label[i] (one allocation per array, not per walk);
 // revisits[i]: whether walk i leaves some vertex twice (then it is several loops).
 struct BoundaryWalks {
-  RecycledVector<struct WalkLabelBuffer, FaceLabel> label;
-  RecycledVector<struct WalkRevisitsBuffer, std::uint8_t> revisits;
-  RecycledVector<struct WalkBeginBuffer, std::uint32_t> begin;  // starts with 0
-  RecycledVector<struct WalkHalfEdgesBuffer, std::uint32_t> half_edges;
+  ScratchVector<FaceLabel> label;
+  ScratchVector<std::uint8_t> revisits;
+  ScratchVector<std::uint32_t> begin;  // starts with 0
+  ScratchVector<std::uint32_t> half_edges;
   std::size_t size() const { return label.size(); }
   const std::uint32_t* first(std::size_t i) const { return half_edges.data() + begin[i]; }
   const std::uint32_t* last(std::size_t i) const { return half_edges.data() + begin[i + 1]; }

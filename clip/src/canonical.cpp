@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "edgeland/kernel/predicates.hpp"
-#include "edgeland/kernel/recycled_vector.hpp"
+#include "edgeland/kernel/scratch.hpp"
 #include "point_key.hpp"
 
 namespace edgeland::detail {
@@ -30,7 +30,7 @@ void canonical_marked(const std::vector<Point64>& points, const std::uint8_t* ch
   // left neighbour on the stack is not its own predecessor (something between was dropped), or
   // if its right neighbour is not its successor (the point being added after a drop).
   // suspect[k]: out[k] must be tested once it is the middle of three.
-  RecycledVector<struct CanonicalSuspectBuffer, std::uint8_t> suspect;
+  ScratchVector<std::uint8_t> suspect;
   suspect.reserve(n);
   for (std::size_t k = 0; k < n; ++k) {
     const std::size_t i = least + k < n ? least + k : least + k - n;

@@ -9,7 +9,7 @@
 #include "box_sweep.hpp"
 #include "canonical.hpp"
 #include "edgeland/kernel/area.hpp"
-#include "edgeland/kernel/recycled_vector.hpp"
+#include "edgeland/kernel/scratch.hpp"
 #include "edgeland/kernel/validate.hpp"
 #include "edgeland/kernel/wkt_writer.hpp"
 #include "grown_box.hpp"

@@ -22,11 +22,11 @@ inline FaceLabel family(int channel, std::int32_t polygon) {
 inline FaceLabel op_label(ClipOp op, const SideState& st) {
   const std::int32_t a = st.s[0], b = st.s[1];
   switch (op) {
-    case ClipOp::kUnion: return a >= 0 ? family(0, a) : b >= 0 ? family(1, b) : -1;
-    case ClipOp::kIntersection: return a >= 0 && b >= 0 ? family(0, a) : -1;
-    case ClipOp::kDifference: return a >= 0 && b < 0 ? family(0, a) : -1;
+    case ClipOp::kUnion: return a >= 0 ? family(kSubjectChannel, a) : b >= 0 ? family(kClipChannel, b) : -1;
+    case ClipOp::kIntersection: return a >= 0 && b >= 0 ? family(kSubjectChannel, a) : -1;
+    case ClipOp::kDifference: return a >= 0 && b < 0 ? family(kSubjectChannel, a) : -1;
     case ClipOp::kXor:
-      return a >= 0 && b < 0 ? family(0, a) : a < 0 && b >= 0 ? family(1, b) : -1;
+      return a >= 0 && b < 0 ? family(kSubjectChannel, a) : a < 0 && b >= 0 ? family(kClipChannel, b) : -1;
   }
   return -1;  // Not reached by tests: the switch covers every ClipOp.
 }

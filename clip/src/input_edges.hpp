@@ -6,6 +6,7 @@
 
 #include "edgeland/kernel/errors.hpp"
 #include "edgeland/kernel/polygon.hpp"
+#include "edgeland/kernel/scratch.hpp"
 
 namespace edgeland::detail {
 
@@ -16,17 +17,18 @@ constexpr std::uint8_t channel_of(Operand which) {
   return which == Operand::kClip ? kClipChannel : kSubjectChannel;
 }
 
-// Edge i is segments[i], directed: its left side is the inside of polygon[i] of operand
+// The arrays are scratch storage (edgeland/kernel/scratch.hpp): an operation's edge list reuses
+// the last one's pages. Edge i is segments[i], directed: its left side is the inside of polygon[i] of operand
 // channel[i] (for normalize: it adds +1 to the winding number on its left). next[i] is the edge
 // that follows it along its ring; the edges of a ring are consecutive.
 struct EdgeList {
-  std::vector<Segment> segments;
-  std::vector<std::uint8_t> channel;   // kSubjectChannel (also normalize's rings) or kClipChannel
-  std::vector<std::int32_t> polygon;   // index within its operand
-  std::vector<std::uint32_t> next;
+  ScratchVector<Segment> segments;
+  ScratchVector<std::uint8_t> channel;   // kSubjectChannel (also normalize's rings) or kClipChannel
+  ScratchVector<std::int32_t> polygon;   // index within its operand
+  ScratchVector<std::uint32_t> next;
   // Empty: every edge counts once. Otherwise edge i counts weight[i] times, in its direction
   // (collinear_merge.hpp: merged stretches of many overlapping edges; winding labelings only).
-  std::vector<std::int32_t> weight;
+  ScratchVector<std::int32_t> weight;
   std::size_t size() const { return segments.size(); }
   std::int32_t weight_of(std::uint32_t i) const { return weight.empty() ? 1 : weight[i]; }
   void clear() {

@@ -7,7 +7,7 @@
 #include "edgeland/kernel/angle.hpp"
 #include "edgeland/kernel/predicates.hpp"
 #include "edgeland/kernel/ray.hpp"
-#include "edgeland/kernel/recycled_vector.hpp"
+#include "edgeland/kernel/scratch.hpp"
 
 namespace edgeland::detail {
 namespace {
@@ -39,19 +39,19 @@ SideState cross(const PlaneGraph& g, LabelMode mode, SideState s, std::uint32_t 
   if (mode == LabelMode::kWinding) {
     for (std::uint32_t k = first; k < last; ++k) s0 += dir * g.mults[k].net;
   } else if (mode == LabelMode::kOwnerAndCount) {
-    s0 = owner_after(g, dir, 0, s0, first, last);
+    s0 = owner_after(g, dir, kSubjectChannel, s0, first, last);
     for (std::uint32_t k = first; k < last; ++k)
-      if (g.mults[k].channel == 1) s1 += dir * g.mults[k].net;
+      if (g.mults[k].channel == kClipChannel) s1 += dir * g.mults[k].net;
   } else if (last - first == 1) {
     // One polygon's edge, the common case: owner_after for its channel, the other unchanged.
     const Multiplicity& m = g.mults[first];
     const std::int32_t net = dir * m.net;
     auto after = [&](std::int32_t owner) { return net > 0 ? m.polygon : owner == m.polygon ? -1 : owner; };
-    if (m.channel == 0) s0 = after(s0);
+    if (m.channel == kSubjectChannel) s0 = after(s0);
     else s1 = after(s1);
   } else {
-    s0 = owner_after(g, dir, 0, s0, first, last);
-    s1 = owner_after(g, dir, 1, s1, first, last);
+    s0 = owner_after(g, dir, kSubjectChannel, s0, first, last);
+    s1 = owner_after(g, dir, kClipChannel, s1, first, last);
   }
   SideState out;
   out.s = {s0, s1};
@@ -69,7 +69,7 @@ bool keeps_single_cover(const PlaneGraph& g, std::uint32_t h, const SideState& r
   if (last - first == 1) {  // one polygon's edge, the common case: the rule below, unrolled
     const Multiplicity& m = g.mults[first];
     const std::int32_t net = dir * m.net;
-    if (m.channel > 1) return false;
+    if (m.channel > kClipChannel) return false;
     const std::int32_t owner = right.s[m.channel];
     return net == 1 ? owner < 0 : net == -1 && owner == m.polygon;
   }
@@ -77,7 +77,7 @@ bool keeps_single_cover(const PlaneGraph& g, std::uint32_t h, const SideState& r
   for (std::uint32_t k = first; k < last; ++k) {
     const Multiplicity& m = g.mults[k];
     const std::int32_t net = dir * m.net;
-    if ((net != 1 && net != -1) || m.channel > 1) return false;
+    if ((net != 1 && net != -1) || m.channel > kClipChannel) return false;
     std::int32_t& slot = net > 0 ? entering[m.channel] : leaving[m.channel];
     if (slot >= 0) return false;
     slot = m.polygon;
@@ -109,14 +109,14 @@ std::uint32_t sector_containing(const PlaneGraph& g, std::uint32_t v, Point64 d)
 }
 
 // One straight piece of an edge's polyline: points i and i + 1 of edge e (from -> to order).
-struct Piece {
+struct EdgeStretch {
   Point64 a, b;
   std::uint32_t edge, index;
   bool a_is_vertex, b_is_vertex;
 };
 
-std::vector<Piece> pieces_of(const PlaneGraph& g) {
-  std::vector<Piece> out;
+std::vector<EdgeStretch> stretches_of(const PlaneGraph& g) {
+  std::vector<EdgeStretch> out;
   out.reserve(2 * g.edge_count());
   for (std::uint32_t e = 0; e < g.edge_count(); ++e) {
     Point64 at = g.vertices[g.from(e)];
@@ -133,8 +133,8 @@ std::vector<Piece> pieces_of(const PlaneGraph& g) {
 // Which pieces span a given x: a segment tree over the distinct x coordinates of their ends.
 class XStabbing {
  public:
-  explicit XStabbing(const std::vector<Piece>& pieces) {
-    for (const Piece& p : pieces) {
+  explicit XStabbing(const std::vector<EdgeStretch>& pieces) {
+    for (const EdgeStretch& p : pieces) {
       xs_.push_back(p.a.x);
       xs_.push_back(p.b.x);
     }
@@ -180,7 +180,7 @@ struct Below {
 // e's polyline or, for index 0 or the last, a vertex: the side of the polyline that (0, 1)
 // points into at q.
 SideState state_above_point(const PlaneGraph& g, const std::vector<SideState>& left,
-                            const Piece& piece, bool at_a) {
+                            const EdgeStretch& piece, bool at_a) {
   if (at_a ? piece.a_is_vertex : piece.b_is_vertex) {
     const std::uint32_t v = at_a ? g.from(piece.edge) : g.to(piece.edge);
     return left[g.around[sector_containing(g, v, {0, 1})]];
@@ -198,12 +198,12 @@ SideState state_above_point(const PlaneGraph& g, const std::vector<SideState>& l
 
 // `stab` may be null: then every piece is looked at (cheaper than building the tree for a few
 // queries).
-Below find_below(const PlaneGraph& g, const std::vector<Piece>& pieces, const XStabbing* stab,
+Below find_below(const PlaneGraph& g, const std::vector<EdgeStretch>& pieces, const XStabbing* stab,
                  const std::vector<std::uint8_t>& labeled, const std::vector<SideState>& left, Point64 p) {
   NearestHit nearest(Ray{p, 0, -1}, NearestHit::Origin::kExcluded);
-  const Piece* best = nullptr;
+  const EdgeStretch* best = nullptr;
   auto consider = [&](std::uint32_t k) {
-    const Piece& piece = pieces[k];
+    const EdgeStretch& piece = pieces[k];
     if (labeled[g.from(piece.edge)] && nearest.offer({piece.a, piece.b}) == NearestHit::Offer::kNearest)
       best = &piece;
   };
@@ -239,14 +239,14 @@ bool label_sides(const PlaneGraph& g, LabelMode mode, std::vector<SideState>& le
                  bool check_single_cover) {
   const std::size_t nv = g.vertices.size();
   left.assign(2 * g.edge_count(), empty_state(mode));
-  RecycledVector<struct VisitedBuffer, std::uint8_t> visited;  // bytes: no bit masking
+  ScratchVector<std::uint8_t> visited;  // bytes: no bit masking
   visited.assign(nv, 0);
   std::unique_ptr<XStabbing> stab;
-  std::vector<Piece> pieces;
+  std::vector<EdgeStretch> pieces;
   constexpr int kScansBeforeTree = 4;
   int located = 0;
   // (vertex, known position)
-  RecycledVector<struct QueueBuffer, std::pair<std::uint32_t, std::uint32_t>> queue;
+  ScratchVector<std::pair<std::uint32_t, std::uint32_t>> queue;
   bool any_labeled = false;
 
   for (std::uint32_t v0 = 0; v0 < nv; ++v0) {
@@ -256,7 +256,7 @@ bool label_sides(const PlaneGraph& g, LabelMode mode, std::vector<SideState>& le
     if (any_labeled) {
       // A few components are located by scanning every piece; from the fifth on, a segment
       // tree pays for itself.
-      if (pieces.empty()) pieces = pieces_of(g);
+      if (pieces.empty()) pieces = stretches_of(g);
       if (!stab && ++located > kScansBeforeTree) stab = std::make_unique<XStabbing>(pieces);
       const Below below = find_below(g, pieces, stab.get(), visited, left, g.vertices[v0]);
       if (below.found) base = below.above;

@@ -228,7 +228,7 @@ Contacts find_contacts(const std::vector<Segment>& segments, const std::vector<s
   const bool walk = segments.size() >= kGridWalkFrom &&
                     search.index.run_length_x16() < kGridWalkBelowRunLengthX16;
   const bool screening = options.screen_channel != nullptr;
-  RecycledVector<struct RingOfBuffer, std::uint32_t> ring_of;
+  ScratchVector<std::uint32_t> ring_of;
   if (walk || screening) number_rings(next, ring_of);
   try {
     visit_candidate_pairs(segments, search, walk, options.simple_rings && !screening, ring_of,

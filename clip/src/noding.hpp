@@ -8,16 +8,16 @@
 
 #include "edgeland/kernel/bbox.hpp"
 #include "edgeland/kernel/polygon.hpp"
-#include "edgeland/kernel/recycled_vector.hpp"
+#include "edgeland/kernel/scratch.hpp"
 #include "segment_search.hpp"
 
 namespace edgeland::detail {
 
 struct Contacts {
   // (segment, integer point strictly inside it where it must be split)
-  RecycledVector<struct ContactSplitsBuffer, std::pair<std::uint32_t, Point64>> splits;
+  ScratchVector<std::pair<std::uint32_t, Point64>> splits;
   // Pixels of proper crossings at non-integer points (rounded by round_to_grid).
-  RecycledVector<struct ContactHotBuffer, Point64> hot;
+  ScratchVector<Point64> hot;
   // touched[s]: segment s meets another one anywhere except ring neighbours (next[s]) at their
   // one shared endpoint (find_contacts only): an untouched segment shares no point with
   // anything else.

@@ -94,19 +94,18 @@ PipelineResult run(const Pipeline& p, std::vector<Box64>* moved_boxes, bool with
   const EdgeList& edges = merged ? merged->edges : p.edges;
   bool check_cover = false;
   if (p.screening && !screen_after_noding(*p.screening, noded, check_cover)) return out;
-  // The graph and the labels reuse per-thread storage (recycled_vector.hpp says why).
-  Reused<PlaneGraph> graph;
-  Reused<std::vector<SideState>> labels;
-  build_plane_graph(edges, noded.snapped.fragments, noded.snapped.touched, *graph);
-  if (!label_sides(*graph, p.mode, *labels, check_cover)) {
+  PlaneGraph graph;
+  ScratchVector<SideState> labels;
+  build_plane_graph(edges, noded.snapped.fragments, noded.snapped.touched, graph);
+  if (!label_sides(graph, p.mode, labels, check_cover)) {
     p.screening->suspect = true;
     return out;
   }
-  collect_polygons(assemble(*graph, *labels, p.label_of, p.collinear_free_operands, p.corner_bridges),
+  collect_polygons(assemble(graph, labels, p.label_of, p.collinear_free_operands, p.corner_bridges),
                    with_labels, out);
   out.clipped.stats.intersections = noded.contacts.intersections;
   out.clipped.stats.vertices_snapped = noded.snapped.hot_pixels;
-  out.clipped.stats.zero_area_dropped = (*graph).cancelled_edges;
+  out.clipped.stats.zero_area_dropped = graph.cancelled_edges;
   if (moved_boxes) *moved_boxes = std::move(noded.snapped.moved_boxes);
   return out;
 }

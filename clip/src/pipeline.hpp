@@ -3,7 +3,6 @@
 // canonical result polygons out. clip(), clip_to_box(), normalize() and the labeled overlays
 // (relabel.hpp) each fill a Pipeline and call run().
 #include <functional>
-#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -17,55 +16,6 @@
 #include "planar_graph.hpp"
 
 namespace edgeland::detail {
-
-template <class T>
-std::size_t bytes(const std::vector<T>& v) {
-  return v.capacity() * sizeof(T);
-}
-inline std::size_t footprint(const EdgeList& e) {
-  return bytes(e.segments) + bytes(e.channel) + bytes(e.polygon) + bytes(e.next);
-}
-inline std::size_t footprint(const PlaneGraph& g) {
-  return bytes(g.vertices) + bytes(g.origin_of) + bytes(g.chain) + bytes(g.mult_begin) +
-         bytes(g.mults) + bytes(g.around_begin) + bytes(g.around) + bytes(g.turn_at);
-}
-inline std::size_t footprint(const std::vector<SideState>& labels) { return bytes(labels); }
-
-// A per-thread object whose arrays keep their capacity from one operation to the next (the edge
-// list, the plane graph, the labels): allocating them afresh for every operation costs page
-// faults each time (edgeland/kernel/recycled_vector.hpp says why). An object grown past
-// kMaxKept is freed after use. Should a use nest within another (nothing in the pipeline does),
-// the inner one gets a fresh object.
-template <class T>
-class Reused {
- public:
-  static constexpr std::size_t kMaxKept = std::size_t{32} << 20;
-  Reused() : own_(in_use() ? std::make_unique<T>() : nullptr) { in_use() = true; }
-  ~Reused() {
-    if (own_) return;
-    in_use() = false;
-    if (footprint(shared()) > kMaxKept) shared() = T{};
-  }
-  Reused(const Reused&) = delete;
-  Reused& operator=(const Reused&) = delete;
-  T& operator*() { return own_ ? *own_ : shared(); }
-
- private:
-  static bool& in_use() {
-    thread_local bool used = false;
-    return used;
-  }
-  static T& shared() {
-    thread_local T object;
-    return object;
-  }
-  std::unique_ptr<T> own_;
-};
-
-inline EdgeList& cleared(EdgeList& edges) {
-  edges.clear();
-  return edges;
-}
 
 // Throws InvalidInput naming `which` with validate()'s first violation.
 void require_valid(const PolygonSet& set, Operand which);
@@ -96,8 +46,7 @@ struct Screening {
 };
 
 struct Pipeline {
-  Reused<EdgeList> reused_edges;
-  EdgeList& edges = cleared(*reused_edges);
+  EdgeList edges;  // in scratch storage (edgeland/kernel/scratch.hpp), as are all stage arrays
   LabelMode mode;
   LabelOf label_of = LabelOf::operation(ClipOp::kUnion);
   // No operand ring has collinear consecutive vertices: only graph vertices can be collinear.

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "edgeland/kernel/point.hpp"
+#include "edgeland/kernel/scratch.hpp"
 #include "input_edges.hpp"
 #include "snap_rounding.hpp"
 
@@ -24,14 +25,15 @@ struct Multiplicity {
   std::int32_t net;  // never 0 once the graph is built
 };
 
+// Its arrays are scratch storage (edgeland/kernel/scratch.hpp).
 struct PlaneGraph {
-  std::vector<Point64> vertices;               // sorted, unique
+  ScratchVector<Point64> vertices;               // sorted, unique
   // Edge e joins from(e) < to(e) (vertex ids, lexicographic). Half-edge 2e runs from -> to,
   // 2e + 1 runs to -> from; the twin of half-edge h is h ^ 1. Two edges may join the same two
   // vertices along different polylines. origin_of[h] is where half-edge h starts (so
   // origin_of[2e] = from(e), origin_of[2e + 1] = to(e)): one load, no branch, for the walks
   // of labeling and assembly that ask it at every step.
-  std::vector<std::uint32_t> origin_of;
+  ScratchVector<std::uint32_t> origin_of;
   // Interior points of a chain edge are read from the input segments, not copied: the points
   // of edge e are the starts of chain[e].count segments after chain[e].first along its ring
   // (ring [ring_begin, ring_begin + ring_len) of the segment list), in from -> to order unless
@@ -40,16 +42,16 @@ struct PlaneGraph {
     std::uint32_t first = 0, count = 0, ring_begin = 0, ring_len = 1;
     bool reversed = false;
   };
-  std::vector<Chain> chain;
+  ScratchVector<Chain> chain;
   const std::vector<Segment>* segments = nullptr;
-  std::vector<std::uint32_t> mult_begin;       // CSR into mults, size edges + 1
-  std::vector<Multiplicity> mults;
+  ScratchVector<std::uint32_t> mult_begin;       // CSR into mults, size edges + 1
+  ScratchVector<Multiplicity> mults;
   // Outgoing half-edges of vertex v, counter-clockwise from angle 0:
   // around[around_begin[v] .. around_begin[v + 1]). turn_at[h] is the position there, at h's
   // target, of the half-edge next clockwise from h's twin: the sharpest left turn after h (the
   // next half-edge of the face on h's left). Walks along faces take one load a step from it,
   // not a search round the vertex.
-  std::vector<std::uint32_t> around_begin, around, turn_at;
+  ScratchVector<std::uint32_t> around_begin, around, turn_at;
   std::size_t cancelled_edges = 0;             // edges whose multiplicities summed to zero
 
   std::size_t edge_count() const { return origin_of.size() / 2; }

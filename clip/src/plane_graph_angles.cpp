@@ -76,7 +76,7 @@ void count_around(PlaneGraph& g) {
 // Every half-edge with the direction of its first step, grouped by origin as around_begin says.
 void first_steps(const PlaneGraph& g, std::vector<Out>& out) {
   out.resize(2 * g.edge_count());
-  RecycledVector<struct FillBuffer, std::uint32_t> fill;
+  ScratchVector<std::uint32_t> fill;
   fill.assign(g.around_begin.begin(), g.around_begin.end() - 1);
   for (std::uint32_t e = 0; e < g.edge_count(); ++e) {
     const std::uint32_t a = g.from(e), b = g.to(e);
@@ -93,12 +93,8 @@ void first_steps(const PlaneGraph& g, std::vector<Out>& out) {
 
 void order_around(PlaneGraph& g) {
   count_around(g);
-  RecycledVector<struct OutBuffer, Out> out;
+  ScratchVector<Out> out;
   first_steps(g, out);
-  // Every position is written below; cleared first all the same, so nothing of the last
-  // operation's graph can show through.
-  g.around.clear();
-  g.turn_at.clear();
   g.around.resize(out.size());
   g.turn_at.resize(out.size());
   for (std::size_t v = 0; v < g.vertices.size(); ++v) {

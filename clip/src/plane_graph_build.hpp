@@ -10,7 +10,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "edgeland/kernel/recycled_vector.hpp"
+#include "edgeland/kernel/scratch.hpp"
 #include "input_edges.hpp"
 #include "planar_graph.hpp"
 #include "snap_rounding.hpp"
@@ -31,14 +31,14 @@ class FragmentRanges {
   std::uint32_t piece_count(std::uint32_t s) const { return listed(s) ? last(s) - first(s) : 1; }
 
  private:
-  RecycledVector<struct FirstFragmentBuffer, std::uint32_t> first_;
+  ScratchVector<std::uint32_t> first_;
 };
 
 // Step 1. Untouched segments are chained along their ring (planar_graph.hpp says why and where
 // chains are cut); touched segments become pieces, one per fragment.
 struct ChainPlan {
-  RecycledVector<struct SpansBuffer, PlaneGraph::Chain> chains;  // by first segment
-  RecycledVector<struct TouchedIdsBuffer, std::uint32_t> touched;  // touched segments, increasing
+  ScratchVector<PlaneGraph::Chain> chains;  // by first segment
+  ScratchVector<std::uint32_t> touched;  // touched segments, increasing
 };
 void plan_chains(const EdgeList& edges, const std::vector<std::uint8_t>& touched, ChainPlan& plan);
 
@@ -52,13 +52,13 @@ struct FragmentEdge {
 
 // Step 2. Vertex ids, increasing in the points' lexicographic order, and every piece's ends.
 struct VertexNumbering {
-  RecycledVector<struct KeysBuffer, std::uint64_t> keys;  // vertex id -> point key (point_key.hpp)
-  RecycledVector<struct OccurrenceVertexBuffer, std::uint32_t> vertex_of;  // occurrence -> id
-  RecycledVector<struct FirstOccurrenceBuffer, std::uint32_t> first_occurrence;  // of s's start
+  ScratchVector<std::uint64_t> keys;  // vertex id -> point key (point_key.hpp)
+  ScratchVector<std::uint32_t> vertex_of;  // occurrence -> id
+  ScratchVector<std::uint32_t> first_occurrence;  // of s's start
   // Of segment s's end when its ring successor starts elsewhere (an open run's end); empty when
   // no segment has one.
-  RecycledVector<struct OwnEndBuffer, std::uint32_t> own_end;
-  RecycledVector<struct PiecesBuffer, FragmentEdge> pieces;  // touched segments' fragments
+  ScratchVector<std::uint32_t> own_end;
+  ScratchVector<FragmentEdge> pieces;  // touched segments' fragments
 
   // The vertex where segment s ends: where the segment after it along its ring starts.
   std::uint32_t end_vertex(std::uint32_t s, const std::vector<std::uint32_t>& next) const;

@@ -115,7 +115,7 @@ void add_chain_edges(const EdgeList& edges, const ChainPlan& plan, const VertexN
 
 void merge_edges(const EdgeList& edges, const ChainPlan& plan, VertexNumbering& numbering,
                  PlaneGraph& g) {
-  // g's arrays are reused (their capacity kept): every one is sized or cleared here.
+  // Every array of g is sized or cleared here (g may be built into again).
   g.chain.clear();
   g.cancelled_edges = 0;
   const std::size_t edge_bound = numbering.pieces.size() + plan.chains.size();

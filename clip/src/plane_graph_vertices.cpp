@@ -70,7 +70,7 @@ class Occurrences {
   const EdgeList& edges_;
   VertexNumbering& out_;
   std::uint32_t piece_base_ = 0;  // piece i is occurrence piece_base_ + i
-  RecycledVector<struct StartsBuffer, Start> starts_;
+  ScratchVector<Start> starts_;
 };
 
 void Occurrences::add_piece_starts(const std::vector<Fragment>& fragments,

@@ -18,7 +18,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "edgeland/kernel/recycled_vector.hpp"
+#include "edgeland/kernel/scratch.hpp"
 
 namespace edgeland::detail {
 
@@ -36,9 +36,9 @@ void lsd_passes(std::vector<T>& v, KeyOf& key_of) {
   const std::uint64_t first = key_of(v[0]);
   std::uint64_t varying = 0;
   for (const T& x : v) varying |= key_of(x) ^ first;
-  // The scatter buffer's storage is recycled (recycled_vector.hpp); after an odd number of
+  // The scatter buffer's storage is recycled (scratch.hpp); after an odd number of
   // passes it and v have traded storage, which is as good.
-  RecycledVector<struct RadixScatterBuffer, T> tmp;
+  ScratchVector<T> tmp;
   const std::size_t n = v.size(), lane = n / kLanes;  // the last lane also takes the rest
   std::size_t begin[kLanes + 1];
   for (int l = 0; l < kLanes; ++l) begin[l] = static_cast<std::size_t>(l) * lane;
@@ -77,11 +77,11 @@ void lsd_passes(std::vector<T>& v, KeyOf& key_of) {
 // v's size (vertex ids, segment ids), where the radix sort would take two passes or more.
 template <class T, class IdOf>
 void counting_sort(std::vector<T>& v, std::size_t buckets, IdOf id_of) {
-  RecycledVector<struct CountingSortAtBuffer, std::uint32_t> at;
+  ScratchVector<std::uint32_t> at;
   at.assign(buckets + 1, 0);
   for (const T& x : v) ++at[id_of(x) + 1];
   for (std::size_t k = 1; k < at.size(); ++k) at[k] += at[k - 1];
-  RecycledVector<struct CountingSortOutBuffer, T> sorted;
+  ScratchVector<T> sorted;
   sorted.resize(v.size());
   for (const T& x : v) sorted[at[id_of(x)]++] = x;
   v.swap(sorted);

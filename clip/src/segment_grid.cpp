@@ -62,7 +62,7 @@ SegmentGrid::SegmentGrid(const std::vector<Segment>& segments) {
   set_side(side);
   // One walk records every (cell, segment) registration in segment order; a counting sort by
   // cell then lists each cell's segments in increasing id order.
-  RecycledVector<struct GridEntryCellsBuffer, std::uint32_t> entry_cells;
+  ScratchVector<std::uint32_t> entry_cells;
   entry_cells.reserve(4 * n);
   slot_begin_.assign(n + 1, 0);
   for (std::uint32_t i = 0; i < n; ++i) {
@@ -74,7 +74,7 @@ SegmentGrid::SegmentGrid(const std::vector<Segment>& segments) {
   for (std::size_t k = 1; k < cell_begin_.size(); ++k) cell_begin_[k] += cell_begin_[k - 1];
   items_.resize(entry_cells.size());
   slots_.resize(entry_cells.size());
-  RecycledVector<struct GridFillBuffer, std::uint32_t> fill;
+  ScratchVector<std::uint32_t> fill;
   fill.assign(cell_begin_.begin(), cell_begin_.end() - 1);
   for (std::uint32_t i = 0; i < n; ++i)
     for (std::uint32_t e = slot_begin_[i]; e < slot_begin_[i + 1]; ++e) {

@@ -24,7 +24,7 @@
 #include "edgeland/kernel/bbox.hpp"
 #include "edgeland/kernel/polygon.hpp"
 #include "edgeland/kernel/predicates.hpp"
-#include "edgeland/kernel/recycled_vector.hpp"
+#include "edgeland/kernel/scratch.hpp"
 
 namespace edgeland::detail {
 
@@ -70,14 +70,14 @@ class SegmentGrid {
   std::int64_t side_ = 1, columns_ = 0, rows_ = 0;
   int shift_ = 0;  // side_ == 2^shift_: cells are found by shifts, not divisions
   // CSR over cells: items_ of cell k, ascending ids.
-  RecycledVector<struct GridCellBeginBuffer, std::uint32_t> cell_begin_;
-  RecycledVector<struct GridItemsBuffer, std::uint32_t> items_;  // segment ids
+  ScratchVector<std::uint32_t> cell_begin_;
+  ScratchVector<std::uint32_t> items_;  // segment ids
   struct Slot {
     std::uint32_t at, cell_end;  // a segment's place in items_, and the end of its cell there
   };
   // CSR over segments: the slots of segment i.
-  RecycledVector<struct GridSlotBeginBuffer, std::uint32_t> slot_begin_;
-  RecycledVector<struct GridSlotsBuffer, Slot> slots_;
+  ScratchVector<std::uint32_t> slot_begin_;
+  ScratchVector<Slot> slots_;
 };
 
 template <class F>
@@ -148,7 +148,7 @@ template <class F>
 void SegmentGrid::for_each_candidate_pair(F&& visit) const {
   // Items of a cell are in increasing id order, so the partners of i with a larger id follow
   // its own slot; a stamp per segment drops partners already met in an earlier common cell.
-  RecycledVector<struct GridStampBuffer, std::uint32_t> stamp;
+  ScratchVector<std::uint32_t> stamp;
   stamp.assign(slot_begin_.empty() ? 0 : slot_begin_.size() - 1,
                std::numeric_limits<std::uint32_t>::max());
   for (std::uint32_t i = 0; i + 1 < slot_begin_.size(); ++i) {

@@ -18,7 +18,7 @@
 #include "box_sweep.hpp"
 #include "edgeland/kernel/bbox.hpp"
 #include "edgeland/kernel/polygon.hpp"
-#include "edgeland/kernel/recycled_vector.hpp"
+#include "edgeland/kernel/scratch.hpp"
 
 namespace edgeland::detail {
 
@@ -92,16 +92,16 @@ class SegmentIndex {
   const std::vector<Segment>* segments_;  // boxes are computed, not stored: less memory traffic
   const std::vector<std::uint32_t>* next_;
   mutable bool built_ = false;
-  mutable RecycledVector<struct IndexRunEndsBuffer, RunEnd> run_ends_;  // in segment order
-  mutable RecycledVector<struct IndexRunsBuffer, Run> runs_;
-  mutable RecycledVector<struct IndexRunBoxesBuffer, Box64> run_boxes_;
+  mutable ScratchVector<RunEnd> run_ends_;  // in segment order
+  mutable ScratchVector<Run> runs_;
+  mutable ScratchVector<Box64> run_boxes_;
   // Run boxes, sorted_for_sweep; sorted on first use (noding through the segment grid and
   // inputs without hot pixels never need them).
   const std::vector<SweepBox>& run_sweep() const {
     if (run_sweep_.size() != run_boxes_.size()) run_sweep_ = sorted_for_sweep(run_boxes_);
     return run_sweep_;
   }
-  mutable RecycledVector<struct IndexRunSweepBuffer, SweepBox> run_sweep_;
+  mutable ScratchVector<SweepBox> run_sweep_;
 };
 
 template <class F>

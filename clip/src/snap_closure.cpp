@@ -90,7 +90,7 @@ class HotSetClosure {
   const bool classic_;
   PointSet& is_hot_;
   Closure& c_;
-  RecycledVector<struct ChangedBuffer, std::uint32_t> changed_;  // segments met this round
+  ScratchVector<std::uint32_t> changed_;  // segments met this round
   std::vector<Ring> routes_;             // of changed_[k], built when first asked for
   std::unique_ptr<StopsOf> hot_stops_;   // every hot centre met so far, by segment
   std::vector<SweepBox> split_sweep_;    // the split points' pixel boxes, sorted when first needed

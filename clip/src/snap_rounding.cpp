@@ -21,7 +21,7 @@ StopsOf::StopsOf(std::size_t segments, const std::vector<SegmentPoint>& stops) {
   points_.resize(stops.size());
   for (const auto& st : stops) ++begin_[st.first + 1];
   add_up_counts(begin_);
-  RecycledVector<struct StopsFillBuffer, std::uint32_t> fill;
+  ScratchVector<std::uint32_t> fill;
   fill.assign(begin_.begin(), begin_.end() - 1);
   for (const auto& [s, p] : stops) points_[fill[s]++] = p;
 }
@@ -58,7 +58,7 @@ void sort_stops(const std::vector<Segment>& segs, Stops& stops) {
 
 Fragments route(const std::vector<Segment>& segs, const Closure& c,
                 const std::vector<SegmentPoint>& splits) {
-  RecycledVector<struct RouteStopsBuffer, SegmentPoint> stops;
+  ScratchVector<SegmentPoint> stops;
   stops.assign(splits.begin(), splits.end());
   for (const auto& [s, h] : c.meets) stops.emplace_back(s, c.hot[h]);
   sort_stops(segs, stops);
@@ -157,10 +157,10 @@ class SnapRounds {
   SegmentSearch& search_;
   const StopsOf splits_of_;
   // The vertices: every segment's start (found through the index) and every split point.
-  RecycledVector<struct SplitPointsBuffer, Point64> split_points_;
+  ScratchVector<Point64> split_points_;
   PointSet is_hot_;
   Closure closure_;
-  RecycledVector<struct FreshBuffer, Point64> fresh_;  // hot centres not yet closed over
+  ScratchVector<Point64> fresh_;  // hot centres not yet closed over
 };
 
 }  // namespace

@@ -7,7 +7,7 @@
 
 #include "edgeland/kernel/bbox.hpp"
 #include "edgeland/kernel/polygon.hpp"
-#include "edgeland/kernel/recycled_vector.hpp"
+#include "edgeland/kernel/scratch.hpp"
 #include "noding.hpp"
 #include "segment_search.hpp"
 
@@ -18,9 +18,8 @@ struct Fragment {
   std::uint32_t parent;   // index of the input segment it comes from (same direction)
 };
 
-// Fragment lists recycle their storage per thread (recycled_vector.hpp).
-struct FragmentsBuffer;
-using Fragments = RecycledVector<FragmentsBuffer, Fragment>;
+// Fragment lists recycle their storage per thread (scratch.hpp).
+using Fragments = ScratchVector<Fragment>;
 
 // What snap rounding hands the plane graph.
 struct Snapped {

@@ -10,7 +10,7 @@
 #include <utility>
 #include <vector>
 
-#include "edgeland/kernel/recycled_vector.hpp"
+#include "edgeland/kernel/scratch.hpp"
 #include "grown_box.hpp"
 #include "noding.hpp"
 #include "point_set.hpp"
@@ -32,19 +32,19 @@ class StopsOf {
   }
 
  private:
-  RecycledVector<struct StopsBeginBuffer, std::uint32_t> begin_;
-  RecycledVector<struct StopsPointsBuffer, Point64> points_;
+  ScratchVector<std::uint32_t> begin_;
+  ScratchVector<Point64> points_;
 };
 
 // The hot set and what it moved.
 struct Closure {
-  RecycledVector<struct ClosureHotBuffer, Point64> hot;  // all hot pixel centres
+  ScratchVector<Point64> hot;  // all hot pixel centres
   // (segment, hot index)
-  RecycledVector<struct ClosureMeetsBuffer, std::pair<std::uint32_t, std::uint32_t>> meets;
-  RecycledVector<struct ClosureMovedBuffer, std::uint8_t> moved;  // by segment
+  ScratchVector<std::pair<std::uint32_t, std::uint32_t>> meets;
+  ScratchVector<std::uint8_t> moved;  // by segment
   // (segment, vertex) for every vertex (end or split point) not on the segment whose closed pixel
   // the segment meets; complete once a grid pass over all vertices has run (off_classic_routes).
-  RecycledVector<struct ClosureNearVertexBuffer, SegmentPoint> near_vertex;
+  ScratchVector<SegmentPoint> near_vertex;
   bool near_vertex_complete = false;
 };
 

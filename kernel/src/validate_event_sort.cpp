@@ -4,7 +4,7 @@
 #include <bit>
 #include <cstddef>
 
-#include "edgeland/kernel/recycled_vector.hpp"
+#include "edgeland/kernel/scratch.hpp"
 
 namespace edgeland::detail {
 namespace {
@@ -34,8 +34,7 @@ bool packs(std::size_t n, unsigned bits) noexcept { return bits + position_bits(
 // order is the stable order, so std::sort moves and compares plain integers, half the size
 // of an event, with no tie-break. The events are then gathered in that order.
 void sort_packed(std::vector<KeyedVertex>& events, std::vector<KeyedVertex>& scratch) {
-  struct WordsSpare;
-  RecycledVector<WordsSpare, std::uint64_t> words;
+  ScratchVector<std::uint64_t> words;
   const unsigned shift = position_bits(events.size());
   const std::uint64_t position_mask = (std::uint64_t{1} << shift) - 1;
   words.resize(events.size());

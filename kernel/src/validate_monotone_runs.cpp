@@ -22,7 +22,7 @@
 
 #include "edgeland/kernel/checked.hpp"
 #include "edgeland/kernel/point_in_polygon.hpp"
-#include "edgeland/kernel/recycled_vector.hpp"
+#include "edgeland/kernel/scratch.hpp"
 #include "validate_event_sort.hpp"
 #include "validate_exact.hpp"
 #include "validate_selection.hpp"
@@ -171,11 +171,11 @@ class RunSweep {
     // clipped landscape often share edges), and then the work here was for nothing.
     const std::size_t per_run = ring_count() >= 2 ? 2 * min_run : min_run;
     const std::size_t most_runs = per_run == 0 ? edges : edges / per_run;
-    RecycledVector<StartsSpare, std::uint32_t> starts;
+    ScratchVector<std::uint32_t> starts;
     starts.resize(most_runs + 1);
     RunStarts cut{starts.data(), starts.size()};
     rings_.resize(ring_count());
-    RecycledVector<FirstRunSpare, std::size_t> first_run;
+    ScratchVector<std::size_t> first_run;
     first_run.resize(ring_count() + 1);
     const std::uint32_t cap = std::max(options_.run_cap, 1u);
     for (std::size_t r = 0; r < ring_count(); ++r) {
@@ -351,17 +351,12 @@ class RunSweep {
   std::size_t ring_count() const noexcept { return selected_count(polygons_, members_); }
   const Polygon& ring(std::size_t r) const noexcept { return selected_ring(polygons_, members_, r); }
 
-  // Tags naming the per-thread spare of each array (edgeland/kernel/recycled_vector.hpp).
-  struct StartsSpare;
-  struct FirstRunSpare;
-  struct RingsSpare;
-  struct RunsSpare;
 
   std::span<const Polygon> polygons_;
   std::span<const std::size_t> members_;
   RunSweepOptions options_;
-  RecycledVector<RingsSpare, RingView> rings_;
-  RecycledVector<RunsSpare, Run> runs_;
+  ScratchVector<RingView> rings_;
+  ScratchVector<Run> runs_;
   std::size_t work_ = 0;    // box and edge tests so far
   std::size_t budget_ = 0;  // undecided past this many
 };

@@ -7,7 +7,7 @@
 //
 // Its signs are exact in int64 when the input's box is narrow (validate_exact.hpp), so the sweep
 // is compiled twice, for int64 and for Int128 signs, and the box picks one. Its arrays come
-// from per-thread spares (edgeland/kernel/recycled_vector.hpp): small inputs are validated on every clip.
+// from per-thread spares (edgeland/kernel/scratch.hpp): small inputs are validated on every clip.
 //
 // It only ever concludes "valid". At the first sign of trouble it gives up, and validate()
 // runs the reporting checks, which say exactly what is wrong; so reports never depend on it.
@@ -33,7 +33,7 @@
 #include <vector>
 
 #include "edgeland/kernel/checked.hpp"
-#include "edgeland/kernel/recycled_vector.hpp"
+#include "edgeland/kernel/scratch.hpp"
 #include "validate_checks.hpp"
 #include "validate_event_sort.hpp"
 #include "validate_exact.hpp"
@@ -443,17 +443,6 @@ class OneSweep {
   std::size_t ring_count() const noexcept { return selected_count(polygons_, members_); }
   const Polygon& ring(std::size_t r) const noexcept { return selected_ring(polygons_, members_, r); }
 
-  // Tags naming the per-thread spare of each array (edgeland/kernel/recycled_vector.hpp).
-  struct EdgesSpare;
-  struct RingsSpare;
-  struct EventsSpare;
-  struct EventsScratchSpare;
-  struct CoverSpare;
-  struct EndingSpare;
-  struct StartingSpare;
-  struct ThroughSpare;
-  struct AtSpare;
-  struct SeenSpare;
 
   std::span<const Polygon> polygons_;
   std::span<const std::size_t> members_;
@@ -461,22 +450,22 @@ class OneSweep {
   bool multi_ = false;
   bool narrow_ = false;  // the input's box is narrow: signs in int64 (validate_exact.hpp)
   // Edge v runs from vertex v to the next vertex of its ring.
-  RecycledVector<EdgesSpare, Edge> edges_;
-  RecycledVector<RingsSpare, RingRange> rings_;
-  RecycledVector<EventsSpare, Event> events_;
-  RecycledVector<EventsScratchSpare, Event> events_scratch_;
+  ScratchVector<Edge> edges_;
+  ScratchVector<RingRange> rings_;
+  ScratchVector<Event> events_;
+  ScratchVector<Event> events_scratch_;
   unsigned key_bits_ = 0;  // every event key is below 2^key_bits_
   // Winding number just above each placed edge (sets only).
-  RecycledVector<CoverSpare, std::int8_t> cover_;
+  ScratchVector<std::int8_t> cover_;
   SweepStatus status_;
   // At an event: the edges ending at q, ending_[0, ending_count_), and those starting there.
-  RecycledVector<EndingSpare, std::uint32_t> ending_;
-  RecycledVector<StartingSpare, std::uint32_t> starting_;
+  ScratchVector<std::uint32_t> ending_;
+  ScratchVector<std::uint32_t> starting_;
   std::size_t ending_count_ = 0, starting_count_ = 0;
-  RecycledVector<ThroughSpare, std::uint32_t> through_;
-  RecycledVector<AtSpare, std::uint32_t> at_;
+  ScratchVector<std::uint32_t> through_;
+  ScratchVector<std::uint32_t> at_;
   // Per ring: the last stamp_ of an event that met it.
-  RecycledVector<SeenSpare, std::uint32_t> seen_;
+  ScratchVector<std::uint32_t> seen_;
   std::uint32_t stamp_ = 0;
 };
 

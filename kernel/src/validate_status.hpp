@@ -12,7 +12,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "edgeland/kernel/recycled_vector.hpp"
+#include "edgeland/kernel/scratch.hpp"
 
 namespace edgeland::detail {
 
@@ -168,8 +168,7 @@ class SweepStatus {
       starts_[b + 1] = starts_[b] + blocks_[b].size();
   }
 
-  struct FlatSpare;  // tag of the flat array's per-thread spare (edgeland/kernel/recycled_vector.hpp)
-  RecycledVector<FlatSpare, std::uint32_t> flat_;      // the status while it is short
+  ScratchVector<std::uint32_t> flat_;      // the status while it is short
   std::vector<std::vector<std::uint32_t>> blocks_;  // then: none empty unless alone
   std::vector<std::size_t> starts_;  // index of each block's first entry, then size()
 };

@@ -29,11 +29,11 @@
 // crossings must be rounded (zigzag stars of 10^5 vertices each, 10^5 crossings: 1,450; snap
 // rounding's hot pixels, routes and re-check). tests/clip/memory/memory_bound_test.cpp checks
 // 120 per edge and 2,000 per crossing with a counting allocator. Each calling thread keeps the
-// working arrays of its operations (edge list, search structures, plane graph, labels) and
-// reuses them: allocating and freeing them per call made the allocator
+// working arrays of its operations (edge list, search structures, plane graph, labels) in one
+// scratch workspace and reuses them: allocating and freeing them per call made the allocator
 // return them to the system and fault them in again every time, which cost more than the work.
-// Arrays over 8 MiB (over 32 MiB for the edge list, the plane graph and the labels) are not
-// kept but freed after the operation; the rest is freed at thread exit.
+// Arrays over 8 MiB are not kept but freed after the operation, and at most 16 arrays of each
+// element type are kept; the rest is freed at thread exit.
 // THREADS. Operations share no state between threads; concurrent calls are safe.
 #include <cstddef>
 #include <string>

@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# Fails (exit 1) when a tracked C++ file differs from what clang-format-14 makes of it under the
+# repository's .clang-format, and lists those files. With --fix, formats them in place instead.
+# .ci/run runs it after the test command (which installs clang-format-14).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+format=$(command -v clang-format-14 || true)
+if [ -z "$format" ]; then
+  echo "scripts/check_format.sh: clang-format-14 not found (apt-get install -y clang-format-14)" >&2
+  exit 2
+fi
+mapfile -t files < <(git ls-files '*.cpp' '*.hpp' '*.h')
+if [ "${1:-}" = "--fix" ]; then
+  "$format" -i "${files[@]}"
+  exit 0
+fi
+differ=()
+for f in "${files[@]}"; do
+  if ! "$format" --dry-run --Werror "$f" >/dev/null 2>&1; then differ+=("$f"); fi
+done
+if [ "${#differ[@]}" -gt 0 ]; then
+  echo "Not formatted by clang-format-14 (scripts/check_format.sh --fix formats them):" >&2
+  printf '  %s\n' "${differ[@]}" >&2
+  exit 1
+fi
+echo "clang-format: all ${#files[@]} C++ files formatted"
