@@ -1,5 +1,6 @@
 #pragma once
-// Internal to edgeland (validate() and the clipper), not part of the API: a std::vector that
+// Internal to edgeland (validate() and the clipper), not part of the API and not installed
+// (it lives in kernel/internal/, which only targets built in this tree see): a std::vector that
 // takes its storage from a per-thread spare and gives it back when it dies, for the large
 // temporaries of operations called again and again.
 //
