@@ -9,6 +9,6 @@ out="${EDGELAND_BUILD_DIR:-build/wasm}"
 mkdir -p "$out"
 export NODE_PATH=/usr/share/nodejs  # Emscripten's optimiser needs Debian's node-acorn
 em++ -std=gnu++20 -O2 -fexceptions -sSINGLE_FILE=1 -sENVIRONMENT=node -sALLOW_MEMORY_GROWTH=1 \
-  -I kernel/include -I clip/include -I spatial/include tests/spatial/determinism_main.cpp \
+  -I kernel/include -I kernel/internal -I clip/include -I spatial/include tests/spatial/determinism_main.cpp \
   kernel/src/*.cpp clip/src/*.cpp spatial/src/*.cpp -o "$out/determinism.js"
 node --no-experimental-fetch "$out/determinism.js"

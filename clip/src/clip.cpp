@@ -96,10 +96,11 @@ ClipResult clip_near(ClipOp op, const PolygonSet& subject, const PolygonSet& cli
   }
 }
 
+// The box is the clip operand: a corner beyond the bound, then min > max, is refused.
 void require_valid_box(const Box64& box) {
-  if (!in_range(box.min) || !in_range(box.max) || box.min.x > box.max.x || box.min.y > box.max.y) {
-    throw CoordinateOutOfRange(Operand::kClip, 0, kNone, in_range(box.min) ? box.max : box.min);
-  }
+  for (const Point64 corner : {box.min, box.max})
+    if (!in_range(corner)) throw CoordinateOutOfRange(Operand::kClip, 0, 0, kNone, corner);
+  if (box.min.x > box.max.x || box.min.y > box.max.y) throw InvalidBox(Operand::kClip, box);
 }
 
 // subject OP clip for operands known to be valid; *_canonical: that operand is in canonical
@@ -239,7 +240,7 @@ ValidClipResult clip_to_box(const ValidSet& set, const Box64& box, const ClipOpt
 ClipResult normalize(const std::vector<Ring>& rings, FillRule rule, const ClipOptions& options) {
   for (std::size_t r = 0; r < rings.size(); ++r)
     for (std::size_t i = 0; i < rings[r].size(); ++i)
-      if (!in_range(rings[r][i])) throw CoordinateOutOfRange(Operand::kRings, r, i, rings[r][i]);
+      if (!in_range(rings[r][i])) throw CoordinateOutOfRange(Operand::kRings, r, 0, i, rings[r][i]);
   // gcov ascribes the unwinding of `p` below, run only when the pipeline throws, to the `[&] {`
   // line, and the WKT lambda below is called only then (an internal error): not reached by
   // tests.
@@ -278,7 +279,7 @@ ClipResult import_polygons(const std::vector<std::vector<Ring>>& polygons,
       for (std::size_t i = 0; i < ring.size(); ++i)
         if (!in_range(ring[i])) {
           const auto index = static_cast<std::size_t>(&polygon - polygons.data());
-          throw CoordinateOutOfRange(Operand::kRings, index, i, ring[i]);
+          throw CoordinateOutOfRange(Operand::kRings, index, k, i, ring[i]);
         }
       // Repeated points (a closing point copied from WKT or GeoJSON among them) change no
       // winding number; without them a valid ring passes the simplicity test below.

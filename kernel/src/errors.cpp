@@ -13,17 +13,7 @@ const char* operand_name(Operand o) {
   return "?";  // Not reached by tests: the switch covers every Operand.
 }
 
-}  // namespace
-
-InvalidInput::InvalidInput(Operand which, Violation v)
-    : Error(std::string("invalid ") + operand_name(which) + ": " + v.describe()),
-      operand(which),
-      violation(v) {}
-
-CoordinateOutOfRange::CoordinateOutOfRange(Operand which, Violation v)
-    : InvalidInput(which, v), polygon(v.polygon), vertex(v.edge), where(v.where) {}
-
-namespace {
+std::string text(Point64 p) { return "(" + std::to_string(p.x) + " " + std::to_string(p.y) + ")"; }
 
 Violation out_of_range(std::size_t polygon, std::size_t vertex, Point64 where) {
   Violation v;
@@ -34,11 +24,56 @@ Violation out_of_range(std::size_t polygon, std::size_t vertex, Point64 where) {
   return v;
 }
 
+// validate()'s description with the ring named after the polygon when it is not 0.
+std::string out_of_range_description(const Violation& v, std::size_t ring) {
+  if (ring == 0) return v.describe();
+  std::string d = std::string(rule_name(v.rule)) + ": polygon " + std::to_string(v.polygon) +
+                  " ring " + std::to_string(ring);
+  if (v.edge != kNone) d += " vertex " + std::to_string(v.edge);
+  return d + " at " + text(v.where);
+}
+
+Violation inverted(const Box64& box) {
+  Violation v;
+  v.rule = Rule::kInvertedBox;
+  v.where = box.min;
+  return v;
+}
+
+// "inverted-box: min (5 0) exceeds max (0 5) in x", naming each axis where min > max.
+std::string inverted_description(const Box64& b) {
+  std::string axes;
+  if (b.min.x > b.max.x) axes = " in x";
+  if (b.min.y > b.max.y) axes += axes.empty() ? " in y" : " and y";
+  return std::string(rule_name(Rule::kInvertedBox)) + ": min " + text(b.min) + " exceeds max " +
+         text(b.max) + axes;
+}
+
 }  // namespace
 
+InvalidInput::InvalidInput(Operand which, Violation v) : InvalidInput(which, v, v.describe()) {}
+
+InvalidInput::InvalidInput(Operand which, Violation v, const std::string& description)
+    : Error(std::string("invalid ") + operand_name(which) + ": " + description),
+      operand(which),
+      violation(v) {}
+
+CoordinateOutOfRange::CoordinateOutOfRange(Operand which, Violation v)
+    : InvalidInput(which, v), polygon(v.polygon), ring(0), vertex(v.edge), where(v.where) {}
+
 CoordinateOutOfRange::CoordinateOutOfRange(Operand which, std::size_t polygon_index,
-                                           std::size_t vertex_index, Point64 location)
-    : CoordinateOutOfRange(which, out_of_range(polygon_index, vertex_index, location)) {}
+                                           std::size_t ring_index, std::size_t vertex_index,
+                                           Point64 location)
+    : InvalidInput(which, out_of_range(polygon_index, vertex_index, location),
+                   out_of_range_description(out_of_range(polygon_index, vertex_index, location),
+                                            ring_index)),
+      polygon(polygon_index),
+      ring(ring_index),
+      vertex(vertex_index),
+      where(location) {}
+
+InvalidBox::InvalidBox(Operand which, const Box64& b)
+    : InvalidInput(which, inverted(b), inverted_description(b)), box(b) {}
 
 void throw_invalid_input(Operand operand, const Violation& violation) {
   if (violation.rule == Rule::kCoordinateOutOfRange) throw CoordinateOutOfRange(operand, violation);

@@ -21,12 +21,16 @@ const char* rule_name(Rule rule) noexcept {
       return "not-counter-clockwise";
     case Rule::kOverlappingInteriors:
       return "overlapping-interiors";
+    case Rule::kInvertedBox:
+      return "inverted-box";
   }
   return "unknown-rule";  // Not reached by tests: the switch covers every Rule.
 }
 
 std::string Violation::describe() const {
   auto num = [](std::size_t i) { return std::to_string(i); };
+  const std::string at = " at (" + std::to_string(where.x) + " " + std::to_string(where.y) + ")";
+  if (rule == Rule::kInvertedBox) return std::string(rule_name(rule)) + ": min corner" + at;
   std::string text = std::string(rule_name(rule)) + ": polygon " + num(polygon);
   switch (rule) {
     case Rule::kCoordinateOutOfRange:
@@ -47,7 +51,7 @@ std::string Violation::describe() const {
       }
       break;
   }
-  return text + " at (" + std::to_string(where.x) + " " + std::to_string(where.y) + ")";
+  return text + at;
 }
 
 }  // namespace edgeland

@@ -17,7 +17,7 @@ namespace {
 ValidSet shape_of(const PolygonSet& shape) {
   for (std::size_t i = 0; i < shape.size(); ++i)
     for (std::size_t j = 0; j < shape[i].size(); ++j)
-      if (!in_range(shape[i][j])) throw CoordinateOutOfRange(Operand::kClip, i, j, shape[i][j]);
+      if (!in_range(shape[i][j])) throw CoordinateOutOfRange(Operand::kClip, i, 0, j, shape[i][j]);
   return ValidSet(shape, Operand::kClip);
 }
 

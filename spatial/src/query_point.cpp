@@ -26,6 +26,9 @@ bool visit_cells_meeting(const NodePtr& n, const Box64& box, bool open, F&& f) {
   return true;
 }
 
+// A closed box with min > max holds no point, so it meets nothing.
+bool inverted(const Box64& box) { return box.min.x > box.max.x || box.min.y > box.max.y; }
+
 std::vector<Material> sorted_materials(const std::bitset<kMaterialCount>& found) {
   std::vector<Material> out;
   for (std::size_t m = 1; m < kMaterialCount; ++m)
@@ -52,6 +55,7 @@ Material Landscape::material_at(Point64 p) const {
 }
 
 void Landscape::polygons_in(const Box64& box, const std::function<bool(const PolygonView&)>& visit) const {
+  if (inverted(box)) return;
   visit_cells_meeting(root_, box, false, [&](const Node& cell) {
     for (std::size_t i = 0; i < cell.ids.size(); ++i) {
       if (!cell.boxes[i].overlaps(box)) continue;
@@ -64,12 +68,16 @@ void Landscape::polygons_in(const Box64& box, const std::function<bool(const Pol
 }
 
 void Landscape::cells_in(const Box64& box, const std::function<bool(const CellView&)>& visit) const {
+  if (inverted(box)) return;
   visit_cells_meeting(root_, box, false, [&](const Node& cell) {
     return visit(CellView{cell.box, cell.depth, cell.polygons, cell.vertices});
   });
 }
 
 std::vector<Material> Landscape::overlaps(const Box64& box) const {
+  // The exact tests below compute with the corners: they must be in range.
+  for (const Point64 corner : {box.min, box.max})
+    if (!in_range(corner)) throw CoordinateOutOfRange(Operand::kQuery, 0, 0, kNone, corner);
   std::bitset<kMaterialCount> found;
   if (box.min.x >= box.max.x || box.min.y >= box.max.y) return {};
   visit_cells_meeting(root_, box, true, [&](const Node& cell) {

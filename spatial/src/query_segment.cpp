@@ -167,7 +167,7 @@ void walk(const NodePtr& root, Point64 from, Point64 to, F&& report) {
 }
 
 void require_in_range(Point64 p) {
-  if (!in_range(p)) throw CoordinateOutOfRange(Operand::kQuery, 0, 0, p);
+  if (!in_range(p)) throw CoordinateOutOfRange(Operand::kQuery, 0, 0, 0, p);
 }
 
 }  // namespace

@@ -37,22 +37,44 @@ TEST(InternalError, CarriesTheInputsAsWkt) {
 }
 
 // clip.hpp (import_polygons) and errors.hpp: a coordinate beyond the bound in a hole is a
-// CoordinateOutOfRange naming the rings operand, the polygon (entry 1 here) and the vertex's
-// index in its ring (2).
-TEST(ImportPolygons, CoordinateOutOfRangeInAHoleNamesPolygonAndVertex) {
+// CoordinateOutOfRange naming the rings operand, the polygon (entry 1 here), the ring within it
+// (2: its second hole) and the vertex's index in that ring (2); the message names the ring.
+TEST(ImportPolygons, CoordinateOutOfRangeInAHoleNamesPolygonRingAndVertex) {
   const Point64 bad{23, kCoordBound + 1};
-  const std::vector<std::vector<Ring>> polygons{
-      {{{0, 0}, {10, 0}, {10, 10}, {0, 10}}},
-      {{{20, 0}, {30, 0}, {30, 10}, {20, 10}}, {{22, 2}, {24, 2}, bad, {22, 4}}}};
+  const std::vector<std::vector<Ring>> polygons{{{{0, 0}, {10, 0}, {10, 10}, {0, 10}}},
+                                                {{{20, 0}, {30, 0}, {30, 10}, {20, 10}},
+                                                 {{26, 2}, {28, 2}, {28, 4}, {26, 4}},
+                                                 {{22, 2}, {24, 2}, bad, {22, 4}}}};
   try {
     const ClipResult r = import_polygons(polygons);
     FAIL() << "imported " << r.polygons.size() << " polygons";
   } catch (const CoordinateOutOfRange& e) {
     EXPECT_EQ(e.operand, Operand::kRings);
     EXPECT_EQ(e.polygon, 1u);
+    EXPECT_EQ(e.ring, 2u);
     EXPECT_EQ(e.vertex, 2u);
     EXPECT_EQ(e.where, bad);
-    EXPECT_EQ(std::string(e.what()).rfind("invalid rings: ", 0), 0u) << e.what();
+    EXPECT_EQ(std::string(e.what()),
+              "invalid rings: coordinate-out-of-range: polygon 1 ring 2 vertex 2 at "
+              "(23 2147483648)");
+  }
+}
+
+// The same in an exterior (ring 0): the message is validate()'s wording, without a ring.
+TEST(ImportPolygons, CoordinateOutOfRangeInAnExteriorIsRingZero) {
+  const Point64 bad{-kCoordBound - 1, 0};
+  const std::vector<std::vector<Ring>> polygons{
+      {{{0, 0}, {10, 0}, {10, 10}, {0, 10}}},
+      {{{20, 0}, bad, {30, 10}, {20, 10}}, {{22, 2}, {24, 2}, {24, 4}, {22, 4}}}};
+  try {
+    const ClipResult r = import_polygons(polygons);
+    FAIL() << "imported " << r.polygons.size() << " polygons";
+  } catch (const CoordinateOutOfRange& e) {
+    EXPECT_EQ(e.polygon, 1u);
+    EXPECT_EQ(e.ring, 0u);
+    EXPECT_EQ(e.vertex, 1u);
+    EXPECT_EQ(std::string(e.what()),
+              "invalid rings: coordinate-out-of-range: polygon 1 vertex 1 at (-2147483648 0)");
   }
 }
 

@@ -141,10 +141,54 @@ RC_GTEST_PROP(ValidSetProperty, CanonicalOperandsGiveIdenticalResults, ()) {
             clip_to_box(a.polygons(), box, ClipOptions{.checked = true}).polygons);
 }
 
-TEST(ValidSet, ABoxOutsideTheRangeIsRefused) {
-  const ValidSet s(PolygonSet{{{0, 0}, {10, 0}, {10, 10}, {0, 10}}});
-  EXPECT_THROW(clip_to_box(s, Box64{{0, 0}, {kCoordBound + 1, 5}}), InvalidInput);
-  EXPECT_THROW(clip_to_box(s, Box64{{5, 0}, {0, 5}}), InvalidInput);
+// clip.hpp, clip_to_box: a box corner beyond the bound is a CoordinateOutOfRange naming that
+// corner (checked first, even when the box is inverted too), in both overloads.
+TEST(ClipToBox, ABoxCornerOutsideTheRangeIsCoordinateOutOfRange) {
+  const PolygonSet square{{{0, 0}, {10, 0}, {10, 10}, {0, 10}}};
+  const ValidSet s(square);
+  const Point64 far{kCoordBound + 1, 5};
+  for (const Box64& box : {Box64{{0, 0}, far}, Box64{far, {0, 0}}}) {
+    try {
+      clip_to_box(s, box);
+      FAIL() << "accepted a box reaching x = " << far.x;
+    } catch (const CoordinateOutOfRange& e) {
+      EXPECT_EQ(e.operand, Operand::kClip);
+      EXPECT_EQ(e.where, far);
+      EXPECT_EQ(e.polygon, 0u);
+      EXPECT_EQ(e.ring, 0u);
+      EXPECT_EQ(e.vertex, kNone);
+    }
+    EXPECT_THROW(clip_to_box(square, box), CoordinateOutOfRange);
+  }
+}
+
+// clip.hpp, clip_to_box: a box with min > max (corners in range) is an InvalidBox, an
+// InvalidInput of rule inverted-box that keeps the box; it used to be reported as a coordinate
+// out of range at an in-range corner. A box of zero width is no error: its part is empty.
+TEST(ClipToBox, AnInvertedBoxIsInvalidBox) {
+  const PolygonSet square{{{0, 0}, {10, 0}, {10, 10}, {0, 10}}};
+  const ValidSet s(square);
+  for (const Box64& box : {Box64{{5, 0}, {0, 5}}, Box64{{0, 5}, {5, 0}}}) {
+    try {
+      clip_to_box(s, box);
+      FAIL() << "accepted an inverted box";
+    } catch (const CoordinateOutOfRange&) {
+      FAIL() << "an inverted box reported as a coordinate out of range";
+    } catch (const InvalidBox& e) {
+      EXPECT_EQ(e.box, box);
+      EXPECT_EQ(e.operand, Operand::kClip);
+      EXPECT_EQ(e.violation.rule, Rule::kInvertedBox);
+    }
+    try {
+      clip_to_box(square, box);
+      FAIL() << "accepted an inverted box";
+    } catch (const InvalidBox& e) {
+      EXPECT_EQ(e.box, box);
+    }
+  }
+  EXPECT_THROW(clip_to_box(s, Box64{{5, 0}, {0, 5}}), InvalidInput);  // caught with the rest
+  EXPECT_TRUE(clip_to_box(s, Box64{{5, 0}, {5, 5}}).set.polygons().empty());
+  EXPECT_TRUE(clip_to_box(square, Box64{{0, 5}, {5, 5}}).polygons.empty());
 }
 
 // The carving use: a square carved (and now and then refilled) by 300 random small polygons,

@@ -1,5 +1,8 @@
 // Uses the installed headers and libraries: an exact orientation, validate() on a square and
-// on the same square clockwise, and the WKT writer. Exit status 0 when all agree.
+// on the same square clockwise, the WKT writer, a landscape, Int128 text and a typed error.
+// Exit status 0 when all agree.
+#include <edgeland/clip/clip.hpp>
+#include <edgeland/kernel/int128.hpp>
 #include <edgeland/kernel/point.hpp>
 #include <edgeland/kernel/polygon.hpp>
 #include <edgeland/kernel/predicates.hpp>
@@ -39,6 +42,17 @@ int main() {
   check(!changes.added.empty() && changes.removed.size() == 1, "the carve replaced the world's polygon");
   check(world.twice_area(1) == 2 * (10000 - 400), "the carved area is exact");
   check(world.material_at({50, 50}) == kEmpty && world.material_at({10, 10}) == 1, "material_at");
+
+  check(to_string(world.twice_area(1)) == "19200", "to_string(Int128)");
+
+  // A typed error from the installed headers: an inverted box keeps the box.
+  const Box64 inverted{{5, 0}, {0, 5}};
+  try {
+    clip_to_box(PolygonSet{square}, inverted);
+    check(false, "clip_to_box refuses an inverted box");
+  } catch (const InvalidBox& e) {
+    check(e.box == inverted && e.violation.rule == Rule::kInvertedBox, "InvalidBox keeps the box");
+  }
 
   if (failures == 0) std::cout << "consumer: ok\n";
   return failures == 0 ? 0 : 1;

@@ -21,7 +21,8 @@ foreach(expected include/edgeland/kernel/validate.hpp include/edgeland/clip/clip
   endif()
 endforeach()
 file(GLOB_RECURSE configs ${prefix}/*/edgelandConfig.cmake)
-file(GLOB_RECURSE private_headers ${prefix}/include/*wkt_reader.hpp ${prefix}/include/*command.hpp)
+file(GLOB_RECURSE private_headers ${prefix}/include/*wkt_reader.hpp ${prefix}/include/*command.hpp
+  ${prefix}/include/*scratch.hpp)
 if(NOT configs OR private_headers)
   message(FATAL_ERROR "config files: '${configs}'; private headers installed: '${private_headers}'")
 endif()

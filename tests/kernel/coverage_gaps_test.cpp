@@ -30,7 +30,7 @@ TEST(BoundingBox, OfASetSpansEveryMember) {
 // fields repeat the violation's data.
 TEST(CoordinateOutOfRange, NamesTheQueryOperand) {
   const Point64 where{kCoordBound + 1, -3};
-  const CoordinateOutOfRange e(Operand::kQuery, 0, 0, where);
+  const CoordinateOutOfRange e(Operand::kQuery, 0, 0, 0, where);
   EXPECT_EQ(std::string(e.what()), "invalid query: " + e.violation.describe());
   EXPECT_EQ(e.operand, Operand::kQuery);
   EXPECT_EQ(e.violation.rule, Rule::kCoordinateOutOfRange);
@@ -39,12 +39,54 @@ TEST(CoordinateOutOfRange, NamesTheQueryOperand) {
 
 TEST(CoordinateOutOfRange, NamesTheRingsOperand) {
   const Point64 where{0, -kCoordBound - 1};
-  const CoordinateOutOfRange e(Operand::kRings, 3, 7, where);
+  const CoordinateOutOfRange e(Operand::kRings, 3, 0, 7, where);
   EXPECT_EQ(std::string(e.what()), "invalid rings: " + e.violation.describe());
   EXPECT_EQ(e.polygon, 3u);
+  EXPECT_EQ(e.ring, 0u);
   EXPECT_EQ(e.vertex, 7u);
   EXPECT_EQ(e.violation.polygon, 3u);
   EXPECT_EQ(e.violation.edge, 7u);
+}
+
+// errors.hpp: a ring other than the exterior (0) is a field and is named in the message, after
+// the polygon; a Violation has no ring, so violation.describe() cannot say it.
+TEST(CoordinateOutOfRange, NamesAHoleRingInTheMessage) {
+  const Point64 where{23, kCoordBound + 1};
+  const CoordinateOutOfRange e(Operand::kRings, 1, 2, 0, where);
+  EXPECT_EQ(e.ring, 2u);
+  EXPECT_EQ(e.violation.rule, Rule::kCoordinateOutOfRange);
+  EXPECT_EQ(std::string(e.what()),
+            "invalid rings: coordinate-out-of-range: polygon 1 ring 2 vertex 0 at (23 2147483648)");
+}
+
+// errors.hpp: validate()'s violations are of single rings, so one made into the error has ring 0.
+TEST(CoordinateOutOfRange, FromAViolationIsRingZero) {
+  const ValidationReport r = validate(Polygon{{0, 0}, {kCoordBound + 1, 0}, {0, 5}});
+  ASSERT_FALSE(r.ok());
+  const CoordinateOutOfRange e(Operand::kSubject, r.violations.front());
+  EXPECT_EQ(e.ring, 0u);
+  EXPECT_EQ(e.vertex, 1u);
+  EXPECT_EQ(std::string(e.what()),
+            "invalid subject: coordinate-out-of-range: polygon 0 vertex 1 at (2147483648 0)");
+}
+
+// errors.hpp: an inverted box is an InvalidInput of rule inverted-box keeping the box; the
+// message names both corners and the axis (or axes) in which min exceeds max.
+TEST(InvalidBox, KeepsTheBoxAndNamesTheInvertedAxes) {
+  const Box64 in_x{{5, 0}, {0, 5}};
+  const InvalidBox e(Operand::kClip, in_x);
+  EXPECT_EQ(e.box, in_x);
+  EXPECT_EQ(e.operand, Operand::kClip);
+  EXPECT_EQ(e.violation.rule, Rule::kInvertedBox);
+  EXPECT_EQ(e.violation.where, (Point64{5, 0}));
+  EXPECT_EQ(std::string(e.what()), "invalid clip: inverted-box: min (5 0) exceeds max (0 5) in x");
+  EXPECT_EQ(e.violation.describe(), "inverted-box: min corner at (5 0)");
+  EXPECT_EQ(std::string(InvalidBox(Operand::kQuery, Box64{{0, 5}, {5, 0}}).what()),
+            "invalid query: inverted-box: min (0 5) exceeds max (5 0) in y");
+  EXPECT_EQ(std::string(InvalidBox(Operand::kClip, Box64{{5, 5}, {0, -1}}).what()),
+            "invalid clip: inverted-box: min (5 5) exceeds max (0 -1) in x and y");
+  const InvalidInput* base = &e;
+  EXPECT_EQ(base->what(), e.what());
 }
 
 // validate.hpp: describe() words an edge given alone like the pair form

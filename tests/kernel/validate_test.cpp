@@ -344,6 +344,7 @@ TEST(ValidateRuleName, NamesAreStable) {
   EXPECT_STREQ(rule_name(Rule::kSpike), "spike");
   EXPECT_STREQ(rule_name(Rule::kNotCounterClockwise), "not-counter-clockwise");
   EXPECT_STREQ(rule_name(Rule::kOverlappingInteriors), "overlapping-interiors");
+  EXPECT_STREQ(rule_name(Rule::kInvertedBox), "inverted-box");
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 // guarantee, save/load, and the basic queries on hand-made worlds whose answers are known.
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <sstream>
 
 #include "check.hpp"  // spatial/src: the error checked mode throws
@@ -229,6 +230,49 @@ TEST(Landscape, OverlapsFindsMaterialsUnderABox) {
   EXPECT_TRUE(l.overlaps(Box64{{0, 0}, {100, 100}}).empty());  // touches a corner only
   EXPECT_EQ(l.overlaps(ValidSet(PolygonSet{{{250, 90}, {350, 90}, {300, 150}}})),
             (std::vector<Material>{1, 2}));
+}
+
+// landscape.hpp: the box queries take an inverted box (min > max) as the empty set it is: it
+// overlaps no material and meets no polygon or cell, though the span between its corners
+// (x 200..400 here, across both squares and the world's cell) would.
+TEST(Landscape, AnInvertedBoxMeetsNothing) {
+  Landscape l = checked_world({{0, 0}, {1000, 1000}});
+  l.fill(PolygonSet{box_polygon(100, 100, 300, 200)}, 1);
+  l.fill(PolygonSet{box_polygon(300, 100, 500, 200)}, 2);
+  const std::uint64_t before = l.state_hash();
+  for (const Box64& box : {Box64{{400, 150}, {200, 160}}, Box64{{200, 160}, {400, 150}}}) {
+    EXPECT_TRUE(l.overlaps(box).empty());
+    std::size_t met = 0;
+    l.polygons_in(box, [&](const PolygonView&) {
+      ++met;
+      return true;
+    });
+    l.cells_in(box, [&](const CellView&) {
+      ++met;
+      return true;
+    });
+    EXPECT_EQ(met, 0u);
+  }
+  EXPECT_EQ(l.state_hash(), before);
+}
+
+// landscape.hpp: overlaps(Box64) computes with the box's corners, so a corner beyond the bound
+// is a CoordinateOutOfRange (operand kQuery) naming it, as for crossings() and raycast(). (This
+// box, spanning the int64 range, once reached the exact tests and overflowed: an abort in the
+// checked build.)
+TEST(Landscape, OverlapsRefusesABoxCornerBeyondTheBound) {
+  Landscape l = checked_world({{0, 0}, {1000, 1000}});
+  l.fill(PolygonSet{box_polygon(100, 100, 300, 200)}, 1);
+  const Point64 far{std::numeric_limits<std::int64_t>::min(), 150};
+  try {
+    const std::vector<Material> got =
+        l.overlaps(Box64{far, {std::numeric_limits<std::int64_t>::max(), 160}});
+    FAIL() << "answered " << got.size() << " materials";
+  } catch (const CoordinateOutOfRange& e) {
+    EXPECT_EQ(e.operand, Operand::kQuery);
+    EXPECT_EQ(e.where, far);
+    EXPECT_EQ(e.vertex, kNone);
+  }
 }
 
 }  // namespace

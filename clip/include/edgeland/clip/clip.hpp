@@ -21,9 +21,12 @@
 // CANONICAL OUTPUT. Polygons are hole-free, strictly simple and CCW, have no collinear
 // consecutive vertices, start at their lexicographically smallest vertex and are sorted by
 // that vertex; equal inputs give byte-identical outputs on every compiler and platform.
-// ERRORS. Invalid input throws InvalidInput (nothing is returned half-done). In checked mode
-// every output is re-validated and its canonical form checked (canonical_form.hpp); a violation
-// throws InternalError carrying the inputs as WKT.
+// ERRORS. Invalid input throws InvalidInput (nothing is returned half-done), the operand's
+// first violation of validate(); two kinds are subclasses with fields of their own (errors.hpp):
+// CoordinateOutOfRange for a coordinate beyond kCoordBound (polygon, ring, vertex, point), and
+// InvalidBox for clip_to_box's box with min.x > max.x or min.y > max.y (the box; rule
+// Rule::kInvertedBox). In checked mode every output is re-validated and its canonical form
+// checked (canonical_form.hpp); a violation throws InternalError carrying the inputs as WKT.
 // MEMORY. An operation's working memory peaks at about 90 bytes per input edge on smooth
 // inputs (two circles of 2 * 10^5 vertices: 87), plus about 1,500 bytes per crossing when the
 // crossings must be rounded (zigzag stars of 10^5 vertices each, 10^5 crossings: 1,450; snap
@@ -73,7 +76,7 @@ struct ClipResult {
   ClipStats stats;
 };
 
-// Operand, InvalidInput and CoordinateOutOfRange (an InvalidInput) are in
+// Operand, InvalidInput and its subclasses CoordinateOutOfRange and InvalidBox are in
 // edgeland/kernel/errors.hpp.
 
 // A result failed the checkers in checked mode: a bug in edgeland. Carries the inputs.
@@ -131,7 +134,8 @@ EDGELAND_EXPORT ValidClipResult clip_to_box(const ValidSet& set, const Box64& bo
 
 // Any rings (self-intersecting, either orientation, overlapping, repeated points, spikes,
 // zero-area parts) filled by `rule` -> a valid polygon set. Coordinates must be in range;
-// rings with fewer than 3 distinct points contribute nothing.
+// rings with fewer than 3 distinct points contribute nothing. A coordinate beyond the bound
+// throws CoordinateOutOfRange (operand kRings, polygon = the ring's index, ring 0).
 EDGELAND_EXPORT ClipResult normalize(const std::vector<Ring>& rings, FillRule rule,
                                      const ClipOptions& options = {});
 
@@ -142,6 +146,8 @@ EDGELAND_EXPORT ClipResult normalize(const std::vector<Ring>& rings, FillRule ru
 // +1 per exterior and -1 per hole around a point is positive. For strictly simple rings this
 // is normalize() with exteriors made CCW, holes CW and FillRule::kPositive, which is what runs
 // then; the accuracy contract above holds against that exact region in every case.
+// A coordinate beyond the bound throws CoordinateOutOfRange (operand kRings) naming the entry,
+// the ring within it (0 the exterior, k hole k) and the vertex within that ring.
 EDGELAND_EXPORT ClipResult import_polygons(const std::vector<std::vector<Ring>>& polygons,
                                            const ClipOptions& options = {});
 
@@ -161,7 +167,11 @@ EDGELAND_EXPORT ValidClipResult import_to_valid_set(
 // and vertices by this. O(n log n); the result is normalize(set, kPositive)'s.
 EDGELAND_EXPORT ValidClipResult merge(const ValidSet& set, const ClipOptions& options = {});
 
-// The part of a valid set inside a closed axis-aligned box (the landscape's cell cut).
+// The part of a valid set inside a closed axis-aligned box (the landscape's cell cut); a box
+// of zero width or height gives the empty set. The box is the clip operand: a corner beyond
+// the bound throws CoordinateOutOfRange (polygon 0, ring 0, vertex kNone, `where` the corner),
+// an inverted box (min.x > max.x or min.y > max.y) InvalidBox; then the set is validated
+// (operand kSubject). The ValidSet overload above checks the box the same way.
 EDGELAND_EXPORT ClipResult clip_to_box(const PolygonSet& set, const Box64& box,
                                        const ClipOptions& options = {});
 

@@ -1,6 +1,9 @@
 #pragma once
 // Overflow-checked integer arithmetic.
 //
+// NOT API: installed only because the public inline predicates (predicates.hpp) compute
+// through it; edgeland::arith may change without notice. Do not include it yourself.
+//
 // Every construction in the kernel computes through `Checked<T>`. The coordinate bound
 // (point.hpp) is chosen so that no operation can leave its type for in-range input; the
 // proofs in proofs/ show it for every formula in formulas.hpp, instantiated with a symbolic

@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "edgeland/kernel/bbox.hpp"
 #include "edgeland/kernel/export.hpp"
 #include "edgeland/kernel/point.hpp"
 #include "edgeland/kernel/validate.hpp"
@@ -28,19 +29,46 @@ class EDGELAND_EXPORT InvalidInput : public Error {
   InvalidInput(Operand operand, Violation violation);
   Operand operand;
   Violation violation;
+
+ protected:
+  // For subclasses whose message says more than violation.describe() can.
+  InvalidInput(Operand operand, Violation violation, const std::string& description);
 };
 
 // The one error for a coordinate outside [-kCoordBound, kCoordBound] in an operand: an
 // InvalidInput whose violation.rule is Rule::kCoordinateOutOfRange, so it can be caught apart
 // (a game clamps a stray tool instead of reporting a broken shape) or with every other
-// invalid input. `polygon`, `vertex` and `where` repeat the violation's fields.
+// invalid input. The fields:
+//   polygon  the polygon's index in the operand (a set's member; an entry of import_polygons;
+//            a ring of normalize; 0 for a query point or a box);
+//   ring     the ring's index within that polygon: 0 the exterior, k >= 1 its hole k (only
+//            import_polygons' polygons have holes; everywhere else it is 0);
+//   vertex   the vertex's index within that ring (kNone for a box's corner);
+//   where    the offending point.
+// violation.polygon and violation.edge repeat `polygon` and `vertex` (a Violation has no ring).
+// The message names the ring when it is not 0: "invalid rings: coordinate-out-of-range:
+// polygon 1 ring 2 vertex 0 at (23 2147483648)".
 class EDGELAND_EXPORT CoordinateOutOfRange : public InvalidInput {
  public:
+  // From validate()'s violation (its polygons are single rings: ring 0).
   CoordinateOutOfRange(Operand operand, Violation violation);
-  CoordinateOutOfRange(Operand operand, std::size_t polygon, std::size_t vertex, Point64 where);
+  CoordinateOutOfRange(Operand operand, std::size_t polygon, std::size_t ring, std::size_t vertex,
+                       Point64 where);
   std::size_t polygon;
+  std::size_t ring;
   std::size_t vertex;
   Point64 where;
+};
+
+// A box operand (clip_to_box's box) with min.x > max.x or min.y > max.y while both corners are
+// in range (a corner beyond the bound is a CoordinateOutOfRange): an InvalidInput whose
+// violation.rule is Rule::kInvertedBox, violation.where = box.min. `box` is the box as given;
+// the message names both corners, e.g. "invalid clip: inverted-box: min (5 0) exceeds max
+// (0 5) in x".
+class EDGELAND_EXPORT InvalidBox : public InvalidInput {
+ public:
+  InvalidBox(Operand operand, const Box64& box);
+  Box64 box;
 };
 
 // Throws CoordinateOutOfRange for a coordinate out of range, InvalidInput for any other rule.

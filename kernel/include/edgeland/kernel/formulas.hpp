@@ -1,6 +1,10 @@
 #pragma once
 // The kernel's arithmetic, written once over a number type `W`.
 //
+// NOT API: installed only because the public inline predicates (predicates.hpp) are written
+// with these templates; edgeland::formulas may change without notice. Do not include it
+// yourself.
+//
 // The library instantiates these with arith::Checked<Int128>; proofs/ instantiates the very
 // same templates with a Z3-backed symbolic integer that asks, at every operation, whether the
 // exact value can leave the range of the machine type. Keep them branch-free: a formula that

@@ -36,6 +36,9 @@
 //   not-counter-clockwise   polygon; where = its lexicographically smallest vertex
 //   overlapping-interiors   polygon < other_polygon with an edge of each near `where`, a point
 //                           on the boundary of the common part (or a rounded crossing point)
+//   inverted-box            never reported by validate(): clip_to_box's box with min > max
+//                           (the InvalidBox error of errors.hpp holds the whole box);
+//                           where = box.min
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -54,6 +57,7 @@ enum class Rule : std::uint8_t {
   kSpike,                 // adjacent edges fold back on each other (collinear overlap)
   kNotCounterClockwise,   // signed area <= 0
   kOverlappingInteriors,  // two members of a set share interior points
+  kInvertedBox,           // a box operand with min.x > max.x or min.y > max.y (errors.hpp)
 };
 
 // Stable lower-case name of a rule, e.g. "self-intersection".

@@ -218,14 +218,18 @@ class EDGELAND_EXPORT Landscape {
   std::optional<MaterialCrossing> raycast(Point64 from, Point64 to) const;
   // The solid materials whose interiors meet the shape's interior (touching is not
   // overlapping), ascending; empty when none does. The box form is the fast path for
-  // character-sized boxes.
+  // character-sized boxes: its corners must be in range (else CoordinateOutOfRange, operand
+  // kQuery, vertex kNone, `where` the corner); a box of zero width or height, or an inverted
+  // one (min.x > max.x or min.y > max.y), has no interior and overlaps nothing: an empty
+  // answer, not an error (unlike clip_to_box, which throws InvalidBox).
   std::vector<Material> overlaps(const Box64& box) const;
   std::vector<Material> overlaps(const ValidSet& shape) const;
   // Calls visit for every polygon whose bounding box meets the closed box; stop by returning
-  // false. Order: cell by cell in tree order, canonical order within a cell.
+  // false. Order: cell by cell in tree order, canonical order within a cell. Only compares
+  // coordinates, so any box is accepted; an inverted box holds no point and meets nothing.
   void polygons_in(const Box64& box, const std::function<bool(const PolygonView&)>& visit) const;
   // Calls visit for every cell whose closed box meets the closed box (empty cells included),
-  // in tree order; stop by returning false.
+  // in tree order; stop by returning false. Any box; an inverted one meets nothing.
   void cells_in(const Box64& box, const std::function<bool(const CellView&)>& visit) const;
   // Twice the area of a material (exact), over the whole world (material 0: the empty area).
   Int128 twice_area(Material m) const;
