@@ -218,7 +218,8 @@ TEST(WktReader, EmptyGeometriesAreTheEmptySet) {
   const Ring far{{5, 5}, {6, 5}, {6, 6}};
   for (const char* text :
        {"MULTIPOLYGON (EMPTY, ((0 0, 1 0, 1 1, 0 1, 0 0)), EMPTY, ((5 5, 6 5, 6 6, 5 5)))",
-        "MULTIPOLYGON (((0 0, 1 0, 1 1, 0 1, 0 0)), EMPTY, EMPTY, ((5 5, 6 5, 6 6, 5 5)), EMPTY)"}) {
+        "MULTIPOLYGON (((0 0, 1 0, 1 1, 0 1, 0 0)), EMPTY, EMPTY, ((5 5, 6 5, 6 6, 5 5)), "
+        "EMPTY)"}) {
     const WktGeometry g = read_wkt(text);
     ASSERT_EQ(g.polygons.size(), 2u) << text;
     EXPECT_EQ(g.polygons[0].exterior, square) << text;

@@ -41,8 +41,8 @@ PolygonSet concat(PolygonSet a, const PolygonSet& b) {
 
 std::string law_failure(const std::string& law, const OperandPair& p, const Rational& lhs,
                         const Rational& rhs, const Rational& bound) {
-  return law + ": " + lhs.str() + " vs " + rhs.str() + " (allowed " + bound.str() + ")\n  A = " +
-         to_wkt(p.a) + "\n  B = " + to_wkt(p.b);
+  return law + ": " + lhs.str() + " vs " + rhs.str() + " (allowed " + bound.str() +
+         ")\n  A = " + to_wkt(p.a) + "\n  B = " + to_wkt(p.b);
 }
 
 // A - B and A * B are computed from the same input edges, so together they must form a valid
@@ -54,9 +54,8 @@ RC_GTEST_PROP(ClipLaws, IntersectionAndDifferencePartitionTheSubject, ()) {
   const PolygonSet diff = run(ClipOp::kDifference, p.a, p.b);
   const ValidationReport v = validate(concat(inter, diff));
   if (!v.ok())
-    RC_FAIL("A*B and A-B overlap: " + v.violations.front().describe() + "\n  A = " +
-            to_wkt(p.a) + "\n  B = " + to_wkt(p.b) + "\n  A*B = " + to_wkt(inter) +
-            "\n  A-B = " + to_wkt(diff));
+    RC_FAIL("A*B and A-B overlap: " + v.violations.front().describe() + "\n  A = " + to_wkt(p.a) +
+            "\n  B = " + to_wkt(p.b) + "\n  A*B = " + to_wkt(inter) + "\n  A-B = " + to_wkt(diff));
   const Rational bound =
       slack(ClipOp::kIntersection, p.a, p.b) + slack(ClipOp::kDifference, p.a, p.b);
   const Rational lhs = area(inter) + area(diff), rhs = area(p.a);
@@ -71,8 +70,7 @@ RC_GTEST_PROP(ClipLaws, UnionIsTheSumOfBothDifferencesAndTheIntersection, ()) {
   const Rational parts = area(run(ClipOp::kDifference, p.a, p.b)) +
                          area(run(ClipOp::kIntersection, p.a, p.b)) +
                          area(run(ClipOp::kDifference, p.b, p.a));
-  const Rational bound = slack(ClipOp::kUnion, p.a, p.b) +
-                         slack(ClipOp::kDifference, p.a, p.b) +
+  const Rational bound = slack(ClipOp::kUnion, p.a, p.b) + slack(ClipOp::kDifference, p.a, p.b) +
                          slack(ClipOp::kIntersection, p.a, p.b) +
                          slack(ClipOp::kDifference, p.b, p.a);
   if (abs(Rational(u - parts)) > bound)
@@ -94,8 +92,8 @@ RC_GTEST_PROP(ClipLaws, XorIsUnionMinusIntersection, ()) {
 // The output is a function of the inputs: the same call twice gives the same bytes.
 RC_GTEST_PROP(ClipLaws, EveryOperationIsDeterministic, ()) {
   const OperandPair p = *gen::operand_pair();
-  const ClipOp op = *rc::gen::element(ClipOp::kUnion, ClipOp::kIntersection,
-                                      ClipOp::kDifference, ClipOp::kXor);
+  const ClipOp op =
+      *rc::gen::element(ClipOp::kUnion, ClipOp::kIntersection, ClipOp::kDifference, ClipOp::kXor);
   RC_ASSERT(run(op, p.a, p.b) == run(op, p.a, p.b));
 }
 
@@ -112,8 +110,8 @@ RC_GTEST_PROP(ClipLaws, OperationsWithItselfAndWithTheEmptySet, ()) {
   const PolygonSet canon = canonical_form(a);
   auto expect = [&](const char* law, const PolygonSet& got, const PolygonSet& want) {
     if (got != want)
-      RC_FAIL(std::string(law) + "\n  A = " + to_wkt(a) + "\n  got  " + to_wkt(got) +
-              "\n  want " + to_wkt(want));
+      RC_FAIL(std::string(law) + "\n  A = " + to_wkt(a) + "\n  got  " + to_wkt(got) + "\n  want " +
+              to_wkt(want));
   };
   expect("A + {} = canonical(A)", run(ClipOp::kUnion, a, none), canon);
   expect("{} + A = canonical(A)", run(ClipOp::kUnion, none, a), canon);
@@ -148,8 +146,8 @@ RC_GTEST_PROP(ClipLaws, RepeatingAnOperationWithTheSameClipIsStable, ()) {
   const PolygonSet twice = run(op, once, p.b);
   const Rational bound = slack(op, once, p.b) + band(op, p.a, p.b);
   if (abs(Rational(area(twice) - area(once))) > bound)
-    RC_FAIL(law_failure(std::string("(A op B) op B = A op B, op = ") + op_name(op), p,
-                        area(twice), area(once), bound));
+    RC_FAIL(law_failure(std::string("(A op B) op B = A op B, op = ") + op_name(op), p, area(twice),
+                        area(once), bound));
 }
 
 }  // namespace

@@ -118,8 +118,8 @@ TEST(ChainedEdges, NestedRingsUnderEveryFillRule) {
   };
   const std::vector<Ring> rings{dotted(0, 100, true), dotted(20, 80, false), dotted(40, 60, true)};
   const Int128 filled = 2 * (100 * 100 - 60 * 60 + 20 * 20);  // twice the area
-  for (FillRule rule : {FillRule::kEvenOdd, FillRule::kNonZero, FillRule::kPositive,
-                        FillRule::kNegative}) {
+  for (FillRule rule :
+       {FillRule::kEvenOdd, FillRule::kNonZero, FillRule::kPositive, FillRule::kNegative}) {
     const Outcome o = run_normalize(rings, rule);
     ASSERT_TRUE(o.ok()) << o.error;
     EXPECT_EQ(twice_area(o.result->polygons), rule == FillRule::kNegative ? Int128(0) : filled)

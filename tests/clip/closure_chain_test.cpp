@@ -68,8 +68,10 @@ Rational area(const PolygonSet& s) { return Rational(BigInt(to_string(twice_area
 // Area bound of the 1.5-band around the boundary of r within the tool's box grown by 4.
 Rational local_band(const ExactRegion& r, const Polygon& tool) {
   Box64 w = *bounding_box(tool);
-  const Polygon window{{w.min.x - 4, w.min.y - 4}, {w.max.x + 4, w.min.y - 4},
-                       {w.max.x + 4, w.max.y + 4}, {w.min.x - 4, w.max.y + 4}};
+  const Polygon window{{w.min.x - 4, w.min.y - 4},
+                       {w.max.x + 4, w.min.y - 4},
+                       {w.max.x + 4, w.max.y + 4},
+                       {w.min.x - 4, w.max.y + 4}};
   const ExactRegion local = r.apply(ClipOp::kIntersection, ExactRegion::of(window));
   return 3 * Rational(local.perimeter_ceil()) +
          Rational(99, 14) * Rational(local.boundary_cycles());
@@ -88,7 +90,8 @@ class ToolMaker {
     while (true) {
       const std::vector<Point64> verts = all_vertices(world);
       Point64 c{uniform(0, 512), uniform(0, 512)};
-      if (!verts.empty() && uniform(0, 2) == 0) c = verts[static_cast<std::size_t>(uniform(0, std::int64_t(verts.size()) - 1))];
+      if (!verts.empty() && uniform(0, 2) == 0)
+        c = verts[static_cast<std::size_t>(uniform(0, std::int64_t(verts.size()) - 1))];
       const std::int64_t r = uniform(2, 30);
       Polygon p;
       switch (uniform(0, 4)) {
@@ -112,7 +115,8 @@ class ToolMaker {
           break;
         }
         default: {  // needle triangle from an existing vertex
-          p = make_ccw({c, {c.x + uniform(-4 * r, 4 * r), c.y + uniform(-4 * r, 4 * r)},
+          p = make_ccw({c,
+                        {c.x + uniform(-4 * r, 4 * r), c.y + uniform(-4 * r, 4 * r)},
                         {c.x + uniform(-4 * r, 4 * r), c.y + uniform(-4 * r, 4 * r)}});
           break;
         }
@@ -123,8 +127,10 @@ class ToolMaker {
 
   ClipOp op() {
     const std::int64_t k = uniform(0, 99);
-    return k < 55 ? ClipOp::kDifference : k < 80 ? ClipOp::kUnion : k < 95 ? ClipOp::kXor
-                                                                        : ClipOp::kIntersection;
+    return k < 55   ? ClipOp::kDifference
+           : k < 80 ? ClipOp::kUnion
+           : k < 95 ? ClipOp::kXor
+                    : ClipOp::kIntersection;
   }
 
   // For intersection: a big convex polygon covering most of the world (it trims corners).
@@ -151,7 +157,7 @@ TEST(ClipClosureChain, ContinuousCarvingStaysValidAndTracksTheExactChain) {
     for (int j = 0; j < 4; ++j) all.push_back({i, j});
   PolygonSet world = grid_cells({0, 0}, 128, all);
   ExactRegion world_exact = ExactRegion::of(world);  // region of the current output
-  ExactRegion chain = world_exact;                    // E_k: the exact chain
+  ExactRegion chain = world_exact;                   // E_k: the exact chain
   Rational accumulated = 0, measured = 0;
   std::size_t max_vertices = 0, snapped_steps = 0, holes = 0;
   const auto t0 = std::chrono::steady_clock::now();
@@ -174,9 +180,8 @@ TEST(ClipClosureChain, ContinuousCarvingStaysValidAndTracksTheExactChain) {
     // tool's box lie on the boundary of their unchanged exact pieces: only the others are
     // measured (the cost of the vertex check then stays proportional to the change).
     const ExactRegion tool_exact = oracle(k, "tool", [&] { return ExactRegion::of(tool); });
-    const ExactCase step = oracle(k, "exact_clip", [&] {
-      return exact_clip(op, world, tools, world_exact, tool_exact);
-    });
+    const ExactCase step = oracle(
+        k, "exact_clip", [&] { return exact_clip(op, world, tools, world_exact, tool_exact); });
     Box64 near = *bounding_box(tool);
     near.min = {near.min.x - 3, near.min.y - 3};
     near.max = {near.max.x + 3, near.max.y + 3};
@@ -194,13 +199,12 @@ TEST(ClipClosureChain, ContinuousCarvingStaysValidAndTracksTheExactChain) {
     });
     ASSERT_TRUE(rep.ok()) << rep.failure;
 
-    const ExactRegion next_exact = oracle(k, "region of the output", [&] {
-      return ExactRegion::of(next);
-    });
-    const Rational step_error = oracle(k, "output xor exact", [&] {
-      return next_exact.apply(ClipOp::kXor, step.result).area();
-    });
-    const Rational step_band = oracle(k, "local band", [&] { return local_band(step.result, tool); });
+    const ExactRegion next_exact =
+        oracle(k, "region of the output", [&] { return ExactRegion::of(next); });
+    const Rational step_error = oracle(
+        k, "output xor exact", [&] { return next_exact.apply(ClipOp::kXor, step.result).area(); });
+    const Rational step_band =
+        oracle(k, "local band", [&] { return local_band(step.result, tool); });
     ASSERT_LE(step_error, step_band)
         << "step " << k << ": output xor exact exceeds the local band\n  "
         << describe_case(op, world, tools) << "\n  output = " << to_wkt(next);
@@ -220,13 +224,11 @@ TEST(ClipClosureChain, ContinuousCarvingStaysValidAndTracksTheExactChain) {
                 << vertex_count(world) << " vertices, drift "
                 << abs(Rational(area(world) - chain.area())).convert_to<double>() << std::endl;
   }
-  const Rational final_sym = oracle(steps, "final xor", [&] {
-    return world_exact.apply(ClipOp::kXor, chain).area();
-  });
+  const Rational final_sym =
+      oracle(steps, "final xor", [&] { return world_exact.apply(ClipOp::kXor, chain).area(); });
   EXPECT_LE(final_sym, measured) << "triangle inequality of the exact reference itself";
   const OracleFallbacks fallbacks = fallbacks_since(fallbacks_before);
-  const double secs =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::cout << "[chain] seed " << seed << ": " << steps << " steps in " << secs << " s, "
             << snapped_steps << " steps snapped, " << holes << " holes split, final "
             << world.size() << " polygons / " << vertex_count(world) << " vertices (max "
@@ -234,9 +236,9 @@ TEST(ClipClosureChain, ContinuousCarvingStaysValidAndTracksTheExactChain) {
             << abs(Rational(area(world) - chain.area())).convert_to<double>()
             << ", area(world xor exact chain) = " << final_sym.convert_to<double>()
             << ", accumulated bound = " << accumulated.convert_to<double>()
-            << "; oracle fallbacks (CGAL failures got past): " << fallbacks.rebuilt
-            << " rebuilt, " << fallbacks.split << " split, " << fallbacks.part_by_part
-            << " part by part, " << fallbacks.members_in_halves << " members in halves\n";
+            << "; oracle fallbacks (CGAL failures got past): " << fallbacks.rebuilt << " rebuilt, "
+            << fallbacks.split << " split, " << fallbacks.part_by_part << " part by part, "
+            << fallbacks.members_in_halves << " members in halves\n";
 }
 
 }  // namespace

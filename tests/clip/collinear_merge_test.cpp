@@ -72,7 +72,8 @@ rc::Gen<std::vector<Ring>> stacked_rings() {
       const int copies = *rc::gen::inRange(1, 6);
       for (int c = 0; c < copies; ++c) {
         Ring copy = base;
-        const std::size_t e = static_cast<std::size_t>(*gen::coord(0, std::int64_t(base.size()) - 1));
+        const std::size_t e =
+            static_cast<std::size_t>(*gen::coord(0, std::int64_t(base.size()) - 1));
         const Point64 a = base[e], z = base[(e + 1) % base.size()];
         const std::int64_t g = std::gcd(z.x - a.x, z.y - a.y);
         const std::int64_t k = *gen::coord(-2, 2);  // steps of the edge's smallest lattice vector
@@ -104,7 +105,8 @@ RC_GTEST_PROP(CollinearStacks, MergedStacksMeetTheContractOfTheExactFill, ()) {
                                 " rings = " + to_wkt(PolygonSet(rings.begin(), rings.end()));
   const ClipResult merged = run_merging_every_stack(rings, rule);
   const ValidationReport report = validate(merged.polygons, 1);
-  if (!report.ok()) RC_FAIL("invalid: " + report.violations.front().describe() + "\n  " + described);
+  if (!report.ok())
+    RC_FAIL("invalid: " + report.violations.front().describe() + "\n  " + described);
   const FilledRegion exact = filled_region(rings, rule);
   RC_ASSERT(exact.region.area() == exact.trapezoid_area);
   std::vector<Point64> inputs;

@@ -99,12 +99,10 @@ TEST(ImportToValidSet, SquareWithAHoleGivesImportPolygonsPieces) {
 TEST(ClipIntersection, FanOfTwelveTrianglesSharingOneCorner) {
   // Directions about 15 degrees apart, counter-clockwise from +x; triangle k spans the sector
   // from direction 2k to 2k + 1, so the sectors are disjoint.
-  const std::array<Point64, 24> d{{{100, 0},   {97, 26},    {87, 50},    {71, 71},
-                                   {50, 87},   {26, 97},    {0, 100},    {-26, 97},
-                                   {-50, 87},  {-71, 71},   {-87, 50},   {-97, 26},
-                                   {-100, 0},  {-97, -26},  {-87, -50},  {-71, -71},
-                                   {-50, -87}, {-26, -97},  {0, -100},   {26, -97},
-                                   {50, -87},  {71, -71},   {87, -50},   {97, -26}}};
+  const std::array<Point64, 24> d{
+      {{100, 0},   {97, 26},   {87, 50},  {71, 71},  {50, 87},  {26, 97},   {0, 100},   {-26, 97},
+       {-50, 87},  {-71, 71},  {-87, 50}, {-97, 26}, {-100, 0}, {-97, -26}, {-87, -50}, {-71, -71},
+       {-50, -87}, {-26, -97}, {0, -100}, {26, -97}, {50, -87}, {71, -71},  {87, -50},  {97, -26}}};
   PolygonSet fan;
   for (std::size_t k = 0; k < 12; ++k) fan.push_back({{0, 0}, d[2 * k], d[2 * k + 1]});
   ASSERT_TRUE(validate(fan).ok());

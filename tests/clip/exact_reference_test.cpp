@@ -29,8 +29,10 @@ TEST(ExactReference, AreaPerimeterAndLocationOfASquareWithAHole) {
 
 TEST(ExactReference, PerimeterBoundRoundsEachIrrationalEdgeUp) {
   // Edges 3, 4 and 5: exact. A unit right triangle: 1 + 1 + ceil(sqrt 2) = 4.
-  EXPECT_EQ(ExactRegion::of(parse_wkt("POLYGON ((0 0, 4 0, 0 3, 0 0))")).perimeter_ceil(), BigInt(12));
-  EXPECT_EQ(ExactRegion::of(parse_wkt("POLYGON ((0 0, 1 0, 0 1, 0 0))")).perimeter_ceil(), BigInt(4));
+  EXPECT_EQ(ExactRegion::of(parse_wkt("POLYGON ((0 0, 4 0, 0 3, 0 0))")).perimeter_ceil(),
+            BigInt(12));
+  EXPECT_EQ(ExactRegion::of(parse_wkt("POLYGON ((0 0, 1 0, 0 1, 0 0))")).perimeter_ceil(),
+            BigInt(4));
 }
 
 // Found by the closure chain: A's members touch at vertices to form a ring around a hole that
@@ -66,8 +68,8 @@ TEST(ExactReference, LocatesAnIslandInsideAHoleOfTouchingMembers) {
 // a case is tagged and its other ways are still checked.
 RC_GTEST_PROP(ExactReference, EveryFallbackGivesTheSameRegion, ()) {
   const OperandPair p = *gen::operand_pair();
-  const ClipOp op = *rc::gen::element(ClipOp::kUnion, ClipOp::kIntersection,
-                                      ClipOp::kDifference, ClipOp::kXor);
+  const ClipOp op =
+      *rc::gen::element(ClipOp::kUnion, ClipOp::kIntersection, ClipOp::kDifference, ClipOp::kXor);
   const ExactRegion a = ExactRegion::of(p.a), b = ExactRegion::of(p.b);
   const ExactRegion direct = a.apply(op, b);
   auto same = [](const ExactRegion& x, const ExactRegion& y) {

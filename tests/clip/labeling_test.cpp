@@ -74,8 +74,8 @@ RC_GTEST_PROP(Labeling, OwnerModesNameThePolygonCoveringEachSide, ()) {
       RC_FAIL("a snapped operand covers the left of " + stages::str_half_edge(a.graph, h) +
               " twice");
     RC_ASSERT(said(a.graph, h, owner[h]) == said(a.graph, h, *want));
-    RC_ASSERT(owner_and_count[h].s[0] == want->s[0]);
-    RC_ASSERT(owner_and_count[h].s[1] == brute.cover(q, detail::kClipChannel));
+    RC_ASSERT(owner_and_count[h].by_channel[0] == want->by_channel[0]);
+    RC_ASSERT(owner_and_count[h].by_channel[1] == brute.cover(q, detail::kClipChannel));
   }
 }
 
@@ -126,7 +126,7 @@ TEST(Labeling, NestedSquaresWindTwiceInside) {
     const Point64 towards_centre{10 - mid2.x, 10 - mid2.y};
     const bool inside_on_left = Int128(d.x) * towards_centre.y - Int128(d.y) * towards_centre.x > 0;
     const int want = inner ? (inside_on_left ? 2 : 1) : (inside_on_left ? 1 : 0);
-    EXPECT_EQ(left[h].s[0], want) << "half-edge " << h;
+    EXPECT_EQ(left[h].by_channel[0], want) << "half-edge " << h;
   }
   // As two members of one operand they overlap; in two operands they do not.
   EXPECT_FALSE(detail::label_sides(a.graph, LabelMode::kOwner, left, true));
@@ -150,7 +150,7 @@ TEST(Labeling, NeighboursSharingAnEdgePassTheSingleCoverCheck) {
     const Point64 o = valid.graph.vertices[valid.graph.origin(h)], t = valid.graph.first_step(h);
     if (o.x != 2 || t.x != 2 || std::max(o.y, t.y) > 2) continue;
     ++seen;
-    EXPECT_EQ(left[h].s[0], t.y > o.y ? 0 : 1);  // going north, west is on the left
+    EXPECT_EQ(left[h].by_channel[0], t.y > o.y ? 0 : 1);  // going north, west is on the left
   }
   EXPECT_EQ(seen, 2);
   const stages::Arrangement overlapping({left_square, {{1, 0}, {3, 0}, {3, 2}, {1, 2}}}, {}, false);

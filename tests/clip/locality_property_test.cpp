@@ -15,9 +15,9 @@ void check_op(ClipOp op, const OperandPair& p, Locality reading) {
   const Outcome o = run_clip(op, p.a, p.b);
   if (!o.ok()) RC_FAIL(o.error);
   for (int side = 0; side < 2; ++side) {
-    const std::string f =
-        side == 0 ? check_locality(op, p.a, p.b, true, o.result->polygons, reading)
-                  : check_locality(op, p.b, p.a, false, o.result->polygons, reading);
+    const std::string f = side == 0
+                              ? check_locality(op, p.a, p.b, true, o.result->polygons, reading)
+                              : check_locality(op, p.b, p.a, false, o.result->polygons, reading);
     if (!f.empty())
       RC_FAIL(std::string(side == 0 ? "subject " : "clip ") + f + "\n  " + op_name(op) +
               "\n  A = " + to_wkt(p.a) + "\n  B = " + to_wkt(p.b) +
@@ -70,9 +70,9 @@ RC_GTEST_PROP(ClipLocality, FarEdgesOfInputsWithoutSubpixelFeaturesAreKeptAsTheO
   p.a = keep_fat(p.a);
   p.b = keep_fat(p.b);
   RC_TAG(p.scenario);
-  check_op(*rc::gen::element(ClipOp::kUnion, ClipOp::kIntersection, ClipOp::kDifference,
-                             ClipOp::kXor),
-           p, Locality::kOperation);
+  check_op(
+      *rc::gen::element(ClipOp::kUnion, ClipOp::kIntersection, ClipOp::kDifference, ClipOp::kXor),
+      p, Locality::kOperation);
 }
 
 RC_GTEST_PROP(ClipLocality, UnionKeepsFarEdgesWholeOrDropsThem, ()) {

@@ -2,8 +2,8 @@
 // around two nearby centres), so that long spikes of one cross many spikes of the other. These
 // take the paths snap rounding uses only for many hot pixels (clip/src/segment_grid.hpp: every
 // hot pixel and vertex asks the grid for the segments near it; the re-check of moved fragments
-// walks them through a grid of their own), which small property-test inputs rarely reach. Every result is checked
-// against the exact CGAL reference (accuracy_contract.hpp).
+// walks them through a grid of their own), which small property-test inputs rarely reach. Every
+// result is checked against the exact CGAL reference (accuracy_contract.hpp).
 #include <gtest/gtest.h>
 
 #include <random>

@@ -54,8 +54,10 @@ rc::Gen<std::vector<Ring>> messy_rings() {
     for (int i = 0; i < n; ++i) rings.push_back(*messy_ring({0, 0}, r));
     const auto box = bounding_box(PolygonSet(rings.begin(), rings.end()));
     if (box && *gen::coord(0, 7) == 0) {  // move into a corner of the coordinate range
-      const std::int64_t dx = *rc::gen::element(kCoordBound - box->max.x, -kCoordBound - box->min.x);
-      const std::int64_t dy = *rc::gen::element(kCoordBound - box->max.y, -kCoordBound - box->min.y);
+      const std::int64_t dx =
+          *rc::gen::element(kCoordBound - box->max.x, -kCoordBound - box->min.x);
+      const std::int64_t dy =
+          *rc::gen::element(kCoordBound - box->max.y, -kCoordBound - box->min.y);
       for (Ring& ring : rings)
         for (Point64& p : ring) p = {p.x + dx, p.y + dy};
     }
@@ -74,8 +76,8 @@ void check_fill(FillRule rule) {
   for (const Ring& r : rings) inputs.insert(inputs.end(), r.begin(), r.end());
   const ContractReport rep =
       check_contract(exact_region(exact.region), *o.result, inputs,
-                     std::string("normalize ") + fill_rule_name(rule) + " rings = " +
-                         to_wkt(PolygonSet(rings.begin(), rings.end())));
+                     std::string("normalize ") + fill_rule_name(rule) +
+                         " rings = " + to_wkt(PolygonSet(rings.begin(), rings.end())));
   if (!rep.ok()) RC_FAIL(rep.failure);
 }
 
@@ -96,7 +98,8 @@ RC_GTEST_PROP(ClipNormalize, NegativeFillMeetsTheAccuracyContract, ()) {
 // every rule but kNegative gives exactly its region (kNegative: exactly the region of the
 // reversed rings). A single valid polygon comes back as its canonical form.
 RC_GTEST_PROP(ClipNormalize, ValidSetsKeepTheirExactRegion, ()) {
-  const PolygonSet a = *gen::polygon_set({0, 0}, *rc::gen::elementOf(std::vector<std::int64_t>{4, 40}));
+  const PolygonSet a =
+      *gen::polygon_set({0, 0}, *rc::gen::elementOf(std::vector<std::int64_t>{4, 40}));
   const FillRule rule = *rc::gen::element(FillRule::kEvenOdd, FillRule::kNonZero,
                                           FillRule::kPositive, FillRule::kNegative);
   std::vector<Ring> rings(a.begin(), a.end());
@@ -105,10 +108,12 @@ RC_GTEST_PROP(ClipNormalize, ValidSetsKeepTheirExactRegion, ()) {
   const Outcome o = run_normalize(rings, rule);
   if (!o.ok()) RC_FAIL(o.error);
   RC_ASSERT(o.result->stats.vertices_snapped == 0u);
-  const Rational diff = ExactRegion::of(o.result->polygons).apply(ClipOp::kXor, ExactRegion::of(a)).area();
+  const Rational diff =
+      ExactRegion::of(o.result->polygons).apply(ClipOp::kXor, ExactRegion::of(a)).area();
   if (diff != 0)
-    RC_FAIL(std::string("normalize ") + fill_rule_name(rule) + " changed the region of a valid set by " +
-            diff.str() + "\n  A = " + to_wkt(a) + "\n  output = " + to_wkt(o.result->polygons));
+    RC_FAIL(std::string("normalize ") + fill_rule_name(rule) +
+            " changed the region of a valid set by " + diff.str() + "\n  A = " + to_wkt(a) +
+            "\n  output = " + to_wkt(o.result->polygons));
   if (a.size() == 1) RC_ASSERT(o.result->polygons == canonical_form(a));
 }
 
@@ -133,8 +138,10 @@ RC_GTEST_PROP(ClipImportPolygons, MeetsTheContractOfTheOgcRegion, ()) {
   std::vector<Point64> inputs;
   for (const Ring& ring : rings) inputs.insert(inputs.end(), ring.begin(), ring.end());
   std::string described = "import_polygons:";
-  for (const auto& polygon : polygons) described += " " + to_wkt(PolygonSet(polygon.begin(), polygon.end()));
-  const ContractReport rep = check_contract(exact_region(exact.region), *o.result, inputs, described);
+  for (const auto& polygon : polygons)
+    described += " " + to_wkt(PolygonSet(polygon.begin(), polygon.end()));
+  const ContractReport rep =
+      check_contract(exact_region(exact.region), *o.result, inputs, described);
   if (!rep.ok()) RC_FAIL(rep.failure);
 }
 
@@ -175,8 +182,9 @@ TEST(ClipImportPolygons, PentagramAndValidPolygonWithHole) {
   const Ring square{{0, 0}, {10, 0}, {10, 10}, {0, 10}};
   const Ring hole{{2, 2}, {2, 8}, {8, 8}, {8, 2}};
   EXPECT_EQ(imported_area({{square, hole}}), Rational(100 - 36));
-  EXPECT_EQ(imported_area({{Ring(square.rbegin(), square.rend()), Ring(hole.rbegin(), hole.rend())}}),
-            Rational(100 - 36));
+  EXPECT_EQ(
+      imported_area({{Ring(square.rbegin(), square.rend()), Ring(hole.rbegin(), hole.rend())}}),
+      Rational(100 - 36));
 }
 
 // Rings given closed (last point = first, as WKT writes them) or with repeated points describe

@@ -3,6 +3,8 @@
 // with four lanes, 11-bit digits with two, lanes of unequal length); keys are clustered (long
 // runs of one digit, what the lanes are for), spread over all 64 bits, or few and repeated.
 // counting_sort, beside it, against std::stable_sort by id.
+#include "radix_sort.hpp"
+
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
@@ -10,8 +12,6 @@
 #include <cstdint>
 #include <utility>
 #include <vector>
-
-#include "radix_sort.hpp"
 
 namespace edgeland::detail {
 namespace {
@@ -32,12 +32,12 @@ void expect_sorted_permutation(std::vector<Item> items) {
 }
 
 rc::Gen<std::uint64_t> key() {
-  return rc::gen::oneOf(rc::gen::arbitrary<std::uint64_t>(),
-                        rc::gen::inRange<std::uint64_t>(0, 4),
-                        rc::gen::map(rc::gen::inRange<std::uint64_t>(0, 1 << 20), [](std::uint64_t v) {
-                          // Two 32-bit halves, as point keys are: high bits shared.
-                          return (std::uint64_t{0x80000000u} + (v >> 10)) << 32 | (0x7fff0000u + (v & 1023));
-                        }));
+  return rc::gen::oneOf(
+      rc::gen::arbitrary<std::uint64_t>(), rc::gen::inRange<std::uint64_t>(0, 4),
+      rc::gen::map(rc::gen::inRange<std::uint64_t>(0, 1 << 20), [](std::uint64_t v) {
+        // Two 32-bit halves, as point keys are: high bits shared.
+        return (std::uint64_t{0x80000000u} + (v >> 10)) << 32 | (0x7fff0000u + (v & 1023));
+      }));
 }
 
 RC_GTEST_PROP(RadixSort, SortsByKeyAndKeepsEveryElement, ()) {
@@ -51,8 +51,8 @@ RC_GTEST_PROP(RadixSort, SortsByKeyAndKeepsEveryElement, ()) {
 
 RC_GTEST_PROP(CountingSort, EqualsAStableSortById, ()) {
   const auto buckets = *rc::gen::inRange<std::size_t>(1, 2000);
-  const auto ids = *rc::gen::container<std::vector<std::uint64_t>>(
-      rc::gen::inRange<std::uint64_t>(0, buckets));
+  const auto ids =
+      *rc::gen::container<std::vector<std::uint64_t>>(rc::gen::inRange<std::uint64_t>(0, buckets));
   std::vector<Item> items(ids.size());
   for (std::uint32_t i = 0; i < ids.size(); ++i) items[i] = {ids[i], i};
   std::vector<Item> expected = items;

@@ -91,10 +91,11 @@ TEST(ClipLocalityRegression, EdgeTouchedByAnotherMembersVertexMaySplitThere) {
 // kPositive, returned nothing). What remains is the quadrilateral (63 19) (64 21) (63 20)
 // (62 19), counter-clockwise, winding +1, twice-area 2; the spike adds no area.
 TEST(NormalizeRegression, RingWhoseSmallestVertexIsOnACancelledSpike) {
-  const std::vector<Ring> rings{{{63, 19}, {64, 21}, {-64, -64}, {64, 21}, {63, 20}, {62, 19}, {62, 19}},
-                                {{62, 19}, {62, 19}, {62, 19}}};
-  for (FillRule rule : {FillRule::kEvenOdd, FillRule::kNonZero, FillRule::kPositive,
-                        FillRule::kNegative}) {
+  const std::vector<Ring> rings{
+      {{63, 19}, {64, 21}, {-64, -64}, {64, 21}, {63, 20}, {62, 19}, {62, 19}},
+      {{62, 19}, {62, 19}, {62, 19}}};
+  for (FillRule rule :
+       {FillRule::kEvenOdd, FillRule::kNonZero, FillRule::kPositive, FillRule::kNegative}) {
     const Outcome o = run_normalize(rings, rule);
     ASSERT_TRUE(o.ok()) << o.error;
     EXPECT_EQ(twice_area(o.result->polygons), rule == FillRule::kNegative ? Int128(0) : Int128(2))

@@ -35,11 +35,12 @@ TEST(ScaleShapes, LongCombTeethCrossingABaseBar) {
   // the upper half of A's, 20 wide each.
   const PolygonSet a{comb(0, 0)}, b{comb(20, kLength / 2)};
   ASSERT_TRUE(validate(a, 1).ok());
-  const Int128 area_a = Int128(kTeeth * kPitch) * kBase + Int128(kTeeth * kWidth) * (kLength - kBase);
+  const Int128 area_a =
+      Int128(kTeeth * kPitch) * kBase + Int128(kTeeth * kWidth) * (kLength - kBase);
   // A's teeth under B's bar (the first tooth only from x = 20), then A's and B's teeth side by
   // side from B's teeth's foot to A's tips.
-  const Int128 area_common = Int128(kBase) * (kWidth * kTeeth - 20) +
-                             Int128(20 * kTeeth) * (kLength / 2 - kBase);
+  const Int128 area_common =
+      Int128(kBase) * (kWidth * kTeeth - 20) + Int128(20 * kTeeth) * (kLength / 2 - kBase);
   const Outcome common = run_clip(ClipOp::kIntersection, a, b);
   ASSERT_TRUE(common.ok()) << common.error.substr(0, 300);
   EXPECT_EQ(common.result->stats.vertices_snapped, 0u);

@@ -29,14 +29,18 @@ rc::Gen<std::int64_t> coordinate() {
 }
 
 rc::Gen<Point64> point() {
-  return rc::gen::apply([](std::int64_t x, std::int64_t y) { return Point64{x, y}; }, coordinate(),
-                        coordinate());
+  return rc::gen::apply(
+      [](std::int64_t x, std::int64_t y) {
+        return Point64{x, y};
+      },
+      coordinate(), coordinate());
 }
 
 rc::Gen<Box64> box() {
   return rc::gen::apply(
       [](Point64 a, Point64 b) {
-        return Box64{{std::min(a.x, b.x), std::min(a.y, b.y)}, {std::max(a.x, b.x), std::max(a.y, b.y)}};
+        return Box64{{std::min(a.x, b.x), std::min(a.y, b.y)},
+                     {std::max(a.x, b.x), std::max(a.y, b.y)}};
       },
       point(), point());
 }
@@ -59,19 +63,23 @@ RC_GTEST_PROP(BoxGrid, ReportsEveryOverlappingPairExactlyOnce, ()) {
 
 // Many small boxes in a patch (the grid's own case, not its fallback to the sweep).
 RC_GTEST_PROP(BoxGrid, ReportsEveryPairAmongManySmallBoxes, ()) {
-  const auto corners = *rc::gen::container<std::vector<Point64>>(
-      rc::gen::apply([](std::int64_t x, std::int64_t y) { return Point64{x, y}; },
-                     rc::gen::inRange<std::int64_t>(-500, 500), rc::gen::inRange<std::int64_t>(-500, 500)));
+  const auto corners = *rc::gen::container<std::vector<Point64>>(rc::gen::apply(
+      [](std::int64_t x, std::int64_t y) {
+        return Point64{x, y};
+      },
+      rc::gen::inRange<std::int64_t>(-500, 500), rc::gen::inRange<std::int64_t>(-500, 500)));
   std::vector<Box64> boxes;
   for (std::size_t i = 0; i < corners.size(); ++i) {
-    const std::int64_t w = static_cast<std::int64_t>(i * 7 % 31), h = static_cast<std::int64_t>(i * 13 % 23);
+    const std::int64_t w = static_cast<std::int64_t>(i * 7 % 31),
+                       h = static_cast<std::int64_t>(i * 13 % 23);
     boxes.push_back({corners[i], {corners[i].x + w, corners[i].y + h}});
   }
   Pairs expected, got;
   for (std::uint32_t i = 0; i < boxes.size(); ++i)
     for (std::uint32_t j = i + 1; j < boxes.size(); ++j)
       if (boxes[i].overlaps(boxes[j])) expected.emplace_back(i, j);
-  for_each_overlapping_pair_in_grid(boxes, [&](std::uint32_t i, std::uint32_t j) { got.emplace_back(i, j); });
+  for_each_overlapping_pair_in_grid(
+      boxes, [&](std::uint32_t i, std::uint32_t j) { got.emplace_back(i, j); });
   std::sort(got.begin(), got.end());
   RC_ASSERT(got == expected);
 }
@@ -111,10 +119,13 @@ RC_GTEST_PROP(SegmentIndex, ProposesEveryBoxOverlappingPairButRunNeighbours, ())
   std::vector<std::uint32_t> next;
   for (int size : ring_sizes) {
     std::vector<Point64> pts = *rc::gen::container<std::vector<Point64>>(
-        static_cast<std::size_t>(size), rc::gen::oneOf(point(), rc::gen::apply([](std::int64_t x, std::int64_t y) {
-                                               return Point64{x, y};
-                                             }, rc::gen::inRange<std::int64_t>(0, 8),
-                                             rc::gen::inRange<std::int64_t>(0, 8))));
+        static_cast<std::size_t>(size),
+        rc::gen::oneOf(point(), rc::gen::apply(
+                                    [](std::int64_t x, std::int64_t y) {
+                                      return Point64{x, y};
+                                    },
+                                    rc::gen::inRange<std::int64_t>(0, 8),
+                                    rc::gen::inRange<std::int64_t>(0, 8))));
     pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
     while (pts.size() > 1 && pts.front() == pts.back()) pts.pop_back();
     if (pts.size() < 2) continue;
@@ -161,8 +172,11 @@ RC_GTEST_PROP(SegmentIndex, ProposesEveryBoxOverlappingPairButRunNeighbours, ())
 // proposed, and no pair twice.
 // A point of the small patch [-12, 12]^2.
 rc::Gen<Point64> patch_point() {
-  return rc::gen::apply([](std::int64_t x, std::int64_t y) { return Point64{x, y}; },
-                        rc::gen::inRange<std::int64_t>(-12, 13), rc::gen::inRange<std::int64_t>(-12, 13));
+  return rc::gen::apply(
+      [](std::int64_t x, std::int64_t y) {
+        return Point64{x, y};
+      },
+      rc::gen::inRange<std::int64_t>(-12, 13), rc::gen::inRange<std::int64_t>(-12, 13));
 }
 
 // `small`: `crowded` segments on the patch; otherwise up to 60 with ends on the patch or
@@ -170,8 +184,11 @@ rc::Gen<Point64> patch_point() {
 std::vector<Segment> grid_segments(bool small, std::size_t crowded) {
   const auto end = small ? patch_point() : rc::gen::oneOf(point(), patch_point());
   return *rc::gen::container<std::vector<Segment>>(
-      small ? crowded : *rc::gen::inRange<std::size_t>(0, 60),
-      rc::gen::apply([](Point64 a, Point64 b) { return Segment{a, b}; }, end, end));
+      small ? crowded : *rc::gen::inRange<std::size_t>(0, 60), rc::gen::apply(
+                                                                   [](Point64 a, Point64 b) {
+                                                                     return Segment{a, b};
+                                                                   },
+                                                                   end, end));
 }
 
 RC_GTEST_PROP(SegmentGrid, ProposesEveryMeetingPairOnce, ()) {
@@ -196,7 +213,8 @@ bool meets_box(const Segment& s, const Box64& b) {
   if (b.contains(s.a) || b.contains(s.b)) return true;
   const Point64 c[4] = {b.min, {b.max.x, b.min.y}, b.max, {b.min.x, b.max.y}};
   for (int k = 0; k < 4; ++k)
-    if (intersect(s, Segment{c[k], c[(k + 1) % 4]}).relation != SegmentRelation::kDisjoint) return true;
+    if (intersect(s, Segment{c[k], c[(k + 1) % 4]}).relation != SegmentRelation::kDisjoint)
+      return true;
   return false;
 }
 
@@ -206,8 +224,11 @@ RC_GTEST_PROP(SegmentGrid, BoxQueryVisitsEverySegmentMeetingTheBox, ()) {
   const std::vector<Segment> segs = grid_segments(*rc::gen::arbitrary<bool>(), 100);
   const SegmentGrid grid(segs);
   const auto queries = *rc::gen::container<std::vector<Box64>>(
-      20, rc::gen::oneOf(rc::gen::apply([](Point64 p) { return Box64{{p.x - 1, p.y - 1}, {p.x + 1, p.y + 1}}; },
-                                        rc::gen::oneOf(patch_point(), point())),
+      20, rc::gen::oneOf(rc::gen::apply(
+                             [](Point64 p) {
+                               return Box64{{p.x - 1, p.y - 1}, {p.x + 1, p.y + 1}};
+                             },
+                             rc::gen::oneOf(patch_point(), point())),
                          box()));
   for (const Box64& q : queries) {
     std::set<std::uint32_t> visited;
@@ -223,9 +244,11 @@ RC_GTEST_PROP(SegmentGrid, BoxQueryVisitsEverySegmentMeetingTheBox, ()) {
 // The hot-pixel set against std::set: inserts report novelty, membership survives growth and
 // clear() empties it. Points are few distinct ones (many repeats) or spread over the range.
 RC_GTEST_PROP(PointSet, AgreesWithStdSet, ()) {
-  const auto small_point = rc::gen::apply([](std::int64_t x, std::int64_t y) { return Point64{x, y}; },
-                                          rc::gen::inRange<std::int64_t>(-5, 6),
-                                          rc::gen::inRange<std::int64_t>(-5, 6));
+  const auto small_point = rc::gen::apply(
+      [](std::int64_t x, std::int64_t y) {
+        return Point64{x, y};
+      },
+      rc::gen::inRange<std::int64_t>(-5, 6), rc::gen::inRange<std::int64_t>(-5, 6));
   const auto pts = *rc::gen::container<std::vector<Point64>>(rc::gen::oneOf(small_point, point()));
   PointSet set;
   std::set<Point64> reference;
@@ -269,9 +292,14 @@ TEST(SegmentIndex, AcrossRingsOnlyLeavesOutExactlyThePairsOfOneRing) {
   add_ring({{-5, -5}, {50, -5}, {50, 3}, {-5, 3}});
   const SegmentIndex index(segs, next);
   std::set<std::pair<std::uint32_t, std::uint32_t>> all, across;
-  index.for_each_overlapping_pair([&](std::uint32_t i, std::uint32_t j) { all.insert({std::min(i, j), std::max(i, j)}); });
+  index.for_each_overlapping_pair([&](std::uint32_t i, std::uint32_t j) {
+    all.insert({std::min(i, j), std::max(i, j)});
+  });
   index.for_each_overlapping_pair(
-      [&](std::uint32_t i, std::uint32_t j) { across.insert({std::min(i, j), std::max(i, j)}); }, true);
+      [&](std::uint32_t i, std::uint32_t j) {
+        across.insert({std::min(i, j), std::max(i, j)});
+      },
+      true);
   std::size_t same_ring = 0;
   for (const auto& pair : all) {
     const bool same = ring_of[pair.first] == ring_of[pair.second];

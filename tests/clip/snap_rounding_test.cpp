@@ -8,6 +8,8 @@
 // would catch a pair it wrongly skips. The inputs are crowded on purpose: many rings of random
 // points in a small square, so that crossings round next to vertices and long segments pass
 // through the pixels of vertices that are not hot.
+#include "snap_rounding.hpp"
+
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
@@ -15,7 +17,6 @@
 #include <vector>
 
 #include "edgeland/kernel/predicates.hpp"
-#include "snap_rounding.hpp"
 
 namespace edgeland::detail {
 namespace {

@@ -36,9 +36,9 @@ constexpr const char* kFig17A = "POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0))";
 constexpr const char* kFig17B = "POLYGON ((2 2, 6 2, 6 6, 2 6, 2 2))";
 
 TEST(ThesisFig17, UnionKeepsTheSubjectWholeAndAddsTheRestOfTheClip) {
-  const ClipResult r =
-      expect_clip(ClipOp::kUnion, kFig17A, kFig17B,
-                  "MULTIPOLYGON (((0 0, 4 0, 4 4, 0 4, 0 0)), ((2 4, 4 4, 4 2, 6 2, 6 6, 2 6, 2 4)))");
+  const ClipResult r = expect_clip(
+      ClipOp::kUnion, kFig17A, kFig17B,
+      "MULTIPOLYGON (((0 0, 4 0, 4 4, 0 4, 0 0)), ((2 4, 4 4, 4 2, 6 2, 6 6, 2 6, 2 4)))");
   EXPECT_EQ(twice_area(r.polygons), 2 * 28);
   EXPECT_EQ(r.stats.vertices_snapped, 0u);
   EXPECT_EQ(r.stats.intersections, 2u);
@@ -120,9 +120,9 @@ TEST(ThesisFig21, SnapRoundingCreatesNoNewCrossingInXor) {
 // the triangle (8 5), (9 10), (7 10), outside A. A - B is therefore A pinched at (8 4): two
 // triangles of area 4 each, touching at (8 4). Exact: |A * B| = 481280/1132761.
 TEST(ThesisFig22, OneUnitSliverIsSplitAtThePinchPoint) {
-  const ClipResult r = expect_clip(ClipOp::kDifference, "POLYGON ((0 0, 16 8, 0 1, 0 0))",
-                                   "POLYGON ((8 0, 9 10, 7 10, 8 0))",
-                                   "MULTIPOLYGON (((0 0, 8 4, 0 1, 0 0)), ((8 4, 16 8, 8 5, 8 4)))");
+  const ClipResult r = expect_clip(
+      ClipOp::kDifference, "POLYGON ((0 0, 16 8, 0 1, 0 0))", "POLYGON ((8 0, 9 10, 7 10, 8 0))",
+      "MULTIPOLYGON (((0 0, 8 4, 0 1, 0 0)), ((8 4, 16 8, 8 5, 8 4)))");
   EXPECT_EQ(twice_area(r.polygons), 2 * 8);
   EXPECT_GT(r.stats.zero_area_dropped, 0u);
 }
@@ -160,10 +160,12 @@ TEST(ThesisFig26, UnitEdgeBetweenTwoTouchPointsIsOutside) {
   expect_clip(ClipOp::kIntersection, kFig26A, kFig26B, "MULTIPOLYGON EMPTY");
   expect_clip(ClipOp::kDifference, kFig26A, kFig26B, kFig26A);
   // The union region has a hole (the triangle), but no output polygon has one.
-  expect_clip(ClipOp::kUnion, kFig26A, kFig26B,
-              "MULTIPOLYGON (((0 0, 4 0, 4 2, 3 2, 3 3, 0 3, 0 0)), ((3 3, 4 2, 6 2, 6 5, 3 5, 3 3)))");
-  expect_clip(ClipOp::kXor, kFig26A, kFig26B,
-              "MULTIPOLYGON (((0 0, 4 0, 4 2, 3 2, 3 3, 0 3, 0 0)), ((3 3, 4 2, 6 2, 6 5, 3 5, 3 3)))");
+  expect_clip(
+      ClipOp::kUnion, kFig26A, kFig26B,
+      "MULTIPOLYGON (((0 0, 4 0, 4 2, 3 2, 3 3, 0 3, 0 0)), ((3 3, 4 2, 6 2, 6 5, 3 5, 3 3)))");
+  expect_clip(
+      ClipOp::kXor, kFig26A, kFig26B,
+      "MULTIPOLYGON (((0 0, 4 0, 4 2, 3 2, 3 3, 0 3, 0 0)), ((3 3, 4 2, 6 2, 6 5, 3 5, 3 3)))");
 }
 
 // Fig. 27: labeling along A past intersections p, q (crossings) and r (a touch, where the
@@ -177,8 +179,9 @@ constexpr const char* kFig27B = "POLYGON ((2 -2, 4 -2, 6 2, 2 -2))";
 
 TEST(ThesisFig27, TouchingIntersectionDoesNotSwitchTheLabels) {
   expect_clip(ClipOp::kIntersection, kFig27A, kFig27B, "POLYGON ((4 0, 5 0, 6 2, 4 0))");
-  const ClipResult d = expect_clip(ClipOp::kDifference, kFig27A, kFig27B,
-                                   "MULTIPOLYGON (((0 0, 4 0, 6 2, 6 6, 0 6, 0 0)), ((5 0, 6 0, 6 2, 5 0)))");
+  const ClipResult d =
+      expect_clip(ClipOp::kDifference, kFig27A, kFig27B,
+                  "MULTIPOLYGON (((0 0, 4 0, 6 2, 6 6, 0 6, 0 0)), ((5 0, 6 0, 6 2, 5 0)))");
   EXPECT_EQ(twice_area(d.polygons), 2 * 35);
   expect_clip(ClipOp::kUnion, kFig27A, kFig27B,
               "MULTIPOLYGON (((0 0, 6 0, 6 6, 0 6, 0 0)), ((2 -2, 4 -2, 5 0, 4 0, 2 -2)))");
@@ -218,9 +221,10 @@ TEST(ThesisFig28, ConvexCornerInAReflexNotchOnlyTouches) {
 // intersection). A = [0,10]x[0,4]; B = (4 -2), (6 -2), (10 6), (4 6) crosses it at the four
 // integer points (4 0), (7 0), (9 4), (4 4). |A - B| = 40 - 16 = 24 = 16 + 8.
 TEST(ThesisFig32, DifferenceSplitsTheSubjectInTwo) {
-  const ClipResult r = expect_clip(ClipOp::kDifference, "POLYGON ((0 0, 10 0, 10 4, 0 4, 0 0))",
-                                   "POLYGON ((4 -2, 6 -2, 10 6, 4 6, 4 -2))",
-                                   "MULTIPOLYGON (((0 0, 4 0, 4 4, 0 4, 0 0)), ((7 0, 10 0, 10 4, 9 4, 7 0)))");
+  const ClipResult r =
+      expect_clip(ClipOp::kDifference, "POLYGON ((0 0, 10 0, 10 4, 0 4, 0 0))",
+                  "POLYGON ((4 -2, 6 -2, 10 6, 4 6, 4 -2))",
+                  "MULTIPOLYGON (((0 0, 4 0, 4 4, 0 4, 0 0)), ((7 0, 10 0, 10 4, 9 4, 7 0)))");
   EXPECT_EQ(twice_area(r.polygons), 2 * 24);
   EXPECT_EQ(r.stats.intersections, 4u);
 }
@@ -243,11 +247,11 @@ TEST(ThesisFig33, XorPassesEveryIntersectionTwice) {
 }
 
 TEST(ThesisFig33, UnionAroundAHoleKeepsEveryPolygonHoleFree) {
-  const ClipResult r = expect_clip(
-      ClipOp::kUnion, kFig33A, kFig33B,
-      "MULTIPOLYGON (((-1 4, 0 4, 0 5, -1 5, -1 4)), "
-      "((0 0, 6 0, 6 6, 4 6, 4 2, 2 2, 2 6, 0 6, 0 0)), ((2 4, 4 4, 4 5, 2 5, 2 4)), "
-      "((6 4, 7 4, 7 5, 6 5, 6 4)))");
+  const ClipResult r =
+      expect_clip(ClipOp::kUnion, kFig33A, kFig33B,
+                  "MULTIPOLYGON (((-1 4, 0 4, 0 5, -1 5, -1 4)), "
+                  "((0 0, 6 0, 6 6, 4 6, 4 2, 2 2, 2 6, 0 6, 0 0)), ((2 4, 4 4, 4 5, 2 5, 2 4)), "
+                  "((6 4, 7 4, 7 5, 6 5, 6 4)))");
   EXPECT_EQ(twice_area(r.polygons), 2 * 32);
   expect_clip(ClipOp::kIntersection, kFig33A, kFig33B,
               "MULTIPOLYGON (((0 4, 2 4, 2 5, 0 5, 0 4)), ((4 4, 6 4, 6 5, 4 5, 4 4)))");

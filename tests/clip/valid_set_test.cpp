@@ -35,8 +35,7 @@ TEST(ValidSet, RefusesAnInvalidSetNamingTheOperand) {
 // CoordinateOutOfRange (which is an InvalidInput) naming the operand, polygon and vertex.
 TEST(ValidSet, ACoordinateOutOfRangeIsItsOwnError) {
   const std::int64_t far = std::int64_t{1} << 40;
-  const PolygonSet shapes{{{0, 0}, {10, 0}, {10, 10}, {0, 10}},
-                          {{20, 0}, {30, 0}, {far, 9}}};
+  const PolygonSet shapes{{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{20, 0}, {30, 0}, {far, 9}}};
   try {
     ValidSet s(shapes, Operand::kClip);
     FAIL() << "accepted " << to_wkt(s.polygons());
@@ -66,8 +65,8 @@ TEST(ValidSet, ACoordinateOutOfRangeIsItsOwnError) {
 // a frame of four bars around a hole is split along a diagonal as every output is; the area,
 // validity and region are kept.
 TEST(Merge, JoinsMembersThatShareEdges) {
-  const ValidSet halves(PolygonSet{{{0, 0}, {10, 0}, {10, 10}, {0, 10}},
-                                   {{10, 0}, {20, 0}, {20, 10}, {10, 10}}});
+  const ValidSet halves(
+      PolygonSet{{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{10, 0}, {20, 0}, {20, 10}, {10, 10}}});
   const PolygonSet merged = merge(halves).set.polygons();
   EXPECT_EQ(merged, (PolygonSet{{{0, 0}, {20, 0}, {20, 10}, {0, 10}}}));
 }
@@ -108,8 +107,8 @@ TEST(ValidSet, KeepsTheSetItWasGiven) {
 
 RC_GTEST_PROP(ValidSetProperty, OverloadsGiveIdenticalResults, ()) {
   const OperandPair p = *gen::operand_pair();
-  const ClipOp op = *rc::gen::element(ClipOp::kUnion, ClipOp::kIntersection,
-                                      ClipOp::kDifference, ClipOp::kXor);
+  const ClipOp op =
+      *rc::gen::element(ClipOp::kUnion, ClipOp::kIntersection, ClipOp::kDifference, ClipOp::kXor);
   const ClipResult plain = clip(op, p.a, p.b, ClipOptions{.checked = true});
   const ValidClipResult valid =
       clip(op, ValidSet(p.a), ValidSet(p.b, Operand::kClip), ClipOptions{.checked = true});
@@ -129,8 +128,8 @@ RC_GTEST_PROP(ValidSetProperty, OverloadsGiveIdenticalResults, ()) {
 // through the PolygonSet overload, which tests every vertex.
 RC_GTEST_PROP(ValidSetProperty, CanonicalOperandsGiveIdenticalResults, ()) {
   const OperandPair p = *gen::operand_pair();
-  const ClipOp op = *rc::gen::element(ClipOp::kUnion, ClipOp::kIntersection,
-                                      ClipOp::kDifference, ClipOp::kXor);
+  const ClipOp op =
+      *rc::gen::element(ClipOp::kUnion, ClipOp::kIntersection, ClipOp::kDifference, ClipOp::kXor);
   // Union with the empty set gives the canonical form of a set, marked as such.
   const ValidSet a = clip(ClipOp::kUnion, ValidSet(p.a), ValidSet()).set;
   const ValidSet b = clip(ClipOp::kUnion, ValidSet(p.b, Operand::kClip), ValidSet()).set;
@@ -207,8 +206,8 @@ TEST(ValidSet, CarvingChainStaysValidWithoutRevalidation) {
     const Polygon tool{{cx - r, cy}, {cx - r / 2, cy - r}, {cx + r / 2, cy - r},
                        {cx + r, cy}, {cx + r / 2, cy + r}, {cx - r / 2, cy + r}};
     const ClipOp op = step % 7 == 6 ? ClipOp::kUnion : ClipOp::kDifference;
-    ValidClipResult out = clip(op, world, ValidSet(PolygonSet{tool}, Operand::kClip),
-                             ClipOptions{.checked = true});
+    ValidClipResult out =
+        clip(op, world, ValidSet(PolygonSet{tool}, Operand::kClip), ClipOptions{.checked = true});
     ASSERT_TRUE(validate(out.set.polygons()).ok()) << "step " << step;
     plain_world = clip(op, plain_world, PolygonSet{tool}).polygons;
     ASSERT_EQ(out.set.polygons(), plain_world) << "step " << step;

@@ -77,8 +77,13 @@ PolygonSet any_operand() {
     default: {  // a pinched ring: two squares meeting at one vertex, walked as one ring
       const std::int64_t s = draw(1, 6);
       const Point64 o = grid_point(10);
-      set.push_back({o, {o.x + s, o.y}, {o.x + s, o.y + s}, {o.x + 2 * s, o.y + s},
-                     {o.x + 2 * s, o.y + 2 * s}, {o.x + s, o.y + 2 * s}, {o.x + s, o.y + s},
+      set.push_back({o,
+                     {o.x + s, o.y},
+                     {o.x + s, o.y + s},
+                     {o.x + 2 * s, o.y + s},
+                     {o.x + 2 * s, o.y + 2 * s},
+                     {o.x + s, o.y + 2 * s},
+                     {o.x + s, o.y + s},
                      {o.x, o.y + s}});
       break;
     }
@@ -114,7 +119,8 @@ void check_agrees(ClipOp op, const PolygonSet& a, const PolygonSet& b) {
 }
 
 ClipOp any_op() {
-  return *rc::gen::element(ClipOp::kUnion, ClipOp::kIntersection, ClipOp::kDifference, ClipOp::kXor);
+  return *rc::gen::element(ClipOp::kUnion, ClipOp::kIntersection, ClipOp::kDifference,
+                           ClipOp::kXor);
 }
 
 RC_GTEST_PROP(ValidatingClip, RejectsExactlyWhatValidateRejects, ()) {
@@ -198,8 +204,8 @@ TEST(ValidatingClip, OverlapsAreFoundWhenSnapRoundingMovedSomething) {
   const PolygonSet nested{square(0, 0, 10), square(2, 2, 3)};
   expect_rejected(nested, {{{-1, 1}, {12, 2}, {5, 7}}}, Operand::kSubject,
                   Rule::kOverlappingInteriors);
-  expect_rejected({kAround}, {square(0, 0, 12), {{0, 5}, {3, 4}, {3, 6}}},
-                  Operand::kClip, Rule::kOverlappingInteriors);
+  expect_rejected({kAround}, {square(0, 0, 12), {{0, 5}, {3, 4}, {3, 6}}}, Operand::kClip,
+                  Rule::kOverlappingInteriors);
   expect_rejected({{{-1, 1}, {30, 2}, {5, 20}}}, {square(0, 0, 12), {{0, 5}, {3, 4}, {3, 6}}},
                   Operand::kClip, Rule::kOverlappingInteriors);
 }
@@ -229,10 +235,11 @@ TEST(ValidatingClip, TheSubjectIsNamedFirst) {
 
 TEST(ValidatingClip, ValidSetsWithManyContactsAreAccepted) {
   // Members sharing edges in opposite directions and meeting at vertices: nothing to reject.
-  const PolygonSet tiles{square(0, 0, 2), square(2, 0, 2), square(0, 2, 2), square(2, 2, 2),
-                         {{4, 0}, {6, 0}, {4, 2}}, square(6, 2, 2)};
+  const PolygonSet tiles{square(0, 0, 2), square(2, 0, 2),          square(0, 2, 2),
+                         square(2, 2, 2), {{4, 0}, {6, 0}, {4, 2}}, square(6, 2, 2)};
   const ClipResult r = clip(ClipOp::kUnion, tiles, {square(1, 1, 2)}, ClipOptions{.checked = true});
-  EXPECT_EQ(r.polygons, clip(ClipOp::kUnion, ValidSet(tiles), ValidSet({square(1, 1, 2)})).set.polygons());
+  EXPECT_EQ(r.polygons,
+            clip(ClipOp::kUnion, ValidSet(tiles), ValidSet({square(1, 1, 2)})).set.polygons());
 }
 
 }  // namespace

@@ -39,7 +39,8 @@ int main() {
   // The landscape: carve a square out of a filled world, query it.
   Landscape world({{0, 0}, {100, 100}}, 1);
   const ChangeSet changes = world.carve(PolygonSet{{{40, 40}, {60, 40}, {60, 60}, {40, 60}}});
-  check(!changes.added.empty() && changes.removed.size() == 1, "the carve replaced the world's polygon");
+  check(!changes.added.empty() && changes.removed.size() == 1,
+        "the carve replaced the world's polygon");
   check(world.twice_area(1) == 2 * (10000 - 400), "the carved area is exact");
   check(world.material_at({50, 50}) == kEmpty && world.material_at({10, 10}) == 1, "material_at");
 

@@ -1,7 +1,7 @@
-// angle_less and angle_less_branch_free (angle.hpp) against an independent exact formulation: octant classes (the four
-// axis rays and the four open quadrants between them, counter-clockwise from angle 0), then, in
-// one open quadrant, the exact cross product. Directions are differences of generated points,
-// from tiny grids up to the full coordinate range.
+// angle_less and angle_less_branch_free (angle.hpp) against an independent exact formulation:
+// octant classes (the four axis rays and the four open quadrants between them, counter-clockwise
+// from angle 0), then, in one open quadrant, the exact cross product. Directions are differences of
+// generated points, from tiny grids up to the full coordinate range.
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
@@ -29,7 +29,8 @@ Point64 difference(Point64 from, Point64 to) { return {to.x - from.x, to.y - fro
 
 RC_GTEST_PROP(AngleLessProperty, MatchesOctantsThenCrossProduct, ()) {
   const Grid g = gen_grid();
-  const Point64 a = difference(gen_point(g), gen_point(g)), b = difference(gen_point(g), gen_point(g));
+  const Point64 a = difference(gen_point(g), gen_point(g)),
+                b = difference(gen_point(g), gen_point(g));
   const Point64 zero{0, 0};
   RC_PRE(a != zero && b != zero);  // directions are nonzero
   RC_ASSERT(angle_less(a, b) == reference_less(a, b));

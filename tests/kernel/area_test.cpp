@@ -1,10 +1,11 @@
 // area.hpp: exact twice-signed-area and ring orientation (thesis 2.2).
+#include "edgeland/kernel/area.hpp"
+
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
 #include <algorithm>
 
-#include "edgeland/kernel/area.hpp"
 #include "exact_reference.hpp"
 #include "random_geometry.hpp"
 

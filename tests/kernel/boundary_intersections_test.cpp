@@ -1,8 +1,9 @@
 // boundary_intersections.hpp: segment/line against a ring's boundary (thesis 2.4, 2.4.1).
+#include "edgeland/kernel/boundary_intersections.hpp"
+
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
-#include "edgeland/kernel/boundary_intersections.hpp"
 #include "edgeland/kernel/point_in_polygon.hpp"
 #include "exact_reference.hpp"
 #include "random_geometry.hpp"
@@ -220,8 +221,8 @@ RC_GTEST_PROP(BoundaryIntersectionsProperty, SimpleRingReportsEachPointOnce, ())
         if (hits[j].kind == Kind::kPoint) {
           RC_ASSERT(!(q(hits[i].point) == q(hits[j].point)));
         } else {
-          RC_ASSERT(!ref_on_segment(q(hits[i].point), q(hits[j].overlap_from),
-                                    q(hits[j].overlap_to)));
+          RC_ASSERT(
+              !ref_on_segment(q(hits[i].point), q(hits[j].overlap_from), q(hits[j].overlap_to)));
         }
       }
     }

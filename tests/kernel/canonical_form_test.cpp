@@ -1,7 +1,7 @@
 // canonical_form.hpp: the canonical order of polygon sets, checked from its definition.
-#include <gtest/gtest.h>
-
 #include "edgeland/kernel/canonical_form.hpp"
+
+#include <gtest/gtest.h>
 
 namespace edgeland {
 namespace {

@@ -1,8 +1,9 @@
 // convexity.hpp: is_convex (thesis 2.3), collinear vertices allowed, either orientation.
+#include "edgeland/kernel/convexity.hpp"
+
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
-#include "edgeland/kernel/convexity.hpp"
 #include "exact_reference.hpp"
 #include "random_geometry.hpp"
 

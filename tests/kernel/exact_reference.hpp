@@ -35,8 +35,7 @@ inline cpp_int ref_cross(const cpp_int& ax, const cpp_int& ay, const cpp_int& bx
   return ax * by - ay * bx;
 }
 inline cpp_int ref_orient_det(Point64 a, Point64 b, Point64 c) {
-  return ref_cross(cpp_int(b.x) - a.x, cpp_int(b.y) - a.y, cpp_int(c.x) - a.x,
-                   cpp_int(c.y) - a.y);
+  return ref_cross(cpp_int(b.x) - a.x, cpp_int(b.y) - a.y, cpp_int(c.x) - a.x, cpp_int(c.y) - a.y);
 }
 inline cpp_rational ref_cross(const QPoint& a, const QPoint& b) { return a.x * b.y - a.y * b.x; }
 inline QPoint operator-(const QPoint& a, const QPoint& b) { return {a.x - b.x, a.y - b.y}; }

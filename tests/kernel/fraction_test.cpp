@@ -1,10 +1,11 @@
 // fraction.hpp: exact comparison of Int128 fractions through 256-bit products.
+#include "edgeland/kernel/fraction.hpp"
+
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
 #include <limits>
 
-#include "edgeland/kernel/fraction.hpp"
 #include "exact_reference.hpp"
 
 namespace edgeland::test {

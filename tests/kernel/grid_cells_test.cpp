@@ -1,8 +1,9 @@
 // grid_cells.hpp: exact grid sizing over the full coordinate range, against cpp_int.
+#include "edgeland/kernel/grid_cells.hpp"
+
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
-#include "edgeland/kernel/grid_cells.hpp"
 #include "exact_reference.hpp"
 #include "random_geometry.hpp"
 
@@ -28,8 +29,10 @@ TEST(GridCells, FullRangeBoxNeedsMoreThan64Bits) {
 RC_GTEST_PROP(GridCellsProperty, MatchCeilingDivisionsOfTheBox, ()) {
   const Grid g = gen_grid();
   const Point64 a = gen_point(g), b = gen_point(g);
-  const Box64 box{{std::min(a.x, b.x), std::min(a.y, b.y)}, {std::max(a.x, b.x), std::max(a.y, b.y)}};
-  const std::int64_t side = *rc::gen::element<std::int64_t>(1, 2, 3, 1000, std::int64_t{1} << 33, kMaxGridSide);
+  const Box64 box{{std::min(a.x, b.x), std::min(a.y, b.y)},
+                  {std::max(a.x, b.x), std::max(a.y, b.y)}};
+  const std::int64_t side =
+      *rc::gen::element<std::int64_t>(1, 2, 3, 1000, std::int64_t{1} << 33, kMaxGridSide);
   const std::uint64_t n = *rc::gen::inRange<std::uint64_t>(0, std::uint64_t{1} << 40);
   const cpp_int w = cpp_int(box.max.x) - box.min.x + 1, h = cpp_int(box.max.y) - box.min.y + 1;
   RC_ASSERT(cpp_int(point_count(box)) == w * h);

@@ -1,8 +1,9 @@
 // perimeter.hpp: exact integer square root and perimeter bounds (thesis 2.2).
+#include "edgeland/kernel/perimeter.hpp"
+
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
-#include "edgeland/kernel/perimeter.hpp"
 #include "exact_reference.hpp"
 #include "random_geometry.hpp"
 
@@ -21,9 +22,9 @@ TEST(Isqrt, SmallValuesAndPerfectSquares) {
 }
 
 TEST(Isqrt, TopOfTheUnsignedRange) {
-  const U max64 = ~std::uint64_t(0);  // 2^64 - 1
-  EXPECT_EQ(isqrt(~U(0)), max64);             // 2^128 - 1
-  EXPECT_EQ(isqrt(max64 * max64), max64);     // largest perfect square
+  const U max64 = ~std::uint64_t(0);       // 2^64 - 1
+  EXPECT_EQ(isqrt(~U(0)), max64);          // 2^128 - 1
+  EXPECT_EQ(isqrt(max64 * max64), max64);  // largest perfect square
   EXPECT_EQ(isqrt(max64 * max64 - 1), max64 - 1);
   EXPECT_EQ(isqrt(U(1) << 127), U(0xB504F333F9DE6484ull));  // floor(2^63.5)
 }

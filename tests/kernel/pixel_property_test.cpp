@@ -35,9 +35,7 @@ struct Interval {
       hi_open = open;
     }
   }
-  bool has_points() const {
-    return !empty && (lo < hi || (lo == hi && !lo_open && !hi_open));
-  }
+  bool has_points() const { return !empty && (lo < hi || (lo == hi && !lo_open && !hi_open)); }
 };
 
 // lo <= a + t * d < hi (the coordinate's half-open range; <= hi when hi_closed), as
@@ -80,14 +78,17 @@ void for_each_small_segment(F&& f) {
 }
 
 std::string describe(const Segment& s) {
-  return "(" + std::to_string(s.a.x) + "," + std::to_string(s.a.y) + ")-(" + std::to_string(s.b.x) + "," +
-         std::to_string(s.b.y) + ")";
+  return "(" + std::to_string(s.a.x) + "," + std::to_string(s.a.y) + ")-(" + std::to_string(s.b.x) +
+         "," + std::to_string(s.b.y) + ")";
 }
 
 rc::Gen<Point64> near_point(std::int64_t reach) {
-  return rc::gen::apply([](std::int64_t x, std::int64_t y) { return Point64{x, y}; },
-                        rc::gen::inRange<std::int64_t>(-reach, reach + 1),
-                        rc::gen::inRange<std::int64_t>(-reach, reach + 1));
+  return rc::gen::apply(
+      [](std::int64_t x, std::int64_t y) {
+        return Point64{x, y};
+      },
+      rc::gen::inRange<std::int64_t>(-reach, reach + 1),
+      rc::gen::inRange<std::int64_t>(-reach, reach + 1));
 }
 
 // Every segment with both ends in [-3, 3]^2 against the pixel of the origin: all the ways of
@@ -113,12 +114,18 @@ RC_GTEST_PROP(SegmentMeetsPixel, AgreesWithTheDefinitionNearThePixel, ()) {
 RC_GTEST_PROP(SegmentMeetsPixel, AgreesWithTheDefinitionForLongSegments, ()) {
   // Long segments passing within a unit or two of a pixel anywhere in the range.
   const std::int64_t span = *rc::gen::element<std::int64_t>(1000, 1 << 20, kCoordBound);
-  const Point64 a = *rc::gen::apply([](std::int64_t x, std::int64_t y) { return Point64{x, y}; },
-                                    rc::gen::inRange<std::int64_t>(-span, span + 1),
-                                    rc::gen::inRange<std::int64_t>(-span, span + 1));
-  const Point64 b = *rc::gen::apply([](std::int64_t x, std::int64_t y) { return Point64{x, y}; },
-                                    rc::gen::inRange<std::int64_t>(-span, span + 1),
-                                    rc::gen::inRange<std::int64_t>(-span, span + 1));
+  const Point64 a = *rc::gen::apply(
+      [](std::int64_t x, std::int64_t y) {
+        return Point64{x, y};
+      },
+      rc::gen::inRange<std::int64_t>(-span, span + 1),
+      rc::gen::inRange<std::int64_t>(-span, span + 1));
+  const Point64 b = *rc::gen::apply(
+      [](std::int64_t x, std::int64_t y) {
+        return Point64{x, y};
+      },
+      rc::gen::inRange<std::int64_t>(-span, span + 1),
+      rc::gen::inRange<std::int64_t>(-span, span + 1));
   const Segment s{a, b};
   // A point on the segment's line at a random parameter, rounded, then nudged.
   const std::int64_t k = *rc::gen::inRange<std::int64_t>(0, 65);

@@ -1,9 +1,10 @@
 // point_in_polygon.hpp: locate / winding_number / locate_convex / sets (thesis 2.5).
+#include "edgeland/kernel/point_in_polygon.hpp"
+
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
 #include "edgeland/kernel/bbox.hpp"
-#include "edgeland/kernel/point_in_polygon.hpp"
 #include "edgeland/kernel/predicates.hpp"
 #include "exact_reference.hpp"
 #include "random_geometry.hpp"
@@ -25,8 +26,8 @@ TEST(Locate, Fig13InsideOutsideAndOnTheBorder) {
   const Ring ring{{0, 0}, {8, 0}, {8, 6}, {4, 3}, {0, 6}};
   expect_location({2, 2}, ring, L::kInside);      // p
   expect_location({4, 5}, ring, L::kOutside);     // q, in the notch
-  expect_location({6, 5}, ring, L::kOutside);    // just above the notch's side
-  expect_location({6, 4}, ring, L::kInside);     // just below it
+  expect_location({6, 5}, ring, L::kOutside);     // just above the notch's side
+  expect_location({6, 4}, ring, L::kInside);      // just below it
   expect_location({8, 3}, ring, L::kOnBoundary);  // r
   expect_location({4, 3}, ring, L::kOnBoundary);  // a vertex
   expect_location({2, 0}, ring, L::kOnBoundary);
@@ -122,12 +123,12 @@ TEST(Locate, DegenerateRingsHaveOnlyABoundary) {
 TEST(LocateConvex, CollinearVerticesAndSupportingLinesAtTheFirstVertex) {
   // v_0 = (2, 0) is a straight vertex in the middle of the bottom side; v_1 continues it.
   const Ring ring{{2, 0}, {3, 0}, {4, 0}, {4, 4}, {0, 4}, {0, 0}, {1, 0}};
-  for (const Point64 p : {Point64{2, 0}, Point64{0, 0}, Point64{4, 0}, Point64{1, 0},
-                          Point64{4, 2}, Point64{2, 4}, Point64{0, 3}}) {
+  for (const Point64 p : {Point64{2, 0}, Point64{0, 0}, Point64{4, 0}, Point64{1, 0}, Point64{4, 2},
+                          Point64{2, 4}, Point64{0, 3}}) {
     EXPECT_EQ(locate_convex(p, ring), L::kOnBoundary) << p.x << ' ' << p.y;
   }
-  for (const Point64 p : {Point64{5, 0}, Point64{-1, 0}, Point64{2, -1}, Point64{5, 5},
-                          Point64{2, 5}}) {
+  for (const Point64 p :
+       {Point64{5, 0}, Point64{-1, 0}, Point64{2, -1}, Point64{5, 5}, Point64{2, 5}}) {
     EXPECT_EQ(locate_convex(p, ring), L::kOutside) << p.x << ' ' << p.y;
   }
   EXPECT_EQ(locate_convex({2, 1}, ring), L::kInside);

@@ -40,8 +40,8 @@ RC_GTEST_PROP(OrientationProperty, InvariantUnderCyclicShift, ()) {
 RC_GTEST_PROP(DotSignProperty, MatchesExactDotProduct, ()) {
   const Grid g = gen_grid();
   const Point64 a = gen_point(g), b = gen_point(g), c = gen_point(g);
-  const cpp_int ref = (cpp_int(b.x) - a.x) * (cpp_int(c.x) - a.x) +
-                      (cpp_int(b.y) - a.y) * (cpp_int(c.y) - a.y);
+  const cpp_int ref =
+      (cpp_int(b.x) - a.x) * (cpp_int(c.x) - a.x) + (cpp_int(b.y) - a.y) * (cpp_int(c.y) - a.y);
   RC_ASSERT(dot_sign(a, b, c) == sgn(ref));
 }
 
@@ -66,8 +66,7 @@ RC_GTEST_PROP(IntersectProperty, ClassificationMatchesRationalReference, ()) {
       RC_ASSERT(r.relation == SegmentRelation::kDisjoint);
       break;
     case RefMeet::kPoint: {
-      const bool at_endpoint =
-          m.a == q(s.a) || m.a == q(s.b) || m.a == q(t.a) || m.a == q(t.b);
+      const bool at_endpoint = m.a == q(s.a) || m.a == q(s.b) || m.a == q(t.a) || m.a == q(t.b);
       RC_ASSERT(r.relation ==
                 (at_endpoint ? SegmentRelation::kTouching : SegmentRelation::kCrossing));
       RC_ASSERT(r.point.den > 0);
@@ -173,9 +172,9 @@ RC_GTEST_PROP(RoundToGridProperty, NearestIntegerHalvesUpForAnyInRangeFraction, 
                          : Int128(*rc::gen::inRange<std::int64_t>(1, std::int64_t(1) << 62));
   auto component = [&] {
     const Int128 whole = *rc::gen::inRange<std::int64_t>(-B, B);
-    const Int128 rem = static_cast<Int128>(
-        static_cast<unsigned __int128>(*rc::gen::arbitrary<std::uint64_t>()) %
-        static_cast<unsigned __int128>(den));
+    const Int128 rem =
+        static_cast<Int128>(static_cast<unsigned __int128>(*rc::gen::arbitrary<std::uint64_t>()) %
+                            static_cast<unsigned __int128>(den));
     return whole * den + rem;
   };
   const RationalPoint v{component(), component(), den};

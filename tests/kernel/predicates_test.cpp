@@ -1,6 +1,6 @@
-#include <gtest/gtest.h>
-
 #include "edgeland/kernel/predicates.hpp"
+
+#include <gtest/gtest.h>
 
 namespace edgeland {
 namespace {

@@ -96,7 +96,8 @@ inline Ring gen_convex_ring(const Grid& g) {
     const std::int64_t steps = std::gcd(dx < 0 ? -dx : dx, dy < 0 ? -dy : dy);
     if (steps > 1 && *rc::gen::inRange(0, 3) == 0) {
       // One lattice point strictly inside the edge.
-      const std::int64_t j = 1 + *rc::gen::inRange<std::int64_t>(0, std::min<std::int64_t>(steps - 1, 1000));
+      const std::int64_t j =
+          1 + *rc::gen::inRange<std::int64_t>(0, std::min<std::int64_t>(steps - 1, 1000));
       ring.push_back({a.x + dx / steps * j, a.y + dy / steps * j});
     }
   }
@@ -128,10 +129,12 @@ inline Ring gen_star_ring(Grid g) {
     return (y > 0 || (y == 0 && x > 0)) ? 0 : 1;
   };
   auto cross = [&](Point64 a, Point64 b) {
-    return sgn(ref_cross(cpp_int(a.x) - c.x, cpp_int(a.y) - c.y, cpp_int(b.x) - c.x,
-                         cpp_int(b.y) - c.y));
+    return sgn(
+        ref_cross(cpp_int(a.x) - c.x, cpp_int(a.y) - c.y, cpp_int(b.x) - c.x, cpp_int(b.y) - c.y));
   };
-  auto same_direction = [&](Point64 a, Point64 b) { return half(a) == half(b) && cross(a, b) == 0; };
+  auto same_direction = [&](Point64 a, Point64 b) {
+    return half(a) == half(b) && cross(a, b) == 0;
+  };
   std::sort(pts.begin(), pts.end(), [&](Point64 a, Point64 b) {
     if (half(a) != half(b)) return half(a) < half(b);
     const int s = cross(a, b);

@@ -1,9 +1,10 @@
 // ray.hpp: first hit of a ray, back-face culling, convex early exit (thesis 2.4.1, 2.4.2).
+#include "edgeland/kernel/ray.hpp"
+
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
 #include "edgeland/kernel/point_in_polygon.hpp"
-#include "edgeland/kernel/ray.hpp"
 #include "exact_reference.hpp"
 #include "random_geometry.hpp"
 
@@ -50,7 +51,7 @@ TEST(FirstHit, AlongAnEdgeHitsWhereItFirstTouches) {
 TEST(FirstHit, MissIsNullopt) {
   EXPECT_FALSE(first_hit({{3, 3}, 1, 0}, kSquare).has_value());
   EXPECT_FALSE(first_hit({{1, 1}, 0, 0}, kSquare).has_value());  // zero direction, inside
-  const auto on_edge = first_hit({{1, 0}, 0, 0}, kSquare);        // zero direction, on edge
+  const auto on_edge = first_hit({{1, 0}, 0, 0}, kSquare);       // zero direction, on edge
   ASSERT_TRUE(on_edge.has_value());
   EXPECT_EQ(on_edge->edge, 0u);
 }
@@ -96,8 +97,8 @@ std::optional<RefHit> ref_first_hit(const Ray& ray, const Ring& ring, RayCulling
   const cpp_rational dd = dot(d, d);
   for (std::size_t i = 0; i < ring.size(); ++i) {
     const Point64 a = ring[i], b = ring[(i + 1) % ring.size()];
-    const int face = sgn(ref_cross(cpp_int(ray.dx), cpp_int(ray.dy), cpp_int(b.x) - a.x,
-                                   cpp_int(b.y) - a.y));
+    const int face =
+        sgn(ref_cross(cpp_int(ray.dx), cpp_int(ray.dy), cpp_int(b.x) - a.x, cpp_int(b.y) - a.y));
     if (culling == RayCulling::kOriginOutside && face > 0) continue;
     if (culling == RayCulling::kOriginInside && face < 0) continue;
     std::optional<cpp_rational> t;
@@ -216,10 +217,18 @@ Ray gen_probe_ray(const Grid& g, const Ring& near) {
   if (*rc::gen::arbitrary<bool>()) {
     const std::int64_t length = *rc::gen::element<std::int64_t>(1, 2, 7, D);
     switch (*rc::gen::inRange(0, 4)) {
-      case 0: ray.dx = length, ray.dy = 0; break;
-      case 1: ray.dx = -length, ray.dy = 0; break;
-      case 2: ray.dx = 0, ray.dy = length; break;
-      default: ray.dx = 0, ray.dy = -length; break;
+      case 0:
+        ray.dx = length, ray.dy = 0;
+        break;
+      case 1:
+        ray.dx = -length, ray.dy = 0;
+        break;
+      case 2:
+        ray.dx = 0, ray.dy = length;
+        break;
+      default:
+        ray.dx = 0, ray.dy = -length;
+        break;
     }
   }
   return ray;
@@ -235,7 +244,8 @@ RC_GTEST_PROP(RayContactProperty, MatchesRationalReference, ()) {
   if (!t) return;
   RC_ASSERT(t->den > 0);
   RC_ASSERT(value(*t) == *ref);
-  const QPoint expected{cpp_rational(ray.origin.x) + *ref * ray.dx, cpp_rational(ray.origin.y) + *ref * ray.dy};
+  const QPoint expected{cpp_rational(ray.origin.x) + *ref * ray.dx,
+                        cpp_rational(ray.origin.y) + *ref * ray.dy};
   RC_ASSERT(q(ray_point(ray, *t)) == expected);
 }
 
@@ -250,7 +260,7 @@ RC_GTEST_PROP(NearestHitProperty, KeepsTheFirstOfTheNearestContacts, ()) {
   for (std::size_t i = 0; i + 1 < ends.size(); ++i) {
     const Segment e{ends[i], ends[i + 1]};
     const std::optional<cpp_rational> t = ref_contact(ray, e);
-    const NearestHit::Offer expected = !t                     ? NearestHit::Offer::kMissed
+    const NearestHit::Offer expected = !t                    ? NearestHit::Offer::kMissed
                                        : best && *t >= *best ? NearestHit::Offer::kFarther
                                                              : NearestHit::Offer::kNearest;
     RC_ASSERT(nearest.offer(e) == expected);
@@ -259,7 +269,8 @@ RC_GTEST_PROP(NearestHitProperty, KeepsTheFirstOfTheNearestContacts, ()) {
   RC_ASSERT(nearest.found() == best.has_value());
   if (!best) return;
   RC_ASSERT(value(nearest.t()) == *best);
-  const QPoint expected{cpp_rational(ray.origin.x) + *best * ray.dx, cpp_rational(ray.origin.y) + *best * ray.dy};
+  const QPoint expected{cpp_rational(ray.origin.x) + *best * ray.dx,
+                        cpp_rational(ray.origin.y) + *best * ray.dy};
   RC_ASSERT(q(nearest.point()) == expected);
 }
 

@@ -3,6 +3,8 @@
 // exact rationals: the segment and the point really moved by eps (1, eps) for a tiny rational
 // eps, winding numbers of rational points, Liang-Barsky clipping, and the area of a ring clipped
 // to a box by Sutherland-Hodgman (right for any simple ring against a convex window).
+#include "edgeland/kernel/segment_crossings.hpp"
+
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
@@ -12,7 +14,6 @@
 
 #include "edgeland/kernel/box_queries.hpp"
 #include "edgeland/kernel/point_in_polygon.hpp"
-#include "edgeland/kernel/segment_crossings.hpp"
 #include "edgeland/kernel/validate.hpp"
 #include "exact_reference.hpp"
 #include "random_geometry.hpp"
@@ -111,14 +112,16 @@ TEST(SegmentCrossings, DegenerateContactsFollowTheMovedSegment) {
   ASSERT_EQ(r.crossings.size(), 2u);
   EXPECT_TRUE(r.crossings[0].entering);
   EXPECT_FALSE(r.crossings[1].entering);
-  EXPECT_EQ(crossing_point({{-5, -5}, {15, 15}}, square, r.crossings[1]), (RationalPoint{10, 10, 1}));
+  EXPECT_EQ(crossing_point({{-5, -5}, {15, 15}}, square, r.crossings[1]),
+            (RationalPoint{10, 10, 1}));
   // Starting inside: counted from the crossings before t = 0.
   r = segment_crossings({{5, 5}, {20, 5}}, square);
   EXPECT_TRUE(r.inside_before);
   ASSERT_EQ(r.crossings.size(), 1u);
   EXPECT_FALSE(r.crossings[0].entering);
   // Culling back faces keeps only the way in.
-  EXPECT_TRUE(segment_crossings({{5, 5}, {20, 5}}, square, CrossingCulling::kBackFaces).crossings.empty());
+  EXPECT_TRUE(
+      segment_crossings({{5, 5}, {20, 5}}, square, CrossingCulling::kBackFaces).crossings.empty());
 }
 
 TEST(InsideHalfOpen, PointsOnTheBoundaryBelongToTheFaceNorthEastOfThem) {
@@ -134,8 +137,8 @@ TEST(InsideHalfOpen, PointsOnTheBoundaryBelongToTheFaceNorthEastOfThem) {
 
 TEST(BoxQueries, TouchingIsNotOverlapping) {
   const Box64 box{{0, 0}, {10, 10}};
-  EXPECT_FALSE(segment_meets_open_box({{0, -5}, {0, 15}}, box));   // along a side
-  EXPECT_FALSE(segment_meets_open_box({{-5, 5}, {5, -5}}, box));   // through a corner only
+  EXPECT_FALSE(segment_meets_open_box({{0, -5}, {0, 15}}, box));  // along a side
+  EXPECT_FALSE(segment_meets_open_box({{-5, 5}, {5, -5}}, box));  // through a corner only
   EXPECT_TRUE(segment_meets_open_box({{-5, 6}, {6, -5}}, box));
   const Ring outside{{10, 0}, {20, 0}, {20, 10}, {10, 10}};
   EXPECT_FALSE(interiors_overlap(box, outside));
@@ -187,18 +190,22 @@ RC_GTEST_PROP(SegmentCrossingsProperty, AgreesWithTheMovedSegment, ()) {
 RC_GTEST_PROP(InsideHalfOpenProperty, IsTheWindingAtThePointMoved, ()) {
   const Grid g = gen_grid();
   const Ring ring = gen_ring(g);
-  const Point64 p = *rc::gen::element(0, 1) == 0 ? ring[*rc::gen::inRange<std::size_t>(0, ring.size())] : gen_point(g);
+  const Point64 p = *rc::gen::element(0, 1) == 0
+                        ? ring[*rc::gen::inRange<std::size_t>(0, ring.size())]
+                        : gen_point(g);
   RC_ASSERT(inside_half_open(p, ring) == (ref_winding(ring, moved(q(p))) != 0));
 }
 
 // Liang-Barsky on rationals: the parameters of s inside the closed (or open) box.
-std::optional<std::pair<cpp_rational, cpp_rational>> ref_clip(const Segment& s, const Box64& b, bool open) {
+std::optional<std::pair<cpp_rational, cpp_rational>> ref_clip(const Segment& s, const Box64& b,
+                                                              bool open) {
   cpp_rational t0 = 0, t1 = 1;
   const cpp_int d[2] = {cpp_int(s.b.x) - s.a.x, cpp_int(s.b.y) - s.a.y};
   const cpp_int a[2] = {s.a.x, s.a.y}, lo[2] = {b.min.x, b.min.y}, hi[2] = {b.max.x, b.max.y};
   for (int k = 0; k < 2; ++k) {
     if (d[k] == 0) {
-      if (open ? (a[k] <= lo[k] || a[k] >= hi[k]) : (a[k] < lo[k] || a[k] > hi[k])) return std::nullopt;
+      if (open ? (a[k] <= lo[k] || a[k] >= hi[k]) : (a[k] < lo[k] || a[k] > hi[k]))
+        return std::nullopt;
       continue;
     }
     cpp_rational u = cpp_rational(lo[k] - a[k]) / d[k], v = cpp_rational(hi[k] - a[k]) / d[k];
@@ -217,15 +224,22 @@ cpp_rational ref_clipped_area(const Ring& ring, const Box64& b) {
   for (int side = 0; side < 4; ++side) {
     auto keep = [&](const QPoint& p) {
       switch (side) {
-        case 0: return p.x >= b.min.x;
-        case 1: return p.x <= b.max.x;
-        case 2: return p.y >= b.min.y;
-        default: return p.y <= b.max.y;
+        case 0:
+          return p.x >= b.min.x;
+        case 1:
+          return p.x <= b.max.x;
+        case 2:
+          return p.y >= b.min.y;
+        default:
+          return p.y <= b.max.y;
       }
     };
     auto cut = [&](const QPoint& p, const QPoint& r) {
       const bool vertical = side < 2;
-      const cpp_rational c = side == 0 ? b.min.x : side == 1 ? b.max.x : side == 2 ? b.min.y : b.max.y;
+      const cpp_rational c = side == 0   ? b.min.x
+                             : side == 1 ? b.max.x
+                             : side == 2 ? b.min.y
+                                         : b.max.y;
       const cpp_rational t = vertical ? (c - p.x) / (r.x - p.x) : (c - p.y) / (r.y - p.y);
       return QPoint{p.x + t * (r.x - p.x), p.y + t * (r.y - p.y)};
     };
@@ -239,14 +253,16 @@ cpp_rational ref_clipped_area(const Ring& ring, const Box64& b) {
     poly = out;
   }
   cpp_rational area = 0;
-  for (std::size_t i = 0; i < poly.size(); ++i) area += ref_cross(poly[i], poly[(i + 1) % poly.size()]);
+  for (std::size_t i = 0; i < poly.size(); ++i)
+    area += ref_cross(poly[i], poly[(i + 1) % poly.size()]);
   return area;
 }
 
 RC_GTEST_PROP(BoxQueriesProperty, AgreeWithExactClipping, ()) {
   const Grid g = gen_grid();
   const Point64 p = gen_point(g), r = gen_point(g);
-  const Box64 box{{std::min(p.x, r.x), std::min(p.y, r.y)}, {std::max(p.x, r.x), std::max(p.y, r.y)}};
+  const Box64 box{{std::min(p.x, r.x), std::min(p.y, r.y)},
+                  {std::max(p.x, r.x), std::max(p.y, r.y)}};
   const Segment s{gen_point(g), gen_point(g)};
   const auto closed = clip_parameters(s, box);
   const auto want = ref_clip(s, box, false);
@@ -256,8 +272,8 @@ RC_GTEST_PROP(BoxQueriesProperty, AgreeWithExactClipping, ()) {
     RC_ASSERT(as_rational(closed->t1) == want->second);
   }
   const bool flat = box.min.x == box.max.x || box.min.y == box.max.y;
-  RC_LOG() << "box " << box.min.x << ' ' << box.min.y << ' ' << box.max.x << ' ' << box.max.y << " segment "
-           << s.a.x << ' ' << s.a.y << ' ' << s.b.x << ' ' << s.b.y << "\n";
+  RC_LOG() << "box " << box.min.x << ' ' << box.min.y << ' ' << box.max.x << ' ' << box.max.y
+           << " segment " << s.a.x << ' ' << s.a.y << ' ' << s.b.x << ' ' << s.b.y << "\n";
   RC_ASSERT(segment_meets_open_box(s, box) == (!flat && ref_clip(s, box, true).has_value()));
   const auto ring = valid_ccw(gen_star_ring(g));
   RC_PRE(ring.has_value());

@@ -45,9 +45,7 @@ PolygonSet fan(std::size_t n) {
   return triangles;
 }
 
-TEST(ValidateCrowd, FanAroundOnePointIsValid) {
-  EXPECT_TRUE(validate(fan(kCrowd)).ok());
-}
+TEST(ValidateCrowd, FanAroundOnePointIsValid) { EXPECT_TRUE(validate(fan(kCrowd)).ok()); }
 
 // The same fan with one triangle doubled: exactly that overlap is found.
 TEST(ValidateCrowd, FanWithOneDoubledTriangleNamesIt) {

@@ -18,9 +18,9 @@
 #include <vector>
 
 #include "edgeland/kernel/validate.hpp"
+#include "edgeland/kernel/wkt_writer.hpp"
 #include "support/rc_grid_draws.hpp"
 #include "support/validate_bruteforce.hpp"
-#include "edgeland/kernel/wkt_writer.hpp"
 #include "support/validate_generators.hpp"
 
 namespace edgeland {
@@ -182,7 +182,8 @@ TEST(ValidateRunSweepExhaustive, EveryRingOfFiveVerticesOnA3x3Grid) {
   testing::for_each_ring(g, 5, [&](const Ring& ring) {
     if (::testing::Test::HasFailure()) return;  // the first failure is enough
     const PolygonSet set{ring};
-    for (const std::uint32_t cap : {1u, 2u, 32u}) EXPECT_EQ(broken_promise(set, cap), "") << to_wkt(set);
+    for (const std::uint32_t cap : {1u, 2u, 32u})
+      EXPECT_EQ(broken_promise(set, cap), "") << to_wkt(set);
     valid += run_verdict(set, 32) == RunVerdict::kValid;
   });
   EXPECT_GT(valid, 0u);

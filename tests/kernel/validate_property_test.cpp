@@ -15,8 +15,8 @@
 #include <tuple>
 
 #include "edgeland/kernel/validate.hpp"
-#include "support/validate_bruteforce.hpp"
 #include "support/rc_grid_draws.hpp"
+#include "support/validate_bruteforce.hpp"
 #include "support/validate_generators.hpp"
 
 namespace edgeland {

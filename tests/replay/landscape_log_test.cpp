@@ -33,8 +33,8 @@ LandscapeLogError error_of(std::string_view line, std::size_t number = 3) {
 // --- the parser ---------------------------------------------------------------------------
 
 TEST(LandscapeLogParser, ReadsEveryCommandAndSkipsCommentsBlankLinesAndCarriageReturns) {
-  const std::string text = std::string("# header\n\nworld -5 -6 100 200 7\r\n") +
-                           "carve " + kBox + "\n  fill\t3 " + kBox + "  \n# between\n" +
+  const std::string text = std::string("# header\n\nworld -5 -6 100 200 7\r\n") + "carve " + kBox +
+                           "\n  fill\t3 " + kBox + "  \n# between\n" +
                            "fill_empty 255 MULTIPOLYGON EMPTY\r\nreplace 0 9 " + kBox + "\n";
   const ParsedLandscapeLog parsed = parse_landscape_log(text);
   ASSERT_FALSE(parsed.error.has_value()) << parsed.error->what();
@@ -75,12 +75,10 @@ TEST(LandscapeLogParser, UnknownAndUpperCaseCommandsAreUnknown) {
 }
 
 TEST(LandscapeLogParser, MaterialsOutside0To255AreBadArguments) {
-  for (const char* line : {"fill 256 POLYGON ((0 0, 1 0, 1 1, 0 0))",
-                           "fill -1 POLYGON ((0 0, 1 0, 1 1, 0 0))",
-                           "fill +3 POLYGON ((0 0, 1 0, 1 1, 0 0))",
-                           "fill_empty 1.5 POLYGON ((0 0, 1 0, 1 1, 0 0))",
-                           "replace 3 POLYGON ((0 0, 1 0, 1 1, 0 0))", "fill", "replace 1",
-                           "world 0 0 10 10 256"}) {
+  for (const char* line :
+       {"fill 256 POLYGON ((0 0, 1 0, 1 1, 0 0))", "fill -1 POLYGON ((0 0, 1 0, 1 1, 0 0))",
+        "fill +3 POLYGON ((0 0, 1 0, 1 1, 0 0))", "fill_empty 1.5 POLYGON ((0 0, 1 0, 1 1, 0 0))",
+        "replace 3 POLYGON ((0 0, 1 0, 1 1, 0 0))", "fill", "replace 1", "world 0 0 10 10 256"}) {
     const LandscapeLogError e = error_of(line);
     EXPECT_EQ(e.kind, LandscapeLogErrorKind::kBadArgument) << line << ": " << e.what();
     EXPECT_EQ(e.line, 3u);
@@ -180,11 +178,13 @@ TEST(LandscapeLogApply, AreasOfAxisAlignedEditsAreThoseWorkedOutByHand) {
 
 TEST(LandscapeLogApply, ShapeThatIsNotAValidSetIsImportedWithOgcSemantics) {
   // The bow-tie (0 0)-(10 10)-(10 0)-(0 10) winds around both lobes, triangles of area 25.
-  const Landscape bowtie = replay("world 0 0 20 20\nfill 1 POLYGON ((0 0, 10 10, 10 0, 0 10, 0 0))\n");
+  const Landscape bowtie =
+      replay("world 0 0 20 20\nfill 1 POLYGON ((0 0, 10 10, 10 0, 0 10, 0 0))\n");
   EXPECT_EQ(bowtie.twice_area(1), 100);
   // A hole is subtracted, whatever the rings' orientations: 400 - 100.
   const Landscape holed = replay(
-      "world 0 0 40 40\nfill 2 POLYGON ((0 0, 0 20, 20 20, 20 0, 0 0), (5 5, 15 5, 15 15, 5 15, 5 5))\n");
+      "world 0 0 40 40\nfill 2 POLYGON ((0 0, 0 20, 20 20, 20 0, 0 0), (5 5, 15 5, 15 15, 5 15, 5 "
+      "5))\n");
   EXPECT_EQ(holed.twice_area(2), 600);
 }
 

@@ -84,9 +84,13 @@ TEST(LandscapeIds, AnUnchangedPolygonKeepsItsIdWhenTheEditSplitsItsCell) {
                      {{-299, -270}, {-298, -270}, {-297, -267}, {-298, -267}, {-299, -269}},
                      {{-298, -277}, {-299, -278}, {-299, -279}, {-297, -279}}});
   ASSERT_EQ(l.stats().cells, 1u);
-  const std::size_t unchanged = carve_keeping_ids(
-      l, PolygonSet{{{-176, -242}, {-168, -243}, {-167, -243}, {-162, -242}, {-167, -241},
-                     {-174, -240}, {-176, -241}}});
+  const std::size_t unchanged = carve_keeping_ids(l, PolygonSet{{{-176, -242},
+                                                                 {-168, -243},
+                                                                 {-167, -243},
+                                                                 {-162, -242},
+                                                                 {-167, -241},
+                                                                 {-174, -240},
+                                                                 {-176, -241}}});
   // What the case is about: the cell split, and some polygons stayed as they were.
   EXPECT_GT(l.stats().cells, 1u);
   EXPECT_GT(unchanged, 0u);

@@ -40,8 +40,10 @@ void showValue(const LandscapeCase& c, std::ostream& os) {
 rc::Gen<LandscapeEdit> edit_in(const Box64& w) {
   return rc::gen::exec([w] {
     const std::int64_t size = w.max.x - w.min.x;
-    const std::int64_t r = *rc::gen::element<std::int64_t>(3, 8, 20, std::max<std::int64_t>(4, size / 4));
-    const Point64 c{*gen::coord(w.min.x - r / 2, w.max.x + r / 2), *gen::coord(w.min.y - r / 2, w.max.y + r / 2)};
+    const std::int64_t r =
+        *rc::gen::element<std::int64_t>(3, 8, 20, std::max<std::int64_t>(4, size / 4));
+    const Point64 c{*gen::coord(w.min.x - r / 2, w.max.x + r / 2),
+                    *gen::coord(w.min.y - r / 2, w.max.y + r / 2)};
     LandscapeEdit e;
     e.shape = *rc::gen::weightedOneOf<PolygonSet>(
         {{5, rc::gen::map(gen::shape(c, r), [](Polygon p) { return PolygonSet{std::move(p)}; })},
@@ -58,25 +60,27 @@ rc::Gen<LandscapeEdit> edit_in(const Box64& w) {
 // Sized to RapidCheck's nominal size throughout (inRange would shrink its range with the size
 // and give one edit in a tiny world to most of the early cases).
 rc::Gen<LandscapeCase> landscape_case(int max_edits = 8) {
-  return rc::gen::resize(rc::kNominalSize, rc::gen::exec([max_edits] {
-    LandscapeCase c;
-    const std::int64_t size = *rc::gen::element<std::int64_t>(64, 256, 1000);
-    const Point64 origin{*gen::coord(-300, 300), *gen::coord(-300, 300)};
-    c.world = {origin, {origin.x + size, origin.y + size / (*rc::gen::inRange(1, 3))}};
-    c.fill = static_cast<Material>(*rc::gen::element(0, 0, 1, 2));
-    c.config.tree = *rc::gen::element(TreeKind::kQuadtree, TreeKind::kKdTree);
-    c.config.edge_cap = *rc::gen::element<std::uint32_t>(32, 40, 64, 1000);
-    c.config.merge_below = c.config.edge_cap / 3;
-    c.config.min_cell_size = *rc::gen::element<std::int64_t>(1, 2, 8);
-    if (*rc::gen::inRange(0, 10) == 0) c.config.grid_depth = *rc::gen::inRange(1, 4);
-    const int n = *rc::gen::inRange(1, max_edits + 1);
-    for (int i = 0; i < n; ++i) c.edits.push_back(*edit_in(c.world));
-    return c;
-  }));
+  return rc::gen::resize(
+      rc::kNominalSize, rc::gen::exec([max_edits] {
+        LandscapeCase c;
+        const std::int64_t size = *rc::gen::element<std::int64_t>(64, 256, 1000);
+        const Point64 origin{*gen::coord(-300, 300), *gen::coord(-300, 300)};
+        c.world = {origin, {origin.x + size, origin.y + size / (*rc::gen::inRange(1, 3))}};
+        c.fill = static_cast<Material>(*rc::gen::element(0, 0, 1, 2));
+        c.config.tree = *rc::gen::element(TreeKind::kQuadtree, TreeKind::kKdTree);
+        c.config.edge_cap = *rc::gen::element<std::uint32_t>(32, 40, 64, 1000);
+        c.config.merge_below = c.config.edge_cap / 3;
+        c.config.min_cell_size = *rc::gen::element<std::int64_t>(1, 2, 8);
+        if (*rc::gen::inRange(0, 10) == 0) c.config.grid_depth = *rc::gen::inRange(1, 4);
+        const int n = *rc::gen::inRange(1, max_edits + 1);
+        for (int i = 0; i < n; ++i) c.edits.push_back(*edit_in(c.world));
+        return c;
+      }));
 }
 
 // The landscape of a case after its edits, checked; fails the property on any exception.
-Landscape run_case(const LandscapeCase& c, const LandscapeConfig& config, std::uint32_t* deepest = nullptr) {
+Landscape run_case(const LandscapeCase& c, const LandscapeConfig& config,
+                   std::uint32_t* deepest = nullptr) {
   Landscape l(c.world, c.fill, config);
   l.set_checked(true);
   for (const LandscapeEdit& e : c.edits) {
@@ -85,7 +89,8 @@ Landscape run_case(const LandscapeCase& c, const LandscapeConfig& config, std::u
     } catch (const std::exception& ex) {
       RC_FAIL(std::string("edit threw: ") + ex.what() + "\n  edit: " + describe(e));
     }
-    if (deepest) *deepest = std::max<std::uint32_t>(*deepest, static_cast<std::uint32_t>(l.stats().depth));
+    if (deepest)
+      *deepest = std::max<std::uint32_t>(*deepest, static_cast<std::uint32_t>(l.stats().depth));
   }
   return l;
 }
@@ -130,7 +135,8 @@ RC_GTEST_PROP(LandscapeProperty, EditsKeepEveryInvariantAndReportWhatChanged, ()
       const auto it = old_ids.find({p.material, p.ring});
       if (it != old_ids.end()) RC_ASSERT(it->second == id);
     }
-    for (const auto& [id, p] : after) RC_ASSERT(expected.count(id) == 1u && expected.at(id).ring == p.ring);
+    for (const auto& [id, p] : after)
+      RC_ASSERT(expected.count(id) == 1u && expected.at(id).ring == p.ring);
     std::map<Material, Int128> delta;
     for (const auto& [m, d] : cs.twice_area_delta) delta[m] = d;
     Int128 total = 0;
@@ -172,7 +178,9 @@ Material exact_material(const LandscapeCase& c, const std::vector<ExactRegion>& 
   return m;
 }
 
-Polygon box_polygon(const Box64& b) { return {b.min, {b.max.x, b.min.y}, b.max, {b.min.x, b.max.y}}; }
+Polygon box_polygon(const Box64& b) {
+  return {b.min, {b.max.x, b.min.y}, b.max, {b.min.x, b.max.y}};
+}
 
 RC_GTEST_PROP(LandscapeProperty, MaterialsAreTheExactHistoryAwayFromBoundaries, ()) {
   const LandscapeCase c = *landscape_case(5);
@@ -211,16 +219,19 @@ RC_GTEST_PROP(LandscapeProperty, MaterialsAreTheExactHistoryAwayFromBoundaries, 
     for (const auto& [m, r] : exact) {
       next[m] = next[m].apply(ClipOp::kUnion, r.apply(ClipOp::kDifference, s));
       const Material to = apply_pointwise(e, m, true);
-      if (to != kEmpty) next[to] = next[to].apply(ClipOp::kUnion, r.apply(ClipOp::kIntersection, s));
+      if (to != kEmpty)
+        next[to] = next[to].apply(ClipOp::kUnion, r.apply(ClipOp::kIntersection, s));
     }
     const Material from_empty = apply_pointwise(e, kEmpty, true);
     if (from_empty != kEmpty)
-      next[from_empty] = next[from_empty].apply(ClipOp::kUnion, s.apply(ClipOp::kDifference, solid));
+      next[from_empty] =
+          next[from_empty].apply(ClipOp::kUnion, s.apply(ClipOp::kDifference, solid));
     exact = std::move(next);
   }
   Rational band = 0;
   for (const ExactRegion& s : shapes)
-    band += 2 * d * Rational(s.perimeter_ceil()) + Rational(22, 7) * d * d * Rational(static_cast<long long>(s.boundary_cycles()));
+    band += 2 * d * Rational(s.perimeter_ceil()) +
+            Rational(22, 7) * d * d * Rational(static_cast<long long>(s.boundary_cycles()));
   band += 2 * d * Rational(world.perimeter_ceil()) + Rational(22, 7) * d * d;
   for (const auto& [m, r] : exact) {
     for (const Landscape* l : {&tree, &single}) {
@@ -248,7 +259,8 @@ Point64 probe_point(const Landscape& l, const std::vector<FlatPolygon>& polys) {
 Rational rational(const Fraction& f) {
   auto big = [](Int128 v) {
     const bool negative = v < 0;
-    const unsigned __int128 u = negative ? -static_cast<unsigned __int128>(v) : static_cast<unsigned __int128>(v);
+    const unsigned __int128 u =
+        negative ? -static_cast<unsigned __int128>(v) : static_cast<unsigned __int128>(v);
     BigInt r(static_cast<unsigned long long>(u >> 64));
     r <<= 64;
     r += BigInt(static_cast<unsigned long long>(u));
@@ -298,7 +310,8 @@ RC_GTEST_PROP(LandscapeProperty, QueriesAgreeWithBruteForce, ()) {
     const ExactRegion region = ExactRegion::of(box_polygon(box));
     std::set<Material> want;
     for (const FlatPolygon& p : polys)
-      if (!ExactRegion::of(p.ring).apply(ClipOp::kIntersection, region).empty()) want.insert(p.material);
+      if (!ExactRegion::of(p.ring).apply(ClipOp::kIntersection, region).empty())
+        want.insert(p.material);
     const std::vector<Material> got = l.overlaps(box);
     RC_ASSERT(std::set<Material>(got.begin(), got.end()) == want);
     const std::vector<Material> general = l.overlaps(ValidSet(PolygonSet{box_polygon(box)}));
@@ -353,7 +366,8 @@ bool cuts_are_wide(const Polygon& p, std::int64_t w, std::int64_t step) {
       for (std::size_t i = 0, n = p.size(); i < n; ++i) {
         const Point64 a = p[i], b = p[(i + 1) % n];
         if ((along(a) - line) * (along(b) - line) > 0 || along(a) == along(b)) continue;
-        Int128 num = Int128(across(a)) * (along(b) - along(a)) + Int128(line - along(a)) * (across(b) - across(a));
+        Int128 num = Int128(across(a)) * (along(b) - along(a)) +
+                     Int128(line - along(a)) * (across(b) - across(a));
         Int128 den = along(b) - along(a);
         if (den < 0) num = -num, den = -den;
         at.push_back({num, den});
@@ -382,7 +396,8 @@ RC_GTEST_PROP(LandscapeSeams, PiecesAcrossCellLinesReuniteExactly, ()) {
   const Polygon shape = *gen::convex({size / 2, size / 2}, size / 2);
   const std::int64_t step = std::max<std::int64_t>(1, size >> grid.grid_depth);
   RC_PRE(cuts_are_wide(shape, 2, step));
-  RC_LOG() << "grid depth " << grid.grid_depth << " size " << size << " shape " << to_wkt(shape) << "\n";
+  RC_LOG() << "grid depth " << grid.grid_depth << " size " << size << " shape " << to_wkt(shape)
+           << "\n";
   l.fill(PolygonSet{shape}, 1);
   PolygonSet pieces;
   l.polygons_in(l.world(), [&](const PolygonView& v) {

@@ -1,12 +1,13 @@
 // The landscape (landscape.hpp): edits, ids and change sets, splits and merges, the strong
 // guarantee, save/load, and the basic queries on hand-made worlds whose answers are known.
+#include "edgeland/spatial/landscape.hpp"
+
 #include <gtest/gtest.h>
 
 #include <limits>
 #include <sstream>
 
 #include "check.hpp"  // spatial/src: the error checked mode throws
-#include "edgeland/spatial/landscape.hpp"
 #include "polygon_set_helpers.hpp"
 
 namespace edgeland::test {
@@ -20,14 +21,13 @@ Polygon box_polygon(std::int64_t x0, std::int64_t y0, std::int64_t x1, std::int6
 Polygon ngon(Point64 c, std::int64_t r, int n) {
   // Integer points on a circle by a rotation-free table: a fixed 32-step turn of (r, 0) with
   // cos/sin tabled as fractions of 1000 (exactness is not needed, only validity).
-  static const int cs[32][2] = {{1000, 0},    {981, 195},   {924, 383},   {831, 556},
-                                {707, 707},   {556, 831},   {383, 924},   {195, 981},
-                                {0, 1000},    {-195, 981},  {-383, 924},  {-556, 831},
-                                {-707, 707},  {-831, 556},  {-924, 383},  {-981, 195},
-                                {-1000, 0},   {-981, -195}, {-924, -383}, {-831, -556},
-                                {-707, -707}, {-556, -831}, {-383, -924}, {-195, -981},
-                                {0, -1000},   {195, -981},  {383, -924},  {556, -831},
-                                {707, -707},  {831, -556},  {924, -383},  {981, -195}};
+  static const int cs[32][2] = {
+      {1000, 0},    {981, 195},   {924, 383},   {831, 556},   {707, 707},   {556, 831},
+      {383, 924},   {195, 981},   {0, 1000},    {-195, 981},  {-383, 924},  {-556, 831},
+      {-707, 707},  {-831, 556},  {-924, 383},  {-981, 195},  {-1000, 0},   {-981, -195},
+      {-924, -383}, {-831, -556}, {-707, -707}, {-556, -831}, {-383, -924}, {-195, -981},
+      {0, -1000},   {195, -981},  {383, -924},  {556, -831},  {707, -707},  {831, -556},
+      {924, -383},  {981, -195}};
   Polygon p;
   for (int i = 0; i < n; ++i) {
     const int k = i * 32 / n;
@@ -320,7 +320,6 @@ TEST(LandscapeLimits, ConfigurationsThatCannotWorkAreRefused) {
 
 }  // namespace
 }  // namespace edgeland::test
-
 
 namespace edgeland::test {
 namespace {

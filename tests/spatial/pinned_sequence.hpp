@@ -19,9 +19,9 @@ inline std::uint64_t splitmix64(std::uint64_t& s) {
 
 // 16 points on a circle of radius 1000 (rounded), counter-clockwise.
 inline constexpr std::int64_t kCircle[16][2] = {
-    {1000, 0},   {924, 383},   {707, 707},   {383, 924},  {0, 1000},  {-383, 924},
-    {-707, 707}, {-924, 383},  {-1000, 0},   {-924, -383}, {-707, -707}, {-383, -924},
-    {0, -1000},  {383, -924},  {707, -707},  {924, -383}};
+    {1000, 0},   {924, 383},  {707, 707},  {383, 924},   {0, 1000},    {-383, 924},
+    {-707, 707}, {-924, 383}, {-1000, 0},  {-924, -383}, {-707, -707}, {-383, -924},
+    {0, -1000},  {383, -924}, {707, -707}, {924, -383}};
 
 inline Polygon blob(Point64 c, std::int64_t r) {
   Polygon p;
@@ -39,10 +39,18 @@ inline Landscape run(const LandscapeConfig& config) {
     const std::int64_t r = 20 + static_cast<std::int64_t>(splitmix64(seed) % 120);
     const PolygonSet shape{blob(c, r)};
     switch (splitmix64(seed) % 5) {
-      case 0: l.fill(shape, 2); break;
-      case 1: l.replace(shape, 1, 3); break;
-      case 2: l.fill_empty(shape, 4); break;
-      default: l.carve(shape); break;
+      case 0:
+        l.fill(shape, 2);
+        break;
+      case 1:
+        l.replace(shape, 1, 3);
+        break;
+      case 2:
+        l.fill_empty(shape, 4);
+        break;
+      default:
+        l.carve(shape);
+        break;
     }
   }
   return l;

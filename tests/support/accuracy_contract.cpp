@@ -14,9 +14,7 @@
 namespace edgeland::test {
 namespace {
 
-QPoint to_q(const SamplePoint& p) {
-  return {Rational(p.x) / p.den, Rational(p.y) / p.den};
-}
+QPoint to_q(const SamplePoint& p) { return {Rational(p.x) / p.den, Rational(p.y) / p.den}; }
 
 std::string show(const SamplePoint& p) {
   std::ostringstream os;
@@ -25,12 +23,14 @@ std::string show(const SamplePoint& p) {
 }
 
 // The sample points of accuracy_contract.hpp, deterministic for a given seed.
-std::vector<SamplePoint> sample_points(const std::vector<Point64>& inputs,
-                                       const PolygonSet& output, const ContractOptions& o) {
+std::vector<SamplePoint> sample_points(const std::vector<Point64>& inputs, const PolygonSet& output,
+                                       const ContractOptions& o) {
   std::optional<Box64> box;
   auto add = [&](Point64 p) {
-    if (box) box->expand(p);
-    else box = Box64{p, p};
+    if (box)
+      box->expand(p);
+    else
+      box = Box64{p, p};
   };
   for (const Point64& p : inputs) add(p);
   for (const Polygon& poly : output)
@@ -93,10 +93,14 @@ ExactCase exact_clip(ClipOp op, const PolygonSet& a, const PolygonSet& b, const 
         if (!box.contains(v)) continue;
         if (!cache[i]) {
           const ExactRegion member = ExactRegion::of(set[i]);
-          if (!subject) cache[i] = member.apply(ClipOp::kDifference, ra);
-          else if (op == ClipOp::kUnion) cache[i] = member;
-          else if (op == ClipOp::kIntersection) cache[i] = member.apply(ClipOp::kIntersection, rb);
-          else cache[i] = member.apply(ClipOp::kDifference, rb);
+          if (!subject)
+            cache[i] = member.apply(ClipOp::kDifference, ra);
+          else if (op == ClipOp::kUnion)
+            cache[i] = member;
+          else if (op == ClipOp::kIntersection)
+            cache[i] = member.apply(ClipOp::kIntersection, rb);
+          else
+            cache[i] = member.apply(ClipOp::kDifference, rb);
         }
         if (cache[i]->boundary_within(to_q(v), 1)) return true;
       }
@@ -193,8 +197,8 @@ ContractReport check_contract(const ExactCase& exact, const ClipResult& out,
   // 5. Symmetric difference within the 1.5-band around the exact boundary.
   if (options.symmetric_difference_bound) {
     const Rational sym = ExactRegion::of(s).apply(ClipOp::kXor, r).area();
-    const Rational band = Rational(3) * Rational(perimeter) +
-                          Rational(9 * 22, 4 * 7) * Rational(r.boundary_cycles());
+    const Rational band =
+        Rational(3) * Rational(perimeter) + Rational(9 * 22, 4 * 7) * Rational(r.boundary_cycles());
     if (sym > band)
       return fail("area of output xor exact " + sym.str() + " exceeds the 1.5-band bound " +
                   band.str());

@@ -31,13 +31,17 @@ using Exact = std::decay_t<decltype(CGAL::exact(K::FT(1)))>;
 
 template <class E>
 Rational to_rational(const E& e) {
-  if constexpr (std::is_same_v<E, Rational>) return e;
-  else return Rational(e.get_mpq_t());
+  if constexpr (std::is_same_v<E, Rational>)
+    return e;
+  else
+    return Rational(e.get_mpq_t());
 }
 template <class E = Exact>
 E to_exact(const Rational& r) {
-  if constexpr (std::is_same_v<E, Rational>) return r;
-  else return E(r.backend().data());
+  if constexpr (std::is_same_v<E, Rational>)
+    return r;
+  else
+    return E(r.backend().data());
 }
 
 // Integer coordinates up to 2^31 are exact doubles, and a lazy number built from a double
@@ -129,10 +133,18 @@ constexpr int kMaxSplits = 6;
 
 void apply_in_place(CSet& r, ClipOp op, const CSet& other) {
   switch (op) {
-    case ClipOp::kUnion: r.join(other); break;
-    case ClipOp::kIntersection: r.intersection(other); break;
-    case ClipOp::kDifference: r.difference(other); break;
-    case ClipOp::kXor: r.symmetric_difference(other); break;
+    case ClipOp::kUnion:
+      r.join(other);
+      break;
+    case ClipOp::kIntersection:
+      r.intersection(other);
+      break;
+    case ClipOp::kDifference:
+      r.difference(other);
+      break;
+    case ClipOp::kXor:
+      r.symmetric_difference(other);
+      break;
   }
 }
 
@@ -256,9 +268,8 @@ Computed joined(std::vector<CPolygon> polygons) {
       return std::move(*r);
   }
   ++halves_uses;
-  std::sort(polygons.begin(), polygons.end(), [](const CPolygon& p, const CPolygon& q) {
-    return p.bbox().xmin() < q.bbox().xmin();
-  });
+  std::sort(polygons.begin(), polygons.end(),
+            [](const CPolygon& p, const CPolygon& q) { return p.bbox().xmin() < q.bbox().xmin(); });
   const auto mid = polygons.begin() + static_cast<std::ptrdiff_t>(polygons.size() / 2);
   const Computed left = joined(std::vector<CPolygon>(polygons.begin(), mid));
   const Computed right = joined(std::vector<CPolygon>(mid, polygons.end()));
@@ -363,7 +374,8 @@ std::size_t ExactRegion::boundary_edges() const { return impl_->boundary.size();
 
 BigInt ExactRegion::perimeter_ceil() const {
   BigInt sum = 0;
-  for (const CSegment& s : impl_->boundary) sum += ceil_sqrt(to_rational(CGAL::exact(s.squared_length())));
+  for (const CSegment& s : impl_->boundary)
+    sum += ceil_sqrt(to_rational(CGAL::exact(s.squared_length())));
   return sum;
 }
 
@@ -394,9 +406,12 @@ ExactRegion::Location ExactRegion::locate(const QPoint& p) const {
 
 ExactRegion::Location ExactRegion::locate_by_cgal(const QPoint& p) const {
   switch (impl_->set.oriented_side(cpoint(p))) {
-    case CGAL::ON_POSITIVE_SIDE: return Location::kInside;
-    case CGAL::ON_NEGATIVE_SIDE: return Location::kOutside;
-    default: return Location::kOnBoundary;
+    case CGAL::ON_POSITIVE_SIDE:
+      return Location::kInside;
+    case CGAL::ON_NEGATIVE_SIDE:
+      return Location::kOutside;
+    default:
+      return Location::kOnBoundary;
   }
 }
 
@@ -409,8 +424,7 @@ bool ExactRegion::boundary_within(const QPoint& p, const Rational& squared_radiu
   const K::FT limit = ft(squared_radius);
   for (std::size_t i = 0; i < impl_->boundary.size(); ++i) {
     const CGAL::Bbox_2& b = impl_->boxes[i];
-    if (px < b.xmin() - r || px > b.xmax() + r || py < b.ymin() - r || py > b.ymax() + r)
-      continue;
+    if (px < b.xmin() - r || px > b.xmax() + r || py < b.ymin() - r || py > b.ymax() + r) continue;
     if (CGAL::squared_distance(cp, impl_->boundary[i]) <= limit) return true;
   }
   return false;
@@ -438,8 +452,10 @@ bool segments_farther_than(const Segment& s, const Segment& t, const Rational& s
   const K::FT limit = ft(squared_radius);
   // Degenerate segments are points (CGAL's Segment_2 requires distinct endpoints).
   if (s.a == s.b && t.a == t.b) return CGAL::squared_distance(cpoint(s.a), cpoint(t.a)) > limit;
-  if (s.a == s.b) return CGAL::squared_distance(cpoint(s.a), CSegment(cpoint(t.a), cpoint(t.b))) > limit;
-  if (t.a == t.b) return CGAL::squared_distance(cpoint(t.a), CSegment(cpoint(s.a), cpoint(s.b))) > limit;
+  if (s.a == s.b)
+    return CGAL::squared_distance(cpoint(s.a), CSegment(cpoint(t.a), cpoint(t.b))) > limit;
+  if (t.a == t.b)
+    return CGAL::squared_distance(cpoint(t.a), CSegment(cpoint(s.a), cpoint(s.b))) > limit;
   const CSegment a(cpoint(s.a), cpoint(s.b)), b(cpoint(t.a), cpoint(t.b));
   return CGAL::squared_distance(a, b) > limit;
 }

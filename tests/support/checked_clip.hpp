@@ -50,7 +50,8 @@ inline Outcome run_import(const std::vector<std::vector<Ring>>& polygons) {
   } catch (const std::exception& e) {
     PolygonSet rings;
     for (const auto& polygon : polygons) rings.insert(rings.end(), polygon.begin(), polygon.end());
-    o.error = std::string("exception: ") + e.what() + "\n  import_polygons rings = " + to_wkt(rings);
+    o.error =
+        std::string("exception: ") + e.what() + "\n  import_polygons rings = " + to_wkt(rings);
   }
   return o;
 }

@@ -57,8 +57,8 @@ inline Polygon triangle_in(Point64 lo, Point64 hi) {
 inline rc::Gen<Polygon> convex(Point64 c, std::int64_t r) {
   return rc::gen::exec([=] {
     const Point64 lo{c.x - r, c.y - r}, hi{c.x + r, c.y + r};
-    const auto pts = *rc::gen::container<std::vector<Point64>>(*rc::gen::inRange(3, 13),
-                                                              point_in(lo, hi));
+    const auto pts =
+        *rc::gen::container<std::vector<Point64>>(*rc::gen::inRange(3, 13), point_in(lo, hi));
     Polygon h = convex_hull(pts);
     return h.size() >= 3 ? h : triangle_in(lo, hi);
   });
@@ -68,8 +68,8 @@ inline rc::Gen<Polygon> convex(Point64 c, std::int64_t r) {
 inline rc::Gen<Polygon> star(Point64 c, std::int64_t r) {
   return rc::gen::exec([=] {
     const Point64 lo{c.x - r, c.y - r}, hi{c.x + r, c.y + r};
-    const auto pts = *rc::gen::container<std::vector<Point64>>(*rc::gen::inRange(3, 41),
-                                                              point_in(lo, hi));
+    const auto pts =
+        *rc::gen::container<std::vector<Point64>>(*rc::gen::inRange(3, 41), point_in(lo, hi));
     Polygon s = star_polygon(c, pts);
     if (s.size() >= 3 && validate(s, 1).ok()) return s;
     Polygon h = convex_hull(pts);
@@ -89,9 +89,9 @@ inline rc::Gen<Polygon> sliver(Point64 c, std::int64_t r) {
     else
       p = make_ccw({{0, 0}, {len, rise}, {len - 1, rise + 1}});
     if (twice_area(p) == 0) p = {{0, 0}, {len, rise}, {len, rise + 1}, {0, 1}};
-    const Affine place = *rc::gen::element(Affine{1, 0, 0, 1, c.x - r, c.y},
-                                           Affine{0, -1, 1, 0, c.x, c.y - r},
-                                           Affine{1, 1, 0, 1, c.x - r, c.y});
+    const Affine place =
+        *rc::gen::element(Affine{1, 0, 0, 1, c.x - r, c.y}, Affine{0, -1, 1, 0, c.x, c.y - r},
+                          Affine{1, 1, 0, 1, c.x - r, c.y});
     const auto placed = place.apply({p});
     return placed ? placed->front() : p;
   });
@@ -134,10 +134,8 @@ inline rc::Gen<PolygonSet> fan_set(Point64 c, std::int64_t r) {
 
 // One shape of any kind within r of c.
 inline rc::Gen<Polygon> shape(Point64 c, std::int64_t r) {
-  return rc::gen::weightedOneOf<Polygon>({{4, convex(c, r)},
-                                          {4, star(c, r)},
-                                          {2, sliver(c, r)},
-                                          {2, comb_shape(c, r)}});
+  return rc::gen::weightedOneOf<Polygon>(
+      {{4, convex(c, r)}, {4, star(c, r)}, {2, sliver(c, r)}, {2, comb_shape(c, r)}});
 }
 
 // A valid set within r of c: one shape, several scattered shapes, grid cells or a fan.
@@ -156,10 +154,8 @@ inline rc::Gen<PolygonSet> polygon_set(Point64 c, std::int64_t r) {
     const std::int64_t size = *coord(1, std::max<std::int64_t>(1, r / 3));
     return *cells({c.x - r, c.y - r}, size, *rc::gen::inRange(1, 6));
   });
-  return rc::gen::map(rc::gen::weightedOneOf<PolygonSet>({{5, single},
-                                                          {3, scattered},
-                                                          {2, grid},
-                                                          {1, fan_set(c, r)}}),
+  return rc::gen::map(rc::gen::weightedOneOf<PolygonSet>(
+                          {{5, single}, {3, scattered}, {2, grid}, {1, fan_set(c, r)}}),
                       [](const PolygonSet& s) { return keep_valid(s); });
 }
 
@@ -227,8 +223,8 @@ inline rc::Gen<OperandPair> vertex_on_edge_pair(Point64 c, std::int64_t r) {
 
 // Pairs at the scale r around c (all coordinates within about 2r of c).
 inline rc::Gen<OperandPair> local_pair(Point64 c, std::int64_t r) {
-  auto independent = rc::gen::exec(
-      [=] { return pair_of("independent", *polygon_set(c, r), *polygon_set(c, r)); });
+  auto independent =
+      rc::gen::exec([=] { return pair_of("independent", *polygon_set(c, r), *polygon_set(c, r)); });
   auto identical = rc::gen::exec([=] {
     const PolygonSet a = *polygon_set(c, r);
     return pair_of("identical", a, a);
@@ -276,9 +272,10 @@ inline rc::Gen<OperandPair> local_pair(Point64 c, std::int64_t r) {
   auto pixel_fans = rc::gen::exec([=] {
     const PolygonSet a = *fan_set(c, r);
     const Point64 c2{c.x + *coord(-1, 1), c.y + *coord(-1, 1)};
-    PolygonSet b = *rc::gen::arbitrary<bool>()
-                       ? *fan_set(c2, r)
-                       : PolygonSet{make_ccw({{c.x - r, c.y - 1}, {c.x + r, c.y + 1}, {c.x, c.y + r}})};
+    PolygonSet b =
+        *rc::gen::arbitrary<bool>()
+            ? *fan_set(c2, r)
+            : PolygonSet{make_ccw({{c.x - r, c.y - 1}, {c.x + r, c.y + 1}, {c.x, c.y + r}})};
     return pair_of("many-edges-through-one-pixel", a, b);
   });
   auto stars = rc::gen::exec([=] {
@@ -317,8 +314,8 @@ inline rc::Gen<OperandPair> at_range_ends(const OperandPair& p) {
     }();
     const auto box = bounding_box(both);
     if (!box) return p;
-    const std::int64_t extent = std::max<std::int64_t>(
-        1, std::max(box->max.x - box->min.x, box->max.y - box->min.y));
+    const std::int64_t extent =
+        std::max<std::int64_t>(1, std::max(box->max.x - box->min.x, box->max.y - box->min.y));
     Affine t;
     if (*rc::gen::arbitrary<bool>()) {
       const std::int64_t limit = (2 * kCoordBound) / extent;
@@ -344,9 +341,10 @@ inline rc::Gen<OperandPair> at_range_ends(const OperandPair& p) {
 inline rc::Gen<OperandPair> huge_triangles() {
   return rc::gen::exec([] {
     const Point64 lo{-kCoordBound, -kCoordBound}, hi{kCoordBound, kCoordBound};
-    const Polygon a = *rc::gen::arbitrary<bool>()
-                          ? Polygon{lo, {kCoordBound, -kCoordBound}, {*coord(lo.x, hi.x), kCoordBound}}
-                          : triangle_in(lo, hi);
+    const Polygon a =
+        *rc::gen::arbitrary<bool>()
+            ? Polygon{lo, {kCoordBound, -kCoordBound}, {*coord(lo.x, hi.x), kCoordBound}}
+            : triangle_in(lo, hi);
     return pair_of("huge-triangles", {a}, {triangle_in(lo, hi)});
   });
 }

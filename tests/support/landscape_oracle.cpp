@@ -44,7 +44,8 @@ Int128 cross(Point64 u, Point64 v) { return Int128(u.x) * v.y - Int128(u.y) * v.
 
 Rational exact(Int128 v) {
   const bool negative = v < 0;
-  const unsigned __int128 u = negative ? -static_cast<unsigned __int128>(v) : static_cast<unsigned __int128>(v);
+  const unsigned __int128 u =
+      negative ? -static_cast<unsigned __int128>(v) : static_cast<unsigned __int128>(v);
   BigInt r(static_cast<unsigned long long>(u >> 64));
   r <<= 64;
   r += BigInt(static_cast<unsigned long long>(u));
@@ -80,9 +81,12 @@ std::vector<Rational> candidates(const std::vector<FlatPolygon>& polys, Point64 
 std::string describe(const LandscapeEdit& e) {
   const std::string wkt = to_wkt(e.shape);
   switch (e.kind) {
-    case LandscapeEdit::Kind::kCarve: return "carve " + wkt;
-    case LandscapeEdit::Kind::kFill: return "fill " + std::to_string(e.a) + " " + wkt;
-    case LandscapeEdit::Kind::kFillEmpty: return "fill_empty " + std::to_string(e.a) + " " + wkt;
+    case LandscapeEdit::Kind::kCarve:
+      return "carve " + wkt;
+    case LandscapeEdit::Kind::kFill:
+      return "fill " + std::to_string(e.a) + " " + wkt;
+    case LandscapeEdit::Kind::kFillEmpty:
+      return "fill_empty " + std::to_string(e.a) + " " + wkt;
     case LandscapeEdit::Kind::kReplace:
       return "replace " + std::to_string(e.a) + " " + std::to_string(e.b) + " " + wkt;
   }
@@ -91,10 +95,14 @@ std::string describe(const LandscapeEdit& e) {
 
 ChangeSet apply(Landscape& l, const LandscapeEdit& e) {
   switch (e.kind) {
-    case LandscapeEdit::Kind::kCarve: return l.carve(e.shape);
-    case LandscapeEdit::Kind::kFill: return l.fill(e.shape, e.a);
-    case LandscapeEdit::Kind::kFillEmpty: return l.fill_empty(e.shape, e.a);
-    case LandscapeEdit::Kind::kReplace: return l.replace(e.shape, e.a, e.b);
+    case LandscapeEdit::Kind::kCarve:
+      return l.carve(e.shape);
+    case LandscapeEdit::Kind::kFill:
+      return l.fill(e.shape, e.a);
+    case LandscapeEdit::Kind::kFillEmpty:
+      return l.fill_empty(e.shape, e.a);
+    case LandscapeEdit::Kind::kReplace:
+      return l.replace(e.shape, e.a, e.b);
   }
   return {};
 }
@@ -102,10 +110,14 @@ ChangeSet apply(Landscape& l, const LandscapeEdit& e) {
 Material apply_pointwise(const LandscapeEdit& e, Material before, bool inside) {
   if (!inside) return before;
   switch (e.kind) {
-    case LandscapeEdit::Kind::kCarve: return kEmpty;
-    case LandscapeEdit::Kind::kFill: return e.a;
-    case LandscapeEdit::Kind::kFillEmpty: return before == kEmpty ? e.a : before;
-    case LandscapeEdit::Kind::kReplace: return before == e.a ? e.b : before;
+    case LandscapeEdit::Kind::kCarve:
+      return kEmpty;
+    case LandscapeEdit::Kind::kFill:
+      return e.a;
+    case LandscapeEdit::Kind::kFillEmpty:
+      return before == kEmpty ? e.a : before;
+    case LandscapeEdit::Kind::kReplace:
+      return before == e.a ? e.b : before;
   }
   return before;
 }

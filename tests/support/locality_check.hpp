@@ -61,10 +61,14 @@ inline bool overlaps(const Segment& e, const Segment& f) {
 inline long long label(ClipOp op, long long a, long long b) {
   const long long subject = a, clip = b >= 0 ? (1LL << 40) + b : -1;
   switch (op) {
-    case ClipOp::kUnion: return a >= 0 ? subject : clip;
-    case ClipOp::kIntersection: return a >= 0 && b >= 0 ? subject : -1;
-    case ClipOp::kDifference: return a >= 0 && b < 0 ? subject : -1;
-    case ClipOp::kXor: return a >= 0 && b < 0 ? subject : a < 0 && b >= 0 ? clip : -1;
+    case ClipOp::kUnion:
+      return a >= 0 ? subject : clip;
+    case ClipOp::kIntersection:
+      return a >= 0 && b >= 0 ? subject : -1;
+    case ClipOp::kDifference:
+      return a >= 0 && b < 0 ? subject : -1;
+    case ClipOp::kXor:
+      return a >= 0 && b < 0 ? subject : a < 0 && b >= 0 ? clip : -1;
   }
   return -1;
 }
@@ -91,10 +95,9 @@ inline bool far_from(const Segment& e, const PolygonSet& other) {
 enum class Locality { kLiteral, kOperation };
 
 // One piece of a far input edge of member `pi` of `input`, with constant owners along it.
-inline std::string check_piece(ClipOp op, const Segment& e, std::size_t pi,
-                               const PolygonSet& input, const PolygonSet& other,
-                               bool input_is_subject, const std::vector<Segment>& out_edges,
-                               Locality reading) {
+inline std::string check_piece(ClipOp op, const Segment& e, std::size_t pi, const PolygonSet& input,
+                               const PolygonSet& other, bool input_is_subject,
+                               const std::vector<Segment>& out_edges, Locality reading) {
   using namespace locality_detail;
   const SamplePoint mid{e.a.x + e.b.x, e.a.y + e.b.y, 2};
   long long right = -1, owner_other = -1;
@@ -102,12 +105,13 @@ inline std::string check_piece(ClipOp op, const Segment& e, std::size_t pi,
     if (j != pi && locate(PolygonSet{input[j]}, mid) == Where::kOnBoundary)
       right = static_cast<long long>(j);
   for (std::size_t j = 0; j < other.size(); ++j)
-    if (locate(PolygonSet{other[j]}, mid) == Where::kInside) owner_other = static_cast<long long>(j);
+    if (locate(PolygonSet{other[j]}, mid) == Where::kInside)
+      owner_other = static_cast<long long>(j);
   const long long me = static_cast<long long>(pi);
-  const long long left_label = input_is_subject ? label(op, me, owner_other)
-                                                : label(op, owner_other, me);
-  const long long right_label = input_is_subject ? label(op, right, owner_other)
-                                                 : label(op, owner_other, right);
+  const long long left_label =
+      input_is_subject ? label(op, me, owner_other) : label(op, owner_other, me);
+  const long long right_label =
+      input_is_subject ? label(op, right, owner_other) : label(op, owner_other, right);
   const bool expected = left_label != right_label;
   bool touched = false, kept = false;
   for (const Segment& f : out_edges) {
@@ -152,8 +156,8 @@ inline std::string check_locality(ClipOp op, const PolygonSet& input, const Poly
       cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
       for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
         const Segment piece{cuts[k], cuts[k + 1]};
-        if (std::string f = check_piece(op, piece, pi, input, other, input_is_subject, out_edges,
-                                        reading);
+        if (std::string f =
+                check_piece(op, piece, pi, input, other, input_is_subject, out_edges, reading);
             !f.empty())
           return f + " (a piece of the input edge (" + std::to_string(e.a.x) + ' ' +
                  std::to_string(e.a.y) + ", " + std::to_string(e.b.x) + ' ' +

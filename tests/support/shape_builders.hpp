@@ -95,7 +95,8 @@ inline PolygonSet grid_cells(Point64 origin, std::int64_t size,
 // An orthogonal comb: a base bar [0, width] x [0, 1] with teeth one unit wide at the even
 // x positions in `teeth` (tooth at x spans [x, x+1] x [1, 1 + height]). One-unit wide
 // features everywhere (thesis fig. 22).
-inline Polygon comb(std::int64_t width, const std::vector<std::pair<std::int64_t, std::int64_t>>& teeth) {
+inline Polygon comb(std::int64_t width,
+                    const std::vector<std::pair<std::int64_t, std::int64_t>>& teeth) {
   Polygon p{{0, 0}, {width, 0}, {width, 1}};
   std::vector<std::pair<std::int64_t, std::int64_t>> t = teeth;
   std::sort(t.begin(), t.end(), std::greater<>());

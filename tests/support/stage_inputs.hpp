@@ -76,7 +76,7 @@ inline std::string str(Point64 p) {
 }
 
 inline std::string str(const detail::SideState& s) {
-  return "state (" + std::to_string(s.s[0]) + " " + std::to_string(s.s[1]) + ")";
+  return "state (" + std::to_string(s.by_channel[0]) + " " + std::to_string(s.by_channel[1]) + ")";
 }
 
 // Half-edge h and its first stretch, for messages.
@@ -252,7 +252,7 @@ class BruteStates {
     int sum = 0;
     for (int w : windings(q)) sum += w;
     detail::SideState s = detail::empty_state(detail::LabelMode::kWinding);
-    s.s[0] = sum;
+    s.by_channel[0] = sum;
     return s;
   }
   // The polygon of each channel whose ring winds once about q; nullopt when some ring winds
@@ -262,7 +262,7 @@ class BruteStates {
     const std::vector<int> w = windings(q);
     for (std::size_t i = 0; i < rings_.size(); ++i) {
       if (w[i] == 0) continue;
-      std::int32_t& owner = s.s[rings_[i].channel];
+      std::int32_t& owner = s.by_channel[rings_[i].channel];
       if (w[i] != 1 || owner >= 0) return std::nullopt;
       owner = rings_[i].polygon;
     }

@@ -14,10 +14,14 @@ struct Seg {
 
 bool filled(FillRule rule, int w) {
   switch (rule) {
-    case FillRule::kEvenOdd: return w % 2 != 0;
-    case FillRule::kNonZero: return w != 0;
-    case FillRule::kPositive: return w > 0;
-    case FillRule::kNegative: return w < 0;
+    case FillRule::kEvenOdd:
+      return w % 2 != 0;
+    case FillRule::kNonZero:
+      return w != 0;
+    case FillRule::kPositive:
+      return w > 0;
+    case FillRule::kNegative:
+      return w < 0;
   }
   return false;
 }

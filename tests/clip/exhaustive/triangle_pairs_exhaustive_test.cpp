@@ -49,13 +49,13 @@ struct Tally {
   void fail(const std::string& what, ClipOp op, const Polygon& a, const Polygon& b) {
     ++failures;
     if (messages.size() < 12)
-      messages.push_back(what + "\n  " + op_name(op) + "\n  A = " + to_wkt(a) + "\n  B = " +
-                         to_wkt(b));
+      messages.push_back(what + "\n  " + op_name(op) + "\n  A = " + to_wkt(a) +
+                         "\n  B = " + to_wkt(b));
   }
   void report(const char* name, double seconds) const {
-    std::cout << "[exhaustive] " << name << ": " << cases << " cases (" << snapped
-              << " snapped), " << points << " point classifications, " << cgal_checked
-              << " also checked with CGAL, " << failures << " failures, " << seconds << " s\n";
+    std::cout << "[exhaustive] " << name << ": " << cases << " cases (" << snapped << " snapped), "
+              << points << " point classifications, " << cgal_checked << " also checked with CGAL, "
+              << failures << " failures, " << seconds << " s\n";
     for (const std::string& m : messages) std::cout << "  FAIL " << m << "\n";
   }
 };
@@ -67,14 +67,16 @@ void check_case(ClipOp op, const Polygon& a, const Polygon& b, const TwoPolygonR
   if (!o.ok()) return t.fail(o.error, op, a, b);
   const PolygonSet& s = o.result->polygons;
   const ValidationReport v = validate(s);
-  if (!v.ok()) return t.fail("invalid output " + to_wkt(s) + ": " + v.violations.front().describe(), op, a, b);
+  if (!v.ok())
+    return t.fail("invalid output " + to_wkt(s) + ": " + v.violations.front().describe(), op, a, b);
   const bool snapped = o.result->stats.vertices_snapped != 0;
   if (snapped) ++t.snapped;
   const Int128 S = ref.scale();
   const Int128 exact2 = ref.twice_area_scaled(op);
   const Int128 got2 = twice_area(s) * S * S;
   const Int128 err = got2 > exact2 ? got2 - exact2 : exact2 - got2;
-  if (!snapped && err != 0) return t.fail("unsnapped output " + to_wkt(s) + " has the wrong area", op, a, b);
+  if (!snapped && err != 0)
+    return t.fail("unsnapped output " + to_wkt(s) + " has the wrong area", op, a, b);
   if (err > 2 * S * S * ref.perimeter_ceil(op))
     return t.fail("area of " + to_wkt(s) + " beyond the perimeter bound", op, a, b);
   for (const Polygon& poly : s)
@@ -106,7 +108,8 @@ void check_case(ClipOp op, const Polygon& a, const Polygon& b, const TwoPolygonR
   if (with_cgal) {
     ++t.cgal_checked;
     const ExactCase exact = exact_clip(op, {a}, {b});
-    const Rational ref_area = Rational(BigInt(to_string(exact2))) / Rational(BigInt(to_string(2 * S * S)));
+    const Rational ref_area =
+        Rational(BigInt(to_string(exact2))) / Rational(BigInt(to_string(2 * S * S)));
     if (exact.result.area() != ref_area)
       return t.fail("the integer reference's area " + ref_area.str() + " differs from CGAL's " +
                         exact.result.area().str(),

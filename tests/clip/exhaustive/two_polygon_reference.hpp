@@ -47,8 +47,10 @@ inline int compare_distance(const Scaled& p, const Scaled& a, const Scaled& b, I
   const Int128 len2 = dot(a, b, b);
   const Int128 t = dot(a, b, p);
   Int128 d2num, d2den = 1;
-  if (t <= 0) d2num = dot(a, p, p);
-  else if (t >= len2) d2num = dot(b, p, p);
+  if (t <= 0)
+    d2num = dot(a, p, p);
+  else if (t >= len2)
+    d2num = dot(b, p, p);
   else {
     const Int128 c = cross(a, b, p);
     d2num = c * c;
@@ -73,12 +75,12 @@ class TwoPolygonReference {
       const Polygon& self = which == 0 ? a_ : b_;
       for (std::size_t i = 0; i < self.size(); ++i) split_edge(which, i);
     }
-    std::sort(pieces_.begin(), pieces_.end(), [](const Piece& u, const Piece& v) {
-      return u.p != v.p ? u.p < v.p : u.q < v.q;
-    });
-    pieces_.erase(std::unique(pieces_.begin(), pieces_.end(),
-                              [](const Piece& u, const Piece& v) { return u.p == v.p && u.q == v.q; }),
-                  pieces_.end());
+    std::sort(pieces_.begin(), pieces_.end(),
+              [](const Piece& u, const Piece& v) { return u.p != v.p ? u.p < v.p : u.q < v.q; });
+    pieces_.erase(
+        std::unique(pieces_.begin(), pieces_.end(),
+                    [](const Piece& u, const Piece& v) { return u.p == v.p && u.q == v.q; }),
+        pieces_.end());
   }
 
   Int128 scale() const { return scale_; }
@@ -87,20 +89,28 @@ class TwoPolygonReference {
 
   static bool result(ClipOp op, bool a, bool b) {
     switch (op) {
-      case ClipOp::kUnion: return a || b;
-      case ClipOp::kIntersection: return a && b;
-      case ClipOp::kDifference: return a && !b;
-      case ClipOp::kXor: return a != b;
+      case ClipOp::kUnion:
+        return a || b;
+      case ClipOp::kIntersection:
+        return a && b;
+      case ClipOp::kDifference:
+        return a && !b;
+      case ClipOp::kXor:
+        return a != b;
     }
     return false;
   }
   // The output piece a point belongs to (0: none), clip/README.md's operation table.
   static int label(ClipOp op, bool a, bool b) {
     switch (op) {
-      case ClipOp::kUnion: return a ? 1 : b ? 2 : 0;
-      case ClipOp::kIntersection: return a && b ? 1 : 0;
-      case ClipOp::kDifference: return a && !b ? 1 : 0;
-      case ClipOp::kXor: return a && !b ? 1 : b && !a ? 2 : 0;
+      case ClipOp::kUnion:
+        return a ? 1 : b ? 2 : 0;
+      case ClipOp::kIntersection:
+        return a && b ? 1 : 0;
+      case ClipOp::kDifference:
+        return a && !b ? 1 : 0;
+      case ClipOp::kXor:
+        return a && !b ? 1 : b && !a ? 2 : 0;
     }
     return 0;
   }
@@ -129,8 +139,8 @@ class TwoPolygonReference {
     for (const Piece& s : pieces_) {
       if (!on_result_boundary(op, s)) continue;
       const Int128 len2 = dot(s.p, s.q, s.q);
-      Int128 k = static_cast<Int128>(std::sqrt(static_cast<double>(len2)) /
-                                     static_cast<double>(scale_));
+      Int128 k =
+          static_cast<Int128>(std::sqrt(static_cast<double>(len2)) / static_cast<double>(scale_));
       while (k > 0 && (k - 1) * (k - 1) * scale_ * scale_ >= len2) --k;
       while (k * k * scale_ * scale_ < len2) ++k;
       sum += k;
@@ -177,8 +187,7 @@ class TwoPolygonReference {
     for (std::size_t i = 0; i < a_.size(); ++i)
       for (std::size_t j = 0; j < b_.size(); ++j) {
         Int128 d, t, u;
-        if (crossing(a_[i], a_[(i + 1) % a_.size()], b_[j], b_[(j + 1) % b_.size()], d, t, u))
-          f(d);
+        if (crossing(a_[i], a_[(i + 1) % a_.size()], b_[j], b_[(j + 1) % b_.size()], d, t, u)) f(d);
       }
   }
 
@@ -223,7 +232,8 @@ class TwoPolygonReference {
       bool self_side[2] = {true, false};
       bool other_side[2];
       const int on = on_other_edge(other, mid, u, v);
-      if (on == 0) other_side[0] = other_side[1] = inside(other, mid);
+      if (on == 0)
+        other_side[0] = other_side[1] = inside(other, mid);
       else {
         other_side[0] = on > 0;  // same direction: its inside is on our left
         other_side[1] = on < 0;

@@ -94,8 +94,9 @@ TEST(ClipMemory, CrossingsStayWithinTheBytesPerCrossing) {
   const std::size_t peak = peak_during([&] { stats = clip(ClipOp::kDifference, a, b).stats; });
   const std::size_t edges = 200000;
   ASSERT_GE(stats.intersections, 50000u);
-  RecordProperty("bytes_per_crossing",
-                 static_cast<int>((peak - std::min(peak, kBytesPerEdge * edges)) / stats.intersections));
+  RecordProperty(
+      "bytes_per_crossing",
+      static_cast<int>((peak - std::min(peak, kBytesPerEdge * edges)) / stats.intersections));
   EXPECT_LE(peak, kBytesPerEdge * edges + kBytesPerCrossing * stats.intersections + kSlack)
       << peak << " bytes for " << edges << " edges and " << stats.intersections << " crossings";
 }
