@@ -13,7 +13,6 @@
 // The reported time is the sum of the timed operations only (manual time, measured as thread
 // CPU time like the other families): loading each 32-gon and checking each result are not timed.
 #include <benchmark/benchmark.h>
-
 #include <time.h>
 
 #include <chrono>
@@ -114,7 +113,9 @@ void run_carving(benchmark::State& state, const Peer& peer) {
           }
         }
       }
-      if (budget > 0 && std::chrono::duration<double>(std::chrono::steady_clock::now() - run_start).count() > budget) {
+      if (budget > 0 &&
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - run_start).count() >
+              budget) {
         break;
       }
     }
@@ -141,8 +142,9 @@ void run_carving(benchmark::State& state, const Peer& peer) {
 void register_carving_benchmarks(const std::vector<std::unique_ptr<Peer>>& peers) {
   const auto ops = static_cast<std::int64_t>(env_number("EDGELAND_BENCH_CARVE_OPS", 10000));
   for (const auto& peer : peers) {
-    benchmark::RegisterBenchmark(("carving/" + peer->name()).c_str(),
-                                 [p = peer.get()](benchmark::State& state) { run_carving(state, *p); })
+    benchmark::RegisterBenchmark(
+        ("carving/" + peer->name()).c_str(),
+        [p = peer.get()](benchmark::State& state) { run_carving(state, *p); })
         ->Arg(ops)
         ->Iterations(1)
         ->UseManualTime()

@@ -24,11 +24,23 @@ struct Family {
 
 const std::vector<Family>& families() {
   static const std::vector<Family> kFamilies = {
-      {"smooth_intersection", ClipOp::kIntersection, "smooth", smooth_stars, {100, 1000, 10000, 100000}},
-      {"smooth_difference", ClipOp::kDifference, "smooth", smooth_stars, {100, 1000, 10000, 100000}},
+      {"smooth_intersection",
+       ClipOp::kIntersection,
+       "smooth",
+       smooth_stars,
+       {100, 1000, 10000, 100000}},
+      {"smooth_difference",
+       ClipOp::kDifference,
+       "smooth",
+       smooth_stars,
+       {100, 1000, 10000, 100000}},
       {"spiky_intersection", ClipOp::kIntersection, "spiky", spiky_stars, {100, 1000, 10000}},
       {"spiky_difference", ClipOp::kDifference, "spiky", spiky_stars, {100, 1000, 10000}},
-      {"checkerboard_union", ClipOp::kUnion, "checkerboard", checkerboard, {100, 1000, 10000, 100000}},
+      {"checkerboard_union",
+       ClipOp::kUnion,
+       "checkerboard",
+       checkerboard,
+       {100, 1000, 10000, 100000}},
   };
   return kFamilies;
 }

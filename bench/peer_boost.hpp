@@ -61,10 +61,18 @@ class BoostPeer final : public Peer {
     const BgMulti& b = static_cast<const BoostShape&>(clip_shape).multi;
     auto out = std::make_unique<BoostShape>();
     switch (op) {
-      case ClipOp::kUnion: boost::geometry::union_(a, b, out->multi); break;
-      case ClipOp::kIntersection: boost::geometry::intersection(a, b, out->multi); break;
-      case ClipOp::kDifference: boost::geometry::difference(a, b, out->multi); break;
-      case ClipOp::kXor: boost::geometry::sym_difference(a, b, out->multi); break;
+      case ClipOp::kUnion:
+        boost::geometry::union_(a, b, out->multi);
+        break;
+      case ClipOp::kIntersection:
+        boost::geometry::intersection(a, b, out->multi);
+        break;
+      case ClipOp::kDifference:
+        boost::geometry::difference(a, b, out->multi);
+        break;
+      case ClipOp::kXor:
+        boost::geometry::sym_difference(a, b, out->multi);
+        break;
     }
     return out;
   }

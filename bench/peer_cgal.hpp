@@ -7,6 +7,7 @@
 #include <CGAL/Polygon_2.h>
 #include <CGAL/Polygon_set_2.h>
 #include <CGAL/Polygon_with_holes_2.h>
+
 #include <iterator>
 #include <string>
 #include <utility>
@@ -31,7 +32,8 @@ class CgalPeer final : public Peer {
     Ring ring;
     ring.reserve(polygon.size());
     for (auto it = polygon.vertices_begin(); it != polygon.vertices_end(); ++it) {
-      ring.push_back({round_coord(CGAL::to_double(it->x())), round_coord(CGAL::to_double(it->y()))});
+      ring.push_back(
+          {round_coord(CGAL::to_double(it->x())), round_coord(CGAL::to_double(it->y()))});
     }
     return as_open_ccw(std::move(ring));
   }
@@ -64,10 +66,18 @@ class CgalPeer final : public Peer {
     CgalSet a = as_set(static_cast<const CgalShape&>(subject));
     const CgalSet b = as_set(static_cast<const CgalShape&>(clip_shape));
     switch (op) {
-      case ClipOp::kUnion: a.join(b); break;
-      case ClipOp::kIntersection: a.intersection(b); break;
-      case ClipOp::kDifference: a.difference(b); break;
-      case ClipOp::kXor: a.symmetric_difference(b); break;
+      case ClipOp::kUnion:
+        a.join(b);
+        break;
+      case ClipOp::kIntersection:
+        a.intersection(b);
+        break;
+      case ClipOp::kDifference:
+        a.difference(b);
+        break;
+      case ClipOp::kXor:
+        a.symmetric_difference(b);
+        break;
     }
     auto out = std::make_unique<CgalShape>();
     a.polygons_with_holes(std::back_inserter(out->polygons));

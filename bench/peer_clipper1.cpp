@@ -15,10 +15,14 @@ struct ClipperShape final : Shape {
 
 ClipperLib::ClipType clip_type(ClipOp op) {
   switch (op) {
-    case ClipOp::kUnion: return ClipperLib::ctUnion;
-    case ClipOp::kIntersection: return ClipperLib::ctIntersection;
-    case ClipOp::kDifference: return ClipperLib::ctDifference;
-    case ClipOp::kXor: return ClipperLib::ctXor;
+    case ClipOp::kUnion:
+      return ClipperLib::ctUnion;
+    case ClipOp::kIntersection:
+      return ClipperLib::ctIntersection;
+    case ClipOp::kDifference:
+      return ClipperLib::ctDifference;
+    case ClipOp::kXor:
+      return ClipperLib::ctXor;
   }
   return ClipperLib::ctUnion;
 }
@@ -40,8 +44,7 @@ class ClipperPeer final : public Peer {
                                const Shape& clip_shape) const override {
     ClipperLib::Clipper clipper;
     clipper.AddPaths(static_cast<const ClipperShape&>(subject).paths, ClipperLib::ptSubject, true);
-    clipper.AddPaths(static_cast<const ClipperShape&>(clip_shape).paths, ClipperLib::ptClip,
-                     true);
+    clipper.AddPaths(static_cast<const ClipperShape&>(clip_shape).paths, ClipperLib::ptClip, true);
     auto out = std::make_unique<ClipperShape>();
     clipper.Execute(clip_type(op), out->paths, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
     return out;

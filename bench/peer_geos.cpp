@@ -61,10 +61,18 @@ class GeosPeer final : public Peer {
     const GEOSGeometry* b = static_cast<const GeosShape&>(clip_shape).geometry;
     GEOSGeometry* result = nullptr;
     switch (op) {
-      case ClipOp::kUnion: result = GEOSUnion_r(context_, a, b); break;
-      case ClipOp::kIntersection: result = GEOSIntersection_r(context_, a, b); break;
-      case ClipOp::kDifference: result = GEOSDifference_r(context_, a, b); break;
-      case ClipOp::kXor: result = GEOSSymDifference_r(context_, a, b); break;
+      case ClipOp::kUnion:
+        result = GEOSUnion_r(context_, a, b);
+        break;
+      case ClipOp::kIntersection:
+        result = GEOSIntersection_r(context_, a, b);
+        break;
+      case ClipOp::kDifference:
+        result = GEOSDifference_r(context_, a, b);
+        break;
+      case ClipOp::kXor:
+        result = GEOSSymDifference_r(context_, a, b);
+        break;
     }
     if (result == nullptr) throw std::runtime_error("GEOS: " + last_error_);
     return std::make_unique<GeosShape>(context_, result);
@@ -103,7 +111,8 @@ class GeosPeer final : public Peer {
       if (GEOSisEmpty_r(context_, g) == 1) return;
       out.outers.push_back(to_ring(GEOSGetExteriorRing_r(context_, g)));
       const int holes = GEOSGetNumInteriorRings_r(context_, g);
-      for (int i = 0; i < holes; ++i) out.holes.push_back(to_ring(GEOSGetInteriorRingN_r(context_, g, i)));
+      for (int i = 0; i < holes; ++i)
+        out.holes.push_back(to_ring(GEOSGetInteriorRingN_r(context_, g, i)));
     } else if (type == GEOS_MULTIPOLYGON || type == GEOS_GEOMETRYCOLLECTION) {
       const int n = GEOSGetNumGeometries_r(context_, g);
       for (int i = 0; i < n; ++i) collect(GEOSGetGeometryN_r(context_, g, i), out);

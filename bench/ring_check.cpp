@@ -14,9 +14,7 @@
 namespace edgeland::bench {
 namespace {
 
-std::string where(Point64 p) {
-  return "(" + std::to_string(p.x) + " " + std::to_string(p.y) + ")";
-}
+std::string where(Point64 p) { return "(" + std::to_string(p.x) + " " + std::to_string(p.y) + ")"; }
 
 struct Edge {
   Segment segment;
@@ -81,7 +79,8 @@ RingCheck pairwise(const std::vector<Ring>& all) {
       if (a->ring == e.ring || !a->box.overlaps(e.box)) continue;
       const SegmentIntersection hit = intersect(a->segment, e.segment);
       switch (hit.relation) {
-        case SegmentRelation::kDisjoint: break;
+        case SegmentRelation::kDisjoint:
+          break;
         case SegmentRelation::kCrossing:
           return {false, "rings " + std::to_string(a->ring) + " and " + std::to_string(e.ring) +
                              " cross near " + where(round_to_grid(hit.point))};
@@ -90,8 +89,8 @@ RingCheck pairwise(const std::vector<Ring>& all) {
                              " overlap from " + where(hit.overlap_from) + " to " +
                              where(hit.overlap_to)};
         case SegmentRelation::kTouching:
-          touches.insert({std::min(a->ring, e.ring), std::max(a->ring, e.ring),
-                          round_to_grid(hit.point)});
+          touches.insert(
+              {std::min(a->ring, e.ring), std::max(a->ring, e.ring), round_to_grid(hit.point)});
           break;
       }
     }
@@ -132,8 +131,9 @@ RingCheck check_rings(const PeerRings& rings) {
   for (std::size_t r = 0; r < all.size(); ++r) {
     const ValidationReport report = validate(all[r], 1);
     if (!report.ok()) {
-      return {false, "ring " + std::to_string(r) + (r < rings.outers.size() ? " (outer)" : " (hole)") +
-                         ": " + report.violations.front().describe()};
+      return {false, "ring " + std::to_string(r) +
+                         (r < rings.outers.size() ? " (outer)" : " (hole)") + ": " +
+                         report.violations.front().describe()};
     }
   }
   return pairwise(all);

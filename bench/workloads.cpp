@@ -31,14 +31,13 @@ Polygon smooth_star(std::size_t n, double cx, double cy, double offset, Random& 
   const double phase3 = 2.0 * kPi * random.unit();
   const double phase7 = 2.0 * kPi * random.unit();
   return star(n, cx, cy, offset, [&](double angle) {
-    return kStarRadius * (0.75 + 0.15 * std::sin(3.0 * angle + phase3) +
-                          0.05 * std::sin(7.0 * angle + phase7));
+    return kStarRadius *
+           (0.75 + 0.15 * std::sin(3.0 * angle + phase3) + 0.05 * std::sin(7.0 * angle + phase7));
   });
 }
 
 Polygon spiky_star(std::size_t n, double cx, double cy, double offset, Random& random) {
-  return star(n, cx, cy, offset,
-              [&](double) { return kStarRadius * (0.3 + 0.7 * random.unit()); });
+  return star(n, cx, cy, offset, [&](double) { return kStarRadius * (0.3 + 0.7 * random.unit()); });
 }
 
 }  // namespace

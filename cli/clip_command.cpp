@@ -122,9 +122,11 @@ Command add_clip_command(CLI::App& parent) {
   // Options take names only: a transformer over the enums would print their values as raw
   // bytes in --help and in its errors.
   // The names are the library's own (op_name, fill_rule_name): one table of them.
-  static const auto ops = by_name({ClipOp::kUnion, ClipOp::kIntersection, ClipOp::kDifference, ClipOp::kXor}, op_name);
-  static const auto rules = by_name({FillRule::kEvenOdd, FillRule::kNonZero, FillRule::kPositive, FillRule::kNegative},
-                                    fill_rule_name);
+  static const auto ops =
+      by_name({ClipOp::kUnion, ClipOp::kIntersection, ClipOp::kDifference, ClipOp::kXor}, op_name);
+  static const auto rules =
+      by_name({FillRule::kEvenOdd, FillRule::kNonZero, FillRule::kPositive, FillRule::kNegative},
+              fill_rule_name);
   app->add_option("--op", o->op_name, "union, intersection, difference or xor")
       ->required()
       ->check(CLI::IsMember(names_of(ops), CLI::ignore_case))

@@ -6,11 +6,11 @@
 namespace edgeland::cli {
 
 // Exit status of every subcommand.
-inline constexpr int kExitOk = 0;          // done; for `validate`: the input is valid
-inline constexpr int kExitInvalid = 1;     // the input was read but breaks a rule
-inline constexpr int kExitUnreadable = 2;  // unreadable input or bad command line
-inline constexpr int kExitInternal = 3;    // a bug: an unexpected exception escaped
-inline constexpr int kExitOutOfMemory = 4; // the input needs more memory than there is
+inline constexpr int kExitOk = 0;           // done; for `validate`: the input is valid
+inline constexpr int kExitInvalid = 1;      // the input was read but breaks a rule
+inline constexpr int kExitUnreadable = 2;   // unreadable input or bad command line
+inline constexpr int kExitInternal = 3;     // a bug: an unexpected exception escaped
+inline constexpr int kExitOutOfMemory = 4;  // the input needs more memory than there is
 
 struct Command {
   CLI::App* app = nullptr;   // the registered subcommand (main asks it whether it was chosen)

@@ -65,8 +65,9 @@ void print_summary(const Landscape& landscape, const DemoRun& run, const Landsca
   const std::size_t edits = run.world_edits + action_edits;
   const LandscapeStats stats = landscape.stats();
   std::ostringstream rate;
-  rate << std::fixed << std::setprecision(0) << (run.seconds > 0 ? static_cast<double>(edits) / run.seconds : 0.0)
-       << " (" << std::setprecision(2) << run.seconds << " s)";
+  rate << std::fixed << std::setprecision(0)
+       << (run.seconds > 0 ? static_cast<double>(edits) / run.seconds : 0.0) << " ("
+       << std::setprecision(2) << run.seconds << " s)";
   print_line("world built", std::to_string(run.world_edits) +
                                 " edits (layers, grass, ore and sand bands, caves, pools)");
   print_line("actions", std::to_string(action_edits) + " edits: " + std::to_string(a.explosions) +
@@ -82,8 +83,9 @@ void print_summary(const Landscape& landscape, const DemoRun& run, const Landsca
   print_line("depth", std::to_string(stats.depth));
   print_line("memory bytes", std::to_string(stats.bytes));
   print_line("state hash", state_hash_hex(landscape.state_hash()));
-  print_line("check()", report.ok() ? "ok" : std::to_string(report.problems.size()) +
-                                                  " problem(s): " + report.problems.front());
+  print_line("check()", report.ok() ? "ok"
+                                    : std::to_string(report.problems.size()) +
+                                          " problem(s): " + report.problems.front());
 }
 
 // A file the demo was asked to write; false (with a message) when it cannot be written.
@@ -108,8 +110,7 @@ int report_internal_error(const LandscapeInternalError& error, const std::filesy
   return kExitInternal;
 }
 
-int write_outputs(const Landscape& landscape,
-                  const DemoOptions& options) {
+int write_outputs(const Landscape& landscape, const DemoOptions& options) {
   const std::string png = (std::filesystem::path(options.out) / "landscape.png").string();
   try {
     write_landscape_png(landscape, png, PngOptions{.cells = options.cells});
@@ -135,7 +136,8 @@ int run_demo(const DemoOptions& options) {
   std::error_code error;
   std::filesystem::create_directories(options.out, error);
   if (error) {
-    std::cerr << "edgeland demo: cannot create '" << options.out << "': " << error.message() << '\n';
+    std::cerr << "edgeland demo: cannot create '" << options.out << "': " << error.message()
+              << '\n';
     return kExitUnreadable;
   }
   Landscape landscape(kDemoWorld);

@@ -30,8 +30,10 @@ Ring rough_ngon(Point64 c, std::int64_t r, int n, int roughness, SplitMix64& ran
 Ring capsule(Point64 a, Point64 b, int angle, std::int64_t r) {
   constexpr int kCapSteps = 8;  // 9 points on each half circle
   Ring ring;
-  for (int k = 0; k <= kCapSteps; ++k) ring.push_back(polar(b, r, angle - 64 + k * 128 / kCapSteps));
-  for (int k = 0; k <= kCapSteps; ++k) ring.push_back(polar(a, r, angle + 64 + k * 128 / kCapSteps));
+  for (int k = 0; k <= kCapSteps; ++k)
+    ring.push_back(polar(b, r, angle - 64 + k * 128 / kCapSteps));
+  for (int k = 0; k <= kCapSteps; ++k)
+    ring.push_back(polar(a, r, angle + 64 + k * 128 / kCapSteps));
   return ring;
 }
 

@@ -58,8 +58,8 @@ void carve_caves(DemoEditor& editor, const Box64& world, SplitMix64& random) {
     const auto n = static_cast<int>(random.between(14, 28));
     editor.carve(rough_ngon(c, r, n, 35, random));
     if (i % 3 == 0) {
-      const Ring pool{{c.x - r, c.y - r}, {c.x + r, c.y - r}, {c.x + r, c.y - r / 3},
-                      {c.x - r, c.y - r / 3}};
+      const Ring pool{
+          {c.x - r, c.y - r}, {c.x + r, c.y - r}, {c.x + r, c.y - r / 3}, {c.x - r, c.y - r / 3}};
       editor.fill_empty(pool, kWater);
     }
     if (i % 7 == 3) {

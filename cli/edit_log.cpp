@@ -11,8 +11,9 @@
 namespace edgeland::log {
 namespace {
 
-constexpr std::array<StepKind, 5> kAllSteps{StepKind::kSet, StepKind::kUnion, StepKind::kIntersection,
-                                            StepKind::kDifference, StepKind::kXor};
+constexpr std::array<StepKind, 5> kAllSteps{StepKind::kSet, StepKind::kUnion,
+                                            StepKind::kIntersection, StepKind::kDifference,
+                                            StepKind::kXor};
 
 ClipOp op_of(StepKind kind) {
   switch (kind) {
@@ -87,8 +88,9 @@ std::optional<Step> parse_log_line(std::string_view raw, std::size_t line_number
   try {
     step.shape = read_wkt(wkt);
   } catch (const WktError& error) {
-    LogError log_error(LogErrorKind::kBadShape, line_number,
-                       std::string(step_keyword(*kind)) + ": " + shape_error_message(wkt, error.what()));
+    LogError log_error(
+        LogErrorKind::kBadShape, line_number,
+        std::string(step_keyword(*kind)) + ": " + shape_error_message(wkt, error.what()));
     log_error.wkt_error = error.kind;
     throw log_error;
   }

@@ -32,9 +32,7 @@ constexpr std::int64_t sine(int angle) noexcept {
 constexpr std::int64_t cosine(int angle) noexcept { return sine(angle + kFullTurn / 4); }
 
 // value / kTrigOne rounded to the nearest integer (halves up): arithmetic shift floors.
-constexpr std::int64_t unscale(std::int64_t value) noexcept {
-  return (value + kTrigOne / 2) >> 14;
-}
+constexpr std::int64_t unscale(std::int64_t value) noexcept { return (value + kTrigOne / 2) >> 14; }
 
 // The point at distance r (|r| < 2^40) from c in the direction `angle`, on the grid.
 constexpr Point64 polar(Point64 c, std::int64_t r, int angle) noexcept {

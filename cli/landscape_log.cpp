@@ -17,10 +17,11 @@ struct EditKeyword {
   LandscapeEditKind kind;
   int materials;  // how many material numbers stand between the keyword and the WKT
 };
-constexpr std::array<EditKeyword, 4> kEditKeywords{{{"carve", LandscapeEditKind::kCarve, 0},
-                                                    {"fill", LandscapeEditKind::kFill, 1},
-                                                    {"fill_empty", LandscapeEditKind::kFillEmpty, 1},
-                                                    {"replace", LandscapeEditKind::kReplace, 2}}};
+constexpr std::array<EditKeyword, 4> kEditKeywords{
+    {{"carve", LandscapeEditKind::kCarve, 0},
+     {"fill", LandscapeEditKind::kFill, 1},
+     {"fill_empty", LandscapeEditKind::kFillEmpty, 1},
+     {"replace", LandscapeEditKind::kReplace, 2}}};
 
 LandscapeLogError bad_argument(std::size_t line, const std::string& reason) {
   return LandscapeLogError(LandscapeLogErrorKind::kBadArgument, line, reason);
@@ -67,8 +68,8 @@ WorldCommand parse_world(std::string_view rest, std::size_t line) {
   world.box.max.y = take_coordinate(rest, line);
   if (!rest.empty()) world.fill = take_material(rest, "world: material", line);
   if (!rest.empty()) {
-    throw bad_argument(line, "world: unexpected '" + printable_excerpt(rest) +
-                                 "' after X0 Y0 X1 Y1 [MATERIAL]");
+    throw bad_argument(
+        line, "world: unexpected '" + printable_excerpt(rest) + "' after X0 Y0 X1 Y1 [MATERIAL]");
   }
   if (world.box.min.x >= world.box.max.x || world.box.min.y >= world.box.max.y) {
     throw bad_argument(line, "world: the box needs X0 < X1 and Y0 < Y1");
@@ -84,8 +85,9 @@ WktGeometry parse_shape(std::string_view wkt, std::string_view keyword, std::siz
   try {
     return read_wkt(wkt);
   } catch (const WktError& error) {
-    LandscapeLogError log_error(LandscapeLogErrorKind::kBadShape, line,
-                                std::string(keyword) + ": " + shape_error_message(wkt, error.what()));
+    LandscapeLogError log_error(
+        LandscapeLogErrorKind::kBadShape, line,
+        std::string(keyword) + ": " + shape_error_message(wkt, error.what()));
     log_error.wkt_error = error.kind;
     throw log_error;
   }
@@ -130,9 +132,9 @@ LandscapeLogError missing_world(std::size_t line) {
 void add_command(ParsedLandscapeLog& parsed, LandscapeCommand command, std::size_t line) {
   if (auto* world = std::get_if<WorldCommand>(&command)) {
     if (parsed.world) {
-      throw LandscapeLogError(LandscapeLogErrorKind::kRepeatedWorld, line,
-                              "a second world line (the first is line " +
-                                  std::to_string(parsed.world->line) + ")");
+      throw LandscapeLogError(
+          LandscapeLogErrorKind::kRepeatedWorld, line,
+          "a second world line (the first is line " + std::to_string(parsed.world->line) + ")");
     }
     parsed.world = *world;
     return;

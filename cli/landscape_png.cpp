@@ -40,7 +40,9 @@ Frame frame_for(const Box64& world, const PngOptions& options) {
   return f;
 }
 
-void set_colour(cairo_t* cr, Rgb c) { cairo_set_source_rgb(cr, c.r / 255.0, c.g / 255.0, c.b / 255.0); }
+void set_colour(cairo_t* cr, Rgb c) {
+  cairo_set_source_rgb(cr, c.r / 255.0, c.g / 255.0, c.b / 255.0);
+}
 
 // Every material's polygons, one list per material.
 std::array<std::vector<const Polygon*>, kMaterialCount> polygons_by_material(const Landscape& l) {
@@ -54,7 +56,8 @@ std::array<std::vector<const Polygon*>, kMaterialCount> polygons_by_material(con
 
 // One path per material, filled by the non-zero rule: the pieces of a material cut at cell
 // lines share those edges and are covered as one region, so no seam shows between them.
-void draw_material(cairo_t* cr, const Frame& f, const std::vector<const Polygon*>& polygons, Rgb c) {
+void draw_material(cairo_t* cr, const Frame& f, const std::vector<const Polygon*>& polygons,
+                   Rgb c) {
   if (polygons.empty()) return;
   cairo_new_path(cr);
   for (const Polygon* p : polygons) {

@@ -32,8 +32,8 @@ std::string one_line(std::string text) {
 }
 
 Failure edit_failure(const log::LandscapeEdit& edit, const std::string& what, int status) {
-  const std::string prefix = "line " + std::to_string(edit.line) + ": " +
-                             log::landscape_edit_keyword(edit.kind) + ": ";
+  const std::string prefix =
+      "line " + std::to_string(edit.line) + ": " + log::landscape_edit_keyword(edit.kind) + ": ";
   return {edit.line, prefix + (status == kExitInternal ? "internal error: " : "") + one_line(what),
           status};
 }
@@ -56,9 +56,10 @@ Applied apply_edits(Landscape& landscape, const std::vector<log::LandscapeEdit>&
     } catch (const LandscapeInternalError& error) {
       out.failure = edit_failure(edit, error.what(), kExitInternal);
     } catch (const InternalError& error) {
-      out.failure = edit_failure(edit, std::string(error.what()) + "; subject " +
-                                           error.subject_wkt + "; clip " + error.clip_wkt,
-                                 kExitInternal);
+      out.failure = edit_failure(
+          edit,
+          std::string(error.what()) + "; subject " + error.subject_wkt + "; clip " + error.clip_wkt,
+          kExitInternal);
     } catch (const Error& error) {
       out.failure = edit_failure(edit, error.what(), kExitUnreadable);
     }
@@ -82,7 +83,8 @@ nlohmann::ordered_json summary(const Landscape& landscape, const Applied& applie
   out["depth"] = stats.depth;
   out["area"] = std::move(areas);
   out["state_hash"] = state_hash_hex(landscape.state_hash());
-  out["edits_per_second"] = applied.seconds > 0 ? static_cast<double>(applied.edits) / applied.seconds : 0.0;
+  out["edits_per_second"] =
+      applied.seconds > 0 ? static_cast<double>(applied.edits) / applied.seconds : 0.0;
   return out;
 }
 
@@ -118,8 +120,7 @@ int write_outputs(const Landscape& landscape, const ReplayOptions& options) {
   }
   if (!options.png.empty()) {
     try {
-      write_landscape_png(landscape, options.png,
-                          PngOptions{.cells = options.cells});
+      write_landscape_png(landscape, options.png, PngOptions{.cells = options.cells});
     } catch (const PngError& error) {
       std::cerr << "edgeland replay: " << error.what() << '\n';
       return kExitUnreadable;

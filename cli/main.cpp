@@ -82,8 +82,8 @@ int main(int argc, char** argv) {
 #undef EDGELAND_CLI_ADD_COMMAND
 
   if (names_unknown_subcommand(app, argc, argv)) {
-    std::cerr << "edgeland: unknown subcommand '" << argv[1] << "' (one of " << subcommand_names(app)
-              << ")\n";
+    std::cerr << "edgeland: unknown subcommand '" << argv[1] << "' (one of "
+              << subcommand_names(app) << ")\n";
     return kExitUnreadable;
   }
   try {

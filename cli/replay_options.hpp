@@ -6,11 +6,11 @@
 namespace edgeland::cli {
 
 struct ReplayOptions {
-  std::string path;   // the log, "-" = standard input
-  bool check = false; // checked mode while replaying, and a final check for landscapes
-  std::string dump;   // write the final state here ("" = no dump, "-" = standard output)
-  std::string png;    // landscape logs: write a picture here
-  bool cells = false; // landscape logs: draw the cell lines in the picture
+  std::string path;    // the log, "-" = standard input
+  bool check = false;  // checked mode while replaying, and a final check for landscapes
+  std::string dump;    // write the final state here ("" = no dump, "-" = standard output)
+  std::string png;     // landscape logs: write a picture here
+  bool cells = false;  // landscape logs: draw the cell lines in the picture
 };
 
 }  // namespace edgeland::cli

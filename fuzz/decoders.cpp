@@ -484,15 +484,13 @@ std::optional<Finding> clip_pair_checks(const Pair& p) {
     try {
       results[k] = clip(kOps[k], p.a, p.b, ClipOptions{.checked = true});
     } catch (const InternalError& e) {
-      return Finding{
-          std::string("InternalError: ") + e.what() + "\n  " + line(), log_text()};
+      return Finding{std::string("InternalError: ") + e.what() + "\n  " + line(), log_text()};
     } catch (const std::exception& e) {
-      return Finding{std::string("unexpected exception on valid inputs: ") + e.what() + "\n  " +
-                         line(),
-                     log_text()};
+      return Finding{
+          std::string("unexpected exception on valid inputs: ") + e.what() + "\n  " + line(),
+          log_text()};
     }
-    if (auto f = invalid_output(line, results[k].polygons, log_text))
-      return f;
+    if (auto f = invalid_output(line, results[k].polygons, log_text)) return f;
   }
   if (auto f = check_pair_areas(p, results)) return f;
   return check_pair_points(p, results);
@@ -519,7 +517,8 @@ std::optional<Finding> validating_clip_agrees(ClipOp op, const PolygonSet& a, co
       return Finding{"clip() on PolygonSets and on ValidSets differ: " + line(), log()};
   } catch (const InvalidInput& e) {
     if (va.ok() && vb.ok())
-      return Finding{std::string("InvalidInput on valid operands: ") + e.what() + "\n  " + line(), log()};
+      return Finding{std::string("InvalidInput on valid operands: ") + e.what() + "\n  " + line(),
+                     log()};
     const Operand which = va.ok() ? Operand::kClip : Operand::kSubject;
     const Violation& expected = (va.ok() ? vb : va).violations.front();
     if (e.operand != which || e.violation.describe() != expected.describe()) {
@@ -596,10 +595,11 @@ SequenceRun run_sequence(const std::uint8_t* data, std::size_t size) {
                 recorder.text()};
       }
       if (e.operand != Operand::kClip || validate(operand, 0).ok()) {
-        return {Finding{std::string("InvalidInput (") + e.what() +
-                            ") for a step whose only bad operand could be the clip one: " + context(),
-                        recorder.text()},
-                recorder.text()};
+        return {
+            Finding{std::string("InvalidInput (") + e.what() +
+                        ") for a step whose only bad operand could be the clip one: " + context(),
+                    recorder.text()},
+            recorder.text()};
       }
       continue;
     } catch (const InternalError& e) {
@@ -667,8 +667,9 @@ std::optional<Finding> import_checks(const std::vector<Ring>& rings, bool out_of
            " (ring 0 its exterior)";
   };
   ClipResult result;
-  if (auto f = filled_checks(context, out_of_range, result,
-                             [&] { return import_polygons(polygons, ClipOptions{.checked = true}); }))
+  if (auto f = filled_checks(context, out_of_range, result, [&] {
+        return import_polygons(polygons, ClipOptions{.checked = true});
+      }))
     return *f;
   if (!small(rings)) return std::nullopt;
   for (const Point64& q : sample_points(rings)) {
@@ -678,8 +679,9 @@ std::optional<Finding> import_checks(const std::vector<Ring>& rings, bool out_of
       value += (winding_number(q, rings[r]) != 0 ? 1 : 0) * (r == 0 ? 1 : -1);
     const bool actual = locate(q, result.polygons) != PointLocation::kOutside;
     if ((value > 0) != actual)
-      return Finding{"point " + point_text(q) + (actual ? " is" : " is not") + " in the output of " +
-                         context() + "\n  output = " + to_wkt(result.polygons),
+      return Finding{"point " + point_text(q) + (actual ? " is" : " is not") +
+                         " in the output of " + context() +
+                         "\n  output = " + to_wkt(result.polygons),
                      ""};
   }
   return std::nullopt;

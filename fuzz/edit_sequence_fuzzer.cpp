@@ -1,4 +1,5 @@
-// libFuzzer target `edit_sequence`: see run_edit_sequence in decoders.hpp for what is decoded and checked.
+// libFuzzer target `edit_sequence`: see run_edit_sequence in decoders.hpp for what is decoded and
+// checked.
 #include <cstddef>
 #include <cstdint>
 

@@ -34,8 +34,8 @@ std::int64_t clamp_coord(std::int64_t v) { return std::clamp(v, -kCoordBound, kC
 // points repeat or line up with the pivot.
 Polygon fan(Polygon pts) {
   std::iter_swap(pts.begin(), std::min_element(pts.begin(), pts.end(), [](Point64 a, Point64 b) {
-    return a.y != b.y ? a.y < b.y : a.x < b.x;
-  }));
+                   return a.y != b.y ? a.y < b.y : a.x < b.x;
+                 }));
   const Point64 o = pts.front();
   std::sort(pts.begin() + 1, pts.end(), [o](Point64 a, Point64 b) {
     return angle_less({a.x - o.x, a.y - o.y}, {b.x - o.x, b.y - o.y});
@@ -72,12 +72,21 @@ class EditDecoder {
   Point64 point(const Landscape& l) {
     Point64 p;
     switch (in_.ConsumeIntegralInRange(0, 5)) {
-      case 0: p = cell_line_point(); break;
-      case 1: p = landscape_vertex(l); break;
-      case 2: p = {world_.min.x, in_.ConsumeIntegralInRange(world_.min.y, world_.max.y)}; break;
-      default: p = anywhere(); break;
+      case 0:
+        p = cell_line_point();
+        break;
+      case 1:
+        p = landscape_vertex(l);
+        break;
+      case 2:
+        p = {world_.min.x, in_.ConsumeIntegralInRange(world_.min.y, world_.max.y)};
+        break;
+      default:
+        p = anywhere();
+        break;
     }
-    const std::int64_t dx = in_.ConsumeIntegralInRange(-1, 1), dy = in_.ConsumeIntegralInRange(-1, 1);
+    const std::int64_t dx = in_.ConsumeIntegralInRange(-1, 1),
+                       dy = in_.ConsumeIntegralInRange(-1, 1);
     return {clamp_coord(p.x + dx), clamp_coord(p.y + dy)};
   }
 
@@ -89,15 +98,19 @@ class EditDecoder {
     Polygon ring;
     if (kind <= 3) {
       const Point64 a = point(l), b = point(l);
-      ring = {{std::min(a.x, b.x), std::min(a.y, b.y)}, {std::max(a.x, b.x), std::min(a.y, b.y)},
-              {std::max(a.x, b.x), std::max(a.y, b.y)}, {std::min(a.x, b.x), std::max(a.y, b.y)}};
+      ring = {{std::min(a.x, b.x), std::min(a.y, b.y)},
+              {std::max(a.x, b.x), std::min(a.y, b.y)},
+              {std::max(a.x, b.x), std::max(a.y, b.y)},
+              {std::min(a.x, b.x), std::max(a.y, b.y)}};
     } else {
-      const std::size_t n = kind <= 5 ? 3 : in_.ConsumeIntegralInRange<std::size_t>(3, kMaxShapePoints);
+      const std::size_t n =
+          kind <= 5 ? 3 : in_.ConsumeIntegralInRange<std::size_t>(3, kMaxShapePoints);
       for (std::size_t i = 0; i < n; ++i) ring.push_back(point(l));
       // Mostly valid shapes (a fan around the lowest point, counter-clockwise); kind 8 keeps
       // the points as drawn (often crossing itself), kind 9 also leaves the coordinate range.
       if (kind < 8) ring = fan(std::move(ring));
-      if (kind == 9 && !ring.empty()) ring.back().x = kCoordBound + 1 + in_.ConsumeIntegralInRange(0, 5);
+      if (kind == 9 && !ring.empty())
+        ring.back().x = kCoordBound + 1 + in_.ConsumeIntegralInRange(0, 5);
     }
     PolygonSet set{ring};
     if (in_.ConsumeIntegralInRange(0, 4) == 0) set.push_back(shape_rectangle(l));
@@ -108,10 +121,14 @@ class EditDecoder {
   Polygon shape_rectangle(const Landscape& l) {
     const Point64 a = point(l);
     const std::int64_t w = in_.ConsumeIntegralInRange(1, 40), h = in_.ConsumeIntegralInRange(1, 40);
-    return {a, {clamp_coord(a.x + w), a.y}, {clamp_coord(a.x + w), clamp_coord(a.y + h)}, {a.x, clamp_coord(a.y + h)}};
+    return {a,
+            {clamp_coord(a.x + w), a.y},
+            {clamp_coord(a.x + w), clamp_coord(a.y + h)},
+            {a.x, clamp_coord(a.y + h)}};
   }
   Point64 anywhere() {
-    const std::int64_t mx = (world_.max.x - world_.min.x) / 4 + 2, my = (world_.max.y - world_.min.y) / 4 + 2;
+    const std::int64_t mx = (world_.max.x - world_.min.x) / 4 + 2,
+                       my = (world_.max.y - world_.min.y) / 4 + 2;
     return {clamp_coord(in_.ConsumeIntegralInRange(world_.min.x - mx, world_.max.x + mx)),
             clamp_coord(in_.ConsumeIntegralInRange(world_.min.y - my, world_.max.y + my))};
   }
@@ -119,9 +136,11 @@ class EditDecoder {
     // The midpoint lines of the first three levels of a quadtree over the world.
     const int level = in_.ConsumeIntegralInRange(1, 3);
     const int k = in_.ConsumeIntegralInRange(0, (1 << level) - 1);
-    const std::int64_t x = world_.min.x + (world_.max.x - world_.min.x) * (2 * k + 1) / (2 << level);
+    const std::int64_t x =
+        world_.min.x + (world_.max.x - world_.min.x) * (2 * k + 1) / (2 << level);
     return in_.ConsumeBool() ? Point64{x, in_.ConsumeIntegralInRange(world_.min.y, world_.max.y)}
-                             : Point64{in_.ConsumeIntegralInRange(world_.min.x, world_.max.x), world_.min.y + (world_.max.y - world_.min.y) / 2};
+                             : Point64{in_.ConsumeIntegralInRange(world_.min.x, world_.max.x),
+                                       world_.min.y + (world_.max.y - world_.min.y) / 2};
   }
   Point64 landscape_vertex(const Landscape& l) {
     std::vector<Point64> seen;
@@ -168,24 +187,37 @@ Landscape decode_world(Provider& in, EditDecoder& decode) {
 std::string edit_text(const DecodedEdit& d) {
   const std::string wkt = to_wkt(d.shape);
   switch (d.kind) {
-    case 0: return "carve " + wkt;
-    case 1: return "fill " + std::to_string(d.a) + " " + wkt;
-    case 2: return "fill_empty " + std::to_string(d.a) + " " + wkt;
-    default: return "replace " + std::to_string(d.a) + " " + std::to_string(d.b) + " " + wkt;
+    case 0:
+      return "carve " + wkt;
+    case 1:
+      return "fill " + std::to_string(d.a) + " " + wkt;
+    case 2:
+      return "fill_empty " + std::to_string(d.a) + " " + wkt;
+    default:
+      return "replace " + std::to_string(d.a) + " " + std::to_string(d.b) + " " + wkt;
   }
 }
 
 void apply(Landscape& l, const DecodedEdit& d) {
   switch (d.kind) {
-    case 0: l.carve(d.shape); break;
-    case 1: l.fill(d.shape, d.a); break;
-    case 2: l.fill_empty(d.shape, d.a); break;
-    default: l.replace(d.shape, d.a, d.b); break;
+    case 0:
+      l.carve(d.shape);
+      break;
+    case 1:
+      l.fill(d.shape, d.a);
+      break;
+    case 2:
+      l.fill_empty(d.shape, d.a);
+      break;
+    default:
+      l.replace(d.shape, d.a, d.b);
+      break;
   }
 }
 
 Finding finding(const std::string& what, const Landscape& l) {
-  return {what + "\n  world after the last good edit: state hash " + std::to_string(l.state_hash()), l.log()};
+  return {what + "\n  world after the last good edit: state hash " + std::to_string(l.state_hash()),
+          l.log()};
 }
 
 // material_at, raycast and overlaps against a scan of every polygon (no tree), at a few points.
@@ -200,7 +232,9 @@ std::optional<std::string> check_queries(const Landscape& l, Provider& in, EditD
     Material want = kEmpty;
     for (const PolygonView& v : all)
       if (inside_half_open(p, *v.polygon)) want = v.material;
-    if (l.material_at(p) != want) return "material_at disagrees with a scan of all polygons at (" + std::to_string(p.x) + " " + std::to_string(p.y) + ")";
+    if (l.material_at(p) != want)
+      return "material_at disagrees with a scan of all polygons at (" + std::to_string(p.x) + " " +
+             std::to_string(p.y) + ")";
     const Point64 q = decode.point(l);
     if (p == q) continue;
     std::optional<MaterialCrossing> first;
@@ -212,7 +246,8 @@ std::optional<std::string> check_queries(const Landscape& l, Provider& in, EditD
     const auto hit = l.raycast(p, q);
     if (hit.has_value() != first.has_value() || (hit && compare(hit->t, first->t) != 0))
       return "raycast disagrees with the first solid crossing of crossings()";
-    const Box64 box{{std::min(p.x, q.x), std::min(p.y, q.y)}, {std::max(p.x, q.x), std::max(p.y, q.y)}};
+    const Box64 box{{std::min(p.x, q.x), std::min(p.y, q.y)},
+                    {std::max(p.x, q.x), std::max(p.y, q.y)}};
     std::vector<Material> scan;
     for (const PolygonView& v : all)
       if (interiors_overlap(box, *v.polygon)) scan.push_back(v.material);
@@ -229,7 +264,8 @@ std::optional<std::string> check_round_trips(const Landscape& l, const Landscape
   l.save(file);
   const Landscape back = Landscape::load(file, kLimits);
   if (back.state_hash() != l.state_hash()) return "save -> load changed the state hash";
-  if (snapshot.state_hash() != snapshot_hash) return "a snapshot changed when its original was edited";
+  if (snapshot.state_hash() != snapshot_hash)
+    return "a snapshot changed when its original was edited";
   return std::nullopt;
 }
 
@@ -283,7 +319,8 @@ std::optional<Finding> run_load(const std::uint8_t* data, std::size_t size) {
     const bool fix = (bytes[0] & 1) != 0;
     bytes.erase(0, 1);
     if (fix && bytes.size() >= 8) {
-      const std::uint64_t h = fnv1a64(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size() - 8);
+      const std::uint64_t h =
+          fnv1a64(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size() - 8);
       for (int i = 0; i < 8; ++i) bytes[bytes.size() - 8 + i] = static_cast<char>(h >> (8 * i));
     }
   }
@@ -291,7 +328,8 @@ std::optional<Finding> run_load(const std::uint8_t* data, std::size_t size) {
   try {
     const Landscape l = Landscape::load(file, kLimits);
     const LandscapeReport report = l.check();
-    if (!report.ok()) return Finding{"load accepted a world that fails check(): " + report.problems.front(), ""};
+    if (!report.ok())
+      return Finding{"load accepted a world that fails check(): " + report.problems.front(), ""};
     std::stringstream again;
     l.save(again);
     if (Landscape::load(again, kLimits).state_hash() != l.state_hash())

@@ -34,7 +34,8 @@ std::vector<Theorem> all_theorems() {
 
 void print_counterexample(const Counterexample& c, unsigned bits) {
   std::printf("counterexample for %s:\n", c.obligation.c_str());
-  for (const auto& [name, value] : c.inputs) std::printf("  %s = %s\n", name.c_str(), value.c_str());
+  for (const auto& [name, value] : c.inputs)
+    std::printf("  %s = %s\n", name.c_str(), value.c_str());
   std::printf("  value = %s  (int%u range is [%s, %s])\n", c.value.c_str(), bits,
               signed_min(bits).c_str(), signed_max(bits).c_str());
 }
@@ -61,7 +62,7 @@ bool run(const Theorem& t, unsigned bits, unsigned rlimit, bool verbose) {
   }
   const double secs =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const char* verdict = proven                     ? "PROVEN"
+  const char* verdict = proven                            ? "PROVEN"
                         : t.expect_refuted && as_expected ? "REFUTED AS EXPECTED"
                                                           : "NOT PROVEN";
   std::printf("%s %s: %d obligations, %.3f s (solver %.3f s)%s\n", verdict, t.name.c_str(),

@@ -27,9 +27,7 @@ std::string shorten(std::string text, std::size_t limit = 90) {
 
 }  // namespace
 
-std::string pow2(unsigned n) {
-  return (boost::multiprecision::cpp_int(1) << n).str();
-}
+std::string pow2(unsigned n) { return (boost::multiprecision::cpp_int(1) << n).str(); }
 std::string signed_min(unsigned bits) { return "-" + pow2(bits - 1); }
 std::string signed_max(unsigned bits) {
   return ((boost::multiprecision::cpp_int(1) << (bits - 1)) - 1).str();
@@ -114,14 +112,14 @@ void Prover::establish(const std::string& claim, const z3::expr& fact,
 }
 
 z3::expr Prover::require_in_range(const char* op, const z3::expr& value, unsigned bits) {
-  const std::string name = std::string(op) + "#" + std::to_string(obligations_ + 1) + " in int" +
-                           std::to_string(bits);
+  const std::string name =
+      std::string(op) + "#" + std::to_string(obligations_ + 1) + " in int" + std::to_string(bits);
   discharge(name, num(signed_min(bits)) <= value && value <= num(signed_max(bits)), value);
   return value;
 }
 
-void Prover::discharge(const std::string& name, const z3::expr& goal,
-                       const z3::expr& shown_value, const std::vector<z3::expr>& generalize) {
+void Prover::discharge(const std::string& name, const z3::expr& goal, const z3::expr& shown_value,
+                       const std::vector<z3::expr>& generalize) {
   ++obligations_;
   // A fresh plain SMT solver per obligation. Z3's default solver first runs its QF_NIA tactic,
   // which exhausted 50 M rlimit units on "2*den > 0 given den > 0" here; the SMT core with
@@ -159,8 +157,7 @@ void Prover::discharge(const std::string& name, const z3::expr& goal,
                            counterexample(name, s.get_model(), shown_value),
                            "obligation " + name + " refuted");
   }
-  std::printf("  UNKNOWN %-28s %7.3f s  (%s)\n", name.c_str(), secs,
-              s.reason_unknown().c_str());
+  std::printf("  UNKNOWN %-28s %7.3f s  (%s)\n", name.c_str(), secs, s.reason_unknown().c_str());
   throw ObligationFailed(ObligationFailed::Kind::kUnknown, Counterexample{name, {}, ""},
                          "obligation " + name + " undecided: " + s.reason_unknown());
 }

@@ -22,8 +22,8 @@ struct RayInputs {
 // in-range edge p -> q.
 RayInputs ray_inputs(Prover& p) {
   const std::string d = std::to_string(kMaxRayDirection);
-  return {p.coordinate("ox"),          p.coordinate("oy"),          p.integer("dx", "-" + d, d),
-          p.integer("dy", "-" + d, d), p.coordinate("px"),          p.coordinate("py"),
+  return {p.coordinate("ox"),          p.coordinate("oy"), p.integer("dx", "-" + d, d),
+          p.integer("dy", "-" + d, d), p.coordinate("px"), p.coordinate("py"),
           p.coordinate("qx"),          p.coordinate("qy")};
 }
 
@@ -96,7 +96,8 @@ std::vector<Theorem> probe_theorems() {
                "Int128",
                128, [](Prover& p) {
                  const PointTripleInputs in = point_triple_inputs(p);
-                 formulas::pixel_line_slack<SymInt, SymInt>(in.ax, in.ay, in.bx, in.by, in.cx, in.cy);
+                 formulas::pixel_line_slack<SymInt, SymInt>(in.ax, in.ay, in.bx, in.by, in.cx,
+                                                            in.cy);
                }});
   t.push_back({"grid_sizing_int128",
                "point_count, cells_covering, cells_area, block_size (grid_cells.cpp) fit Int128 "

@@ -12,8 +12,8 @@ namespace {
 // negates all three components when den < 0); each sign of den is its own theorem.
 void rounded_intersection(Prover& p, bool negative_den) {
   const SegmentPairInputs s = segment_pair_inputs(p);
-  const auto h = formulas::line_intersection<SymInt>(s.p0x, s.p0y, s.p1x, s.p1y, s.q0x, s.q0y,
-                                                     s.q1x, s.q1y);
+  const auto h =
+      formulas::line_intersection<SymInt>(s.p0x, s.p0y, s.p1x, s.p1y, s.q0x, s.q0y, s.q1x, s.q1y);
   p.assume(negative_den ? h.den.term() < 0 : h.den.term() > 0);
   const SymInt x_num = negative_den ? -h.x_num : h.x_num;
   const SymInt y_num = negative_den ? -h.y_num : h.y_num;
@@ -66,18 +66,17 @@ std::vector<Theorem> rounding_theorems() {
                "den < 0 (normalized by negation): rounding fits Int128; for segments that meet "
                "the rounded point is within kCoordBound",
                128, [](Prover& p) { rounded_intersection(p, true); }});
-  t.push_back(
-      {"round_half_up_rule",
-       "for den > 0, r = round_half_up(num, den) satisfies den(2r-1) <= 2num < den(2r+1): "
-       "the nearest integer, halves up (|num|, den <= 2^125)",
-       128, [](Prover& p) {
-         const SymInt num = p.integer("num", "-" + pow2(125), pow2(125));
-         const SymInt den = p.integer("den", "1", pow2(125));
-         const z3::expr r = formulas::round_half_up<SymInt>(num, den).term();
-         const z3::expr two_num = 2 * num.term(), d = den.term();
-         p.establish("den*(2r-1) <= 2*num < den*(2r+1)",
-                     d * (2 * r - 1) <= two_num && two_num < d * (2 * r + 1));
-       }});
+  t.push_back({"round_half_up_rule",
+               "for den > 0, r = round_half_up(num, den) satisfies den(2r-1) <= 2num < den(2r+1): "
+               "the nearest integer, halves up (|num|, den <= 2^125)",
+               128, [](Prover& p) {
+                 const SymInt num = p.integer("num", "-" + pow2(125), pow2(125));
+                 const SymInt den = p.integer("den", "1", pow2(125));
+                 const z3::expr r = formulas::round_half_up<SymInt>(num, den).term();
+                 const z3::expr two_num = 2 * num.term(), d = den.term();
+                 p.establish("den*(2r-1) <= 2*num < den*(2r+1)",
+                             d * (2 * r - 1) <= two_num && two_num < d * (2 * r + 1));
+               }});
   return t;
 }
 

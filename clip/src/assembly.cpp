@@ -4,8 +4,8 @@
 
 #include "canonical.hpp"
 #include "edgeland/kernel/area.hpp"
+#include "edgeland/kernel/assert.hpp"
 #include "edgeland/kernel/scratch.hpp"
-#include "stage_failure.hpp"
 
 namespace edgeland::detail {
 
@@ -105,7 +105,8 @@ std::vector<Point64> shared_points(const RegionRings& region) {
   std::sort(all.begin(), all.end());
   std::vector<Point64> shared;
   for (std::size_t i = 1; i < all.size(); ++i)
-    if (all[i] == all[i - 1] && (shared.empty() || shared.back() != all[i])) shared.push_back(all[i]);
+    if (all[i] == all[i - 1] && (shared.empty() || shared.back() != all[i]))
+      shared.push_back(all[i]);
   return shared;
 }
 
@@ -297,8 +298,8 @@ void RegionSorter::run(bool corner_bridges, Assembled& out) const {
 // Rings are collected flat with their label. Only when there are holes are they grouped by
 // label (in increasing order, what a map from label to region would give): most results have
 // none, and then every ring is an output polygon as it stands, with no region per label.
-Assembled assemble(const PlaneGraph& g, const std::vector<SideState>& left,
-                   const LabelOf& label_of, bool collinear_free_operands, bool corner_bridges) {
+Assembled assemble(const PlaneGraph& g, const std::vector<SideState>& left, const LabelOf& label_of,
+                   bool collinear_free_operands, bool corner_bridges) {
   ScratchVector<FaceLabel> emitted;
   label_boundary_half_edges(g, left, label_of, emitted);
   const BoundaryWalks walks = trace_boundaries(g, emitted);

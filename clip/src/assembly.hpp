@@ -6,10 +6,10 @@
 #include <vector>
 
 #include "edgeland/kernel/polygon.hpp"
+#include "edgeland/kernel/scratch.hpp"
 #include "face_label.hpp"
 #include "labeling.hpp"
 #include "planar_graph.hpp"
-#include "edgeland/kernel/scratch.hpp"
 
 namespace edgeland::detail {
 
@@ -34,9 +34,8 @@ struct Assembled {
   std::vector<FaceLabel> labels;
   std::vector<RegionRings> holed;
 };
-Assembled assemble(const PlaneGraph& g, const std::vector<SideState>& left,
-                   const LabelOf& label_of, bool collinear_free_operands,
-                   bool corner_bridges = false);
+Assembled assemble(const PlaneGraph& g, const std::vector<SideState>& left, const LabelOf& label_of,
+                   bool collinear_free_operands, bool corner_bridges = false);
 
 // Closed walks along the half-edges with emitted[h] >= 0, each following the sharpest left
 // turn among half-edges of its own label, in a fixed order. Flat: walk i is

@@ -8,10 +8,11 @@
 #include <cstdint>
 #include <vector>
 
-#include "edgeland/kernel/bbox.hpp"
 #include "box_sweep.hpp"
+#include "edgeland/kernel/bbox.hpp"
 #include "edgeland/kernel/grid_cells.hpp"
 #include "edgeland/kernel/int128.hpp"
+#include "offsets.hpp"
 
 namespace edgeland::detail {
 
@@ -33,7 +34,8 @@ void for_each_overlapping_pair_in_grid(const std::vector<Box64>& boxes, F&& visi
   auto column = [&](std::int64_t x) { return (x - all.min.x) / cell; };
   auto row = [&](std::int64_t y) { return (y - all.min.y) / cell; };
   const std::int64_t rows = row(all.max.y) + 1;
-  const std::size_t cells = static_cast<std::size_t>(column(all.max.x) + 1) * static_cast<std::size_t>(rows);
+  const std::size_t cells =
+      static_cast<std::size_t>(column(all.max.x) + 1) * static_cast<std::size_t>(rows);
 
   // A few huge boxes among many small ones would fill every cell: past 32 cells per box on
   // average, the sweep is the better tool.
@@ -63,13 +65,15 @@ void for_each_overlapping_pair_in_grid(const std::vector<Box64>& boxes, F&& visi
       return;
     }
   }
-  for (std::size_t k = 1; k <= cells; ++k) begin[k] += begin[k - 1];
+  add_up_counts(begin);
   std::vector<std::uint32_t> items(begin[cells]);
   std::vector<std::uint32_t> fill(begin.begin(), begin.end() - 1);
-  for (std::uint32_t i = 0; i < n; ++i) for_cells(boxes[i], [&](std::size_t k) { items[fill[k]++] = i; });
+  for (std::uint32_t i = 0; i < n; ++i)
+    for_cells(boxes[i], [&](std::size_t k) { items[fill[k]++] = i; });
 
   for (std::size_t k = 0; k < cells; ++k) {
-    const std::int64_t c = static_cast<std::int64_t>(k) / rows, r = static_cast<std::int64_t>(k) % rows;
+    const std::int64_t c = static_cast<std::int64_t>(k) / rows,
+                       r = static_cast<std::int64_t>(k) % rows;
     for (std::uint32_t x = begin[k]; x < begin[k + 1]; ++x) {
       const Box64& bi = boxes[items[x]];
       for (std::uint32_t y = x + 1; y < begin[k + 1]; ++y) {

@@ -32,8 +32,9 @@ inline std::vector<SweepBox> sorted_for_sweep(const std::vector<Box64>& boxes) {
 inline std::size_t x_overlapping_pairs(const std::vector<SweepBox>& sorted, std::size_t limit) {
   std::size_t pairs = 0;
   for (auto it = sorted.begin(); it != sorted.end() && pairs <= limit; ++it) {
-    const auto end = std::upper_bound(it + 1, sorted.end(), it->max_x,
-                                      [](std::int64_t x, const SweepBox& b) { return x < b.min_x; });
+    const auto end =
+        std::upper_bound(it + 1, sorted.end(), it->max_x,
+                         [](std::int64_t x, const SweepBox& b) { return x < b.min_x; });
     pairs += static_cast<std::size_t>(end - (it + 1));
   }
   return pairs;

@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "edgeland/kernel/assert.hpp"
 #include "edgeland/kernel/predicates.hpp"
 #include "edgeland/kernel/scratch.hpp"
 #include "point_key.hpp"
@@ -14,7 +15,8 @@ namespace edgeland::detail {
 Ring canonical_ring(Ring ring) {
   // The one-pass builder with every point tested: in a simple ring with nonzero area a
   // collinear vertex is a straight continuation, never a fold-back.
-  const auto least = static_cast<std::size_t>(std::min_element(ring.begin(), ring.end()) - ring.begin());
+  const auto least =
+      static_cast<std::size_t>(std::min_element(ring.begin(), ring.end()) - ring.begin());
   int turn = 0;
   return canonical_ring_from(ring, nullptr, least, turn);
 }
@@ -102,7 +104,7 @@ void sort_canonical(PolygonSet& set, std::vector<std::int64_t>* labels) {
   };
   auto key_of = [](const Polygon& p) -> std::uint64_t {
     if (p.empty()) return 0;
-    if (!in_range(p.front())) throw std::logic_error("canonical order: vertex out of range");
+    if (!in_range(p.front())) fail_stage("canonical order", "vertex out of range");
     return point_key(p.front());
   };
   std::vector<Key> keys(set.size());
@@ -124,7 +126,8 @@ Ring drop_collinear_except(const Ring& ring, const std::vector<Point64>& keep) {
   // The stack algorithm of canonical_ring from a point that stays (a corner: the smallest
   // point of a simple ring is one), testing only points not in `keep`.
   const std::size_t n = ring.size();
-  const auto least = static_cast<std::size_t>(std::min_element(ring.begin(), ring.end()) - ring.begin());
+  const auto least =
+      static_cast<std::size_t>(std::min_element(ring.begin(), ring.end()) - ring.begin());
   auto droppable = [&](Point64 p) { return !std::binary_search(keep.begin(), keep.end(), p); };
   Ring out;
   out.reserve(n);

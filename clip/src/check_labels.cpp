@@ -18,7 +18,7 @@ constexpr const char* kStage = "labeling";
 std::string num(std::size_t i) { return std::to_string(i); }
 
 std::string text(const SideState& s) {
-  return "{" + std::to_string(s.s[0]) + " " + std::to_string(s.s[1]) + "}";
+  return "{" + std::to_string(s.by_channel[0]) + " " + std::to_string(s.by_channel[1]) + "}";
 }
 
 // +1 for half-edge 2e (nets are counted along it), -1 for its twin.
@@ -54,15 +54,15 @@ SideState crossed(const PlaneGraph& g, LabelMode mode, SideState right, std::uin
   SideState out = right;
   switch (mode) {
     case LabelMode::kWinding:
-      out.s[0] = count_after(g, h, -1, right.s[0]);
+      out.by_channel[0] = count_after(g, h, -1, right.by_channel[0]);
       break;
     case LabelMode::kOwnerAndCount:
-      out.s[0] = owner_after(g, h, 0, right.s[0]);
-      out.s[1] = count_after(g, h, 1, right.s[1]);
+      out.by_channel[0] = owner_after(g, h, 0, right.by_channel[0]);
+      out.by_channel[1] = count_after(g, h, 1, right.by_channel[1]);
       break;
     case LabelMode::kOwner:
-      out.s[0] = owner_after(g, h, 0, right.s[0]);
-      out.s[1] = owner_after(g, h, 1, right.s[1]);
+      out.by_channel[0] = owner_after(g, h, 0, right.by_channel[0]);
+      out.by_channel[1] = owner_after(g, h, 1, right.by_channel[1]);
       break;
   }
   return out;
@@ -72,11 +72,11 @@ SideState crossed(const PlaneGraph& g, LabelMode mode, SideState right, std::uin
 bool state_allowed(const SideState& s, LabelMode mode) {
   switch (mode) {
     case LabelMode::kWinding:
-      return s.s[1] == 0;
+      return s.by_channel[1] == 0;
     case LabelMode::kOwnerAndCount:
-      return s.s[0] >= -1 && s.s[1] >= 0;
+      return s.by_channel[0] >= -1 && s.by_channel[1] >= 0;
     case LabelMode::kOwner:
-      return s.s[0] >= -1 && s.s[1] >= -1;
+      return s.by_channel[0] >= -1 && s.by_channel[1] >= -1;
   }
   return false;  // Not reached: the switch covers every mode.
 }

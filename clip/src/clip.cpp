@@ -17,19 +17,19 @@
 #include "input_edges.hpp"
 #include "labeling.hpp"
 #include "operand_screen.hpp"
-#include "planar_graph.hpp"
 #include "pipeline.hpp"
-#include "valid_set_factory.hpp"
+#include "planar_graph.hpp"
 #include "snap_rounding.hpp"
+#include "valid_set_factory.hpp"
 
 namespace edgeland {
 namespace {
 
-using detail::Pipeline;
-using detail::Screening;
-using detail::require_valid;
 using detail::grown;
 using detail::guarded;
+using detail::Pipeline;
+using detail::require_valid;
+using detail::Screening;
 using detail::SideState;
 
 ClipResult run_clip(const Pipeline& p, std::vector<Box64>* moved_boxes = nullptr) {
@@ -45,8 +45,10 @@ ClipResult run_clip(const Pipeline& p, std::vector<Box64>* moved_boxes = nullptr
 // collinear_free: no ring of either operand has collinear consecutive vertices.
 // subject_canonical: the subject is in canonical form (an earlier result), so left-out polygons
 // are copied as they are and merged into the sorted result.
+// check_stages: run the stage checkers (checked mode).
 ClipResult clip_near(ClipOp op, const PolygonSet& subject, const PolygonSet& clip_set,
-                     bool subject_canonical, bool collinear_free, Screening* screening = nullptr) {
+                     bool subject_canonical, bool collinear_free, bool check_stages,
+                     Screening* screening = nullptr) {
   std::vector<Box64> boxes(subject.size());
   for (std::size_t i = 0; i < subject.size(); ++i) boxes[i] = *bounding_box(subject[i]);
   std::vector<bool> included(subject.size(), false);
@@ -59,6 +61,7 @@ ClipResult clip_near(ClipOp op, const PolygonSet& subject, const PolygonSet& cli
     screening->validate_in_full(Operand::kSubject);
   for (;;) {
     Pipeline p;
+    p.check_stages = check_stages;
     p.screening = screening;
     std::vector<std::uint32_t> near;
     for (std::uint32_t i = 0; i < subject.size(); ++i)
@@ -109,7 +112,9 @@ ClipResult clip_of_valid(ClipOp op, const PolygonSet& subject, const PolygonSet&
                          const ClipOptions& options, bool subject_canonical = false,
                          bool collinear_free = false) {
   return guarded(
-      [&] { return clip_near(op, subject, clip_set, subject_canonical, collinear_free); },
+      [&] {
+        return clip_near(op, subject, clip_set, subject_canonical, collinear_free, options.checked);
+      },
       options, op_name(op), [&] { return to_wkt(subject); }, [&] { return to_wkt(clip_set); });
 }
 
@@ -128,6 +133,7 @@ ClipResult box_of_valid(const PolygonSet& set, const Box64& box, const ClipOptio
   return guarded(
       [&] {
         Pipeline p;
+        p.check_stages = options.checked;
         detail::append_ring_edges(set, detail::kSubjectChannel, true, p.edges, &near);
         detail::append_ring_edges(cell, detail::kClipChannel, true, p.edges);
         p.mode = detail::LabelMode::kOwner;
@@ -168,20 +174,28 @@ std::vector<Ring> snapped_rings(const std::vector<Ring>& rings, ClipStats& stats
 
 const char* op_name(ClipOp op) noexcept {
   switch (op) {
-    case ClipOp::kUnion: return "union";
-    case ClipOp::kIntersection: return "intersection";
-    case ClipOp::kDifference: return "difference";
-    case ClipOp::kXor: return "xor";
+    case ClipOp::kUnion:
+      return "union";
+    case ClipOp::kIntersection:
+      return "intersection";
+    case ClipOp::kDifference:
+      return "difference";
+    case ClipOp::kXor:
+      return "xor";
   }
   return "?";  // Not reached by tests: the switch covers every ClipOp.
 }
 
 const char* fill_rule_name(FillRule rule) noexcept {
   switch (rule) {
-    case FillRule::kEvenOdd: return "evenodd";
-    case FillRule::kNonZero: return "nonzero";
-    case FillRule::kPositive: return "positive";
-    case FillRule::kNegative: return "negative";
+    case FillRule::kEvenOdd:
+      return "evenodd";
+    case FillRule::kNonZero:
+      return "nonzero";
+    case FillRule::kPositive:
+      return "positive";
+    case FillRule::kNegative:
+      return "negative";
   }
   return "?";  // Not reached by tests: the switch covers every FillRule.
 }
@@ -208,8 +222,8 @@ ClipResult clip(ClipOp op, const PolygonSet& subject, const PolygonSet& clip_set
   }
   Screening screen{{&subject, &clip_set}};
   ClipResult r = guarded(
-      [&] { return clip_near(op, subject, clip_set, false, false, &screen); }, options,
-      op_name(op), [&] { return to_wkt(subject); }, [&] { return to_wkt(clip_set); },
+      [&] { return clip_near(op, subject, clip_set, false, false, options.checked, &screen); },
+      options, op_name(op), [&] { return to_wkt(subject); }, [&] { return to_wkt(clip_set); },
       validate_both);
   if (!screen.suspect) return r;
   validate_both();
@@ -225,10 +239,9 @@ ValidSet::ValidSet(PolygonSet set, Operand which) : set_(std::move(set)) {
 
 ValidClipResult clip(ClipOp op, const ValidSet& subject, const ValidSet& clip_set,
                      const ClipOptions& options) {
-  return ValidSetFactory::from(clip_of_valid(op, subject.polygons(), clip_set.polygons(), options,
-                                             ValidSetFactory::canonical(subject),
-                                             ValidSetFactory::collinear_free(subject) &&
-                                                 ValidSetFactory::collinear_free(clip_set)));
+  return ValidSetFactory::from(clip_of_valid(
+      op, subject.polygons(), clip_set.polygons(), options, ValidSetFactory::canonical(subject),
+      ValidSetFactory::collinear_free(subject) && ValidSetFactory::collinear_free(clip_set)));
 }
 
 ValidClipResult clip_to_box(const ValidSet& set, const Box64& box, const ClipOptions& options) {
@@ -247,6 +260,7 @@ ClipResult normalize(const std::vector<Ring>& rings, FillRule rule, const ClipOp
   return guarded(
       [&] {
         Pipeline p;
+        p.check_stages = options.checked;
         detail::append_ring_edges(rings, detail::kSubjectChannel, false, p.edges);
         p.simple_rings = false;
         p.mode = detail::LabelMode::kWinding;

@@ -20,23 +20,32 @@ inline FaceLabel family(int channel, std::int32_t polygon) {
 // The operation table on the polygons covering a face (-1: none). Subject polygons are never
 // merged with each other: a face keeps the polygon it came from.
 inline FaceLabel op_label(ClipOp op, const SideState& st) {
-  const std::int32_t a = st.s[0], b = st.s[1];
+  const std::int32_t a = st.by_channel[0], b = st.by_channel[1];
   switch (op) {
-    case ClipOp::kUnion: return a >= 0 ? family(kSubjectChannel, a) : b >= 0 ? family(kClipChannel, b) : -1;
-    case ClipOp::kIntersection: return a >= 0 && b >= 0 ? family(kSubjectChannel, a) : -1;
-    case ClipOp::kDifference: return a >= 0 && b < 0 ? family(kSubjectChannel, a) : -1;
+    case ClipOp::kUnion:
+      return a >= 0 ? family(kSubjectChannel, a) : b >= 0 ? family(kClipChannel, b) : -1;
+    case ClipOp::kIntersection:
+      return a >= 0 && b >= 0 ? family(kSubjectChannel, a) : -1;
+    case ClipOp::kDifference:
+      return a >= 0 && b < 0 ? family(kSubjectChannel, a) : -1;
     case ClipOp::kXor:
-      return a >= 0 && b < 0 ? family(kSubjectChannel, a) : a < 0 && b >= 0 ? family(kClipChannel, b) : -1;
+      return a >= 0 && b < 0   ? family(kSubjectChannel, a)
+             : a < 0 && b >= 0 ? family(kClipChannel, b)
+                               : -1;
   }
   return -1;  // Not reached by tests: the switch covers every ClipOp.
 }
 
 inline bool filled(FillRule rule, std::int32_t winding) {
   switch (rule) {
-    case FillRule::kEvenOdd: return (winding & 1) != 0;
-    case FillRule::kNonZero: return winding != 0;
-    case FillRule::kPositive: return winding > 0;
-    case FillRule::kNegative: return winding < 0;
+    case FillRule::kEvenOdd:
+      return (winding & 1) != 0;
+    case FillRule::kNonZero:
+      return winding != 0;
+    case FillRule::kPositive:
+      return winding > 0;
+    case FillRule::kNegative:
+      return winding < 0;
   }
   return false;  // Not reached by tests: the switch covers every FillRule.
 }
@@ -51,8 +60,9 @@ struct RelabelTable {
   std::size_t table_size = 0;                    // labels from here on are kept
   std::int32_t inside_count = 1;
   FaceLabel operator()(const SideState& st) const {
-    const std::uint32_t old = st.s[0] >= 0 ? region_labels[st.s[0]] : 0;
-    const std::uint32_t now = st.s[1] >= inside_count && old < table_size ? table[old] : old;
+    const std::uint32_t old = st.by_channel[0] >= 0 ? region_labels[st.by_channel[0]] : 0;
+    const std::uint32_t now =
+        st.by_channel[1] >= inside_count && old < table_size ? table[old] : old;
     return now == 0 ? -1 : static_cast<FaceLabel>(now);
   }
 };
@@ -60,8 +70,8 @@ struct RelabelTable {
 // The label of a face cut into windows (relabel.hpp, cut_to_windows): the window (channel 1
 // owner) in the high half, the region's label in the low half; -1 outside either.
 inline FaceLabel window_label(const std::uint32_t* region_labels, const SideState& st) {
-  if (st.s[0] < 0 || st.s[1] < 0) return -1;
-  return family(st.s[1], 0) | static_cast<FaceLabel>(region_labels[st.s[0]]);
+  if (st.by_channel[0] < 0 || st.by_channel[1] < 0) return -1;
+  return family(st.by_channel[1], 0) | static_cast<FaceLabel>(region_labels[st.by_channel[0]]);
 }
 
 class LabelOf {
@@ -80,10 +90,14 @@ class LabelOf {
   }
   FaceLabel operator()(const SideState& s) const {
     switch (kind_) {
-      case Kind::kOperation: return op_label(op_, s);
-      case Kind::kFill: return filled(rule_, s.s[0]) ? 0 : -1;
-      case Kind::kRelabel: return relabel_(s);
-      case Kind::kWindows: return window_label(relabel_.region_labels, s);
+      case Kind::kOperation:
+        return op_label(op_, s);
+      case Kind::kFill:
+        return filled(rule_, s.by_channel[0]) ? 0 : -1;
+      case Kind::kRelabel:
+        return relabel_(s);
+      case Kind::kWindows:
+        return window_label(relabel_.region_labels, s);
     }
     return -1;  // Not reached by tests: the switch covers every Kind.
   }

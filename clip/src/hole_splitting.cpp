@@ -7,6 +7,7 @@
 #include "assembly.hpp"
 #include "edgeland/kernel/angle.hpp"
 #include "edgeland/kernel/area.hpp"
+#include "edgeland/kernel/assert.hpp"
 #include "edgeland/kernel/bbox.hpp"
 #include "edgeland/kernel/point_in_polygon.hpp"
 #include "edgeland/kernel/predicates.hpp"
@@ -102,8 +103,8 @@ bool visible(Point64 o, Point64 t, const std::vector<Segment>& obstacles) {
   const std::int64_t x0 = std::min(o.x, t.x), x1 = std::max(o.x, t.x);
   const std::int64_t y0 = std::min(o.y, t.y), y1 = std::max(o.y, t.y);
   for (const Segment& e : obstacles) {
-    if (std::max(e.a.x, e.b.x) < x0 || std::min(e.a.x, e.b.x) > x1 ||
-        std::max(e.a.y, e.b.y) < y0 || std::min(e.a.y, e.b.y) > y1)
+    if (std::max(e.a.x, e.b.x) < x0 || std::min(e.a.x, e.b.x) > x1 || std::max(e.a.y, e.b.y) < y0 ||
+        std::min(e.a.y, e.b.y) > y1)
       continue;
     const SegmentIntersection r = intersect(bridge, e);
     if (r.relation == SegmentRelation::kDisjoint) continue;
@@ -180,17 +181,21 @@ std::vector<Ring> trace_faces(const std::vector<Segment>& edges) {
     std::size_t j = i + 1;
     while (j < m && by_origin[j].first == by_origin[i].first) ++j;
     if (j - i > 1)
-      std::sort(by_origin.begin() + static_cast<std::ptrdiff_t>(i), by_origin.begin() + static_cast<std::ptrdiff_t>(j),
-                [&](const auto& x, const auto& y) { return angle_less(direction(x.second), direction(y.second)); });
+      std::sort(by_origin.begin() + static_cast<std::ptrdiff_t>(i),
+                by_origin.begin() + static_cast<std::ptrdiff_t>(j),
+                [&](const auto& x, const auto& y) {
+                  return angle_less(direction(x.second), direction(y.second));
+                });
     i = j;
   }
   // The edge after e: clockwise from e's reverse at its end, the first edge leaving there.
   auto next_of = [&](std::uint32_t e) {
     const std::uint64_t key = point_key(edges[e].b);
-    const auto lo = std::lower_bound(by_origin.begin(), by_origin.end(), std::make_pair(key, std::uint32_t{0}));
+    const auto lo =
+        std::lower_bound(by_origin.begin(), by_origin.end(), std::make_pair(key, std::uint32_t{0}));
     auto hi = lo;
     while (hi != by_origin.end() && hi->first == key) ++hi;
-    if (lo == hi) throw std::logic_error("hole splitting: a face does not close");
+    if (lo == hi) fail_stage("hole splitting", "a face does not close");
     if (hi - lo == 1) return lo->second;
     const Point64 reverse{-direction(e).x, -direction(e).y};
     const auto it = std::lower_bound(lo, hi, reverse, [&](const auto& x, Point64 d) {
@@ -209,14 +214,14 @@ std::vector<Ring> trace_faces(const std::vector<Segment>& edges) {
       walk.push_back(edges[e].a);
       e = next_of(e);
     } while (e != start && !used[e]);
-    if (e != start) throw std::logic_error("hole splitting: a face does not close");
+    if (e != start) fail_stage("hole splitting", "a face does not close");
     split_at_repeats(std::move(walk), out);
   }
   return out;
 }
 
 std::vector<Ring> split_holes_at_depth(std::vector<Ring> outers, std::vector<Ring> holes,
-                                      int depth);
+                                       int depth);
 
 // Cuts one outer ring with its holes. Two bridges per hole normally leave no hole; when bridges
 // of pinched holes meet at a single vertex a face can still enclose a loop touching it there,
@@ -252,13 +257,14 @@ std::vector<Ring> split_one(const Ring& outer, std::vector<const Ring*> holes, i
                                : *std::max_element(h->begin(), h->end());
       if (touches_another_ring(o)) continue;
       const auto t = bridge_target(o, obstacles, vertices, s);
-      if (!t) throw std::logic_error("hole splitting: no visible vertex for a bridge");
+      if (!t) fail_stage("hole splitting", "no visible vertex for a bridge");
       obstacles.push_back({o, *t});
     }
   }
 
   // Trace the faces of rings + bridges (each bridge usable once in each direction).
-  std::vector<Segment> directed(obstacles.begin(), obstacles.begin() + static_cast<std::ptrdiff_t>(ring_edges));
+  std::vector<Segment> directed(obstacles.begin(),
+                                obstacles.begin() + static_cast<std::ptrdiff_t>(ring_edges));
   for (std::size_t i = ring_edges; i < obstacles.size(); ++i) {
     directed.push_back(obstacles[i]);
     directed.push_back({obstacles[i].b, obstacles[i].a});
@@ -271,12 +277,12 @@ std::vector<Ring> split_one(const Ring& outer, std::vector<const Ring*> holes, i
   if (left_holes.empty()) return pieces;
   constexpr int kMaxDepth = 16;
   // Not reached by tests: one round of bridges leaves no hole; the depth limit is a defensive stop.
-  if (depth >= kMaxDepth) throw std::logic_error("hole splitting: a piece is still a hole");
+  if (depth >= kMaxDepth) fail_stage("hole splitting", "a piece is still a hole");
   return split_holes_at_depth(std::move(pieces), std::move(left_holes), depth + 1);
 }
 
 std::vector<Ring> split_holes_at_depth(std::vector<Ring> outers, std::vector<Ring> holes,
-                                      int depth) {
+                                       int depth) {
   if (holes.empty()) return outers;
   std::vector<Box64> boxes(outers.size());
   std::vector<Int128> areas(outers.size());
@@ -293,7 +299,7 @@ std::vector<Ring> split_holes_at_depth(std::vector<Ring> outers, std::vector<Rin
       if (parent < outers.size() && areas[i] >= areas[parent]) continue;
       if (hole_inside(h, outers[i])) parent = i;
     }
-    if (parent == outers.size()) throw std::logic_error("hole splitting: hole outside every ring");
+    if (parent == outers.size()) fail_stage("hole splitting", "hole outside every ring");
     owned[parent].push_back(&h);
   }
   std::vector<Ring> out;

@@ -18,13 +18,13 @@ constexpr std::uint8_t channel_of(Operand which) {
 }
 
 // The arrays are scratch storage (edgeland/kernel/scratch.hpp): an operation's edge list reuses
-// the last one's pages. Edge i is segments[i], directed: its left side is the inside of polygon[i] of operand
-// channel[i] (for normalize: it adds +1 to the winding number on its left). next[i] is the edge
-// that follows it along its ring; the edges of a ring are consecutive.
+// the last one's pages. Edge i is segments[i], directed: its left side is the inside of polygon[i]
+// of operand channel[i] (for normalize: it adds +1 to the winding number on its left). next[i] is
+// the edge that follows it along its ring; the edges of a ring are consecutive.
 struct EdgeList {
   ScratchVector<Segment> segments;
-  ScratchVector<std::uint8_t> channel;   // kSubjectChannel (also normalize's rings) or kClipChannel
-  ScratchVector<std::int32_t> polygon;   // index within its operand
+  ScratchVector<std::uint8_t> channel;  // kSubjectChannel (also normalize's rings) or kClipChannel
+  ScratchVector<std::int32_t> polygon;  // index within its operand
   ScratchVector<std::uint32_t> next;
   // Empty: every edge counts once. Otherwise edge i counts weight[i] times, in its direction
   // (collinear_merge.hpp: merged stretches of many overlapping edges; winding labelings only).

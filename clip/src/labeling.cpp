@@ -35,7 +35,7 @@ SideState cross(const PlaneGraph& g, LabelMode mode, SideState s, std::uint32_t 
   const std::uint32_t e = h >> 1;
   const std::int32_t dir = (h & 1) ? -1 : 1;
   const std::uint32_t first = g.mult_begin[e], last = g.mult_begin[e + 1];
-  std::int32_t s0 = s.s[0], s1 = s.s[1];
+  std::int32_t s0 = s.by_channel[0], s1 = s.by_channel[1];
   if (mode == LabelMode::kWinding) {
     for (std::uint32_t k = first; k < last; ++k) s0 += dir * g.mults[k].net;
   } else if (mode == LabelMode::kOwnerAndCount) {
@@ -46,15 +46,19 @@ SideState cross(const PlaneGraph& g, LabelMode mode, SideState s, std::uint32_t 
     // One polygon's edge, the common case: owner_after for its channel, the other unchanged.
     const Multiplicity& m = g.mults[first];
     const std::int32_t net = dir * m.net;
-    auto after = [&](std::int32_t owner) { return net > 0 ? m.polygon : owner == m.polygon ? -1 : owner; };
-    if (m.channel == kSubjectChannel) s0 = after(s0);
-    else s1 = after(s1);
+    auto after = [&](std::int32_t owner) {
+      return net > 0 ? m.polygon : owner == m.polygon ? -1 : owner;
+    };
+    if (m.channel == kSubjectChannel)
+      s0 = after(s0);
+    else
+      s1 = after(s1);
   } else {
     s0 = owner_after(g, dir, kSubjectChannel, s0, first, last);
     s1 = owner_after(g, dir, kClipChannel, s1, first, last);
   }
   SideState out;
-  out.s = {s0, s1};
+  out.by_channel = {s0, s1};
   return out;
 }
 
@@ -70,7 +74,7 @@ bool keeps_single_cover(const PlaneGraph& g, std::uint32_t h, const SideState& r
     const Multiplicity& m = g.mults[first];
     const std::int32_t net = dir * m.net;
     if (m.channel > kClipChannel) return false;
-    const std::int32_t owner = right.s[m.channel];
+    const std::int32_t owner = right.by_channel[m.channel];
     return net == 1 ? owner < 0 : net == -1 && owner == m.polygon;
   }
   std::int32_t entering[2] = {-1, -1}, leaving[2] = {-1, -1};
@@ -83,7 +87,7 @@ bool keeps_single_cover(const PlaneGraph& g, std::uint32_t h, const SideState& r
     slot = m.polygon;
   }
   for (int c = 0; c < 2; ++c) {
-    const std::int32_t owner = right.s[c];
+    const std::int32_t owner = right.by_channel[c];
     if (leaving[c] >= 0 ? leaving[c] != owner : entering[c] >= 0 && owner >= 0) return false;
   }
   return true;
@@ -191,27 +195,30 @@ SideState state_above_point(const PlaneGraph& g, const std::vector<SideState>& l
   const Point64 prev = i == 1 ? g.vertices[g.from(e)] : g.interior_point(e, i - 2);
   const Point64 nx = i == g.interior_count(e) ? g.vertices[g.to(e)] : g.interior_point(e, i);
   // Walking prev -> q -> nx, the left side at q is swept counter-clockwise from nx to prev.
-  const bool left_side = strictly_inside_ccw_sector({nx.x - q.x, nx.y - q.y},
-                                                    {prev.x - q.x, prev.y - q.y}, {0, 1});
+  const bool left_side =
+      strictly_inside_ccw_sector({nx.x - q.x, nx.y - q.y}, {prev.x - q.x, prev.y - q.y}, {0, 1});
   return left[left_side ? 2 * e : 2 * e + 1];
 }
 
 // `stab` may be null: then every piece is looked at (cheaper than building the tree for a few
 // queries).
 Below find_below(const PlaneGraph& g, const std::vector<EdgeStretch>& pieces, const XStabbing* stab,
-                 const std::vector<std::uint8_t>& labeled, const std::vector<SideState>& left, Point64 p) {
+                 const std::vector<std::uint8_t>& labeled, const std::vector<SideState>& left,
+                 Point64 p) {
   NearestHit nearest(Ray{p, 0, -1}, NearestHit::Origin::kExcluded);
   const EdgeStretch* best = nullptr;
   auto consider = [&](std::uint32_t k) {
     const EdgeStretch& piece = pieces[k];
-    if (labeled[g.from(piece.edge)] && nearest.offer({piece.a, piece.b}) == NearestHit::Offer::kNearest)
+    if (labeled[g.from(piece.edge)] &&
+        nearest.offer({piece.a, piece.b}) == NearestHit::Offer::kNearest)
       best = &piece;
   };
   if (stab) {
     stab->for_each_spanning(p.x, consider);
   } else {
     for (std::uint32_t k = 0; k < pieces.size(); ++k)
-      if (std::min(pieces[k].a.x, pieces[k].b.x) <= p.x && p.x <= std::max(pieces[k].a.x, pieces[k].b.x))
+      if (std::min(pieces[k].a.x, pieces[k].b.x) <= p.x &&
+          p.x <= std::max(pieces[k].a.x, pieces[k].b.x))
         consider(k);
   }
   if (!best) return {};
@@ -230,8 +237,8 @@ Below find_below(const PlaneGraph& g, const std::vector<EdgeStretch>& pieces, co
 
 SideState empty_state(LabelMode mode) {
   SideState s;
-  if (mode == LabelMode::kWinding) s.s = {0, 0};
-  if (mode == LabelMode::kOwnerAndCount) s.s = {-1, 0};
+  if (mode == LabelMode::kWinding) s.by_channel = {0, 0};
+  if (mode == LabelMode::kOwnerAndCount) s.by_channel = {-1, 0};
   return s;
 }
 

@@ -10,13 +10,16 @@
 namespace edgeland::detail {
 
 enum class LabelMode : std::uint8_t {
-  kOwner,    // per channel: index of the polygon covering the side, or -1
-  kWinding,  // channel 0: winding number of all rings
+  kOwner,          // per channel: index of the polygon covering the side, or -1
+  kWinding,        // channel 0: winding number of all rings
   kOwnerAndCount,  // channel 0 as kOwner; channel 1: how many of its rings wind around the side
 };
 
 struct SideState {
-  std::array<std::int32_t, 2> s{-1, -1};
+  // Per channel (input_edges.hpp): the covering polygon of that operand (-1: none) in owner
+  // modes, the winding number (channel 0) in kWinding, the count of rings (channel 1) in
+  // kOwnerAndCount.
+  std::array<std::int32_t, 2> by_channel{-1, -1};
   friend bool operator==(const SideState&, const SideState&) = default;
 };
 

@@ -8,7 +8,7 @@
 namespace edgeland::detail {
 namespace {
 
-constexpr std::size_t kGridWalkFrom = 64;                  // segments
+constexpr std::size_t kGridWalkFrom = 64;                   // segments
 constexpr std::size_t kGridWalkBelowRunLengthX16 = 16 * 3;  // runs shorter than 3 segments
 
 void split_if_interior(Contacts& c, std::uint32_t seg, const Segment& s, Point64 p) {
@@ -20,8 +20,10 @@ void split_if_interior(Contacts& c, std::uint32_t seg, const Segment& s, Point64
 Meeting collinear_axis_contact(const Segment& s, std::uint32_t i, const Segment& t, std::uint32_t j,
                                bool flat, Contacts& c) {
   auto along = [flat](Point64 p) { return flat ? p.x : p.y; };
-  const std::int64_t lo = std::max(std::min(along(s.a), along(s.b)), std::min(along(t.a), along(t.b)));
-  const std::int64_t hi = std::min(std::max(along(s.a), along(s.b)), std::max(along(t.a), along(t.b)));
+  const std::int64_t lo =
+      std::max(std::min(along(s.a), along(s.b)), std::min(along(t.a), along(t.b)));
+  const std::int64_t hi =
+      std::min(std::max(along(s.a), along(s.b)), std::max(along(t.a), along(t.b)));
   if (lo > hi) return Meeting::kNone;
   auto at = [&](std::int64_t v) { return flat ? Point64{v, s.a.y} : Point64{s.a.x, v}; };
   const Point64 from = at(lo), to = at(hi);
@@ -79,39 +81,40 @@ Meeting classify_pair(const Segment& s, std::uint32_t i, const Segment& t, std::
     return collinear_axis_contact(s, i, t, j, s_flat, c);
   }
   const SegmentIntersection r = intersect(s, t);
-    switch (r.relation) {
-      case SegmentRelation::kDisjoint:
-        return Meeting::kNone;
-      case SegmentRelation::kTouching: {
-        // Touching points are endpoints: den is 1 (no 128-bit division needed).
-        const Point64 p{static_cast<std::int64_t>(r.point.x_num), static_cast<std::int64_t>(r.point.y_num)};
-        if ((p == s.a || p == s.b) && (p == t.a || p == t.b)) return Meeting::kSharedEndpoint;
-        ++c.intersections;
+  switch (r.relation) {
+    case SegmentRelation::kDisjoint:
+      return Meeting::kNone;
+    case SegmentRelation::kTouching: {
+      // Touching points are endpoints: den is 1 (no 128-bit division needed).
+      const Point64 p{static_cast<std::int64_t>(r.point.x_num),
+                      static_cast<std::int64_t>(r.point.y_num)};
+      if ((p == s.a || p == s.b) && (p == t.a || p == t.b)) return Meeting::kSharedEndpoint;
+      ++c.intersections;
+      split_if_interior(c, i, s, p);
+      split_if_interior(c, j, t, p);
+      return Meeting::kOther;
+    }
+    case SegmentRelation::kOverlapping:
+      ++c.intersections;
+      ++c.overlaps;
+      for (Point64 p : {r.overlap_from, r.overlap_to}) {
         split_if_interior(c, i, s, p);
         split_if_interior(c, j, t, p);
-        return Meeting::kOther;
       }
-      case SegmentRelation::kOverlapping:
-        ++c.intersections;
-        ++c.overlaps;
-        for (Point64 p : {r.overlap_from, r.overlap_to}) {
-          split_if_interior(c, i, s, p);
-          split_if_interior(c, j, t, p);
-        }
-        return Meeting::kOther;
-      case SegmentRelation::kCrossing: {
-        ++c.intersections;
-        // Rounded once; the point is an integer exactly when the rounding is exact.
-        const Point64 p = round_to_grid(r.point);
-        if (is_exactly(r.point, p)) {
-          c.splits.emplace_back(i, p);
-          c.splits.emplace_back(j, p);
-        } else {
-          c.hot.push_back(p);
-        }
-        return Meeting::kOther;  // Not reached by tests: the switch covers every SegmentRelation.
+      return Meeting::kOther;
+    case SegmentRelation::kCrossing: {
+      ++c.intersections;
+      // Rounded once; the point is an integer exactly when the rounding is exact.
+      const Point64 p = round_to_grid(r.point);
+      if (is_exactly(r.point, p)) {
+        c.splits.emplace_back(i, p);
+        c.splits.emplace_back(j, p);
+      } else {
+        c.hot.push_back(p);
       }
+      return Meeting::kOther;  // Not reached by tests: the switch covers every SegmentRelation.
     }
+  }
   return Meeting::kOther;
 }
 
@@ -203,8 +206,8 @@ class PairVisit {
 // Every candidate pair visited once. Short runs (spiky or zigzag rings) leave the run index
 // little to group, and long diagonal segments make box overlap a weak filter: then the segments
 // are walked through a grid, which is left in search.near for snap rounding's point queries.
-void visit_candidate_pairs(const std::vector<Segment>& segments, SegmentSearch& search,
-                           bool walk, bool simple_rings, const std::vector<std::uint32_t>& ring_of,
+void visit_candidate_pairs(const std::vector<Segment>& segments, SegmentSearch& search, bool walk,
+                           bool simple_rings, const std::vector<std::uint32_t>& ring_of,
                            const PairVisit& visit) {
   std::unique_ptr<SegmentGrid> walked;
   if (walk) walked = std::make_unique<SegmentGrid>(segments);

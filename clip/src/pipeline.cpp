@@ -9,6 +9,7 @@
 #include "collinear_merge.hpp"
 #include "hole_splitting.hpp"
 #include "snap_rounding.hpp"
+#include "stage_checks.hpp"
 
 namespace edgeland::detail {
 
@@ -44,7 +45,8 @@ std::size_t overlap_budget(const Pipeline& p) {
 // budget runs out, the stacks of collinear edges are merged (`merged`) and the merged edges
 // noded again.
 Noded node_operands(const Pipeline& p, std::optional<MergedEdges>& merged) {
-  Noded n = node(p.edges, {p.simple_rings, p.screening ? &p.edges.channel : nullptr, overlap_budget(p)});
+  Noded n =
+      node(p.edges, {p.simple_rings, p.screening ? &p.edges.channel : nullptr, overlap_budget(p)});
   if (!n.contacts.overlap_heavy) return n;
   merged = merge_collinear_overlaps(p.edges);
   n = node(merged->edges, {p.simple_rings});
@@ -64,8 +66,8 @@ bool screen_after_noding(Screening& screen, const Noded& noded, bool& check_cove
     for (Operand which : {Operand::kSubject, Operand::kClip})
       if (screen.unchecked_multi_ring(which)) screen.validate_in_full(which);
   }
-  check_cover = screen.unchecked_multi_ring(Operand::kSubject) ||
-                screen.unchecked_multi_ring(Operand::kClip);
+  check_cover =
+      screen.unchecked_multi_ring(Operand::kSubject) || screen.unchecked_multi_ring(Operand::kClip);
   return true;
 }
 
@@ -94,15 +96,20 @@ PipelineResult run(const Pipeline& p, std::vector<Box64>* moved_boxes, bool with
   const EdgeList& edges = merged ? merged->edges : p.edges;
   bool check_cover = false;
   if (p.screening && !screen_after_noding(*p.screening, noded, check_cover)) return out;
+  if (p.check_stages) check_fragments(edges, noded.snapped.fragments, noded.snapped.touched);
   PlaneGraph graph;
   ScratchVector<SideState> labels;
   build_plane_graph(edges, noded.snapped.fragments, noded.snapped.touched, graph);
+  if (p.check_stages) check_plane_graph(graph);
   if (!label_sides(graph, p.mode, labels, check_cover)) {
     p.screening->suspect = true;
     return out;
   }
-  collect_polygons(assemble(graph, labels, p.label_of, p.collinear_free_operands, p.corner_bridges),
-                   with_labels, out);
+  if (p.check_stages) check_labels(graph, p.mode, labels);
+  Assembled assembled =
+      assemble(graph, labels, p.label_of, p.collinear_free_operands, p.corner_bridges);
+  if (p.check_stages) check_assembled(assembled);
+  collect_polygons(std::move(assembled), with_labels, out);
   out.clipped.stats.intersections = noded.contacts.intersections;
   out.clipped.stats.vertices_snapped = noded.snapped.hot_pixels;
   out.clipped.stats.zero_area_dropped = graph.cancelled_edges;

@@ -56,12 +56,14 @@ struct Pipeline {
   // touch (assembly.hpp), so the pieces depend on the region alone (relabel.hpp).
   bool corner_bridges = false;
   Screening* screening = nullptr;  // operands not validated yet (noding then tests all pairs)
+  // Checked mode: every stage's result is checked (stage_checks.hpp) before the next stage
+  // reads it.
+  bool check_stages = false;
   // Winding labelings: how many pairs of edges may overlap along a stretch before stacks of
   // collinear edges are merged (collinear_merge.hpp); unset: 4 per edge plus 4096. (Tests set
   // 0 to merge every stack.)
   std::optional<std::size_t> overlap_budget;
 };
-
 
 // The result of run(): canonical polygons in canonical order, and when asked for, the face
 // label each came from (labels[i] for polygons[i]).
@@ -103,9 +105,10 @@ auto guarded(F&& body, const ClipOptions& options, const std::string& what,
     if (!report.ok())  // Not reached by tests: no test input yields an invalid output.
       throw InternalError(what + ": invalid output: " + report.violations.front().describe(),
                           subject_wkt(), clip_wkt());
-    if (const auto order = canonical_violation(result_polygons(r)))  // Not reached by tests, as above.
-      throw InternalError(what + ": output not in canonical form: " + order->describe(), subject_wkt(),
-                          clip_wkt());
+    if (const auto order =
+            canonical_violation(result_polygons(r)))  // Not reached by tests, as above.
+      throw InternalError(what + ": output not in canonical form: " + order->describe(),
+                          subject_wkt(), clip_wkt());
   }
   return r;
 }

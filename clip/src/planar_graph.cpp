@@ -25,9 +25,11 @@ void PlaneGraph::append_points(std::uint32_t h, std::vector<Point64>& out) const
   if (out.capacity() < out.size() + m) out.reserve(std::max(out.size() + m, 2 * out.capacity()));
   if (forward_in_ring) {
     for (std::uint32_t i = 0; i < first_part; ++i) out.push_back(segs[p0 + i].a);
-    for (std::uint32_t i = first_part; i < m; ++i) out.push_back(segs[c.ring_begin + (i - first_part)].a);
+    for (std::uint32_t i = first_part; i < m; ++i)
+      out.push_back(segs[c.ring_begin + (i - first_part)].a);
   } else {
-    for (std::uint32_t i = m; i-- > first_part;) out.push_back(segs[c.ring_begin + (i - first_part)].a);
+    for (std::uint32_t i = m; i-- > first_part;)
+      out.push_back(segs[c.ring_begin + (i - first_part)].a);
     for (std::uint32_t i = first_part; i-- > 0;) out.push_back(segs[p0 + i].a);
   }
 }

@@ -27,7 +27,7 @@ struct Multiplicity {
 
 // Its arrays are scratch storage (edgeland/kernel/scratch.hpp).
 struct PlaneGraph {
-  ScratchVector<Point64> vertices;               // sorted, unique
+  ScratchVector<Point64> vertices;  // sorted, unique
   // Edge e joins from(e) < to(e) (vertex ids, lexicographic). Half-edge 2e runs from -> to,
   // 2e + 1 runs to -> from; the twin of half-edge h is h ^ 1. Two edges may join the same two
   // vertices along different polylines. origin_of[h] is where half-edge h starts (so
@@ -44,7 +44,7 @@ struct PlaneGraph {
   };
   ScratchVector<Chain> chain;
   const std::vector<Segment>* segments = nullptr;
-  ScratchVector<std::uint32_t> mult_begin;       // CSR into mults, size edges + 1
+  ScratchVector<std::uint32_t> mult_begin;  // CSR into mults, size edges + 1
   ScratchVector<Multiplicity> mults;
   // Outgoing half-edges of vertex v, counter-clockwise from angle 0:
   // around[around_begin[v] .. around_begin[v + 1]). turn_at[h] is the position there, at h's
@@ -52,7 +52,7 @@ struct PlaneGraph {
   // next half-edge of the face on h's left). Walks along faces take one load a step from it,
   // not a search round the vertex.
   ScratchVector<std::uint32_t> around_begin, around, turn_at;
-  std::size_t cancelled_edges = 0;             // edges whose multiplicities summed to zero
+  std::size_t cancelled_edges = 0;  // edges whose multiplicities summed to zero
 
   std::size_t edge_count() const { return origin_of.size() / 2; }
   std::uint32_t from(std::uint32_t e) const { return origin_of[2 * e]; }

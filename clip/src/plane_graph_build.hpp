@@ -38,7 +38,7 @@ class FragmentRanges {
 // chains are cut); touched segments become pieces, one per fragment.
 struct ChainPlan {
   ScratchVector<PlaneGraph::Chain> chains;  // by first segment
-  ScratchVector<std::uint32_t> touched;  // touched segments, increasing
+  ScratchVector<std::uint32_t> touched;     // touched segments, increasing
 };
 void plan_chains(const EdgeList& edges, const std::vector<std::uint8_t>& touched, ChainPlan& plan);
 
@@ -52,8 +52,8 @@ struct FragmentEdge {
 
 // Step 2. Vertex ids, increasing in the points' lexicographic order, and every piece's ends.
 struct VertexNumbering {
-  ScratchVector<std::uint64_t> keys;  // vertex id -> point key (point_key.hpp)
-  ScratchVector<std::uint32_t> vertex_of;  // occurrence -> id
+  ScratchVector<std::uint64_t> keys;              // vertex id -> point key (point_key.hpp)
+  ScratchVector<std::uint32_t> vertex_of;         // occurrence -> id
   ScratchVector<std::uint32_t> first_occurrence;  // of s's start
   // Of segment s's end when its ring successor starts elsewhere (an open run's end); empty when
   // no segment has one.

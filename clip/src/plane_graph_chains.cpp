@@ -57,7 +57,8 @@ struct Gap {
 
 // The gap's offset of its least start point (the first, on ties). Two plain loops, not one
 // through Gap::segment: this scans every untouched segment, nearly all of a smooth input.
-std::uint32_t least_start(const std::vector<Segment>& segments, const RingSpan& ring, const Gap& gap) {
+std::uint32_t least_start(const std::vector<Segment>& segments, const RingSpan& ring,
+                          const Gap& gap) {
   std::uint32_t least = 0;
   Point64 least_point = segments[gap.segment(ring, 0)].a;
   for (std::uint32_t t = gap.after; t < gap.upto; ++t)
@@ -89,8 +90,8 @@ void chain_gap(const std::vector<Segment>& segments, const RingSpan& ring, const
 
 // A ring with touched segments (plan.touched[first_touched ..]): every gap between consecutive
 // touched segments, cyclically, is a chain.
-void chain_gaps(const std::vector<Segment>& segments, const RingSpan& ring, std::size_t first_touched,
-                ChainPlan& plan) {
+void chain_gaps(const std::vector<Segment>& segments, const RingSpan& ring,
+                std::size_t first_touched, ChainPlan& plan) {
   const auto& ids = plan.touched;
   for (std::size_t i = first_touched; i < ids.size(); ++i) {
     const bool wraps = i + 1 == ids.size();
@@ -121,8 +122,9 @@ void plan_chains(const EdgeList& edges, const std::vector<std::uint8_t>& touched
   }
   // Chains in the order of their first segment (as every graph edge list is built in segment
   // order: deterministic and independent of where the walks began).
-  std::sort(plan.chains.begin(), plan.chains.end(),
-            [](const PlaneGraph::Chain& x, const PlaneGraph::Chain& y) { return x.first < y.first; });
+  std::sort(
+      plan.chains.begin(), plan.chains.end(),
+      [](const PlaneGraph::Chain& x, const PlaneGraph::Chain& y) { return x.first < y.first; });
 }
 
 }  // namespace edgeland::detail::plane_graph_build

@@ -2,9 +2,9 @@
 #include <algorithm>
 #include <tuple>
 
+#include "edgeland/kernel/assert.hpp"
 #include "plane_graph_build.hpp"
 #include "radix_sort.hpp"
-#include "stage_failure.hpp"
 
 namespace edgeland::detail::plane_graph_build {
 namespace {
@@ -121,7 +121,8 @@ void merge_edges(const EdgeList& edges, const ChainPlan& plan, VertexNumbering& 
   const std::size_t edge_bound = numbering.pieces.size() + plan.chains.size();
   g.chain.reserve(edge_bound);
   g.vertices.resize(numbering.keys.size());
-  for (std::size_t i = 0; i < numbering.keys.size(); ++i) g.vertices[i] = point_of(numbering.keys[i]);
+  for (std::size_t i = 0; i < numbering.keys.size(); ++i)
+    g.vertices[i] = point_of(numbering.keys[i]);
   g.segments = &edges.segments;
   EdgeWriter out(g, edge_bound);
   add_piece_edges(numbering.pieces, numbering.keys.size(), out);

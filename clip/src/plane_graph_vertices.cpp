@@ -8,11 +8,11 @@
 // sorting both ends and no search.
 #include <algorithm>
 
+#include "edgeland/kernel/assert.hpp"
 #include "offsets.hpp"
 #include "plane_graph_build.hpp"
 #include "point_key.hpp"
 #include "radix_sort.hpp"
-#include "stage_failure.hpp"
 
 namespace edgeland::detail::plane_graph_build {
 namespace {
@@ -141,13 +141,15 @@ void orient_pieces(const EdgeList& edges, const FragmentRanges& ranges, const Ch
 
 }  // namespace
 
-FragmentRanges::FragmentRanges(const std::vector<Fragment>& fragments, std::uint32_t segment_count) {
+FragmentRanges::FragmentRanges(const std::vector<Fragment>& fragments,
+                               std::uint32_t segment_count) {
   first_.assign(segment_count + 1, 0);
   for (const Fragment& f : fragments) ++first_[f.parent + 1];
   add_up_counts(first_);
 }
 
-std::uint32_t VertexNumbering::end_vertex(std::uint32_t s, const std::vector<std::uint32_t>& next) const {
+std::uint32_t VertexNumbering::end_vertex(std::uint32_t s,
+                                          const std::vector<std::uint32_t>& next) const {
   const std::uint32_t o =
       own_end.empty() || own_end[s] == kNoOccurrence ? first_occurrence[next[s]] : own_end[s];
   if (o == kNoOccurrence) fail_stage(kStage, "a segment ends inside a chain");

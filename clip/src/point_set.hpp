@@ -3,8 +3,8 @@
 // hot-pixel set. std::unordered_set allocated a node per hot pixel, thousands per operation on
 // spiky inputs. Membership only, so iteration order (which would depend on hashing) is never
 // exposed: results cannot depend on it.
-#include <cstddef>
 #include <algorithm>
+#include <cstddef>
 #include <cstdint>
 #include <limits>
 #include <vector>

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "edgeland/kernel/scratch.hpp"
+#include "offsets.hpp"
 
 namespace edgeland::detail {
 
@@ -66,7 +67,8 @@ void lsd_passes(std::vector<T>& v, KeyOf& key_of) {
         const T& x = v[begin[l] + i];
         tmp[at[l][digit(x)]++] = x;
       }
-    for (std::size_t i = begin[kLanes - 1] + lane; i < n; ++i) tmp[at[kLanes - 1][digit(v[i])]++] = v[i];
+    for (std::size_t i = begin[kLanes - 1] + lane; i < n; ++i)
+      tmp[at[kLanes - 1][digit(v[i])]++] = v[i];
     v.swap(tmp);
   }
 }
@@ -80,7 +82,7 @@ void counting_sort(std::vector<T>& v, std::size_t buckets, IdOf id_of) {
   ScratchVector<std::uint32_t> at;
   at.assign(buckets + 1, 0);
   for (const T& x : v) ++at[id_of(x) + 1];
-  for (std::size_t k = 1; k < at.size(); ++k) at[k] += at[k - 1];
+  add_up_counts(at);
   ScratchVector<T> sorted;
   sorted.resize(v.size());
   for (const T& x : v) sorted[at[id_of(x)]++] = x;

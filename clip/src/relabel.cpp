@@ -14,18 +14,21 @@ namespace {
 
 const char* reason_text(InvalidOverlay::Reason r) {
   switch (r) {
-    case InvalidOverlay::Reason::kLabelCount: return "the number of labels differs from the number of polygons";
-    case InvalidOverlay::Reason::kZeroLabel: return "a polygon is labeled 0";
-    case InvalidOverlay::Reason::kOutsideWindow: return "a polygon is not inside the window";
-    case InvalidOverlay::Reason::kBadWindow: return "a window is not a box of positive area within the coordinate bound";
-    case InvalidOverlay::Reason::kWindowsOverlap: return "two windows overlap";
+    case InvalidOverlay::Reason::kLabelCount:
+      return "the number of labels differs from the number of polygons";
+    case InvalidOverlay::Reason::kZeroLabel:
+      return "a polygon is labeled 0";
+    case InvalidOverlay::Reason::kOutsideWindow:
+      return "a polygon is not inside the window";
+    case InvalidOverlay::Reason::kBadWindow:
+      return "a window is not a box of positive area within the coordinate bound";
+    case InvalidOverlay::Reason::kWindowsOverlap:
+      return "two windows overlap";
   }
   return "?";  // Not reached by tests: the switch covers every Reason.
 }
 
-Ring box_ring(const Box64& b) {
-  return {b.min, {b.max.x, b.min.y}, b.max, {b.min.x, b.max.y}};
-}
+Ring box_ring(const Box64& b) { return {b.min, {b.max.x, b.min.y}, b.max, {b.min.x, b.max.y}}; }
 
 bool inside(const Box64& inner, const Box64& outer) {
   return outer.contains(inner.min) && outer.contains(inner.max);
@@ -47,8 +50,9 @@ void require_window(const Box64& w, std::size_t index) {
 LabeledSet labeled(detail::PipelineResult& r, std::size_t begin, std::size_t end,
                    RegionLabel (*label_of)(detail::FaceLabel)) {
   ClipResult part;
-  part.polygons.assign(std::make_move_iterator(r.clipped.polygons.begin() + static_cast<std::ptrdiff_t>(begin)),
-                       std::make_move_iterator(r.clipped.polygons.begin() + static_cast<std::ptrdiff_t>(end)));
+  part.polygons.assign(
+      std::make_move_iterator(r.clipped.polygons.begin() + static_cast<std::ptrdiff_t>(begin)),
+      std::make_move_iterator(r.clipped.polygons.begin() + static_cast<std::ptrdiff_t>(end)));
   LabeledSet out{ValidSetFactory::from(std::move(part)).set, {}};
   out.labels.reserve(end - begin);
   for (std::size_t i = begin; i < end; ++i) out.labels.push_back(label_of(r.labels[i]));
@@ -63,13 +67,15 @@ void check_inside(const PolygonSet& set, const Box64& window, const std::string&
                   const std::function<std::string()>& inputs) {
   for (const Polygon& p : set)
     if (!inside(*bounding_box(p), window))  // Not reached by tests: an internal error.
-      throw InternalError(what + ": output polygon outside its window", inputs(), to_wkt(PolygonSet{box_ring(window)}));
+      throw InternalError(what + ": output polygon outside its window", inputs(),
+                          to_wkt(PolygonSet{box_ring(window)}));
 }
 
 }  // namespace
 
 InvalidOverlay::InvalidOverlay(Reason r, std::size_t i)
-    : Error(std::string("invalid overlay: ") + reason_text(r) + " (index " + std::to_string(i) + ")"),
+    : Error(std::string("invalid overlay: ") + reason_text(r) + " (index " + std::to_string(i) +
+            ")"),
       reason(r),
       index(i) {}
 
@@ -102,13 +108,15 @@ LabeledClipResult relabel(const ValidSet& regions, std::span<const RegionLabel> 
   detail::PipelineResult r = detail::guarded(
       [&] {
         detail::Pipeline p;
+        p.check_stages = options.checked;
         detail::append_ring_edges(members, detail::kSubjectChannel, true, p.edges);
         detail::append_ring_edges(shape.polygons(), detail::kClipChannel, true, p.edges, &near);
-        if (!all_inside) detail::append_ring_edges(window_rings, detail::kClipChannel, true, p.edges);
+        if (!all_inside)
+          detail::append_ring_edges(window_rings, detail::kClipChannel, true, p.edges);
         p.mode = detail::LabelMode::kOwnerAndCount;
         p.label_of = detail::LabelOf::relabel(rt);
-        p.collinear_free_operands = ValidSetFactory::collinear_free(regions) &&
-                                    ValidSetFactory::collinear_free(shape);
+        p.collinear_free_operands =
+            ValidSetFactory::collinear_free(regions) && ValidSetFactory::collinear_free(shape);
         p.corner_bridges = true;
         return detail::run(p, nullptr, true);
       },
@@ -121,10 +129,8 @@ LabeledClipResult relabel(const ValidSet& regions, std::span<const RegionLabel> 
   return out;
 }
 
-std::vector<LabeledSet> cut_to_windows(const ValidSet& regions,
-                                       std::span<const RegionLabel> labels,
-                                       std::span<const Box64> windows,
-                                       const ClipOptions& options) {
+std::vector<LabeledSet> cut_to_windows(const ValidSet& regions, std::span<const RegionLabel> labels,
+                                       std::span<const Box64> windows, const ClipOptions& options) {
   require_labels(regions, labels);
   PolygonSet window_rings;
   for (std::size_t i = 0; i < windows.size(); ++i) {
@@ -133,7 +139,8 @@ std::vector<LabeledSet> cut_to_windows(const ValidSet& regions,
   }
   const ValidationReport disjoint = validate(window_rings, 1);
   if (!disjoint.ok())
-    throw InvalidOverlay(InvalidOverlay::Reason::kWindowsOverlap, disjoint.violations.front().polygon);
+    throw InvalidOverlay(InvalidOverlay::Reason::kWindowsOverlap,
+                         disjoint.violations.front().polygon);
   const PolygonSet& members = regions.polygons();
   // As in relabel(): the lambdas and the unwinding of `p` below run only for an internal
   // error, not reached by tests.
@@ -142,6 +149,7 @@ std::vector<LabeledSet> cut_to_windows(const ValidSet& regions,
   detail::PipelineResult r = detail::guarded(
       [&] {
         detail::Pipeline p;
+        p.check_stages = options.checked;
         detail::append_ring_edges(members, detail::kSubjectChannel, true, p.edges);
         detail::append_ring_edges(window_rings, detail::kClipChannel, true, p.edges);
         p.mode = detail::LabelMode::kOwner;

@@ -1,6 +1,7 @@
 #include "segment_grid.hpp"
 
 #include "edgeland/kernel/grid_cells.hpp"
+#include "offsets.hpp"
 
 namespace edgeland::detail {
 
@@ -25,7 +26,8 @@ std::size_t registrations(const std::vector<Segment>& segments, std::int64_t sid
     const auto dx = static_cast<std::uint64_t>(s.a.x < s.b.x ? s.b.x - s.a.x : s.a.x - s.b.x);
     const auto dy = static_cast<std::uint64_t>(s.a.y < s.b.y ? s.b.y - s.a.y : s.a.y - s.b.y);
     total += static_cast<std::size_t>(dx / static_cast<std::uint64_t>(side) +
-                                      dy / static_cast<std::uint64_t>(side)) + 2;
+                                      dy / static_cast<std::uint64_t>(side)) +
+             2;
   }
   return total;
 }
@@ -66,12 +68,13 @@ SegmentGrid::SegmentGrid(const std::vector<Segment>& segments) {
   entry_cells.reserve(4 * n);
   slot_begin_.assign(n + 1, 0);
   for (std::uint32_t i = 0; i < n; ++i) {
-    for_each_cell(segments[i], [&](std::size_t k) { entry_cells.push_back(static_cast<std::uint32_t>(k)); });
+    for_each_cell(segments[i],
+                  [&](std::size_t k) { entry_cells.push_back(static_cast<std::uint32_t>(k)); });
     slot_begin_[i + 1] = static_cast<std::uint32_t>(entry_cells.size());
   }
   cell_begin_.assign(static_cast<std::size_t>(columns_ * rows_) + 1, 0);
   for (std::uint32_t k : entry_cells) ++cell_begin_[k + 1];
-  for (std::size_t k = 1; k < cell_begin_.size(); ++k) cell_begin_[k] += cell_begin_[k - 1];
+  add_up_counts(cell_begin_);
   items_.resize(entry_cells.size());
   slots_.resize(entry_cells.size());
   ScratchVector<std::uint32_t> fill;

@@ -12,7 +12,8 @@
 // it visits every column between its ends' columns, and in each column the rows from the floor
 // of the lowest to the floor of the highest y the segment's line takes over the column's closed
 // x-range clipped to the segment (y is monotone along the segment, so floor(P.y) lies between
-// them). Two segments sharing a point therefore share that point's cell. All arithmetic is exact (128-bit where products can exceed 64 bits).
+// them). Two segments sharing a point therefore share that point's cell. All arithmetic is exact
+// (128-bit where products can exceed 64 bits).
 //
 // Cost: the walk is O(cells crossed) per segment, and a pair is tested in each cell it shares
 // (reported once); cells are sized for one to four per segment.
@@ -130,7 +131,8 @@ void SegmentGrid::for_each_cell(const Segment& s, F&& f) const {
 
 template <class F>
 void SegmentGrid::for_each_in_box(const Box64& b, F&& visit) const {
-  if (items_.empty() || b.max.x < min_x_ || b.max.y < min_y_ || b.min.x > max_x_ || b.min.y > max_y_)
+  if (items_.empty() || b.max.x < min_x_ || b.max.y < min_y_ || b.min.x > max_x_ ||
+      b.min.y > max_y_)
     return;
   // Points of b outside the grid's extent belong to no segment; the rest lie in these cells.
   const std::int64_t c0 = (std::max(b.min.x, min_x_) - min_x_) >> shift_;

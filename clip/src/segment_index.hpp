@@ -120,8 +120,10 @@ void SegmentIndex::pairs_between(std::uint32_t a, std::uint32_t b, F& visit) con
     std::uint32_t lo = 0, hi = size(r);
     while (lo < hi) {
       const std::uint32_t mid = (lo + hi) / 2;
-      if (box(at(r, mid)).max.x < lo_x) lo = mid + 1;
-      else hi = mid;
+      if (box(at(r, mid)).max.x < lo_x)
+        lo = mid + 1;
+      else
+        hi = mid;
     }
     return lo;
   };
@@ -160,25 +162,28 @@ void SegmentIndex::for_each_overlapping_pair(F&& visit, bool across_rings_only) 
 template <class F>
 void SegmentIndex::query(const std::vector<Box64>& boxes, F&& visit) const {
   build_runs();
-  detail::for_each_overlapping_pair(
-      sorted_for_sweep(boxes), run_sweep(), [&](std::uint32_t k, std::uint32_t r) {
-        // Along the run in increasing-x order the segments' x-ranges only move right: skip by
-        // binary search to the first that reaches the query box, stop at the first past it.
-        const Run& run = runs_[r];
-        const Box64& q = boxes[k];
-        std::uint32_t lo = 0, hi = size(run);
-        while (lo < hi) {
-          const std::uint32_t mid = (lo + hi) / 2;
-          if (box(at(run, mid)).max.x < q.min.x) lo = mid + 1;
-          else hi = mid;
-        }
-        for (std::uint32_t i = lo; i < size(run); ++i) {
-          const std::uint32_t s = at(run, i);
-          const Box64 b = box(s);
-          if (b.min.x > q.max.x) break;
-          if (b.overlaps(q)) visit(k, s);
-        }
-      });
+  detail::for_each_overlapping_pair(sorted_for_sweep(boxes), run_sweep(),
+                                    [&](std::uint32_t k, std::uint32_t r) {
+                                      // Along the run in increasing-x order the segments' x-ranges
+                                      // only move right: skip by binary search to the first that
+                                      // reaches the query box, stop at the first past it.
+                                      const Run& run = runs_[r];
+                                      const Box64& q = boxes[k];
+                                      std::uint32_t lo = 0, hi = size(run);
+                                      while (lo < hi) {
+                                        const std::uint32_t mid = (lo + hi) / 2;
+                                        if (box(at(run, mid)).max.x < q.min.x)
+                                          lo = mid + 1;
+                                        else
+                                          hi = mid;
+                                      }
+                                      for (std::uint32_t i = lo; i < size(run); ++i) {
+                                        const std::uint32_t s = at(run, i);
+                                        const Box64 b = box(s);
+                                        if (b.min.x > q.max.x) break;
+                                        if (b.overlaps(q)) visit(k, s);
+                                      }
+                                    });
 }
 
 }  // namespace edgeland::detail

@@ -91,10 +91,10 @@ class HotSetClosure {
   PointSet& is_hot_;
   Closure& c_;
   ScratchVector<std::uint32_t> changed_;  // segments met this round
-  std::vector<Ring> routes_;             // of changed_[k], built when first asked for
-  std::unique_ptr<StopsOf> hot_stops_;   // every hot centre met so far, by segment
-  std::vector<SweepBox> split_sweep_;    // the split points' pixel boxes, sorted when first needed
-  std::vector<std::uint32_t> slot_;      // segment -> its place in changed_, or kNoSlot
+  std::vector<Ring> routes_;              // of changed_[k], built when first asked for
+  std::unique_ptr<StopsOf> hot_stops_;    // every hot centre met so far, by segment
+  std::vector<SweepBox> split_sweep_;     // the split points' pixel boxes, sorted when first needed
+  std::vector<std::uint32_t> slot_;       // segment -> its place in changed_, or kNoSlot
 };
 
 // Adds the fresh centres to the hot set and records every segment meeting their pixels.
@@ -157,7 +157,8 @@ const Ring& HotSetClosure::route(std::uint32_t k) {
 
 // Vertex p, whose closed pixel changed segment k meets (`on`: p lies on the segment): pinned if
 // the rule says so.
-void HotSetClosure::pin_if_needed(std::uint32_t k, Point64 p, bool on, std::vector<Point64>& fresh) {
+void HotSetClosure::pin_if_needed(std::uint32_t k, Point64 p, bool on,
+                                  std::vector<Point64>& fresh) {
   if ((!classic_ && on) || is_hot_.contains(p)) return;
   const bool pin = classic_ ? segment_meets_pixel(segs_[changed_[k]], p)
                             : locate(p, route(k)) == PointLocation::kInside;
@@ -205,9 +206,9 @@ void HotSetClosure::pin_by_box_queries(std::vector<Point64>& fresh) {
   if (split_sweep_.empty() && !in_.split_points.empty())
     split_sweep_ = sorted_for_sweep(pixel_boxes(in_.split_points));
   if (split_sweep_.empty()) return;
-  for_each_overlapping_pair(sorted_for_sweep(boxes), split_sweep_, [&](std::uint32_t k, std::uint32_t v) {
-    consider(k, in_.split_points[v], fresh);
-  });
+  for_each_overlapping_pair(
+      sorted_for_sweep(boxes), split_sweep_,
+      [&](std::uint32_t k, std::uint32_t v) { consider(k, in_.split_points[v], fresh); });
 }
 
 }  // namespace

@@ -22,7 +22,9 @@ class AllFragments {
     add_up_counts(first_);
   }
   std::uint32_t listed_count() const { return static_cast<std::uint32_t>(listed_.size()); }
-  std::uint32_t id_bound() const { return listed_count() + static_cast<std::uint32_t>(segs_.size()); }
+  std::uint32_t id_bound() const {
+    return listed_count() + static_cast<std::uint32_t>(segs_.size());
+  }
   std::uint32_t segment_count() const { return static_cast<std::uint32_t>(segs_.size()); }
   bool has_listed(std::uint32_t s) const { return first_[s] != first_[s + 1]; }
   const Segment& seg(std::uint32_t id) const {
@@ -74,7 +76,8 @@ std::vector<bool> off_classic_routes(const std::vector<Segment>& segs, SegmentsN
   loose.erase(std::unique(loose.begin(), loose.end()), loose.end());
   for (Point64 p : loose)
     near.for_each(p, [&](std::uint32_t s) {
-      if (!off[s] && segment_meets_closed_pixel(segs[s], p) && !on_segment(p, segs[s])) off[s] = true;
+      if (!off[s] && segment_meets_closed_pixel(segs[s], p) && !on_segment(p, segs[s]))
+        off[s] = true;
     });
   return off;
 }
@@ -120,7 +123,8 @@ void check_by_box_queries(const AllFragments& all, const SegmentIndex& index,
     pairs.emplace_back(std::min(f, g), std::max(f, g));
   };
   std::vector<Box64> boxes(which.size());
-  for (std::size_t k = 0; k < which.size(); ++k) boxes[k] = grown(segment_box(all.seg(which[k])), 2);
+  for (std::size_t k = 0; k < which.size(); ++k)
+    boxes[k] = grown(segment_box(all.seg(which[k])), 2);
   index.query(boxes, [&](std::uint32_t k, std::uint32_t s) {
     all.for_each_of(s, [&](std::uint32_t g) { add(which[k], g); });
   });
@@ -199,7 +203,8 @@ Rechecked recheck(const std::vector<Segment>& segs, Fragments fragments, const C
   if (!out.found.hot.empty()) return out;
   // Only exact integer splits remain, if any (snapped fragments landing on vertices or
   // overlapping collinearly): split and finish; nothing moves.
-  out.fragments = out.found.splits.empty() ? std::move(fragments) : split_fragments(all, out.found.splits);
+  out.fragments =
+      out.found.splits.empty() ? std::move(fragments) : split_fragments(all, out.found.splits);
   return out;
 }
 

@@ -6,12 +6,12 @@
 #include <stdexcept>
 #include <utility>
 
+#include "edgeland/kernel/assert.hpp"
 #include "edgeland/kernel/pixel.hpp"
 #include "edgeland/kernel/predicates.hpp"
 #include "offsets.hpp"
 #include "radix_sort.hpp"
 #include "snap_rounding_steps.hpp"
-#include "stage_failure.hpp"
 
 namespace edgeland::detail {
 namespace snap_steps {
@@ -89,7 +89,10 @@ class SnapRounds {
   static constexpr std::size_t kStableRounds = 4, kMaxRounds = 16;
 
   SnapRounds(const std::vector<Segment>& segs, const Contacts& contacts, SegmentSearch& search)
-      : segs_(segs), contacts_(contacts), search_(search), splits_of_(segs.size(), contacts.splits) {
+      : segs_(segs),
+        contacts_(contacts),
+        search_(search),
+        splits_of_(segs.size(), contacts.splits) {
     split_points_.reserve(contacts.splits.size());
     for (const auto& sp : contacts.splits) split_points_.push_back(sp.second);
     is_hot_.reserve(2 * contacts.hot.size());
@@ -140,14 +143,15 @@ class SnapRounds {
   void close(bool classic, Snapped& out) {
     std::sort(fresh_.begin(), fresh_.end());
     std::sort(split_points_.begin(), split_points_.end());
-    split_points_.erase(std::unique(split_points_.begin(), split_points_.end()), split_points_.end());
+    split_points_.erase(std::unique(split_points_.begin(), split_points_.end()),
+                        split_points_.end());
     close_hot_set({segs_, search_, split_points_, splits_of_}, classic, is_hot_, closure_, fresh_);
     fresh_.clear();
     for (const auto& m : closure_.meets) out.touched[m.first] = true;
     out.hot_pixels = closure_.hot.size();
     out.moved_boxes.clear();
-    out.moved_boxes.reserve(static_cast<std::size_t>(
-        std::count(closure_.moved.begin(), closure_.moved.end(), true)));
+    out.moved_boxes.reserve(
+        static_cast<std::size_t>(std::count(closure_.moved.begin(), closure_.moved.end(), true)));
     for (std::uint32_t i = 0; i < segs_.size(); ++i)
       if (closure_.moved[i]) out.moved_boxes.push_back(search_.index.box(i));
   }
@@ -184,8 +188,9 @@ Snapped snap_round(const std::vector<Segment>& segs, const std::vector<std::uint
   return out;
 }
 
-Snapped node_and_snap_round(const std::vector<Segment>& segs, const std::vector<std::uint32_t>& next,
-                            bool simple_rings, std::size_t* intersections) {
+Snapped node_and_snap_round(const std::vector<Segment>& segs,
+                            const std::vector<std::uint32_t>& next, bool simple_rings,
+                            std::size_t* intersections) {
   SegmentSearch search(segs, next);
   Contacts contacts = find_contacts(segs, next, search, {simple_rings});
   if (intersections) *intersections = contacts.intersections;

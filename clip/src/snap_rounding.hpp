@@ -14,8 +14,8 @@
 namespace edgeland::detail {
 
 struct Fragment {
-  Segment seg;            // integer endpoints, seg.a != seg.b
-  std::uint32_t parent;   // index of the input segment it comes from (same direction)
+  Segment seg;           // integer endpoints, seg.a != seg.b
+  std::uint32_t parent;  // index of the input segment it comes from (same direction)
 };
 
 // Fragment lists recycle their storage per thread (scratch.hpp).
@@ -47,7 +47,8 @@ Snapped snap_round(const std::vector<Segment>& segs, const std::vector<std::uint
 
 // Noding (no screen, no overlap budget) and snap rounding in one call, for callers that need
 // no more of the contacts than how many pairs met (`intersections`, when not null).
-Snapped node_and_snap_round(const std::vector<Segment>& segs, const std::vector<std::uint32_t>& next,
-                            bool simple_rings, std::size_t* intersections = nullptr);
+Snapped node_and_snap_round(const std::vector<Segment>& segs,
+                            const std::vector<std::uint32_t>& next, bool simple_rings,
+                            std::size_t* intersections = nullptr);
 
 }  // namespace edgeland::detail

@@ -18,7 +18,7 @@ bool strictly_inside_ccw_sector(Point64 from, Point64 to, Point64 d) noexcept {
   const bool d_before_from = angle_less(d, from);
   const bool d_before_to = angle_less(d, to);
   if (!to_before_from) return !d_before_from && d_before_to;  // from < d < to
-  return !d_before_from || d_before_to;                        // wraps past angle 0
+  return !d_before_from || d_before_to;                       // wraps past angle 0
 }
 
 }  // namespace edgeland

@@ -79,8 +79,8 @@ std::vector<BoundaryHit> scan(const Ring& ring, RingShape shape, MeetsEdge meets
   const std::size_t n = ring.size();
   std::vector<BoundaryHit> hits;
   std::size_t points = 0;
-  bool in_run = false;            // the previous proper edge reported an overlap
-  bool first_edge_hit = false;    // the first proper edge reported something (a run may wrap)
+  bool in_run = false;          // the previous proper edge reported an overlap
+  bool first_edge_hit = false;  // the first proper edge reported something (a run may wrap)
   bool seen_proper_edge = false;
   for (std::size_t i = 0; i < n; ++i) {
     const Segment edge = ring_edge(ring, i);

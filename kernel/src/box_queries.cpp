@@ -11,8 +11,8 @@ namespace {
 
 // [lo, hi] of t with lo_c <= a + t d <= hi_c along one axis (d != 0): (c - a) / d, ordered.
 // Differences of in-range coordinates fit 33 bits.
-void axis_range(std::int64_t a, std::int64_t d, std::int64_t lo_c, std::int64_t hi_c,
-                Fraction& lo, Fraction& hi) {
+void axis_range(std::int64_t a, std::int64_t d, std::int64_t lo_c, std::int64_t hi_c, Fraction& lo,
+                Fraction& hi) {
   Fraction t_lo{Int128(lo_c) - a, d}, t_hi{Int128(hi_c) - a, d};
   if (d < 0) {
     t_lo = {-t_lo.num, -t_lo.den};

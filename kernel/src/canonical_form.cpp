@@ -9,19 +9,25 @@ namespace {
 
 const char* rule_text(CanonicalRule rule) {
   switch (rule) {
-    case CanonicalRule::kNotStartingAtSmallest: return "not-starting-at-smallest-vertex";
-    case CanonicalRule::kCollinearVertex: return "collinear-vertex";
-    case CanonicalRule::kNotSorted: return "not-sorted";
-    case CanonicalRule::kTooFewVertices: return "too-few-vertices";
+    case CanonicalRule::kNotStartingAtSmallest:
+      return "not-starting-at-smallest-vertex";
+    case CanonicalRule::kCollinearVertex:
+      return "collinear-vertex";
+    case CanonicalRule::kNotSorted:
+      return "not-sorted";
+    case CanonicalRule::kTooFewVertices:
+      return "too-few-vertices";
   }
   return "unknown-rule";  // Not reached by tests: the switch covers every rule.
 }
 
 std::optional<CanonicalViolation> ring_violation(const Polygon& ring, std::size_t index) {
   const std::size_t n = ring.size();
-  if (n < 3) return CanonicalViolation{CanonicalRule::kTooFewVertices, index, n ? ring[0] : Point64{}};
+  if (n < 3)
+    return CanonicalViolation{CanonicalRule::kTooFewVertices, index, n ? ring[0] : Point64{}};
   const auto smallest = std::min_element(ring.begin(), ring.end());
-  if (smallest != ring.begin()) return CanonicalViolation{CanonicalRule::kNotStartingAtSmallest, index, *smallest};
+  if (smallest != ring.begin())
+    return CanonicalViolation{CanonicalRule::kNotStartingAtSmallest, index, *smallest};
   for (std::size_t i = 0; i < n; ++i) {
     const Point64 prev = ring[(i + n - 1) % n], v = ring[i], next = ring[(i + 1) % n];
     if (orientation(prev, v, next) == Orientation::kCollinear)

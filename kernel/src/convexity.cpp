@@ -36,12 +36,14 @@ bool is_convex(const Ring& ring) noexcept {
     // the direction turns monotonically by a total of k full turns, it flips 2k times.
     const int s = sign(b.x - a.x);
     if (s != 0) {
-      if (first_dx_sign == 0) first_dx_sign = s;
-      else if (s != last_dx_sign) ++dx_sign_changes;
+      if (first_dx_sign == 0)
+        first_dx_sign = s;
+      else if (s != last_dx_sign)
+        ++dx_sign_changes;
       last_dx_sign = s;
     }
   }
-  if (turn == 0) return false;  // every vertex straight: no area
+  if (turn == 0) return false;                           // every vertex straight: no area
   if (last_dx_sign != first_dx_sign) ++dx_sign_changes;  // close the cycle
   return dx_sign_changes == 2;
 }

@@ -5,10 +5,14 @@ namespace {
 
 const char* operand_name(Operand o) {
   switch (o) {
-    case Operand::kSubject: return "subject";
-    case Operand::kClip: return "clip";
-    case Operand::kRings: return "rings";
-    case Operand::kQuery: return "query";
+    case Operand::kSubject:
+      return "subject";
+    case Operand::kClip:
+      return "clip";
+    case Operand::kRings:
+      return "rings";
+    case Operand::kQuery:
+      return "query";
   }
   return "?";  // Not reached by tests: the switch covers every Operand.
 }

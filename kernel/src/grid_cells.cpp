@@ -13,7 +13,9 @@ W height(const Box64& b) { return formulas::extent<W>(b.min.y, b.max.y); }
 
 }  // namespace
 
-Int128 point_count(const Box64& b) noexcept { return formulas::block_size<W>(width(b), height(b)).v; }
+Int128 point_count(const Box64& b) noexcept {
+  return formulas::block_size<W>(width(b), height(b)).v;
+}
 
 Int128 cells_covering(const Box64& b, std::int64_t side) noexcept {
   return formulas::cells_covering<W>(width(b), height(b), side).v;

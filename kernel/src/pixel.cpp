@@ -21,7 +21,9 @@ bool less(const Param& a, const Param& b) { return a.num * b.den < b.num * a.den
 
 // pixel_line_slack: >= 0 when the closed pixel of c reaches the line of s (formulas.hpp).
 Int128 normal_slack(const Segment& s, Point64 c) noexcept {
-  return formulas::pixel_line_slack<arith::Checked<std::int64_t>, W>(s.a.x, s.a.y, s.b.x, s.b.y, c.x, c.y).v;
+  return formulas::pixel_line_slack<arith::Checked<std::int64_t>, W>(s.a.x, s.a.y, s.b.x, s.b.y,
+                                                                     c.x, c.y)
+      .v;
 }
 
 }  // namespace
@@ -72,7 +74,7 @@ bool segment_meets_pixel(const Segment& s, Point64 c) noexcept {
   }
   if (less(hi, lo)) return false;
   // The closed square is met on [lo, hi]. Remove what lies only on the open top/right sides.
-  if (!less(lo, hi)) {  // a single point: it must have x < 1 and y < 1
+  if (!less(lo, hi)) {                               // a single point: it must have x < 1 and y < 1
     const Int128 x_den = px * lo.den + lo.num * dx;  // x * den
     const Int128 y_den = py * lo.den + lo.num * dy;
     return x_den < lo.den && y_den < lo.den;
@@ -85,7 +87,9 @@ bool segment_meets_pixel(const Segment& s, Point64 c) noexcept {
 }
 
 Int128 projection(const Segment& s, Point64 p) noexcept {
-  return formulas::dot_widening<arith::Checked<std::int64_t>, W>(s.a.x, s.a.y, s.b.x, s.b.y, p.x, p.y).v;
+  return formulas::dot_widening<arith::Checked<std::int64_t>, W>(s.a.x, s.a.y, s.b.x, s.b.y, p.x,
+                                                                 p.y)
+      .v;
 }
 
 }  // namespace edgeland

@@ -62,8 +62,10 @@ template <class Pred>
 std::size_t last_true(std::size_t lo, std::size_t hi, Pred pred) noexcept {
   while (lo < hi) {
     const std::size_t mid = lo + (hi - lo + 1) / 2;
-    if (pred(mid)) lo = mid;
-    else hi = mid - 1;
+    if (pred(mid))
+      lo = mid;
+    else
+      hi = mid - 1;
   }
   return lo;
 }
@@ -73,8 +75,10 @@ template <class Pred>
 std::size_t first_true(std::size_t lo, std::size_t hi, Pred pred) noexcept {
   while (lo < hi) {
     const std::size_t mid = lo + (hi - lo) / 2;
-    if (pred(mid)) hi = mid;
-    else lo = mid + 1;
+    if (pred(mid))
+      hi = mid;
+    else
+      lo = mid + 1;
   }
   return lo;
 }
@@ -139,8 +143,7 @@ PointLocation locate_convex(Point64 p, const Ring& r) noexcept {
   return PointLocation::kOutside;  // Not reached by tests: the switch covers every Orientation.
 }
 
-PointLocation locate(Point64 p, const PolygonSet& set,
-                     const std::vector<Box64>& boxes) noexcept {
+PointLocation locate(Point64 p, const PolygonSet& set, const std::vector<Box64>& boxes) noexcept {
   for (std::size_t i = 0; i < set.size(); ++i) {
     if (set[i].empty() || !boxes[i].contains(p)) continue;
     const PointLocation where = locate(p, set[i]);

@@ -33,8 +33,8 @@ bool on_segment_interior(Point64 p, const Segment& s) noexcept {
 }
 
 std::optional<RationalPoint> line_intersection(const Segment& s, const Segment& t) noexcept {
-  const auto h = formulas::line_intersection<W>(s.a.x, s.a.y, s.b.x, s.b.y, t.a.x, t.a.y,
-                                                t.b.x, t.b.y);
+  const auto h =
+      formulas::line_intersection<W>(s.a.x, s.a.y, s.b.x, s.b.y, t.a.x, t.a.y, t.b.x, t.b.y);
   if (h.den.v == 0) return std::nullopt;
   // Negating cannot overflow: the proofs bound every component well inside (-2^127, 2^127).
   if (h.den.v < 0) return RationalPoint{-h.x_num.v, -h.y_num.v, -h.den.v};
@@ -104,7 +104,8 @@ Int128 squared_distance(Point64 a, Point64 b) noexcept {
 }
 
 bool is_exactly(const RationalPoint& r, Point64 p) noexcept {
-  return formulas::scaled<W>(p.x, r.den) == W(r.x_num) && formulas::scaled<W>(p.y, r.den) == W(r.y_num);
+  return formulas::scaled<W>(p.x, r.den) == W(r.x_num) &&
+         formulas::scaled<W>(p.y, r.den) == W(r.y_num);
 }
 
 Point64 round_to_grid(const RationalPoint& p) noexcept {

@@ -36,8 +36,10 @@ bool culled(RayCulling culling, Int128 face) noexcept {
 // An axis-parallel ray cannot meet a segment that lies wholly on one side of its line.
 bool off_axis_line(const Ray& ray, const Segment& e) noexcept {
   const Point64 o = ray.origin;
-  if (ray.dy == 0 && ray.dx != 0) return std::min(e.a.y, e.b.y) > o.y || std::max(e.a.y, e.b.y) < o.y;
-  if (ray.dx == 0 && ray.dy != 0) return std::min(e.a.x, e.b.x) > o.x || std::max(e.a.x, e.b.x) < o.x;
+  if (ray.dy == 0 && ray.dx != 0)
+    return std::min(e.a.y, e.b.y) > o.y || std::max(e.a.y, e.b.y) < o.y;
+  if (ray.dx == 0 && ray.dy != 0)
+    return std::min(e.a.x, e.b.x) > o.x || std::max(e.a.x, e.b.x) < o.x;
   return false;
 }
 
@@ -45,7 +47,8 @@ bool off_axis_line(const Ray& ray, const Segment& e) noexcept {
 // end, clipped to the origin.
 std::optional<Fraction> contact_along(const Ray& ray, const Segment& edge) noexcept {
   const Point64 o = ray.origin, p = edge.a, q = edge.b;
-  if (formulas::cross<W>(W(p.x) - W(o.x), W(p.y) - W(o.y), ray.dx, ray.dy) != W(0)) return std::nullopt;
+  if (formulas::cross<W>(W(p.x) - W(o.x), W(p.y) - W(o.y), ray.dx, ray.dy) != W(0))
+    return std::nullopt;
   const W tp = formulas::ray_projection<W>(o.x, o.y, ray.dx, ray.dy, p.x, p.y);
   const W tq = formulas::ray_projection<W>(o.x, o.y, ray.dx, ray.dy, q.x, q.y);
   if (std::max(tp, tq) < W(0)) return std::nullopt;
@@ -100,7 +103,8 @@ std::optional<RayHit> first_hit(const Ray& ray, const Ring& ring, RayCulling cul
   for (std::size_t i = 0; i < n; ++i) {
     const Segment edge = ring_edge(ring, i);
     const Int128 face = facing(ray, edge);
-    const NearestHit::Offer hit = culled(culling, face) ? NearestHit::Offer::kMissed : nearest.offer(edge);
+    const NearestHit::Offer hit =
+        culled(culling, face) ? NearestHit::Offer::kMissed : nearest.offer(edge);
     if (hit != NearestHit::Offer::kMissed) {
       if (hit == NearestHit::Offer::kNearest) best_edge = i;
       if (i == 0) first_edge_hit = true;

@@ -49,7 +49,8 @@ ValidationReport validate_polygons(std::span<const Polygon> polygons, std::size_
     // them all has just failed: no need to try it again). It is tried once only: after a
     // pair is found, more pairs are the likely case (a file of copies), where trying it before
     // every reporting sweep doubled the work.
-    if (valid_rings.size() < polygons.size() && detail::accepted_by_one_sweep(polygons, valid_rings)) {
+    if (valid_rings.size() < polygons.size() &&
+        detail::accepted_by_one_sweep(polygons, valid_rings)) {
       return ValidationReport{sink.take()};
     }
     while (!sink.full()) {

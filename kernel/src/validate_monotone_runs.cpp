@@ -349,8 +349,9 @@ class RunSweep {
   }
 
   std::size_t ring_count() const noexcept { return selected_count(polygons_, members_); }
-  const Polygon& ring(std::size_t r) const noexcept { return selected_ring(polygons_, members_, r); }
-
+  const Polygon& ring(std::size_t r) const noexcept {
+    return selected_ring(polygons_, members_, r);
+  }
 
   std::span<const Polygon> polygons_;
   std::span<const std::size_t> members_;

@@ -441,8 +441,9 @@ class OneSweep {
   }
 
   std::size_t ring_count() const noexcept { return selected_count(polygons_, members_); }
-  const Polygon& ring(std::size_t r) const noexcept { return selected_ring(polygons_, members_, r); }
-
+  const Polygon& ring(std::size_t r) const noexcept {
+    return selected_ring(polygons_, members_, r);
+  }
 
   std::span<const Polygon> polygons_;
   std::span<const std::size_t> members_;

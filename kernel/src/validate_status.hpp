@@ -168,7 +168,7 @@ class SweepStatus {
       starts_[b + 1] = starts_[b] + blocks_[b].size();
   }
 
-  ScratchVector<std::uint32_t> flat_;      // the status while it is short
+  ScratchVector<std::uint32_t> flat_;               // the status while it is short
   std::vector<std::vector<std::uint32_t>> blocks_;  // then: none empty unless alone
   std::vector<std::size_t> starts_;  // index of each block's first entry, then size()
 };

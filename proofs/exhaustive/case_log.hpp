@@ -23,7 +23,8 @@ class CaseLog {
   void expect(bool ok, Describe&& describe) {
     ++cases_;
     if (ok) return;
-    if (++failures_ <= kShownFailures) std::printf("FAIL %s: %s\n", what_.c_str(), describe().c_str());
+    if (++failures_ <= kShownFailures)
+      std::printf("FAIL %s: %s\n", what_.c_str(), describe().c_str());
   }
 
   std::uint64_t cases() const { return cases_; }
@@ -32,7 +33,8 @@ class CaseLog {
   // Prints "<what>: N cases, F failures" and returns whether all passed.
   bool report() const {
     std::printf("%-64s %9llu cases, %llu failures\n", what_.c_str(),
-                static_cast<unsigned long long>(cases_), static_cast<unsigned long long>(failures_));
+                static_cast<unsigned long long>(cases_),
+                static_cast<unsigned long long>(failures_));
     return failures_ == 0 && cases_ > 0;
   }
 

@@ -48,8 +48,10 @@ int main() {
   }
 
   CaseLog extremes("floor_div at 0, +-2^64 and the ends of Int128");
-  std::vector<Int128> numerators, divisors = {1, 2, 3, 7, Int128(1) << 63, Int128(1) << 64,
-                                              (Int128(1) << 64) + 1, kMax / 2, kMax - 1, kMax};
+  std::vector<Int128> numerators,
+      divisors = {
+          1,        2,        3,   7, Int128(1) << 63, Int128(1) << 64, (Int128(1) << 64) + 1,
+          kMax / 2, kMax - 1, kMax};
   for (Int128 base : {Int128(0), Int128(1) << 64, -(Int128(1) << 64), kMin + 8, kMax - 8}) {
     for (int k = -8; k <= 8; ++k) numerators.push_back(base + k);
   }
@@ -62,7 +64,9 @@ int main() {
     for (Int128 num = -80; num <= 80; ++num) {
       const Point64 r = round_to_grid(RationalPoint{num, -num, den});
       // 2*den*R - den <= 2*num < 2*den*R + den, per axis (the y axis rounds -num).
-      auto obeys = [&](std::int64_t v, Int128 x) { return den * (2 * v - 1) <= 2 * x && 2 * x < den * (2 * v + 1); };
+      auto obeys = [&](std::int64_t v, Int128 x) {
+        return den * (2 * v - 1) <= 2 * x && 2 * x < den * (2 * v + 1);
+      };
       rule.expect(obeys(r.x, num) && obeys(r.y, -num),
                   [&] { return to_string(num) + "/" + to_string(den) + " -> " + str(r); });
     }

@@ -43,7 +43,9 @@ class SignTable {
         for (std::size_t k = 0; k < n_; ++k)
           s_[(i * n_ + j) * n_ + k] = static_cast<signed char>(orientation(pts[i], pts[j], pts[k]));
   }
-  int operator()(std::size_t i, std::size_t j, std::size_t k) const { return s_[(i * n_ + j) * n_ + k]; }
+  int operator()(std::size_t i, std::size_t j, std::size_t k) const {
+    return s_[(i * n_ + j) * n_ + k];
+  }
   bool ccw(std::size_t i, std::size_t j, std::size_t k) const { return (*this)(i, j, k) > 0; }
 
  private:
@@ -90,8 +92,8 @@ bool check_grid(const char* name, const std::vector<Point64>& pts) {
           if (o.ccw(l, j, k) && o.ccw(i, l, k) && o.ccw(i, j, l)) {
             interior.expect(o.ccw(i, j, k), [&] { return triple(p, q, r) + " t=" + str(t); });
           }
-          identity.expect(orient_det(p, q, r) == orient_det(t, q, r) + orient_det(p, t, r) +
-                                                     orient_det(p, q, t),
+          identity.expect(orient_det(p, q, r) ==
+                              orient_det(t, q, r) + orient_det(p, t, r) + orient_det(p, q, t),
                           [&] { return triple(p, q, r) + " t=" + str(t); });
         }
       }
@@ -121,7 +123,8 @@ bool check_grid(const char* name, const std::vector<Point64>& pts) {
     }
   }
   bool ok = true;
-  for (const CaseLog* c : {&exact, &cyclic, &anti, &collinear, &interior, &identity, &trans, &dual}) {
+  for (const CaseLog* c :
+       {&exact, &cyclic, &anti, &collinear, &interior, &identity, &trans, &dual}) {
     ok = c->report() && ok;
   }
   return ok;

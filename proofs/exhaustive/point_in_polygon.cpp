@@ -6,13 +6,14 @@
 // query points are all of [-1, 7]^2, so they include every vertex, every edge midpoint,
 // every cell centre and points outside on all sides: the ray-through-vertex and
 // ray-along-edge cases of thesis figures 13 and 15 all occur.
+#include "edgeland/kernel/point_in_polygon.hpp"
+
 #include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
 
 #include "case_log.hpp"
-#include "edgeland/kernel/point_in_polygon.hpp"
 #include "grids.hpp"
 #include "segment_reference.hpp"
 
@@ -157,12 +158,14 @@ int main() {
       }
     });
   }
-  std::printf("4x4 grid (scaled by 2), 3..5 vertices: %llu rings enumerated, %llu strictly simple "
-              "(%llu convex ccw), %zu query points each\n",
-              static_cast<unsigned long long>(rings), static_cast<unsigned long long>(simple),
-              static_cast<unsigned long long>(convex_rings), queries.size());
+  std::printf(
+      "4x4 grid (scaled by 2), 3..5 vertices: %llu rings enumerated, %llu strictly simple "
+      "(%llu convex ccw), %zu query points each\n",
+      static_cast<unsigned long long>(rings), static_cast<unsigned long long>(simple),
+      static_cast<unsigned long long>(convex_rings), queries.size());
   std::printf("reference answers: %llu outside, %llu inside, %llu on the boundary\n",
-              static_cast<unsigned long long>(answers[0]), static_cast<unsigned long long>(answers[1]),
+              static_cast<unsigned long long>(answers[0]),
+              static_cast<unsigned long long>(answers[1]),
               static_cast<unsigned long long>(answers[2]));
   const bool a = loc.report(), b = wind.report(), c = convex.report();
   return a && b && c ? 0 : 1;

@@ -30,7 +30,9 @@ bool same_point(const RationalPoint& p, const RationalXY& ref) {
          Rational(big(p.y_num), big(p.den)) == ref.y;
 }
 
-bool same_point(Point64 p, const RationalXY& ref) { return Rational(p.x) == ref.x && Rational(p.y) == ref.y; }
+bool same_point(Point64 p, const RationalXY& ref) {
+  return Rational(p.x) == ref.x && Rational(p.y) == ref.y;
+}
 
 bool agrees(const SegmentIntersection& got, const ReferenceIntersection& want) {
   if (got.relation != want.relation) return false;

@@ -17,7 +17,9 @@ bool lex_less(const RationalXY& a, const RationalXY& b) {
 
 // n / d. Boost 1.74's rational<cpp_int> throws on a negative denominator (it compares it with
 // -numeric_limits<cpp_int>::max(), which is 0 for an unbounded type), so normalize here.
-Rational ratio(const cpp_int& n, const cpp_int& d) { return d < 0 ? Rational(-n, -d) : Rational(n, d); }
+Rational ratio(const cpp_int& n, const cpp_int& d) {
+  return d < 0 ? Rational(-n, -d) : Rational(n, d);
+}
 
 cpp_int cross(cpp_int ax, cpp_int ay, cpp_int bx, cpp_int by) { return ax * by - ay * bx; }
 

@@ -18,8 +18,8 @@ struct RationalXY {
 
 struct ReferenceIntersection {
   SegmentRelation relation = SegmentRelation::kDisjoint;
-  RationalXY point;         // kCrossing, kTouching: the one common point
-  RationalXY from, to;      // kOverlapping: ends of the common part, lexicographic order
+  RationalXY point;     // kCrossing, kTouching: the one common point
+  RationalXY from, to;  // kOverlapping: ends of the common part, lexicographic order
 };
 
 // The common points of the closed segments s and t (a degenerate segment is its point).

@@ -16,7 +16,8 @@ void require_config(const Box64& world, const LandscapeConfig& c) {
     throw InvalidConfig("world box beyond the coordinate bound");
   if (world.min.x >= world.max.x || world.min.y >= world.max.y)
     throw InvalidConfig("world box without positive width and height");
-  if (c.edge_cap < kMinEdgeCap) throw InvalidConfig("edge_cap below " + std::to_string(kMinEdgeCap));
+  if (c.edge_cap < kMinEdgeCap)
+    throw InvalidConfig("edge_cap below " + std::to_string(kMinEdgeCap));
   if (c.merge_below >= c.edge_cap) throw InvalidConfig("merge_below not below edge_cap");
   if (c.min_cell_size < 1) throw InvalidConfig("min_cell_size below 1");
   if (c.grid_depth < -1 || c.grid_depth > kMaxGridDepth)
@@ -43,7 +44,8 @@ std::vector<Box64> split_boxes(const Box64& box, const LandscapeConfig& config) 
   ys.push_back(box.max.y);
   std::vector<Box64> out;
   for (std::size_t j = 0; j + 1 < ys.size(); ++j)
-    for (std::size_t i = 0; i + 1 < xs.size(); ++i) out.push_back({{xs[i], ys[j]}, {xs[i + 1], ys[j + 1]}});
+    for (std::size_t i = 0; i + 1 < xs.size(); ++i)
+      out.push_back({{xs[i], ys[j]}, {xs[i + 1], ys[j + 1]}});
   return out;
 }
 

@@ -14,8 +14,8 @@ namespace {
 
 std::string name(const Landscape::Node& n) {
   std::ostringstream s;
-  s << (n.is_cell() ? "cell (" : "node (") << n.box.min.x << ' ' << n.box.min.y << ' ' << n.box.max.x
-    << ' ' << n.box.max.y << ")";
+  s << (n.is_cell() ? "cell (" : "node (") << n.box.min.x << ' ' << n.box.min.y << ' '
+    << n.box.max.x << ' ' << n.box.max.y << ")";
   return s.str();
 }
 
@@ -35,8 +35,10 @@ void check_polygons(const Landscape::Node& c, std::vector<std::string>& problems
   if (!v.ok()) problems.push_back(name(c) + ": invalid: " + v.violations.front().describe());
   for (std::size_t i = 0; i < polys.size(); ++i) {
     const auto b = bounding_box(polys[i]);
-    if (!b || !inside(*b, c.box)) problems.push_back(name(c) + ": polygon " + std::to_string(i) + " outside the cell");
-    else if (*b != c.boxes[i]) problems.push_back(name(c) + ": polygon " + std::to_string(i) + " has a wrong box");
+    if (!b || !inside(*b, c.box))
+      problems.push_back(name(c) + ": polygon " + std::to_string(i) + " outside the cell");
+    else if (*b != c.boxes[i])
+      problems.push_back(name(c) + ": polygon " + std::to_string(i) + " has a wrong box");
     if (c.content.labels[i] == 0 || c.content.labels[i] >= kMaterialCount)
       problems.push_back(name(c) + ": polygon " + std::to_string(i) + " has material " +
                          std::to_string(c.content.labels[i]));
@@ -49,7 +51,8 @@ void check_canonical(const Landscape::Node& c, std::vector<std::string>& problem
     problems.push_back(name(c) + ": content is not the canonical decomposition of its regions");
 }
 
-void check_sums(const Landscape::Node& n, const NodePtr& rebuilt, std::vector<std::string>& problems) {
+void check_sums(const Landscape::Node& n, const NodePtr& rebuilt,
+                std::vector<std::string>& problems) {
   if (rebuilt->polygons != n.polygons || rebuilt->vertices != n.vertices ||
       rebuilt->cells != n.cells || rebuilt->deepest != n.deepest || rebuilt->hash != n.hash ||
       rebuilt->cut_x != n.cut_x || rebuilt->cut_y != n.cut_y || rebuilt->x_line != n.x_line ||
@@ -116,17 +119,23 @@ std::string check_edit(const Landscape& l, const NodePtr& new_root, const Change
       if (id < old_next_id && !old_ids.count(id))
         problems.push_back("id " + std::to_string(id) + " taken from a polygon that stays");
     }
-  return problems.empty() ? std::string() : problems.front() + (problems.size() > 1 ? " (and " + std::to_string(problems.size() - 1) + " more)" : "");
+  return problems.empty()
+             ? std::string()
+             : problems.front() + (problems.size() > 1
+                                       ? " (and " + std::to_string(problems.size() - 1) + " more)"
+                                       : "");
 }
 
 namespace {
 
-void check_subtree(const NodePtr& n, const LandscapeConfig& config, std::vector<std::string>& problems,
-                   std::set<PolygonId>& ids, Landscape::AreaTable& areas) {
+void check_subtree(const NodePtr& n, const LandscapeConfig& config,
+                   std::vector<std::string>& problems, std::set<PolygonId>& ids,
+                   Landscape::AreaTable& areas) {
   if (n->is_cell()) {
     check_cell(*n, config, problems);
     for (std::size_t i = 0; i < n->ids.size(); ++i) {
-      if (!ids.insert(n->ids[i]).second) problems.push_back("id " + std::to_string(n->ids[i]) + " twice");
+      if (!ids.insert(n->ids[i]).second)
+        problems.push_back("id " + std::to_string(n->ids[i]) + " twice");
       if (i < n->content.labels.size() && n->content.labels[i] < kMaterialCount)
         areas[n->content.labels[i]] += twice_signed_area(n->polygon_set()[i]);
     }
@@ -151,7 +160,8 @@ LandscapeReport check_all(const Landscape& l) {
     report.problems.push_back("an id is not below the next id");
   for (std::size_t m = 1; m < kMaterialCount; ++m)
     if (areas[m] != LandscapeAccess::areas(l)[m])
-      report.problems.push_back("the area of material " + std::to_string(m) + " is not the sum of its polygons");
+      report.problems.push_back("the area of material " + std::to_string(m) +
+                                " is not the sum of its polygons");
   return report;
 }
 

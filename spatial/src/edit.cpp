@@ -86,7 +86,8 @@ LandscapeEditor::Draft LandscapeEditor::edit_cell(const NodePtr& cell) {
 
 LandscapeEditor::Draft LandscapeEditor::split_if_needed(Draft cell) {
   const LandscapeConfig& config = l_.config_;
-  if (config.grid_depth >= 0 || cell.vertices <= config.edge_cap || !detail::can_split(cell.box, config))
+  if (config.grid_depth >= 0 || cell.vertices <= config.edge_cap ||
+      !detail::can_split(cell.box, config))
     return cell;
   const std::vector<Box64> boxes = detail::split_boxes(cell.box, config);
   std::vector<LabeledSet> parts =
@@ -174,8 +175,9 @@ ChangeSet LandscapeEditor::run(Landscape& target, const std::function<std::strin
       root = finish(draft, l_.root_);
     }
   } catch (const InternalError& e) {
-    throw detail::internal_error(l_, std::string(e.what()) + "\n  subject = " + e.subject_wkt +
-                                         "\n  clip = " + e.clip_wkt, log_line());
+    throw detail::internal_error(
+        l_, std::string(e.what()) + "\n  subject = " + e.subject_wkt + "\n  clip = " + e.clip_wkt,
+        log_line());
   } catch (const InvalidOverlay& e) {
     throw detail::internal_error(l_, e.what(), log_line());
   }

@@ -2,8 +2,8 @@
 #include "edgeland/spatial/landscape.hpp"
 
 #include "cell_split.hpp"
-#include "edgeland/kernel/area.hpp"
 #include "check.hpp"
+#include "edgeland/kernel/area.hpp"
 #include "edit.hpp"
 #include "landscape_access.hpp"
 #include "log_line.hpp"
@@ -46,13 +46,15 @@ LimitExceeded::LimitExceeded(Limit l, std::size_t max, std::size_t req)
       maximum(max),
       requested(req) {}
 
-LandscapeInternalError::LandscapeInternalError(const std::string& what, std::string s, std::string lg)
+LandscapeInternalError::LandscapeInternalError(const std::string& what, std::string s,
+                                               std::string lg)
     : LandscapeError("edgeland landscape internal error (please report with the log): " + what),
       state(std::move(s)),
       log(std::move(lg)) {}
 
 LoadError::LoadError(const std::string& what, std::size_t at)
-    : LandscapeError("cannot load landscape at byte " + std::to_string(at) + ": " + what), offset(at) {}
+    : LandscapeError("cannot load landscape at byte " + std::to_string(at) + ": " + what),
+      offset(at) {}
 
 Landscape::Landscape(const Box64& world, Material fill, const LandscapeConfig& config,
                      const LandscapeLimits& limits)
@@ -60,7 +62,8 @@ Landscape::Landscape(const Box64& world, Material fill, const LandscapeConfig& c
   detail::require_config(world, config);
   LabeledSet content;
   if (fill != kEmpty) {
-    content.set = ValidSet(PolygonSet{{world.min, {world.max.x, world.min.y}, world.max, {world.min.x, world.max.y}}});
+    content.set = ValidSet(
+        PolygonSet{{world.min, {world.max.x, world.min.y}, world.max, {world.min.x, world.max.y}}});
     content.labels = {fill};
   }
   auto areas = std::make_shared<AreaTable>();
@@ -70,18 +73,24 @@ Landscape::Landscape(const Box64& world, Material fill, const LandscapeConfig& c
 }
 
 ChangeSet Landscape::carve(const ValidSet& shape) {
-  return LandscapeEditor(*this, shape, EditTable::carve()).run(*this, [&] { return detail::carve_line(shape.polygons()); });
+  return LandscapeEditor(*this, shape, EditTable::carve()).run(*this, [&] {
+    return detail::carve_line(shape.polygons());
+  });
 }
 ChangeSet Landscape::fill(const ValidSet& shape, Material m) {
-  return LandscapeEditor(*this, shape, EditTable::fill(m)).run(*this, [&] { return detail::fill_line(shape.polygons(), m); });
+  return LandscapeEditor(*this, shape, EditTable::fill(m)).run(*this, [&] {
+    return detail::fill_line(shape.polygons(), m);
+  });
 }
 ChangeSet Landscape::fill_empty(const ValidSet& shape, Material m) {
-  return LandscapeEditor(*this, shape, EditTable::fill_empty(m))
-      .run(*this, [&] { return detail::fill_empty_line(shape.polygons(), m); });
+  return LandscapeEditor(*this, shape, EditTable::fill_empty(m)).run(*this, [&] {
+    return detail::fill_empty_line(shape.polygons(), m);
+  });
 }
 ChangeSet Landscape::replace(const ValidSet& shape, Material from, Material to) {
-  return LandscapeEditor(*this, shape, EditTable::replace(from, to))
-      .run(*this, [&] { return detail::replace_line(shape.polygons(), from, to); });
+  return LandscapeEditor(*this, shape, EditTable::replace(from, to)).run(*this, [&] {
+    return detail::replace_line(shape.polygons(), from, to);
+  });
 }
 ChangeSet Landscape::carve(const PolygonSet& shape) { return carve(shape_of(shape)); }
 ChangeSet Landscape::fill(const PolygonSet& shape, Material m) { return fill(shape_of(shape), m); }
@@ -96,7 +105,8 @@ Int128 Landscape::twice_area(Material m) const {
   if (m != kEmpty) return (*areas_)[m];
   Int128 solid = 0;
   for (std::size_t i = 1; i < kMaterialCount; ++i) solid += (*areas_)[i];
-  const Ring world{world_.min, {world_.max.x, world_.min.y}, world_.max, {world_.min.x, world_.max.y}};
+  const Ring world{
+      world_.min, {world_.max.x, world_.min.y}, world_.max, {world_.min.x, world_.max.y}};
   return twice_signed_area(world) - solid;
 }
 

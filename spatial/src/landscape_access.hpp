@@ -13,7 +13,9 @@ struct LandscapeAccess {
   static Material initial_fill(const Landscape& l) { return l.initial_fill_; }
   static std::uint64_t edits(const Landscape& l) { return l.edits_; }
   static const std::shared_ptr<const Landscape::LogLine>& log(const Landscape& l) { return l.log_; }
-  static void set_log(Landscape& l, std::shared_ptr<const Landscape::LogLine> last) { l.log_ = std::move(last); }
+  static void set_log(Landscape& l, std::shared_ptr<const Landscape::LogLine> last) {
+    l.log_ = std::move(last);
+  }
 };
 
 }  // namespace edgeland

@@ -44,9 +44,7 @@ std::string state_log(const Landscape& l) {
   return out;
 }
 
-std::string replay_log(const Landscape& l) {
-  return l.logging() ? log_text(l) : state_log(l);
-}
+std::string replay_log(const Landscape& l) { return l.logging() ? log_text(l) : state_log(l); }
 
 void append_log(Landscape& l, const std::string& line) {
   auto next = std::make_shared<Landscape::LogLine>();

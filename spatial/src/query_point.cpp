@@ -54,7 +54,8 @@ Material Landscape::material_at(Point64 p) const {
   return kEmpty;
 }
 
-void Landscape::polygons_in(const Box64& box, const std::function<bool(const PolygonView&)>& visit) const {
+void Landscape::polygons_in(const Box64& box,
+                            const std::function<bool(const PolygonView&)>& visit) const {
   if (inverted(box)) return;
   visit_cells_meeting(root_, box, false, [&](const Node& cell) {
     for (std::size_t i = 0; i < cell.ids.size(); ++i) {
@@ -67,7 +68,8 @@ void Landscape::polygons_in(const Box64& box, const std::function<bool(const Pol
   });
 }
 
-void Landscape::cells_in(const Box64& box, const std::function<bool(const CellView&)>& visit) const {
+void Landscape::cells_in(const Box64& box,
+                         const std::function<bool(const CellView&)>& visit) const {
   if (inverted(box)) return;
   visit_cells_meeting(root_, box, false, [&](const Node& cell) {
     return visit(CellView{cell.box, cell.depth, cell.polygons, cell.vertices});
@@ -124,7 +126,8 @@ LandscapeStats Landscape::stats() const {
     for (std::uint32_t i = 0; i < n->child_count; ++i) stack.push_back(n->children[i].get());
     const PolygonSet& polys = n->polygon_set();
     s.bytes += polys.capacity() * sizeof(Polygon) + n->ids.capacity() * sizeof(PolygonId) +
-               n->boxes.capacity() * sizeof(Box64) + n->content.labels.capacity() * sizeof(RegionLabel);
+               n->boxes.capacity() * sizeof(Box64) +
+               n->content.labels.capacity() * sizeof(RegionLabel);
     for (const Polygon& p : polys) s.bytes += p.capacity() * sizeof(Point64);
   }
   return s;

@@ -21,7 +21,8 @@ struct CellOnSegment {
 
 // The cells whose closed box meets the segment (whose box is `reach`), with the parameter
 // where it enters each. Boxes missing the segment's box are passed over by comparisons alone.
-void cells_on(const NodePtr& n, const Segment& s, const Box64& reach, std::vector<CellOnSegment>& out) {
+void cells_on(const NodePtr& n, const Segment& s, const Box64& reach,
+              std::vector<CellOnSegment>& out) {
   if (!n->box.overlaps(reach)) return;
   const auto range = clip_parameters(s, n->box);
   if (!range) return;
@@ -44,7 +45,8 @@ class Profile {
  public:
   explicit Profile(const Segment& s)
       : s_(s),
-        reach_{{std::min(s.a.x, s.b.x), std::min(s.a.y, s.b.y)}, {std::max(s.a.x, s.b.x), std::max(s.a.y, s.b.y)}} {}
+        reach_{{std::min(s.a.x, s.b.x), std::min(s.a.y, s.b.y)},
+               {std::max(s.a.x, s.b.x), std::max(s.a.y, s.b.y)}} {}
 
   // Adds the crossings of the polygons of one cell.
   void add_cell(const Landscape::Node& cell) {

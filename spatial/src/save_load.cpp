@@ -7,8 +7,8 @@
 #include <set>
 
 #include "cell_split.hpp"
-#include "edgeland/kernel/area.hpp"
 #include "check.hpp"
+#include "edgeland/kernel/area.hpp"
 #include "landscape_access.hpp"
 #include "node.hpp"
 
@@ -81,7 +81,8 @@ class LandscapeLoader {
 
   Landscape load() {
     if (bytes_.size() < sizeof(kMagic) + 4 + 8) fail("file too short for a landscape");
-    if (bytes_.compare(0, sizeof(kMagic), kMagic, sizeof(kMagic)) != 0) fail("not a landscape save file");
+    if (bytes_.compare(0, sizeof(kMagic), kMagic, sizeof(kMagic)) != 0)
+      fail("not a landscape save file");
     end_ = bytes_.size();
     at_ = end_ - 8;
     const std::uint64_t checksum = fixed(8);
@@ -114,7 +115,8 @@ class LandscapeLoader {
   std::uint64_t fixed(int n) {
     if (end_ - at_ < static_cast<std::size_t>(n)) fail("truncated");
     std::uint64_t v = 0;
-    for (int i = 0; i < n; ++i) v |= std::uint64_t{static_cast<unsigned char>(bytes_[at_ + i])} << (8 * i);
+    for (int i = 0; i < n; ++i)
+      v |= std::uint64_t{static_cast<unsigned char>(bytes_[at_ + i])} << (8 * i);
     at_ += static_cast<std::size_t>(n);
     return v;
   }
@@ -171,7 +173,8 @@ class LandscapeLoader {
     if (tag == 1) {
       if (!detail::can_split(box, config)) fail("a cell too small to split is split");
       std::vector<detail::NodePtr> children;
-      for (const Box64& b : detail::split_boxes(box, config)) children.push_back(read_node(b, depth + 1, config));
+      for (const Box64& b : detail::split_boxes(box, config))
+        children.push_back(read_node(b, depth + 1, config));
       return detail::make_inner(box, depth, children);
     }
     if (tag != 0) fail("unknown node tag");
@@ -186,7 +189,8 @@ class LandscapeLoader {
     std::vector<PolygonId> ids(n);
     for (std::size_t i = 0; i < n; ++i) {
       ids[i] = varint();
-      if (ids[i] == 0 || ids[i] >= next_id_ || !seen_ids_.insert(ids[i]).second) fail("bad or repeated polygon id");
+      if (ids[i] == 0 || ids[i] >= next_id_ || !seen_ids_.insert(ids[i]).second)
+        fail("bad or repeated polygon id");
       labels[i] = static_cast<RegionLabel>(fixed(1));
       if (labels[i] == 0) fail("a polygon of material 0");
       const std::size_t m = count(2);
@@ -246,7 +250,8 @@ Landscape Landscape::load(std::istream& in, const LandscapeLimits& limits) {
   while (in) {
     in.read(buffer, sizeof(buffer));
     bytes.append(buffer, static_cast<std::size_t>(in.gcount()));
-    if (bytes.size() > max_bytes) throw LoadError("file larger than the limits allow", bytes.size());
+    if (bytes.size() > max_bytes)
+      throw LoadError("file larger than the limits allow", bytes.size());
   }
   if (in.bad()) throw LoadError("the stream failed", bytes.size());
   return LandscapeLoader(std::move(bytes), limits).load();

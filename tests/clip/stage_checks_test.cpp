@@ -394,19 +394,19 @@ TEST(StageCheckLabels, Size) {
 
 TEST(StageCheckLabels, OwnerOutOfRange) {
   auto s = squares();
-  s->left[0].s[0] = -2;
+  s->left[0].by_channel[0] = -2;
   expect_labels_failure(*s, "state range");
 }
 
 TEST(StageCheckLabels, WindingModeUsingChannelOne) {
   auto s = normalize_stages({box(0, 0, 10, 10)}, FillRule::kNonZero);
-  for (SideState& st : s->left) st.s[1] = 1;
+  for (SideState& st : s->left) st.by_channel[1] = 1;
   expect_labels_failure(*s, "state range");
 }
 
 TEST(StageCheckLabels, FaceWithTwoStates) {
   auto s = squares();
-  s->left[inner_half_edge(*s)].s[1] = 7;
+  s->left[inner_half_edge(*s)].by_channel[1] = 7;
   expect_labels_failure(*s, "face");
 }
 
@@ -420,7 +420,7 @@ TEST(StageCheckLabels, WindingNotChangedByItsEdges) {
   auto s = normalize_stages({box(0, 0, 10, 10), box(5, 5, 15, 15)}, FillRule::kNonZero);
   const std::uint32_t h = inner_half_edge(*s);
   SideState wrong = s->left[h];
-  wrong.s[0] += 2;
+  wrong.by_channel[0] += 2;
   relabel_face(*s, h, wrong);
   expect_labels_failure(*s, "crossing");
 }
@@ -432,9 +432,9 @@ TEST(StageCheckLabels, CountNotChangedByItsEdges) {
   later_stages(*s, LabelMode::kOwnerAndCount, LabelOf::operation(ClipOp::kIntersection), true);
   EXPECT_NO_THROW(check_labels(s->graph, s->mode, s->left));
   std::uint32_t h = 0;
-  while (s->left[h].s[1] != 1) ++h;  // inside the channel 1 square
+  while (s->left[h].by_channel[1] != 1) ++h;  // inside the channel 1 square
   SideState wrong = s->left[h];
-  wrong.s[1] = 2;
+  wrong.by_channel[1] = 2;
   relabel_face(*s, h, wrong);
   expect_labels_failure(*s, "crossing");
 }
@@ -442,7 +442,7 @@ TEST(StageCheckLabels, CountNotChangedByItsEdges) {
 TEST(StageCheckLabels, OuterFaceNotEmpty) {
   // Every winding number one more: faces and crossings agree, the unbounded face does not.
   auto s = normalize_stages({box(0, 0, 10, 10), box(5, 5, 15, 15)}, FillRule::kNonZero);
-  for (SideState& st : s->left) st.s[0] += 1;
+  for (SideState& st : s->left) st.by_channel[0] += 1;
   expect_labels_failure(*s, "outer face");
 }
 

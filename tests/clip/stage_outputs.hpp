@@ -10,6 +10,7 @@
 #include "collinear_merge.hpp"
 #include "input_edges.hpp"
 #include "labeling.hpp"
+#include "noding.hpp"
 #include "planar_graph.hpp"
 #include "snap_rounding.hpp"
 
@@ -28,23 +29,32 @@ struct StageOutputs {
   Assembled assembled;
 };
 
+// Contacts then fragments of s.edges, as run() makes them (pipeline.cpp, node): snap rounding
+// only when noding did not stop. Returns whether noding stopped at the overlap budget.
+inline bool node_stage(StageOutputs& s, bool simple_rings, std::size_t overlap_budget,
+                       Snapped& snapped) {
+  SegmentSearch search(s.edges.segments, s.edges.next);
+  Contacts contacts = find_contacts(s.edges.segments, s.edges.next, search,
+                                    {simple_rings, nullptr, overlap_budget});
+  if (!contacts.stopped()) snapped = snap_round(s.edges.segments, s.edges.next, contacts, search);
+  return contacts.overlap_heavy;
+}
+
 // The edge list's snapped fragments, as run() makes them: with merged stacks when noding
 // stops at the overlap budget, the merged edges' unchained segments then marked touched.
 inline void snap_stage(StageOutputs& s, bool simple_rings, std::size_t overlap_budget) {
-  SnapStats snap;
-  Fragments f =
-      snap_round(s.edges.segments, s.edges.next, simple_rings, snap, nullptr, overlap_budget);
-  if (snap.overlap_heavy) {
+  Snapped snapped;
+  if (node_stage(s, simple_rings, overlap_budget, snapped)) {
     MergedEdges merged = merge_collinear_overlaps(s.edges);
     s.edges = std::move(merged.edges);
-    f = snap_round(s.edges.segments, s.edges.next, simple_rings, snap);
+    node_stage(s, simple_rings, std::numeric_limits<std::size_t>::max(), snapped);
     for (std::size_t k = 0; k < s.edges.size(); ++k)
-      if (merged.unchained[k]) snap.touched[k] = true;
+      if (merged.unchained[k]) snapped.touched[k] = true;
     s.merged = true;
   }
-  s.fragments.assign(f.begin(), f.end());
-  s.touched = std::move(snap.touched);
-  s.hot_pixels = snap.hot_pixels;
+  s.fragments.assign(snapped.fragments.begin(), snapped.fragments.end());
+  s.touched = std::move(snapped.touched);
+  s.hot_pixels = snapped.hot_pixels;
 }
 
 // Runs the stages from snap rounding to assembly on s.edges.

@@ -25,8 +25,10 @@
 // first violation of validate(); two kinds are subclasses with fields of their own (errors.hpp):
 // CoordinateOutOfRange for a coordinate beyond kCoordBound (polygon, ring, vertex, point), and
 // InvalidBox for clip_to_box's box with min.x > max.x or min.y > max.y (the box; rule
-// Rule::kInvertedBox). In checked mode every output is re-validated and its canonical form
-// checked (canonical_form.hpp); a violation throws InternalError carrying the inputs as WKT.
+// Rule::kInvertedBox). In checked mode every stage's result is checked before the next stage
+// reads it (clip/src/stage_checks.hpp: fragments, plane graph, labels, rings), and every output
+// is re-validated and its canonical form checked (canonical_form.hpp); a violation throws
+// InternalError naming the stage and carrying the inputs as WKT.
 // MEMORY. An operation's working memory peaks at about 90 bytes per input edge on smooth
 // inputs (two circles of 2 * 10^5 vertices: 87), plus about 1,500 bytes per crossing when the
 // crossings must be rounded (zigzag stars of 10^5 vertices each, 10^5 crossings: 1,450; snap
@@ -60,7 +62,7 @@ EDGELAND_EXPORT const char* op_name(ClipOp op) noexcept;
 EDGELAND_EXPORT const char* fill_rule_name(FillRule rule) noexcept;
 
 struct ClipOptions {
-  // Re-validate every output with the kernel's checkers (on in tests, fuzzers, `--check`).
+  // Check every stage's result and re-validate every output (on in tests, fuzzers, `--check`).
   bool checked = false;
 };
 
@@ -156,8 +158,8 @@ EDGELAND_EXPORT ClipResult import_polygons(const std::vector<std::vector<Ring>>&
 EDGELAND_EXPORT ValidClipResult normalize_to_valid_set(const std::vector<Ring>& rings,
                                                        FillRule rule,
                                                        const ClipOptions& options = {});
-EDGELAND_EXPORT ValidClipResult import_to_valid_set(
-    const std::vector<std::vector<Ring>>& polygons, const ClipOptions& options = {});
+EDGELAND_EXPORT ValidClipResult import_to_valid_set(const std::vector<std::vector<Ring>>& polygons,
+                                                    const ClipOptions& options = {});
 
 // The same region as maximal polygons: members that touch along an edge become one polygon,
 // and a region enclosing a hole is split along diagonals into hole-free polygons as every

@@ -47,11 +47,11 @@ struct LabeledClipResult {
 class EDGELAND_EXPORT InvalidOverlay : public Error {
  public:
   enum class Reason : std::uint8_t {
-    kLabelCount,     // labels.size() differs from the number of polygons
-    kZeroLabel,      // a member is labeled 0
-    kOutsideWindow,  // a member of `regions` is not inside the window
-    kBadWindow,      // a window is not a box with positive area within the coordinate bound
-    kWindowsOverlap, // two windows share interior points
+    kLabelCount,      // labels.size() differs from the number of polygons
+    kZeroLabel,       // a member is labeled 0
+    kOutsideWindow,   // a member of `regions` is not inside the window
+    kBadWindow,       // a window is not a box with positive area within the coordinate bound
+    kWindowsOverlap,  // two windows share interior points
   };
   InvalidOverlay(Reason reason, std::size_t index);
   Reason reason;

@@ -46,8 +46,10 @@ inline std::optional<Box64> bounding_box(const PolygonSet& set) noexcept {
   std::optional<Box64> box;
   for (const Polygon& p : set) {
     if (auto b = bounding_box(p)) {
-      if (box) box->expand(*b);
-      else box = b;
+      if (box)
+        box->expand(*b);
+      else
+        box = b;
     }
   }
   return box;

@@ -19,7 +19,8 @@ namespace edgeland {
 struct ParameterRange {
   Fraction t0, t1;
 };
-EDGELAND_EXPORT std::optional<ParameterRange> clip_parameters(const Segment& s, const Box64& box) noexcept;
+EDGELAND_EXPORT std::optional<ParameterRange> clip_parameters(const Segment& s,
+                                                              const Box64& box) noexcept;
 
 // Whether the closed segment has a point in the open box (min.x, max.x) x (min.y, max.y):
 // separating axes x, y and the segment's normal (a segment touching the box only along its

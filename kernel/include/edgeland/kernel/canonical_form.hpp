@@ -32,7 +32,8 @@ struct CanonicalViolation {
 
 // The first departure of `set` from the canonical form, in ring order; nullopt when there is
 // none. Exact, O(n) for n vertices in all; works on any set (invalid ones too).
-EDGELAND_EXPORT std::optional<CanonicalViolation> canonical_violation(const PolygonSet& set) noexcept;
+EDGELAND_EXPORT std::optional<CanonicalViolation> canonical_violation(
+    const PolygonSet& set) noexcept;
 
 inline bool is_canonical(const PolygonSet& set) noexcept { return !canonical_violation(set); }
 

@@ -87,8 +87,8 @@ struct Checked {
   constexpr Checked(T value) : v(value) {}  // NOLINT: implicit on purpose, formulas read as math
   // Widening from a narrower checked type (formulas that take differences in 64 bits).
   template <class U>
-    requires(sizeof(U) < sizeof(T))
-  explicit constexpr Checked(Checked<U> narrow) : v(static_cast<T>(narrow.v)) {}
+  requires(sizeof(U) < sizeof(T)) explicit constexpr Checked(Checked<U> narrow)
+      : v(static_cast<T>(narrow.v)) {}
   friend constexpr Checked operator+(Checked a, Checked b) { return Checked(add(a.v, b.v)); }
   friend constexpr Checked operator-(Checked a, Checked b) { return Checked(sub(a.v, b.v)); }
   friend constexpr Checked operator*(Checked a, Checked b) { return Checked(mul(a.v, b.v)); }

@@ -68,8 +68,7 @@ struct Homogeneous {
 };
 
 template <class W>
-constexpr Homogeneous<W> line_intersection(W p0x, W p0y, W p1x, W p1y, W q0x, W q0y, W q1x,
-                                           W q1y) {
+constexpr Homogeneous<W> line_intersection(W p0x, W p0y, W p1x, W p1y, W q0x, W q0y, W q1x, W q1y) {
   const W rx = p1x - p0x, ry = p1y - p0y;
   const W sx = q1x - q0x, sy = q1y - q0y;
   const W den = cross(rx, ry, sx, sy);

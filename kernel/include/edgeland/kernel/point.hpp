@@ -9,8 +9,8 @@ namespace edgeland {
 // Every coordinate the library accepts satisfies |c| <= kCoordBound: the whole symmetric
 // int32 range. The proofs in proofs/ show that with this bound no intermediate of any
 // predicate or construction leaves its type (differences fit 33 bits, orientation determinants
-// 65 and dot products 66 bits, intersection numerators 98 of the 128 available). Coordinates are stored in int64 so
-// that differences and doubled coordinates never need a cast.
+// 65 and dot products 66 bits, intersection numerators 98 of the 128 available). Coordinates are
+// stored in int64 so that differences and doubled coordinates never need a cast.
 inline constexpr std::int64_t kCoordBound = 2147483647;  // 2^31 - 1
 
 struct Point64 {

@@ -77,7 +77,7 @@ EDGELAND_EXPORT SegmentIntersection intersect(const Segment& s, const Segment& t
 
 // The exact intersection of the lines through s and t; nullopt when they are parallel.
 EDGELAND_EXPORT std::optional<RationalPoint> line_intersection(const Segment& s,
-                                                              const Segment& t) noexcept;
+                                                               const Segment& t) noexcept;
 
 // THE rounding function of the library, and the only place an exact point becomes an
 // integer point: each coordinate goes to the nearest integer, a tie (exactly .5) rounds up

@@ -80,7 +80,7 @@ class NearestHit {
       : ray_(ray), open_(origin == Origin::kExcluded) {}
   Offer offer(const Segment& e) noexcept;
   bool found() const noexcept { return found_; }
-  const Fraction& t() const noexcept { return t_; }  // when found()
+  const Fraction& t() const noexcept { return t_; }                     // when found()
   RationalPoint point() const noexcept { return ray_point(ray_, t_); }  // when found()
 
  private:

@@ -50,9 +50,9 @@ class SpareArrays {
       s.slots_[s.count_++] = std::move(v);
       return;
     }
-    auto smallest = std::min_element(s.slots_.begin(), s.slots_.end(), [](const auto& a, const auto& b) {
-      return a.capacity() < b.capacity();
-    });
+    auto smallest =
+        std::min_element(s.slots_.begin(), s.slots_.end(),
+                         [](const auto& a, const auto& b) { return a.capacity() < b.capacity(); });
     if (smallest->capacity() < v.capacity()) *smallest = std::move(v);
   }
 
@@ -69,8 +69,14 @@ template <class T>
 class ScratchVector : public std::vector<T> {
  public:
   ScratchVector() : std::vector<T>(SpareArrays<T>::take()) { this->clear(); }
-  ScratchVector(const ScratchVector&) = delete;
-  ScratchVector& operator=(const ScratchVector&) = delete;
+  // A copy takes scratch storage of its own (tests copy stage results; the library does not).
+  ScratchVector(const ScratchVector& other) : ScratchVector() {
+    this->assign(other.begin(), other.end());
+  }
+  ScratchVector& operator=(const ScratchVector& other) {
+    if (this != &other) this->assign(other.begin(), other.end());
+    return *this;
+  }
   ScratchVector(ScratchVector&& other) noexcept : std::vector<T>(std::move(other)) {}
   ScratchVector& operator=(ScratchVector&& other) noexcept {
     std::vector<T>::operator=(std::move(other));

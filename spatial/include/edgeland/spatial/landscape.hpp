@@ -167,7 +167,7 @@ struct MaterialCrossing {
   RationalPoint point;  // the same point, exactly
   Point64 rounded;      // round_to_grid(point): the kernel's one rounding
   Material before = kEmpty, after = kEmpty;
-  PolygonId polygon = 0;  // the polygon entered (after != 0), else the one left
+  PolygonId polygon = 0;   // the polygon entered (after != 0), else the one left
   std::uint32_t edge = 0;  // its edge crossed: from vertex edge to vertex edge + 1
   Point64 normal;          // that edge's outward normal (dy, -dx): not normalised, exact
 };
@@ -193,8 +193,8 @@ class EDGELAND_EXPORT Landscape {
   // --- edits: any valid polygon set as the shape; parts past the world box are cut off -----
   // Throws CoordinateOutOfRange (a coordinate beyond kCoordBound), InvalidInput (any other
   // violation of validate(); operand kClip), LimitExceeded, LandscapeInternalError.
-  ChangeSet carve(const ValidSet& shape);                       // everything under it: empty
-  ChangeSet fill(const ValidSet& shape, Material material);     // everything under it: material
+  ChangeSet carve(const ValidSet& shape);                          // everything under it: empty
+  ChangeSet fill(const ValidSet& shape, Material material);        // everything under it: material
   ChangeSet fill_empty(const ValidSet& shape, Material material);  // only where empty
   ChangeSet replace(const ValidSet& shape, Material from, Material to);
   ChangeSet carve(const PolygonSet& shape);
@@ -265,8 +265,8 @@ class EDGELAND_EXPORT Landscape {
   void save(std::ostream& out) const;
   static Landscape load(std::istream& in, const LandscapeLimits& limits = {});
 
-  struct Node;      // the tree (spatial/src/node.hpp)
-  struct LogLine;   // the recorded log, a persistent list shared by copies
+  struct Node;     // the tree (spatial/src/node.hpp)
+  struct LogLine;  // the recorded log, a persistent list shared by copies
   using AreaTable = std::array<Int128, kMaterialCount>;
 
  private:
