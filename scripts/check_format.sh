@@ -9,7 +9,13 @@ if [ -z "$format" ]; then
   echo "scripts/check_format.sh: clang-format-14 not found (apt-get install -y clang-format-14)" >&2
   exit 2
 fi
-mapfile -t files < <(git ls-files '*.cpp' '*.hpp' '*.h')
+# The tracked files; outside a git checkout (an exported tree), every C++ file but build output.
+if git rev-parse --is-inside-work-tree >/dev/null 2>&1; then
+  mapfile -t files < <(git ls-files '*.cpp' '*.hpp' '*.h')
+else
+  mapfile -t files < <(find . -path './build*' -prune -o -path './.git' -prune -o \
+    \( -name '*.cpp' -o -name '*.hpp' -o -name '*.h' \) -type f -print | sed 's|^\./||' | sort)
+fi
 if [ "${1:-}" = "--fix" ]; then
   "$format" -i "${files[@]}"
   exit 0
