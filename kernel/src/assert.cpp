@@ -5,12 +5,12 @@
 
 namespace edgeland::detail {
 
-void fail_stage(const char* stage, const std::string& what, std::source_location where) {
-  std::string_view file = where.file_name();
+void fail_stage(const char* stage, const std::string& what, const char* file_path, int line) {
+  std::string_view file = file_path;
   if (const auto slash = file.find_last_of("/\\"); slash != std::string_view::npos)
     file.remove_prefix(slash + 1);
   throw std::logic_error(std::string(stage) + ": " + what + " (" + std::string(file) + ":" +
-                         std::to_string(where.line()) + ")");
+                         std::to_string(line) + ")");
 }
 
 }  // namespace edgeland::detail

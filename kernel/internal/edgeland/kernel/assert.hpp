@@ -12,7 +12,6 @@
 // (clip/src/pipeline.hpp) turns any std::logic_error into the always-on InternalError, which
 // carries the inputs as WKT; the text then names the stage that failed, the broken rule and
 // where it was found, which is what a bug report needs. Library code prints nothing.
-#include <source_location>
 #include <string>
 
 #include "edgeland/kernel/export.hpp"
@@ -21,10 +20,12 @@ namespace edgeland::detail {
 
 // Throws std::logic_error("<stage>: <what> (<file>:<line>)"), the file without its directory
 // (file names are unique within a part of the library, and the text stays the same on every
-// machine). `where` defaults to the caller's position.
-[[noreturn]] EDGELAND_EXPORT void fail_stage(
-    const char* stage, const std::string& what,
-    std::source_location where = std::source_location::current());
+// machine). `file` and `line` default to the caller's position: __builtin_FILE / __builtin_LINE,
+// which gcc and clang 14 (the sanitizer build, Emscripten) both have, where std::source_location
+// needs clang 15 with libstdc++.
+[[noreturn]] EDGELAND_EXPORT void fail_stage(const char* stage, const std::string& what,
+                                             const char* file = __builtin_FILE(),
+                                             int line = __builtin_LINE());
 
 }  // namespace edgeland::detail
 
