@@ -1,14 +1,14 @@
 // check_fragments (stage_checks.hpp): snap rounding's promises to the plane graph.
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "candidate_pairs.hpp"
 #include "edgeland/kernel/assert.hpp"
 #include "edgeland/kernel/pixel.hpp"
 #include "edgeland/kernel/predicates.hpp"
-#include "segment_grid.hpp"
-#include "segment_index.hpp"
 #include "stage_check_text.hpp"
 #include "stage_checks.hpp"
 
@@ -193,25 +193,15 @@ void check_pair(const EdgeList& edges, const std::vector<std::uint8_t>& touched,
 }
 
 // Every pair of segments whose closed boxes overlap, except consecutive segments of one
-// monotone run (they meet only at their common end). The searches, and the choice between them
-// by their counted work, are noding's (noding.cpp: find_contacts), so this costs what noding
-// costs on as many segments. (Repeated here: noding.cpp keeps its choice private.)
+// monotone run (they meet only at their common end), found as noding finds them
+// (candidate_pairs.hpp), so this costs what noding costs on as many segments.
 template <class F>
 void for_each_box_pair(const std::vector<Segment>& segs, const std::vector<std::uint32_t>& link,
                        F&& visit) {
   const SegmentIndex index(segs, link);
-  const std::size_t n = segs.size();
-  if (n >= 64 && index.run_length_x16() < 16 * 3) {  // short runs: spiky inputs
-    const SegmentGrid grid(segs);
-    const std::size_t cell_pairs = grid.cell_pairs();
-    if (cell_pairs <= 16 * n + 4096 || index.x_overlapping_run_pairs(cell_pairs) >= cell_pairs) {
-      grid.for_each_candidate_pair([&](std::uint32_t i, std::uint32_t j) {
-        if (boxes_overlap(segs[i], segs[j])) visit(i, j);
-      });
-      return;
-    }
-  }
-  index.for_each_overlapping_pair(visit);
+  std::unique_ptr<SegmentGrid> grid;
+  if (runs_are_short(index, segs.size())) grid = std::make_unique<SegmentGrid>(segs);
+  for_each_candidate_pair(segs, index, grid.get(), false, nullptr, visit);
 }
 
 }  // namespace

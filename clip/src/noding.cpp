@@ -2,14 +2,12 @@
 
 #include <algorithm>
 
+#include "candidate_pairs.hpp"
 #include "edgeland/kernel/bbox.hpp"
 #include "edgeland/kernel/predicates.hpp"
 
 namespace edgeland::detail {
 namespace {
-
-constexpr std::size_t kGridWalkFrom = 64;                   // segments
-constexpr std::size_t kGridWalkBelowRunLengthX16 = 16 * 3;  // runs shorter than 3 segments
 
 void split_if_interior(Contacts& c, std::uint32_t seg, const Segment& s, Point64 p) {
   if (p != s.a && p != s.b) c.splits.emplace_back(seg, p);
@@ -126,14 +124,6 @@ Box64 segment_box(const Segment& s) {
 
 namespace {
 
-// Whether the run index would propose fewer pairs than the grid's cells hold: a grid sized for
-// spikes fails on long parallel segments side by side (comb teeth 10^8 long and 80 apart: 10^4
-// of them per cell), whose runs' x-ranges barely overlap. Only counted when the cells hold many.
-bool grid_walk_is_worse(const SegmentGrid& grid, const SegmentIndex& index, std::size_t n) {
-  const std::size_t cell_pairs = grid.cell_pairs();
-  return cell_pairs > 16 * n + 4096 && index.x_overlapping_run_pairs(cell_pairs) < cell_pairs;
-}
-
 // Thrown by the pair visit to stop noding: at the first contact proving an operand invalid, or
 // once the overlapping pairs pass their budget.
 struct StopNoding {
@@ -203,22 +193,15 @@ class PairVisit {
   Contacts& c_;
 };
 
-// Every candidate pair visited once. Short runs (spiky or zigzag rings) leave the run index
-// little to group, and long diagonal segments make box overlap a weak filter: then the segments
-// are walked through a grid, which is left in search.near for snap rounding's point queries.
+// Every candidate pair visited once (candidate_pairs.hpp). A grid walked on short runs is left
+// in search.near for snap rounding's point queries.
 void visit_candidate_pairs(const std::vector<Segment>& segments, SegmentSearch& search, bool walk,
                            bool simple_rings, const std::vector<std::uint32_t>& ring_of,
                            const PairVisit& visit) {
   std::unique_ptr<SegmentGrid> walked;
   if (walk) walked = std::make_unique<SegmentGrid>(segments);
-  if (walked && !grid_walk_is_worse(*walked, search.index, segments.size())) {
-    walked->for_each_candidate_pair([&](std::uint32_t i, std::uint32_t j) {
-      if (simple_rings && ring_of[i] == ring_of[j]) return;
-      if (boxes_overlap(segments[i], segments[j])) visit(i, j);
-    });
-  } else {
-    search.index.for_each_overlapping_pair(visit, simple_rings);
-  }
+  for_each_candidate_pair(segments, search.index, walked.get(), simple_rings, ring_of.data(),
+                          visit);
   if (walked) search.near.grid() = std::move(walked);
 }
 
@@ -228,8 +211,7 @@ Contacts find_contacts(const std::vector<Segment>& segments, const std::vector<s
                        SegmentSearch& search, const NodingOptions& options) {
   Contacts c;
   c.touched.assign(segments.size(), false);
-  const bool walk = segments.size() >= kGridWalkFrom &&
-                    search.index.run_length_x16() < kGridWalkBelowRunLengthX16;
+  const bool walk = runs_are_short(search.index, segments.size());
   const bool screening = options.screen_channel != nullptr;
   ScratchVector<std::uint32_t> ring_of;
   if (walk || screening) number_rings(next, ring_of);

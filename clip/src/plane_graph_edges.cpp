@@ -4,17 +4,13 @@
 
 #include "edgeland/kernel/assert.hpp"
 #include "plane_graph_build.hpp"
+#include "point_key.hpp"
 #include "radix_sort.hpp"
 
 namespace edgeland::detail::plane_graph_build {
 namespace {
 
 constexpr const char* kStage = "plane graph";
-
-Point64 point_of(std::uint64_t key) {
-  return {static_cast<std::int64_t>(key >> 32) - kCoordBound - 1,
-          static_cast<std::int64_t>(key & 0xffffffffu) - kCoordBound - 1};
-}
 
 // Writes edges and multiplicities by index into arrays sized for the most edges there can be,
 // then trims them: one store per field instead of a capacity check per push.

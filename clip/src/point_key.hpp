@@ -13,4 +13,10 @@ inline std::uint64_t point_key(Point64 p) {
          static_cast<std::uint64_t>(p.y + kCoordBound + 1);
 }
 
+// The point of a key: point_of(point_key(p)) == p.
+inline Point64 point_of(std::uint64_t key) {
+  return {static_cast<std::int64_t>(key >> 32) - kCoordBound - 1,
+          static_cast<std::int64_t>(key & 0xffffffffu) - kCoordBound - 1};
+}
+
 }  // namespace edgeland::detail

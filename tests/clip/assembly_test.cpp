@@ -159,7 +159,7 @@ RC_GTEST_PROP(Assembly, RingsAreExactlyTheBoundariesOfTheLabelledRegions, ()) {
   // The boundary of the labelled regions, unit step by unit step.
   const stages::BruteStates brute(a);
   std::set<stages::UnitStep> steps;
-  for (const auto& fragments : stages::fragments_by_segment(a.edges, a.snapped.fragments))
+  for (const auto& fragments : stages::fragments_by_segment(a.edges, a.fragments))
     for (const Segment& f : fragments)
       stages::for_each_unit_step(
           f.a, f.b, [&](Point64 p, Point64 q) { steps.insert(stages::undirected(p, q)); });

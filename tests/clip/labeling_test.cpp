@@ -40,7 +40,7 @@ std::string said(const detail::PlaneGraph& g, std::uint32_t h, const SideState& 
 
 RC_GTEST_PROP(Labeling, WindingModeGivesTheWindingNumberLeftOfEveryHalfEdge, ()) {
   const stages::Arrangement a(*stages::crowded_rings(4, 20), *stages::crowded_rings(3, 20), false);
-  RC_TAG(a.snapped.hot_pixels > 0 ? "snapped" : "exact");
+  RC_TAG(a.hot_pixels > 0 ? "snapped" : "exact");
   std::vector<SideState> left;
   RC_ASSERT(detail::label_sides(a.graph, LabelMode::kWinding, left));
   RC_ASSERT(left.size() == 2 * a.graph.edge_count());
@@ -61,7 +61,7 @@ rc::Gen<OperandPair> small_pair() {
 RC_GTEST_PROP(Labeling, OwnerModesNameThePolygonCoveringEachSide, ()) {
   const OperandPair p = *small_pair();
   const stages::Arrangement a(p.a, p.b, true);
-  RC_TAG(a.snapped.hot_pixels > 0 ? "snapped" : "exact");
+  RC_TAG(a.hot_pixels > 0 ? "snapped" : "exact");
   std::vector<SideState> owner, owner_and_count;
   RC_ASSERT(detail::label_sides(a.graph, LabelMode::kOwner, owner));
   RC_ASSERT(detail::label_sides(a.graph, LabelMode::kOwnerAndCount, owner_and_count));
@@ -99,7 +99,7 @@ std::vector<Ring> maybe_overlapping(int max_members) {
 RC_GTEST_PROP(Labeling, SingleCoverCheckFailsExactlyWhereAFaceIsCoveredTwice, ()) {
   const std::vector<Ring> subject = maybe_overlapping(4), clip = maybe_overlapping(3);
   const stages::Arrangement a(subject, clip, false);
-  RC_PRE(a.snapped.hot_pixels == 0u);  // the check is exact only when nothing moved
+  RC_PRE(a.hot_pixels == 0u);  // the check is exact only when nothing moved
   const stages::BruteStates brute(a);
   bool covered_twice = false;
   for (std::uint32_t h = 0; h < 2 * a.graph.edge_count(); ++h)

@@ -245,14 +245,13 @@ std::string graph_problems(const EdgeList& edges, const std::vector<detail::Frag
 }
 
 std::string problems(const stages::Arrangement& a) {
-  return graph_problems(a.edges, a.snapped.fragments, a.snapped.touched, a.graph);
+  return graph_problems(a.edges, a.fragments, a.touched, a.graph);
 }
 
 RC_GTEST_PROP(PlaneGraph, IsThePlaneArrangementOfTheFragments, ()) {
   const stages::Arrangement a(*stages::crowded_rings(4, 20), *stages::crowded_rings(3, 20), false);
   RC_TAG(a.graph.cancelled_edges > 0 ? "cancelled edges" : "nothing cancelled");
-  RC_TAG(std::count(a.snapped.touched.begin(), a.snapped.touched.end(), 0) > 0 ? "chains"
-                                                                               : "no chains");
+  RC_TAG(std::count(a.touched.begin(), a.touched.end(), 0) > 0 ? "chains" : "no chains");
   RC_ASSERT(problems(a) == std::string());
 }
 

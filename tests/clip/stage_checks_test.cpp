@@ -1,7 +1,7 @@
 // The stage checkers (clip/src/stage_checks.hpp) reject each broken rule: every test corrupts
 // one field of a valid stage output (or builds a minimal broken one) and expects the checker to
 // throw a std::logic_error whose text starts "<stage>: <rule>:". The valid outputs come from
-// the real stages (tests/clip/stage_outputs.hpp); stage_checks_real_outputs_test.cpp shows the
+// the real stages (tests/support/stage_outputs.hpp); stage_checks_real_outputs_test.cpp shows the
 // checkers accept them.
 #include "stage_checks.hpp"
 

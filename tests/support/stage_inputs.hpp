@@ -24,6 +24,7 @@
 #include "noding.hpp"
 #include "planar_graph.hpp"
 #include "snap_rounding.hpp"
+#include "stage_outputs.hpp"
 
 namespace edgeland::test::stages {
 
@@ -164,22 +165,13 @@ inline std::int64_t reach_of(const std::vector<Segment>& segments) {
 }
 
 // The edges, fragments and plane graph of two operands' rings, built as run() builds them
-// (edges tagged with their ring's index; noding without screen or overlap budget). Not
-// movable: the graph and the contacts' users keep pointers into the edge list.
-struct Arrangement {
-  detail::EdgeList edges;
-  detail::Snapped snapped;
-  detail::PlaneGraph graph;
-
+// (stage_outputs.hpp; edges tagged with their ring's index; noding without screen or overlap
+// budget). Not movable: the graph keeps pointers into the edge list.
+struct Arrangement : detail::StageOutputs {
   Arrangement(const std::vector<Ring>& subject, const std::vector<Ring>& clip, bool simple_rings) {
     detail::append_ring_edges(subject, detail::kSubjectChannel, true, edges);
     detail::append_ring_edges(clip, detail::kClipChannel, true, edges);
-    detail::SegmentSearch search(edges.segments, edges.next);
-    detail::NodingOptions options;
-    options.simple_rings = simple_rings;
-    detail::Contacts contacts = detail::find_contacts(edges.segments, edges.next, search, options);
-    snapped = detail::snap_round(edges.segments, edges.next, contacts, search);
-    detail::build_plane_graph(edges, snapped.fragments, snapped.touched, graph);
+    detail::plane_graph_stages(*this, simple_rings);
   }
   Arrangement(const Arrangement&) = delete;
   Arrangement& operator=(const Arrangement&) = delete;
@@ -217,7 +209,7 @@ struct SnappedRing {
 };
 
 inline std::vector<SnappedRing> snapped_rings(const Arrangement& a) {
-  const auto of = fragments_by_segment(a.edges, a.snapped.fragments);
+  const auto of = fragments_by_segment(a.edges, a.fragments);
   std::vector<SnappedRing> rings;
   for (const auto& [b, e] : ring_spans(a.edges)) {
     SnappedRing r{a.edges.channel[b], a.edges.polygon[b], {}};
@@ -281,7 +273,7 @@ class BruteStates {
  private:
   static std::int64_t reach(const Arrangement& a) {
     std::vector<Segment> all = a.edges.segments;
-    for (const detail::Fragment& f : a.snapped.fragments) all.push_back(f.seg);
+    for (const detail::Fragment& f : a.fragments) all.push_back(f.seg);
     return reach_of(all);
   }
   SideProbe probe_;

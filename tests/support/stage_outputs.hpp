@@ -1,6 +1,8 @@
 #pragma once
 // The outputs of the pipeline's stages for given operands, each kept (clip/src/pipeline.cpp
-// run() hands them on and drops them): for the stage checkers' tests.
+// run() hands them on and drops them), made the way run() makes them. The one copy of the
+// stage sequence in the tests: the stage checkers' tests corrupt these outputs, and the stage
+// tests (stage_inputs.hpp) feed them to the stage under test.
 #include <cstdint>
 #include <limits>
 #include <memory>
@@ -57,13 +59,20 @@ inline void snap_stage(StageOutputs& s, bool simple_rings, std::size_t overlap_b
   s.hot_pixels = snapped.hot_pixels;
 }
 
-// Runs the stages from snap rounding to assembly on s.edges.
+// Runs noding, snap rounding and the plane graph on s.edges.
+inline void plane_graph_stages(
+    StageOutputs& s, bool simple_rings,
+    std::size_t overlap_budget = std::numeric_limits<std::size_t>::max()) {
+  snap_stage(s, simple_rings, overlap_budget);
+  build_plane_graph(s.edges, s.fragments, s.touched, s.graph);
+}
+
+// Runs the stages from noding to assembly on s.edges.
 inline void later_stages(StageOutputs& s, LabelMode mode, const LabelOf& label_of,
                          bool simple_rings,
                          std::size_t overlap_budget = std::numeric_limits<std::size_t>::max()) {
-  snap_stage(s, simple_rings, overlap_budget);
+  plane_graph_stages(s, simple_rings, overlap_budget);
   s.mode = mode;
-  build_plane_graph(s.edges, s.fragments, s.touched, s.graph);
   label_sides(s.graph, mode, s.left);
   s.assembled = assemble(s.graph, s.left, label_of, false);
 }
@@ -72,8 +81,8 @@ inline void later_stages(StageOutputs& s, LabelMode mode, const LabelOf& label_o
 inline std::unique_ptr<StageOutputs> clip_stages(const PolygonSet& subject, const PolygonSet& clip,
                                                  ClipOp op) {
   auto s = std::make_unique<StageOutputs>();
-  append_ring_edges(subject, 0, true, s->edges);
-  append_ring_edges(clip, 1, true, s->edges);
+  append_ring_edges(subject, kSubjectChannel, true, s->edges);
+  append_ring_edges(clip, kClipChannel, true, s->edges);
   later_stages(*s, LabelMode::kOwner, LabelOf::operation(op), true);
   return s;
 }
@@ -84,7 +93,7 @@ inline std::unique_ptr<StageOutputs> normalize_stages(
     const std::vector<Ring>& rings, FillRule rule,
     std::size_t overlap_budget = std::numeric_limits<std::size_t>::max()) {
   auto s = std::make_unique<StageOutputs>();
-  append_ring_edges(rings, 0, false, s->edges);
+  append_ring_edges(rings, kSubjectChannel, false, s->edges);
   later_stages(*s, LabelMode::kWinding, LabelOf::fill(rule), false, overlap_budget);
   return s;
 }
