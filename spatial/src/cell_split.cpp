@@ -12,18 +12,15 @@ std::int64_t mid(std::int64_t lo, std::int64_t hi) { return lo + (hi - lo) / 2; 
 }  // namespace
 
 void require_config(const Box64& world, const LandscapeConfig& c) {
-  if (!in_range(world.min) || !in_range(world.max))
-    throw InvalidConfig("world box beyond the coordinate bound");
-  if (world.min.x >= world.max.x || world.min.y >= world.max.y)
-    throw InvalidConfig("world box without positive width and height");
-  if (c.edge_cap < kMinEdgeCap)
-    throw InvalidConfig("edge_cap below " + std::to_string(kMinEdgeCap));
-  if (c.merge_below >= c.edge_cap) throw InvalidConfig("merge_below not below edge_cap");
-  if (c.min_cell_size < 1) throw InvalidConfig("min_cell_size below 1");
-  if (c.grid_depth < -1 || c.grid_depth > kMaxGridDepth)
-    throw InvalidConfig("grid_depth outside -1.." + std::to_string(kMaxGridDepth));
-  if (c.tree != TreeKind::kQuadtree && c.tree != TreeKind::kKdTree)
-    throw InvalidConfig("unknown tree kind");
+  using Setting = InvalidConfig::Setting;
+  auto refuse = [&](Setting setting) { throw InvalidConfig(setting, world, c); };
+  if (!in_range(world.min) || !in_range(world.max)) refuse(Setting::kWorldOutOfRange);
+  if (world.min.x >= world.max.x || world.min.y >= world.max.y) refuse(Setting::kWorldEmpty);
+  if (c.edge_cap < kMinEdgeCap) refuse(Setting::kEdgeCap);
+  if (c.merge_below >= c.edge_cap) refuse(Setting::kMergeBelow);
+  if (c.min_cell_size < 1) refuse(Setting::kMinCellSize);
+  if (c.grid_depth < -1 || c.grid_depth > kMaxGridDepth) refuse(Setting::kGridDepth);
+  if (c.tree != TreeKind::kQuadtree && c.tree != TreeKind::kKdTree) refuse(Setting::kTree);
 }
 
 bool can_split(const Box64& box, const LandscapeConfig& config) noexcept {

@@ -37,7 +37,35 @@ detail::NodePtr grid(const Box64& box, std::uint32_t depth, int grid_depth, Labe
   return detail::make_inner(box, depth, children);
 }
 
+std::string config_problem(InvalidConfig::Setting setting, const Box64& w,
+                           const LandscapeConfig& c) {
+  using Setting = InvalidConfig::Setting;
+  const auto n = [](auto v) { return std::to_string(v); };
+  const std::string box =
+      "world box (" + n(w.min.x) + " " + n(w.min.y) + ", " + n(w.max.x) + " " + n(w.max.y) + ")";
+  switch (setting) {
+    case Setting::kWorldOutOfRange:
+      return box + " beyond the coordinate bound";
+    case Setting::kWorldEmpty:
+      return box + " without positive width and height";
+    case Setting::kEdgeCap:
+      return "edge_cap " + n(c.edge_cap) + " below " + n(detail::kMinEdgeCap);
+    case Setting::kMergeBelow:
+      return "merge_below " + n(c.merge_below) + " not below edge_cap " + n(c.edge_cap);
+    case Setting::kMinCellSize:
+      return "min_cell_size " + n(c.min_cell_size) + " below 1";
+    case Setting::kGridDepth:
+      return "grid_depth " + n(c.grid_depth) + " outside -1.." + n(detail::kMaxGridDepth);
+    case Setting::kTree:
+      return "unknown tree kind " + n(static_cast<int>(c.tree));
+  }
+  return "unusable configuration";
+}
+
 }  // namespace
+
+InvalidConfig::InvalidConfig(Setting s, const Box64& w, const LandscapeConfig& c)
+    : LandscapeError(config_problem(s, w, c)), setting(s), world(w), config(c) {}
 
 LimitExceeded::LimitExceeded(Limit l, std::size_t max, std::size_t req)
     : LandscapeError(std::string(l == Limit::kVertices ? "landscape vertex" : "shape vertex") +

@@ -55,12 +55,36 @@ TEST(Landscape, StartsEmptyOrFilled) {
   EXPECT_TRUE(rock.check().ok());
 }
 
+// The setting an unusable world or configuration breaks, with the box and configuration given.
+InvalidConfig config_error(const Box64& world, const LandscapeConfig& c = {}) {
+  try {
+    Landscape l(world, kEmpty, c);
+  } catch (const InvalidConfig& e) {
+    return e;
+  }
+  ADD_FAILURE() << "no InvalidConfig";
+  return InvalidConfig(InvalidConfig::Setting::kTree, world, c);
+}
+
 TEST(Landscape, RejectsUnusableWorldsAndConfigs) {
-  EXPECT_THROW(Landscape({{0, 0}, {0, 10}}), InvalidConfig);
-  EXPECT_THROW(Landscape({{0, 0}, {kCoordBound + 1, 10}}), InvalidConfig);
+  using Setting = InvalidConfig::Setting;
+  const InvalidConfig flat = config_error({{0, 0}, {0, 10}});
+  EXPECT_EQ(flat.setting, Setting::kWorldEmpty);
+  EXPECT_EQ(flat.world, (Box64{{0, 0}, {0, 10}}));
+  EXPECT_EQ(std::string(flat.what()), "world box (0 0, 0 10) without positive width and height");
+  const InvalidConfig inverted = config_error({{10, 0}, {0, 10}});
+  EXPECT_EQ(inverted.setting, Setting::kWorldEmpty);
+  EXPECT_EQ(inverted.world.min.x, 10);
+  const InvalidConfig far = config_error({{0, 0}, {kCoordBound + 1, 10}});
+  EXPECT_EQ(far.setting, Setting::kWorldOutOfRange);
+  EXPECT_EQ(far.world.max.x, kCoordBound + 1);
   LandscapeConfig c;
   c.merge_below = c.edge_cap;
-  EXPECT_THROW(Landscape({{0, 0}, {10, 10}}, kEmpty, c), InvalidConfig);
+  const InvalidConfig merge = config_error({{0, 0}, {10, 10}}, c);
+  EXPECT_EQ(merge.setting, Setting::kMergeBelow);
+  EXPECT_EQ(merge.config.merge_below, c.edge_cap);
+  EXPECT_EQ(std::string(merge.what()), "merge_below " + std::to_string(c.edge_cap) +
+                                           " not below edge_cap " + std::to_string(c.edge_cap));
 }
 
 TEST(Landscape, FillCarveAndReplaceChangeExactAreas) {
@@ -312,10 +336,20 @@ TEST(LandscapeLimits, ConfigurationsThatCannotWorkAreRefused) {
   LandscapeConfig small_cap;
   small_cap.edge_cap = 16;
   small_cap.merge_below = 4;
-  EXPECT_THROW(Landscape({{0, 0}, {100, 100}}, kEmpty, small_cap), InvalidConfig);
+  EXPECT_EQ(config_error({{0, 0}, {100, 100}}, small_cap).setting,
+            InvalidConfig::Setting::kEdgeCap);
   LandscapeConfig deep_grid;
   deep_grid.grid_depth = 11;
-  EXPECT_THROW(Landscape({{0, 0}, {100, 100}}, kEmpty, deep_grid), InvalidConfig);
+  EXPECT_EQ(config_error({{0, 0}, {100, 100}}, deep_grid).setting,
+            InvalidConfig::Setting::kGridDepth);
+  LandscapeConfig no_cells;
+  no_cells.min_cell_size = 0;
+  EXPECT_EQ(config_error({{0, 0}, {100, 100}}, no_cells).setting,
+            InvalidConfig::Setting::kMinCellSize);
+  LandscapeConfig unknown_tree;
+  unknown_tree.tree = static_cast<TreeKind>(7);
+  EXPECT_EQ(config_error({{0, 0}, {100, 100}}, unknown_tree).setting,
+            InvalidConfig::Setting::kTree);
 }
 
 }  // namespace

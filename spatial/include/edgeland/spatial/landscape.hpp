@@ -97,9 +97,23 @@ class EDGELAND_EXPORT LandscapeError : public Error {
 // The world box or the configuration is unusable (inverted or degenerate box, box beyond the
 // coordinate bound, edge_cap < 32, merge_below >= edge_cap, min_cell_size < 1, grid_depth
 // outside -1..10).
+// `setting` names the rule broken; `world` is the world box given and `config` the
+// configuration, whichever of them is wrong.
 class EDGELAND_EXPORT InvalidConfig : public LandscapeError {
  public:
-  explicit InvalidConfig(const std::string& what) : LandscapeError(what) {}
+  enum class Setting : std::uint8_t {
+    kWorldOutOfRange,  // a corner beyond kCoordBound
+    kWorldEmpty,       // width or height not positive (inverted or degenerate)
+    kEdgeCap,          // edge_cap below 32
+    kMergeBelow,       // merge_below not below edge_cap
+    kMinCellSize,      // min_cell_size below 1
+    kGridDepth,        // grid_depth outside -1..10
+    kTree,             // not a TreeKind
+  };
+  InvalidConfig(Setting setting, const Box64& world, const LandscapeConfig& config);
+  Setting setting;
+  Box64 world;
+  LandscapeConfig config;
 };
 
 class EDGELAND_EXPORT LimitExceeded : public LandscapeError {
