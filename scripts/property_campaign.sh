@@ -26,7 +26,7 @@ build="${EDGELAND_BUILD_DIR:-build/test}"
 jobs="${EDGELAND_JOBS:-$(nproc)}"
 out="$build/property-campaign"
 
-cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g" \
+cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1" \
   -DEDGELAND_CHECKED=ON >/dev/null
 cmake --build "$build" -j "$jobs" --target kernel_tests clip_tests edgeland_cli >/dev/null
 mkdir -p "$out"

@@ -61,7 +61,7 @@ struct ContractOptions {
   std::uint64_t seed = 0x5eed;
   // Output vertices for which check 3 is skipped (e.g. vertices known to be exact and far
   // from the change in a closure chain); evaluated before any exact distance.
-  std::function<bool(Point64)> skip_vertex;
+  std::function<bool(Point64)> skip_vertex = nullptr;
 };
 
 struct ContractReport {
