@@ -18,7 +18,12 @@ constexpr const char* kStage = "labeling";
 std::string num(std::size_t i) { return std::to_string(i); }
 
 std::string text(const SideState& s) {
-  return "{" + std::to_string(s.by_channel[0]) + " " + std::to_string(s.by_channel[1]) + "}";
+  std::string out = "{";  // appended: see point_text.hpp
+  out += std::to_string(s.by_channel[0]);
+  out += ' ';
+  out += std::to_string(s.by_channel[1]);
+  out += '}';
+  return out;
 }
 
 // +1 for half-edge 2e (nets are counted along it), -1 for its twin.

@@ -1,5 +1,7 @@
 #include "edgeland/kernel/errors.hpp"
 
+#include "edgeland/kernel/point_text.hpp"
+
 namespace edgeland {
 namespace {
 
@@ -17,7 +19,7 @@ const char* operand_name(Operand o) {
   return "?";  // Not reached by tests: the switch covers every Operand.
 }
 
-std::string text(Point64 p) { return "(" + std::to_string(p.x) + " " + std::to_string(p.y) + ")"; }
+std::string text(Point64 p) { return detail::point_text(p); }
 
 Violation out_of_range(std::size_t polygon, std::size_t vertex, Point64 where) {
   Violation v;
