@@ -38,46 +38,39 @@ Meeting collinear_axis_contact(const Segment& s, std::uint32_t i, const Segment&
   return Meeting::kOther;
 }
 
-}  // namespace
+// A proper crossing at rational point x: a split of both segments when x is an integer point,
+// else a hot pixel. Rounded once; the point is an integer exactly when the rounding is exact.
+void crossing_contact(const RationalPoint& x, std::uint32_t i, std::uint32_t j, Contacts& c) {
+  const Point64 p = round_to_grid(x);
+  if (is_exactly(x, p)) {
+    c.splits.emplace_back(i, p);
+    c.splits.emplace_back(j, p);
+  } else {
+    c.hot.push_back(p);
+  }
+}
 
-Meeting classify_pair(const Segment& s, std::uint32_t i, const Segment& t, std::uint32_t j,
-                      Contacts& c) {
-  // The same segment twice (shared edges of neighbouring polygons, the common case in a
-  // partition): an overlap whose ends are both segments' ends, so nothing to split.
-  if ((s.a == t.b && s.b == t.a) || (s.a == t.a && s.b == t.b)) {
-    ++c.intersections;
-    ++c.overlaps;
-    return Meeting::kOther;
-  }
-  // Ring neighbours share an endpoint: unless they are collinear that is their only contact.
-  if (s.a == t.a || s.a == t.b || s.b == t.a || s.b == t.b) {
-    const Point64 t_other = (t.a == s.a || t.a == s.b) ? t.b : t.a;
-    if (orientation(s.a, s.b, t_other) != Orientation::kCollinear) return Meeting::kSharedEndpoint;
-  }
-  // Perpendicular axis-parallel segments (tiles, boxes, cell cuts) can only meet at one
-  // integer point, the vertical one's x and the horizontal one's y: the common case of
-  // rectilinear inputs, decided without the rational construction.
-  const bool s_flat = s.a.y == s.b.y, t_flat = t.a.y == t.b.y;
-  if ((s_flat && t.a.x == t.b.x) || (t_flat && s.a.x == s.b.x)) {
-    const Segment& h = s_flat ? s : t;
-    const Segment& v = s_flat ? t : s;
-    const Point64 p{v.a.x, h.a.y};
-    if (p.x < std::min(h.a.x, h.b.x) || p.x > std::max(h.a.x, h.b.x) ||
-        p.y < std::min(v.a.y, v.b.y) || p.y > std::max(v.a.y, v.b.y))
-      return Meeting::kNone;
-    // (A common endpoint of both was answered above.)
-    ++c.intersections;
-    split_if_interior(c, i, s, p);
-    split_if_interior(c, j, t, p);
-    return Meeting::kOther;
-  }
-  // Two horizontal or two vertical segments: on different lines they are apart, on one line
-  // they share an interval of it (rectilinear inputs: tiles side by side).
-  const bool s_upright = s.a.x == s.b.x, t_upright = t.a.x == t.b.x;
-  if ((s_flat && t_flat) || (s_upright && t_upright)) {
-    if (s_flat ? s.a.y != t.a.y : s.a.x != t.a.x) return Meeting::kNone;
-    return collinear_axis_contact(s, i, t, j, s_flat, c);
-  }
+// s and t are perpendicular axis-parallel segments (s_flat: s is the horizontal one). They can
+// only meet at one integer point, the vertical one's x and the horizontal one's y. (A common
+// endpoint of both was answered by the caller.)
+Meeting perpendicular_axis_contact(const Segment& s, std::uint32_t i, const Segment& t,
+                                   std::uint32_t j, bool s_flat, Contacts& c) {
+  const Segment& h = s_flat ? s : t;
+  const Segment& v = s_flat ? t : s;
+  const Point64 p{v.a.x, h.a.y};
+  if (p.x < std::min(h.a.x, h.b.x) || p.x > std::max(h.a.x, h.b.x) ||
+      p.y < std::min(v.a.y, v.b.y) || p.y > std::max(v.a.y, v.b.y))
+    return Meeting::kNone;
+  ++c.intersections;
+  split_if_interior(c, i, s, p);
+  split_if_interior(c, j, t, p);
+  return Meeting::kOther;
+}
+
+// Any other pair, through the kernel's exact classification: a crossing at a non-integer point
+// becomes a hot pixel, every other contact point splits the segments it is interior to.
+Meeting general_contact(const Segment& s, std::uint32_t i, const Segment& t, std::uint32_t j,
+                        Contacts& c) {
   const SegmentIntersection r = intersect(s, t);
   switch (r.relation) {
     case SegmentRelation::kDisjoint:
@@ -100,20 +93,43 @@ Meeting classify_pair(const Segment& s, std::uint32_t i, const Segment& t, std::
         split_if_interior(c, j, t, p);
       }
       return Meeting::kOther;
-    case SegmentRelation::kCrossing: {
+    case SegmentRelation::kCrossing:
       ++c.intersections;
-      // Rounded once; the point is an integer exactly when the rounding is exact.
-      const Point64 p = round_to_grid(r.point);
-      if (is_exactly(r.point, p)) {
-        c.splits.emplace_back(i, p);
-        c.splits.emplace_back(j, p);
-      } else {
-        c.hot.push_back(p);
-      }
-      return Meeting::kOther;  // Not reached by tests: the switch covers every SegmentRelation.
-    }
+      crossing_contact(r.point, i, j, c);
+      return Meeting::kOther;
   }
-  return Meeting::kOther;
+  return Meeting::kOther;  // Not reached by tests: the switch covers every SegmentRelation.
+}
+
+}  // namespace
+
+Meeting classify_pair(const Segment& s, std::uint32_t i, const Segment& t, std::uint32_t j,
+                      Contacts& c) {
+  // The same segment twice (shared edges of neighbouring polygons, the common case in a
+  // partition): an overlap whose ends are both segments' ends, so nothing to split.
+  if ((s.a == t.b && s.b == t.a) || (s.a == t.a && s.b == t.b)) {
+    ++c.intersections;
+    ++c.overlaps;
+    return Meeting::kOther;
+  }
+  // Ring neighbours share an endpoint: unless they are collinear that is their only contact.
+  if (s.a == t.a || s.a == t.b || s.b == t.a || s.b == t.b) {
+    const Point64 t_other = (t.a == s.a || t.a == s.b) ? t.b : t.a;
+    if (orientation(s.a, s.b, t_other) != Orientation::kCollinear) return Meeting::kSharedEndpoint;
+  }
+  // Axis-parallel pairs (tiles, boxes, cell cuts: the common case of rectilinear inputs) are
+  // decided without the rational construction.
+  const bool s_flat = s.a.y == s.b.y, t_flat = t.a.y == t.b.y;
+  const bool s_upright = s.a.x == s.b.x, t_upright = t.a.x == t.b.x;
+  if ((s_flat && t_upright) || (t_flat && s_upright))
+    return perpendicular_axis_contact(s, i, t, j, s_flat, c);
+  // Two horizontal or two vertical segments: on different lines they are apart, on one line
+  // they share an interval of it (tiles side by side).
+  if ((s_flat && t_flat) || (s_upright && t_upright)) {
+    if (s_flat ? s.a.y != t.a.y : s.a.x != t.a.x) return Meeting::kNone;
+    return collinear_axis_contact(s, i, t, j, s_flat, c);
+  }
+  return general_contact(s, i, t, j, c);
 }
 
 Box64 segment_box(const Segment& s) {

@@ -122,11 +122,6 @@ struct EventView {
   std::size_t below;                         // status edge just below q, or kNone
 };
 
-// Runs the sweep over `edges`, asking `check` at each event:
-//   check.at_event(view)            before the status changes at q;
-//   check.after_event(q, block)     with the edges through or leaving q, bottom-up, after it;
-//   check.adjacent(a, b)            for every pair that has just become neighbours (a below b).
-// Each returns an optional Violation; the first one stops the sweep and is returned.
 // An edge endpoint in event order. (Only the fallback of run_sweep for 2^32 or more edges
 // sorts these with operator<: not reached by tests.)
 struct SweepEvent {
@@ -136,6 +131,36 @@ struct SweepEvent {
     return a.at < b.at || (a.at == b.at && a.edge < b.edge);
   }
 };
+
+// The right ends of `edges` in event order (by point, equal points by edge).
+inline std::vector<SweepEvent> right_ends_in_order(const std::vector<SweepEdge>& edges) {
+  const std::size_t n = edges.size();
+  std::vector<SweepEvent> ends(n);
+  if (n < UINT32_MAX) {  // a stable sort of 64-bit keys
+    const std::vector<KeyedVertex> order =
+        sorted_by_point(n, [&](std::size_t i) { return edges[i].right; });
+    for (std::size_t k = 0; k < n; ++k) ends[k] = {edges[order[k].vertex].right, order[k].vertex};
+  } else {  // Not reached by tests: 2^32 edges do not fit 32-bit keys.
+    for (std::size_t i = 0; i < n; ++i) ends[i] = {edges[i].right, i};
+    std::sort(ends.begin(), ends.end());
+  }
+  return ends;
+}
+
+// After an event: the pairs of status edges that have just become neighbours, `below` and the
+// lowest edge of `block` (the edges through or leaving q, bottom-up) or `above` when the block
+// is empty, and the highest edge of the block and `above`. Either end may be kNone.
+template <class Check>
+std::optional<Violation> check_new_neighbours(std::size_t below,
+                                              const std::vector<std::size_t>& block,
+                                              std::size_t above, Check& check) {
+  const std::size_t low = block.empty() ? above : block.front();
+  if (below != kNone && low != kNone) {
+    if (auto v = check.adjacent(below, low)) return v;
+  }
+  if (!block.empty() && above != kNone) return check.adjacent(block.back(), above);
+  return std::nullopt;
+}
 
 // Runs the sweep over `edges`, asking `check` at each event:
 //   check.at_event(view)            before the status changes at q;
@@ -147,16 +172,7 @@ struct SweepEvent {
 template <class Check>
 std::optional<Violation> run_sweep(const std::vector<SweepEdge>& edges, Check& check) {
   const std::size_t n = edges.size();
-  std::vector<SweepEvent> ends(n);
-  if (n < UINT32_MAX) {  // by right end, equal ends by edge: a stable sort of 64-bit keys
-    const std::vector<KeyedVertex> order =
-        sorted_by_point(n, [&](std::size_t i) { return edges[i].right; });
-    for (std::size_t k = 0; k < n; ++k) ends[k] = {edges[order[k].vertex].right, order[k].vertex};
-  } else {  // Not reached by tests: 2^32 edges do not fit 32-bit keys.
-    for (std::size_t i = 0; i < n; ++i) ends[i] = {edges[i].right, i};
-    std::sort(ends.begin(), ends.end());
-  }
-
+  const std::vector<SweepEvent> ends = right_ends_in_order(edges);
   Point64 q{};
   // Status nodes come from one arena released at the end: no allocator call per event.
   NodeArena arena;
@@ -209,14 +225,7 @@ std::optional<Violation> run_sweep(const std::vector<SweepEdge>& edges, Check& c
     if (auto v = check.after_event(q, block)) return v;
 
     const std::size_t above = above_it == status.end() ? kNone : *above_it;
-    const std::size_t low = block.empty() ? above : block.front();
-    const std::size_t high = block.empty() ? below : block.back();
-    if (below != kNone && low != kNone) {
-      if (auto v = check.adjacent(below, low)) return v;
-    }
-    if (!block.empty() && above != kNone) {
-      if (auto v = check.adjacent(high, above)) return v;
-    }
+    if (auto v = check_new_neighbours(below, block, above, check)) return v;
   }
   return std::nullopt;
 }
