@@ -73,7 +73,7 @@ nlohmann::ordered_json summary(const Landscape& landscape, const Applied& applie
   const LandscapeStats stats = landscape.stats();
   nlohmann::ordered_json areas = nlohmann::ordered_json::object();
   for (const auto& [material, twice] : material_areas(landscape)) {
-    areas[std::to_string(material)] = to_string(twice);
+    areas[to_string(material)] = to_string(twice);
   }
   nlohmann::ordered_json out;
   out["edits"] = applied.edits;

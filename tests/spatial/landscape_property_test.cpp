@@ -31,9 +31,9 @@ struct LandscapeCase {
 
 void showValue(const LandscapeCase& c, std::ostream& os) {
   os << "world " << c.world.min.x << ' ' << c.world.min.y << ' ' << c.world.max.x << ' '
-     << c.world.max.y << ' ' << int(c.fill) << "\n  config: tree " << int(c.config.tree) << " cap "
-     << c.config.edge_cap << " merge " << c.config.merge_below << " min " << c.config.min_cell_size
-     << " grid " << c.config.grid_depth;
+     << c.world.max.y << ' ' << int(c.fill.value()) << "\n  config: tree " << int(c.config.tree)
+     << " cap " << c.config.edge_cap << " merge " << c.config.merge_below << " min "
+     << c.config.min_cell_size << " grid " << c.config.grid_depth;
   for (const LandscapeEdit& e : c.edits) os << "\n  " << describe(e);
 }
 
@@ -111,7 +111,7 @@ RC_GTEST_PROP(LandscapeProperty, EditsKeepEveryInvariantAndReportWhatChanged, ()
   for (const LandscapeEdit& e : c.edits) {
     const std::map<PolygonId, FlatPolygon> before = by_id(l);
     std::array<Int128, 6> area_before{};
-    for (Material m = 0; m < 6; ++m) area_before[m] = l.twice_area(m);
+    for (int m = 0; m < 6; ++m) area_before[m] = l.twice_area(m);
     const ChangeSet cs = apply(l, e);
     const std::map<PolygonId, FlatPolygon> after = by_id(l);
     std::map<PolygonId, FlatPolygon> expected = before;
@@ -140,7 +140,7 @@ RC_GTEST_PROP(LandscapeProperty, EditsKeepEveryInvariantAndReportWhatChanged, ()
     std::map<Material, Int128> delta;
     for (const auto& [m, d] : cs.twice_area_delta) delta[m] = d;
     Int128 total = 0;
-    for (Material m = 0; m < 6; ++m) {
+    for (int m = 0; m < 6; ++m) {
       RC_ASSERT(l.twice_area(m) - area_before[m] == delta[m]);
       total += delta[m];
     }
@@ -341,7 +341,7 @@ RC_GTEST_PROP(LandscapeProperty, SaveAndLoadGiveTheSameState, ()) {
   const Landscape back = Landscape::load(file);
   RC_ASSERT(back.state_hash() == l.state_hash());
   RC_ASSERT(flatten(back).size() == flatten(l).size());
-  for (Material m = 0; m < 6; ++m) RC_ASSERT(back.twice_area(m) == l.twice_area(m));
+  for (int m = 0; m < 6; ++m) RC_ASSERT(back.twice_area(m) == l.twice_area(m));
 }
 
 }  // namespace
