@@ -1,14 +1,6 @@
 #pragma once
-// `edgeland replay` for a landscape log (landscape_log.hpp): builds the world, applies the edits
-// and prints one JSON object on one line:
-//   {"edits":N,"polygons":P,"vertices":V,"cells":C,"depth":D,"area":{"0":"A0","1":"A1",...},
-//    "state_hash":"H","edits_per_second":S}
-// area maps each material (decimal, empty space "0" included) whose area is not 0 to twice its
-// area, exact, as a decimal string; state_hash is Landscape::state_hash() as 16 hex digits;
-// edits_per_second is for reporting only. When the log could not be applied to the end,
-// "stopped_at_line" and "error" follow: the JSON then describes the world after the edits
-// before that line (which are kept). A log whose world line is bad has no world to describe:
-// its JSON is {"edits":0,"stopped_at_line":N,"error":"..."}.
+// `edgeland replay` for a landscape log: the library's replay (edgeland/io/landscape_replay.hpp,
+// whose header describes the JSON) printed on one line, then --dump and --png.
 #include <string_view>
 
 #include "replay_options.hpp"
