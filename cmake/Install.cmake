@@ -1,13 +1,13 @@
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
-install(TARGETS edgeland_kernel edgeland_clip edgeland_spatial edgeland
+install(TARGETS edgeland_kernel edgeland_clip edgeland_spatial edgeland_game edgeland
   EXPORT edgelandTargets
   ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
   LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
   RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
   INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
-install(DIRECTORY kernel/include/ clip/include/ spatial/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+install(DIRECTORY kernel/include/ clip/include/ spatial/include/ game/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(EXPORT edgelandTargets NAMESPACE edgeland:: DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/edgeland)
 configure_package_config_file(cmake/edgelandConfig.cmake.in
   ${CMAKE_CURRENT_BINARY_DIR}/edgelandConfig.cmake
