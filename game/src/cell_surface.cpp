@@ -6,15 +6,15 @@
 
 namespace edgeland::game_detail {
 
-std::vector<SurfaceChain> cell_chains(const Landscape& world, const Box64& cell,
-                                      const SurfaceOptions& options) {
+CellSurface cell_surface(const Landscape& world, const Box64& cell, const SurfaceOptions& options) {
   const CellPolygons polygons = read_cell(world, cell);
   const SolidBoundary solid = solid_boundary(cell, polygons.own, options.materials);
   std::vector<TracedChain> traced =
       trace_chains(surface_segments(polygons, solid, world.world(), options), cell, world.world(),
                    options.border_wall);
-  std::vector<SurfaceChain> out;
-  out.reserve(traced.size());
+  CellSurface out;
+  for (const CellPolygon& p : polygons.own) out.ids.push_back(p.id);
+  out.chains.reserve(traced.size());
   for (TracedChain& t : traced) {
     SurfaceChain c;
     c.points = std::move(t.points);
@@ -25,7 +25,7 @@ std::vector<SurfaceChain> cell_chains(const Landscape& world, const Box64& cell,
       c.ghost_prev = c.points.back();
       c.ghost_next = c.points.front();
     }
-    out.push_back(std::move(c));
+    out.chains.push_back(std::move(c));
   }
   return out;
 }

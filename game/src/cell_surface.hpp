@@ -7,9 +7,12 @@
 
 namespace edgeland::game_detail {
 
-// The cell's chains with ghosts unset (open) or set to their own ends (closed). O(n log n) in
-// the edges of the cell and of its neighbours along its sides.
-std::vector<SurfaceChain> cell_chains(const Landscape& world, const Box64& cell,
-                                      const SurfaceOptions& options);
+struct CellSurface {
+  std::vector<SurfaceChain> chains;  // ghosts unset (open) or set to their own ends (closed)
+  std::vector<PolygonId> ids;        // the cell's polygons, in the cell's order
+};
+
+// O(n log n) in the edges of the cell and of its neighbours along its sides.
+CellSurface cell_surface(const Landscape& world, const Box64& cell, const SurfaceOptions& options);
 
 }  // namespace edgeland::game_detail

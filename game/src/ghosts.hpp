@@ -6,8 +6,7 @@
 // chain's next ghost. The previous ghost is found the same way counter-clockwise among chains
 // ending at the first point. A chain that meets the world border (no wall) goes on in a straight
 // line: the ghost continues its end segment.
-#include <cstddef>
-#include <optional>
+#include <functional>
 #include <unordered_map>
 #include <vector>
 
@@ -15,22 +14,31 @@
 
 namespace edgeland::game_detail {
 
-// The open chains of a set of cells by their end points.
-class ChainEnds {
- public:
-  void add(const SurfaceChain& chain);
-  // The chain (among those added) that goes on from chain's last point, if any.
-  const SurfaceChain* following(const SurfaceChain& chain, const Box64& world,
-                                bool border_wall) const;
-  // The chain that leads into chain's first point, if any.
-  const SurfaceChain* preceding(const SurfaceChain& chain, const Box64& world,
-                                bool border_wall) const;
+// Appends the open chains of the cells around p (every cell whose closed box holds p) that
+// start or end at p.
+using ChainsAround = std::function<void(Point64 p, std::vector<const SurfaceChain*>& out)>;
 
- private:
-  std::unordered_map<Point64, std::vector<const SurfaceChain*>, Point64Hash> starting_, ending_;
-};
+// The chain that goes on from chain's last point / leads into its first point, if any.
+const SurfaceChain* following(const SurfaceChain& chain, const ChainsAround& around,
+                              const Box64& world, bool border_wall);
+const SurfaceChain* preceding(const SurfaceChain& chain, const ChainsAround& around,
+                              const Box64& world, bool border_wall);
 
 // Sets an open chain's ghosts from the chains around its ends (closed chains keep theirs).
-void set_ghosts(SurfaceChain& chain, const ChainEnds& ends, const Box64& world, bool border_wall);
+void set_ghosts(SurfaceChain& chain, const ChainsAround& around, const Box64& world,
+                bool border_wall);
+
+// Where a chain goes on straight: end + (end - before).
+Point64 straight_on(Point64 end, Point64 before);
+
+// An index of open chains by their end points, for a whole landscape's chains at once.
+class ChainEndIndex {
+ public:
+  void add(const SurfaceChain& chain);
+  ChainsAround lookup() const;
+
+ private:
+  std::unordered_map<Point64, std::vector<const SurfaceChain*>, Point64Hash> at_;
+};
 
 }  // namespace edgeland::game_detail

@@ -12,25 +12,24 @@
 namespace edgeland {
 namespace {
 
-using game_detail::ChainEnds;
+using game_detail::ChainEndIndex;
+using game_detail::ChainsAround;
 
 // The chains of every cell, ghosts unset.
 std::vector<SurfaceChain> all_chains(const Landscape& world, const SurfaceOptions& options) {
   std::vector<SurfaceChain> out;
   for (const Box64& cell : game_detail::all_cells(world)) {
-    std::vector<SurfaceChain> chains = game_detail::cell_chains(world, cell, options);
-    for (SurfaceChain& c : chains) out.push_back(std::move(c));
+    for (SurfaceChain& c : game_detail::cell_surface(world, cell, options).chains)
+      out.push_back(std::move(c));
   }
   return out;
 }
 
-ChainEnds ends_of(const std::vector<SurfaceChain>& chains) {
-  ChainEnds ends;
+ChainEndIndex ends_of(const std::vector<SurfaceChain>& chains) {
+  ChainEndIndex ends;
   for (const SurfaceChain& c : chains) ends.add(c);
   return ends;
 }
-
-Point64 beyond(Point64 end, Point64 before) { return {2 * end.x - before.x, 2 * end.y - before.y}; }
 
 // Appends `more` (which starts where `into` ends) to `into`.
 void append(game_detail::TracedChain& into, const SurfaceChain& more) {
@@ -41,14 +40,14 @@ void append(game_detail::TracedChain& into, const SurfaceChain& more) {
 // The loop through `first` along `following` links, marking the chains it takes.
 using Taken = std::unordered_set<const SurfaceChain*>;
 
-SurfaceChain join_from(const SurfaceChain* first, const ChainEnds& ends, const Box64& world,
+SurfaceChain join_from(const SurfaceChain* first, const ChainsAround& around, const Box64& world,
                        bool border_wall, Taken& taken) {
   game_detail::TracedChain loop;
   loop.points.push_back(first->points.front());
   const SurfaceChain* c = first;
   while (c && taken.insert(c).second) {
     append(loop, *c);
-    c = c->closed ? nullptr : ends.following(*c, world, border_wall);
+    c = c->closed ? nullptr : game_detail::following(*c, around, world, border_wall);
   }
   // A chain closed in its cell repeats no point; a cycle of open chains ends where it began.
   loop.closed = first->closed || c == first;
@@ -60,8 +59,8 @@ SurfaceChain join_from(const SurfaceChain* first, const ChainEnds& ends, const B
   out.closed = loop.closed;
   out.cell = world;
   const std::size_t n = out.points.size();
-  out.ghost_prev = out.closed ? out.points.back() : beyond(out.points[0], out.points[1]);
-  out.ghost_next = out.closed ? out.points.front() : beyond(out.points[n - 1], out.points[n - 2]);
+  out.ghost_prev = out.closed ? out.points.back() : game_detail::straight_on(out.points[0], out.points[1]);
+  out.ghost_next = out.closed ? out.points.front() : game_detail::straight_on(out.points[n - 1], out.points[n - 2]);
   return out;
 }
 
@@ -69,25 +68,28 @@ SurfaceChain join_from(const SurfaceChain* first, const ChainEnds& ends, const B
 
 std::vector<SurfaceChain> surface_chains(const Landscape& world, const SurfaceOptions& options) {
   std::vector<SurfaceChain> chains = all_chains(world, options);
-  const ChainEnds ends = ends_of(chains);
-  for (SurfaceChain& c : chains) game_detail::set_ghosts(c, ends, world.world(), options.border_wall);
+  const ChainEndIndex ends = ends_of(chains);
+  const ChainsAround around = ends.lookup();
+  for (SurfaceChain& c : chains)
+    game_detail::set_ghosts(c, around, world.world(), options.border_wall);
   return chains;
 }
 
 std::vector<SurfaceChain> surface_loops(const Landscape& world, const SurfaceOptions& options) {
   const std::vector<SurfaceChain> chains = all_chains(world, options);
-  const ChainEnds ends = ends_of(chains);
+  const ChainEndIndex ends = ends_of(chains);
+  const ChainsAround around = ends.lookup();
   const Box64& box = world.world();
   std::vector<SurfaceChain> out;
   Taken taken;
   // Closed in one cell, open at the world border, then the cycles through several cells.
   for (const SurfaceChain& c : chains)
-    if (c.closed) out.push_back(join_from(&c, ends, box, options.border_wall, taken));
+    if (c.closed) out.push_back(join_from(&c, around, box, options.border_wall, taken));
   for (const SurfaceChain& c : chains)
-    if (!c.closed && !ends.preceding(c, box, options.border_wall))
-      out.push_back(join_from(&c, ends, box, options.border_wall, taken));
+    if (!c.closed && !game_detail::preceding(c, around, box, options.border_wall))
+      out.push_back(join_from(&c, around, box, options.border_wall, taken));
   for (const SurfaceChain& c : chains)
-    if (!taken.count(&c)) out.push_back(join_from(&c, ends, box, options.border_wall, taken));
+    if (!taken.count(&c)) out.push_back(join_from(&c, around, box, options.border_wall, taken));
   return out;
 }
 

@@ -6,6 +6,7 @@
 #include <rapidcheck/gtest.h>
 
 #include "chain_rules.hpp"
+#include "game_worlds.hpp"
 #include "landscape_cases.hpp"
 #include "surface_oracle.hpp"
 
@@ -132,6 +133,26 @@ RC_GTEST_PROP(SurfaceChainsProperty, ChainsAndLoopsAreExactlyTheSurface, ()) {
   const Landscape world = run_case(c, c.config);
   expect_matches_reference(world, random_options());
   RC_CLASSIFY(world.stats().cells > 1, "several cells");
+}
+
+// A layered world after hundreds of blasts: many cells, bridges, pinches, materials.
+TEST(SurfaceChains, LongGameMatchesTheReference) {
+  LandscapeConfig config;
+  config.edge_cap = 32;
+  config.merge_below = 12;
+  Landscape world = layered_world(2048, config);
+  random_edits(world, 3, 300, [](const ChangeSet&) {});
+  ASSERT_GT(world.stats().cells, 100u);
+  for (const bool wall : {false, true}) {
+    SurfaceOptions options;
+    options.border_wall = wall;
+    options.materials.solid[2] = false;  // dirt, say, is sand that does not hold a body
+    const SurfaceMap expected = surface_brute(world, options);
+    const std::vector<SurfaceChain> chains = surface_chains(world, options);
+    for (const SurfaceChain& c : chains) ASSERT_EQ(chain_rule_violation(c), "");
+    EXPECT_EQ(surface_difference(expected, surface_of(chains)), "");
+    EXPECT_EQ(surface_difference(expected, surface_of(surface_loops(world, options))), "");
+  }
 }
 
 }  // namespace
