@@ -74,4 +74,31 @@ class EDGELAND_EXPORT IslandTracker {
 EDGELAND_EXPORT std::vector<Island> find_islands(const Landscape& world,
                                                  const PhysicsMaterials& materials = {});
 
+// An island taken out of the landscape, ready to become a dynamic body.
+struct DetachedIsland {
+  ChangeSet changes;  // the edit that removed it (as any edit's: for the trackers)
+  struct Region {
+    Material material = kEmpty;
+    PolygonSet polygons;  // the material's part of the island as maximal polygons (merged
+                          // across cell lines; holes split as the clipper splits them)
+  };
+  std::vector<Region> regions;  // ascending material
+  Int128 twice_area = 0;        // of the whole island, exact
+  RationalPoint centroid;       // of the whole island, exact (kernel centroid())
+};
+
+// The island's polygons are no longer all in the landscape (it changed since the island was
+// found): `polygon` is the first one missing.
+class EDGELAND_EXPORT StaleIsland : public Error {
+ public:
+  explicit StaleIsland(PolygonId polygon);
+  PolygonId polygon;
+};
+
+// Removes the island from the landscape as one edit: a carve of exactly its region. The island's
+// edges lie on the landscape's own edges, so that carve meets no crossing, rounds nothing and
+// leaves every other polygon's region as it was. Strong guarantee (a throw leaves the landscape as
+// it was): throws StaleIsland, or what a carve throws. O(island size x log).
+EDGELAND_EXPORT DetachedIsland detach(Landscape& world, const Island& island);
+
 }  // namespace edgeland
