@@ -154,6 +154,22 @@ constexpr W pixel_line_slack(D ax, D ay, D bx, D by, D cx, D cy) {
   return W(taxicab_length<D>(ax, ay, bx, by)) - W(2) * magnitude(det);
 }
 
+// --- Centroids (centroid.hpp) ---
+
+// What edge a -> b of a ring adds to six times the ring's first moment along one axis: with c
+// the axis's coordinate, (c_a + c_b) cross(a, b). Summed over the ring (the shoelace form of the
+// moment integral) and divided by 3 times its twice-area, the centroid's coordinate.
+template <class W>
+constexpr W moment_term(W ca, W cb, W ax, W ay, W bx, W by) {
+  return (ca + cb) * cross(ax, ay, bx, by);
+}
+
+// The centroid's denominator: 3 times the total twice-area.
+template <class W>
+constexpr W centroid_denominator(W twice_area) {
+  return W(3) * twice_area;
+}
+
 // --- Grids of cells (segment and box grids of clip/) ---
 
 // The number of integer values in [lo, hi] (a box's width or height in points).
