@@ -26,9 +26,9 @@ struct FixtureShape {
   friend auto operator<=>(const FixtureShape&, const FixtureShape&) = default;
 };
 
-std::vector<FixtureShape> fixtures_of(const b2Body* body) {
+std::vector<FixtureShape> fixtures_of(b2Body* body) {
   std::vector<FixtureShape> out;
-  for (const b2Fixture* f = body->GetFixtureList(); f; f = f->GetNext()) {
+  for (b2Fixture* f = body->GetFixtureList(); f; f = f->GetNext()) {
     const auto* chain = static_cast<const b2ChainShape*>(f->GetShape());
     FixtureShape s;
     for (int32 i = 0; i < chain->m_count; ++i)
@@ -46,6 +46,7 @@ std::vector<FixtureShape> fixtures_of(const b2Body* body) {
 struct Body {
   b2Body* body;
   bool debris;
+  float start_y = 0;  // where a debris body was made
 };
 
 class Simulation {
@@ -64,7 +65,7 @@ class Simulation {
     for (int i = 0; i < count; ++i) {
       b2BodyDef def;
       def.type = b2_dynamicBody;
-      const Point64 at{rng_.in(200, kSize - 200), kSize * 5 / 8 + rng_.in(40, 400)};
+      const Point64 at{rng_.in(200, kSize - 200), kSize * 5 / 8 + rng_.in(300, 700)};
       def.position = box2d::to_b2(terrain_.units(), at);
       b2Body* body = world_.CreateBody(&def);
       b2CircleShape circle;
@@ -80,28 +81,47 @@ class Simulation {
     }
   }
 
-  // A blast or a fill near a random body, with every tracker told and new islands detached.
+  // A blast around a random body, or a fill beside or below it; bodies buried by the fill are
+  // replaced by new ones dropped from the sky, so about 200 are always in play.
   void edit_near_a_body() {
     const Body& target = bodies_[static_cast<std::size_t>(rng_.in(0, bodies_.size() - 1))];
     const Point64 c = centre(target.body);
-    const Point64 at{c.x + rng_.in(-60, 60), c.y + rng_.in(-80, 20)};
-    const PolygonSet shape{blast(rng_, at, rng_.in(8, 48))};
     if (rng_.in(0, 3) == 0) {
+      const Point64 at{c.x + rng_.in(-120, 120), c.y - rng_.in(40, 120)};
+      const PolygonSet shape{blast(rng_, at, rng_.in(8, 32))};
       bury_bodies_under(shape);
       apply(land_.fill(shape, static_cast<Material>(rng_.in(1, 2))));
+      drop_bodies(200 - balls_and_boxes());
     } else {
-      apply(land_.carve(shape));
+      const Point64 at{c.x + rng_.in(-60, 60), c.y + rng_.in(-80, 20)};
+      apply(land_.carve(PolygonSet{blast(rng_, at, rng_.in(8, 48))}));
     }
   }
 
+  int balls_and_boxes() const {
+    return static_cast<int>(std::count_if(bodies_.begin(), bodies_.end(),
+                                          [](const Body& b) { return !b.debris; }));
+  }
+
+  // Every tracker sees every edit, the detaches too. A detach can re-cut the cells of another
+  // island found by the same edit: that one is then stale, and the tracker reports it again.
   void apply(const ChangeSet& changes) {
     ++edits_;
     terrain_.update(land_, changes);
-    for (const Island& island : islands_.update(land_, changes)) {
-      const DetachedIsland detached = detach(land_, island);
+    std::vector<Island> pending = islands_.update(land_, changes);
+    while (!pending.empty()) {
+      const Island island = std::move(pending.back());
+      pending.pop_back();
+      DetachedIsland detached;
+      try {
+        detached = detach(land_, island);
+      } catch (const StaleIsland&) {
+        continue;
+      }
       terrain_.update(land_, detached.changes);
-      islands_.update(land_, detached.changes);
-      bodies_.push_back({box2d::make_debris_body(world_, detached, terrain_.units()), true});
+      for (Island& again : islands_.update(land_, detached.changes)) pending.push_back(std::move(again));
+      b2Body* debris = box2d::make_debris_body(world_, detached, terrain_.units());
+      bodies_.push_back({debris, true, debris->GetPosition().y});
       ++detached_;
     }
   }
@@ -124,11 +144,14 @@ class Simulation {
     return out;
   }
 
-  bool all_inside_world() const {
-    return std::all_of(bodies_.begin(), bodies_.end(), [&](const Body& b) {
+  // The centres of bodies outside the world's box.
+  std::vector<Point64> centres_outside_world() const {
+    std::vector<Point64> out;
+    for (const Body& b : bodies_) {
       const Point64 c = centre(b.body);
-      return c.y >= 0 && c.x >= 0 && c.x <= kSize;
-    });
+      if (!land_.world().contains(c)) out.push_back(c);
+    }
+    return out;
   }
 
   const Landscape& land() const { return land_; }
@@ -148,13 +171,21 @@ class Simulation {
     return box2d::Terrain(world_, land_, options);
   }
 
-  // A fill buries the bodies whose centre it covers: they leave the simulation (the one
-  // exception to "no centre in solid").
+  // The body's box in landscape units, rounded outwards.
+  Box64 box_of(b2Body* body) const {
+    const b2AABB a = body->GetFixtureList()->GetAABB(0);
+    const Point64 lo = terrain_.units().to_world({a.lowerBound.x, a.lowerBound.y});
+    const Point64 hi = terrain_.units().to_world({a.upperBound.x, a.upperBound.y});
+    return {{lo.x - 1, lo.y - 1}, {hi.x + 1, hi.y + 1}};
+  }
+
+  // A fill buries the bodies it overlaps, debris included (the game put solid where they are):
+  // they leave the simulation, the one exception to "no centre in solid".
   void bury_bodies_under(const PolygonSet& shape) {
     Landscape probe({{0, 0}, {kSize, kSize}});
     probe.fill(shape, 1);
     for (Body& b : bodies_) {
-      if (b.debris || !probe.material_at(centre(b.body))) continue;
+      if (probe.overlaps(box_of(b.body)).empty()) continue;
       world_.DestroyBody(b.body);
       b.body = nullptr;
       ++buried_;
@@ -183,14 +214,20 @@ TEST(PhysicsSimulation, BodiesStayOutOfSolidWhileTheTerrainChangesUnderThem) {
     const std::vector<Point64> inside = sim.centres_in_solid();
     ASSERT_TRUE(inside.empty()) << "frame " << frame << ": a body's centre is in solid material at ("
                                 << inside.front().x << " " << inside.front().y << ")";
-    ASSERT_TRUE(sim.all_inside_world()) << "frame " << frame;
+    const std::vector<Point64> outside = sim.centres_outside_world();
+    ASSERT_TRUE(outside.empty()) << "frame " << frame << ": a body left the world at ("
+                                 << outside.front().x << " " << outside.front().y << ")";
   }
   EXPECT_GE(sim.edits(), 3600);
   EXPECT_GT(sim.detached(), 0);
-  // The debris fell: every debris body is below where it started or resting.
-  std::size_t debris = 0;
-  for (const Body& b : sim.bodies()) debris += b.debris;
-  EXPECT_EQ(debris, static_cast<std::size_t>(sim.detached()));
+  // The debris fell: most debris bodies still in play are below where they were made.
+  std::size_t debris = 0, fell = 0;
+  for (const Body& b : sim.bodies()) {
+    debris += b.debris;
+    fell += b.debris && b.body->GetPosition().y < b.start_y - 0.1f;
+  }
+  EXPECT_GT(debris, 0u);
+  EXPECT_GT(2 * fell, debris);
   // The fixtures kept from change sets equal those of a terrain built from scratch.
   b2World fresh_world(b2Vec2(0, -10));
   box2d::TerrainOptions options;
@@ -209,6 +246,8 @@ struct Slide {
   int cell_lines_crossed = 0;
 };
 
+// add_terrain(world, land) builds the floor's fixtures and returns what must outlive the steps
+// (and die before the world).
 template <class AddTerrain>
 Slide slide_a_box(AddTerrain add_terrain) {
   LandscapeConfig grid;
@@ -216,7 +255,7 @@ Slide slide_a_box(AddTerrain add_terrain) {
   Landscape land({{0, 0}, {kSize, kSize}}, kEmpty, grid);
   land.fill(PolygonSet{{{0, 0}, {kSize, 0}, {kSize, 1000}, {0, 1000}}}, 1);
   b2World world(b2Vec2(0, -10));
-  add_terrain(world, land);
+  const auto terrain = add_terrain(world, land);
   b2BodyDef def;
   def.type = b2_dynamicBody;
   def.position.Set(200 / kUnitsPerMetre, 1000 / kUnitsPerMetre + 0.5f);
@@ -242,16 +281,15 @@ Slide slide_a_box(AddTerrain add_terrain) {
 }
 
 TEST(PhysicsSimulation, ABoxSlidesAcrossCellLinesWithoutBumps) {
-  std::unique_ptr<box2d::Terrain> terrain;
-  const Slide slide = slide_a_box([&](b2World& world, const Landscape& land) {
+  const Slide slide = slide_a_box([](b2World& world, const Landscape& land) {
     box2d::TerrainOptions options;
     options.units.units_per_engine_unit = kUnitsPerMetre;
     options.friction.fill(0);
-    terrain = std::make_unique<box2d::Terrain>(world, land, options);
+    return std::make_unique<box2d::Terrain>(world, land, options);
   });
   EXPECT_GE(slide.cell_lines_crossed, 6);
-  EXPECT_LT(slide.largest_vy, 0.02f);
-  EXPECT_LT(slide.largest_dvx, 0.02f);
+  EXPECT_LT(slide.largest_vy, 1e-3f);  // measured: 2e-6
+  EXPECT_LT(slide.largest_dvx, 1e-3f);  // measured: 0
 }
 
 // The same floor made of each cell's polygons as closed loops, as a game without the surface
@@ -272,8 +310,9 @@ TEST(PhysicsSimulation, PerPolygonLoopsMakeTheSameBoxBump) {
       body->CreateFixture(&fixture);
       return true;
     });
+    return 0;
   });
-  EXPECT_GT(std::max(slide.largest_vy, slide.largest_dvx), 0.02f);
+  EXPECT_GT(std::max(slide.largest_vy, slide.largest_dvx), 1e-3f);  // measured: vy 3.6e-3
 }
 
 }  // namespace

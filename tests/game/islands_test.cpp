@@ -2,6 +2,9 @@
 // against the brute-force reference (island_oracle.hpp), incrementally after every edit.
 #include "edgeland/game/islands.hpp"
 
+#include "edgeland/kernel/area.hpp"
+#include "edgeland/kernel/centroid.hpp"
+
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
@@ -117,6 +120,58 @@ TEST(Islands, TrackerHoldsOverALongGame) {
   });
   EXPECT_EQ(id_sets(tracker.islands(world)), before);
   EXPECT_GT(found, 0u);
+}
+
+// Detaching every island of a long game, the loop of islands.hpp: each detach takes away exactly
+// its island's area, per material, and leaves no island behind; regions and centroid are exact.
+TEST(Islands, DetachTakesAwayExactlyEachIsland) {
+  LandscapeConfig config;
+  config.edge_cap = 32;
+  config.merge_below = 12;
+  Landscape world = layered_world(2048, config);
+  random_edits(world, 5, 200, [](const ChangeSet&) {});
+  PhysicsMaterials materials;
+  materials.anchored[3] = true;
+  IslandTracker tracker(world, materials);
+  std::vector<Island> pending = tracker.islands(world);
+  ASSERT_GT(pending.size(), 3u);
+  std::size_t detached = 0;
+  while (!pending.empty()) {
+    const Island island = std::move(pending.back());
+    pending.pop_back();
+    std::map<Material, Int128> expected;
+    for (Material m = 0; m < 6; ++m) expected[m] = world.twice_area(m);
+    for (const IslandPiece& p : island.pieces) {
+      expected[p.material] -= twice_signed_area(p.polygon);
+      expected[kEmpty] += twice_signed_area(p.polygon);
+    }
+    DetachedIsland d;
+    try {
+      d = detach(world, island);
+    } catch (const StaleIsland&) {
+      continue;
+    }
+    ++detached;
+    for (Material m = 0; m < 6; ++m) EXPECT_EQ(world.twice_area(m), expected[m]) << int(m);
+    Int128 regions = 0;
+    PolygonSet pieces;
+    for (const DetachedIsland::Region& r : d.regions) regions += twice_signed_area(r.polygons);
+    for (const IslandPiece& p : island.pieces) pieces.push_back(p.polygon);
+    EXPECT_EQ(regions, island.twice_area);
+    EXPECT_EQ(d.twice_area, island.twice_area);
+    EXPECT_EQ(d.centroid, centroid(pieces));
+    for (Island& again : tracker.update(world, d.changes)) pending.push_back(std::move(again));
+  }
+  EXPECT_GT(detached, 3u);
+  EXPECT_EQ(tracker.island_count(), 0u);
+  EXPECT_TRUE(islands_brute(world, materials).empty());
+  EXPECT_TRUE(world.check().ok());
+  // A stale island is refused and the world is left as it was.
+  const std::uint64_t hash = world.state_hash();
+  Island gone;
+  gone.pieces.push_back({999999, 1, {{0, 0}, {1, 0}, {0, 1}}, world.world()});
+  EXPECT_THROW(detach(world, gone), StaleIsland);
+  EXPECT_EQ(world.state_hash(), hash);
 }
 
 }  // namespace

@@ -99,6 +99,20 @@ class EDGELAND_EXPORT StaleIsland : public Error {
 // edges lie on the landscape's own edges, so that carve meets no crossing, rounds nothing and
 // leaves every other polygon's region as it was. Strong guarantee (a throw leaves the landscape as
 // it was): throws StaleIsland, or what a carve throws. O(island size x log).
+//
+// Pass the returned changes to every tracker, as for any edit. Detaching one of several islands
+// an edit created can re-cut the cells another one lies in; that one is then stale (detach
+// throws StaleIsland) and IslandTracker::update reports it again, re-cut:
+//   std::vector<Island> pending = islands.update(world, changes);
+//   while (!pending.empty()) {
+//     Island island = std::move(pending.back());
+//     pending.pop_back();
+//     DetachedIsland d;
+//     try { d = detach(world, island); } catch (const StaleIsland&) { continue; }
+//     surface.update(world, d.changes);
+//     for (Island& again : islands.update(world, d.changes)) pending.push_back(std::move(again));
+//     ... a dynamic body from d ...
+//   }
 EDGELAND_EXPORT DetachedIsland detach(Landscape& world, const Island& island);
 
 }  // namespace edgeland
