@@ -80,6 +80,21 @@ CoordinateOutOfRange::CoordinateOutOfRange(Operand which, std::size_t polygon_in
       vertex(vertex_index),
       where(location) {}
 
+CoordinateOutOfRange::CoordinateOutOfRange(Operand which, std::size_t vertex_index,
+                                           Point64 location, const std::string& description)
+    : InvalidInput(which, out_of_range(0, vertex_index, location), description),
+      polygon(0),
+      ring(0),
+      vertex(vertex_index),
+      where(location) {}
+
+CoordinateOutOfRange CoordinateOutOfRange::query_argument(std::size_t index, const char* name,
+                                                          Point64 location) {
+  return CoordinateOutOfRange(Operand::kQuery, index, location,
+                              std::string(rule_name(Rule::kCoordinateOutOfRange)) + ": " + name +
+                                  " at " + text(location));
+}
+
 InvalidBox::InvalidBox(Operand which, const Box64& b)
     : InvalidInput(which, inverted(b), inverted_description(b)), box(b) {}
 

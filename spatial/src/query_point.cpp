@@ -8,6 +8,7 @@
 #include "edgeland/spatial/landscape.hpp"
 #include "landscape_access.hpp"
 #include "node.hpp"
+#include "query_args.hpp"
 
 namespace edgeland {
 namespace {
@@ -41,6 +42,7 @@ std::vector<Material> sorted_materials(const std::bitset<kMaterialCount>& found)
 }  // namespace
 
 Material Landscape::material_at(Point64 p) const {
+  detail::require_query_point(p, 0, "point");
   // p + eps (1, eps) lies in the world only if p is in its half-open box.
   if (p.x < s_.world.min.x || p.y < s_.world.min.y || p.x >= s_.world.max.x ||
       p.y >= s_.world.max.y)
@@ -59,6 +61,7 @@ Material Landscape::material_at(Point64 p) const {
 
 void Landscape::polygons_in(const Box64& box,
                             const std::function<bool(const PolygonView&)>& visit) const {
+  detail::require_query_box(box);
   if (inverted(box)) return;
   visit_cells_meeting(s_.root, box, false, [&](const Node& cell) {
     for (std::size_t i = 0; i < cell.ids.size(); ++i) {
@@ -72,6 +75,7 @@ void Landscape::polygons_in(const Box64& box,
 
 void Landscape::cells_in(const Box64& box,
                          const std::function<bool(const CellView&)>& visit) const {
+  detail::require_query_box(box);
   if (inverted(box)) return;
   visit_cells_meeting(s_.root, box, false, [&](const Node& cell) {
     return visit(CellView{cell.box, cell.depth, cell.polygons, cell.vertices});
@@ -79,9 +83,7 @@ void Landscape::cells_in(const Box64& box,
 }
 
 std::vector<Material> Landscape::overlaps(const Box64& box) const {
-  // The exact tests below compute with the corners: they must be in range.
-  for (const Point64 corner : {box.min, box.max})
-    if (!in_range(corner)) throw CoordinateOutOfRange(Operand::kQuery, 0, 0, kNone, corner);
+  detail::require_query_box(box);
   std::bitset<kMaterialCount> found;
   if (box.min.x >= box.max.x || box.min.y >= box.max.y) return {};
   visit_cells_meeting(s_.root, box, true, [&](const Node& cell) {

@@ -9,6 +9,7 @@
 #include "edgeland/spatial/landscape.hpp"
 #include "landscape_access.hpp"
 #include "node.hpp"
+#include "query_args.hpp"
 
 namespace edgeland {
 namespace {
@@ -168,15 +169,11 @@ void walk(const NodePtr& root, Point64 from, Point64 to, F&& report) {
   }
 }
 
-void require_in_range(Point64 p) {
-  if (!in_range(p)) throw CoordinateOutOfRange(Operand::kQuery, 0, 0, 0, p);
-}
-
 }  // namespace
 
 std::vector<MaterialCrossing> Landscape::crossings(Point64 from, Point64 to) const {
-  require_in_range(from);
-  require_in_range(to);
+  detail::require_query_point(from, 0, "from");
+  detail::require_query_point(to, 1, "to");
   std::vector<MaterialCrossing> out;
   walk(s_.root, from, to, [&](const MaterialCrossing& c) {
     out.push_back(c);
@@ -186,8 +183,8 @@ std::vector<MaterialCrossing> Landscape::crossings(Point64 from, Point64 to) con
 }
 
 std::optional<MaterialCrossing> Landscape::raycast(Point64 from, Point64 to) const {
-  require_in_range(from);
-  require_in_range(to);
+  detail::require_query_point(from, 0, "from");
+  detail::require_query_point(to, 1, "to");
   std::optional<MaterialCrossing> hit;
   walk(s_.root, from, to, [&](const MaterialCrossing& c) {
     if (c.after == kEmpty) return true;  // a back face: leaving into empty space

@@ -281,9 +281,9 @@ TEST(Landscape, AnInvertedBoxMeetsNothing) {
 }
 
 // landscape.hpp: overlaps(Box64) computes with the box's corners, so a corner beyond the bound
-// is a CoordinateOutOfRange (operand kQuery) naming it, as for crossings() and raycast(). (This
-// box, spanning the int64 range, once reached the exact tests and overflowed: an abort in the
-// checked build.)
+// is a CoordinateOutOfRange (operand kQuery) naming it (vertex 0: the box's min), as for every
+// query. (This box, spanning the int64 range, once reached the exact tests and overflowed: an
+// abort in the checked build.)
 TEST(Landscape, OverlapsRefusesABoxCornerBeyondTheBound) {
   Landscape l = checked_world({{0, 0}, {1000, 1000}});
   l.fill(PolygonSet{box_polygon(100, 100, 300, 200)}, 1);
@@ -295,7 +295,7 @@ TEST(Landscape, OverlapsRefusesABoxCornerBeyondTheBound) {
   } catch (const CoordinateOutOfRange& e) {
     EXPECT_EQ(e.operand, Operand::kQuery);
     EXPECT_EQ(e.where, far);
-    EXPECT_EQ(e.vertex, kNone);
+    EXPECT_EQ(e.vertex, 0u);
   }
 }
 

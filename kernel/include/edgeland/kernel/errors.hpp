@@ -55,10 +55,18 @@ class EDGELAND_EXPORT CoordinateOutOfRange : public InvalidInput {
   CoordinateOutOfRange(Operand operand, Violation violation);
   CoordinateOutOfRange(Operand operand, std::size_t polygon, std::size_t ring, std::size_t vertex,
                        Point64 where);
+  // A query's point argument beyond the bound (operand kQuery, polygon 0, ring 0): `vertex` is
+  // the argument's index (0: the point, `from` or a box's min; 1: `to` or a box's max), and the
+  // message names the argument: "invalid query: coordinate-out-of-range: to at (2147483648 0)".
+  static CoordinateOutOfRange query_argument(std::size_t index, const char* name, Point64 where);
   std::size_t polygon;
   std::size_t ring;
   std::size_t vertex;
   Point64 where;
+
+ private:
+  CoordinateOutOfRange(Operand operand, std::size_t vertex, Point64 where,
+                       const std::string& description);
 };
 
 // A box operand (clip_to_box's box) with min.x > max.x or min.y > max.y while both corners are

@@ -106,6 +106,11 @@ class EDGELAND_EXPORT Landscape {
   ChangeSet replace(const PolygonSet& shape, Material from, Material to);
 
   // --- queries -------------------------------------------------------------------------------
+  // Queries check their coordinates as edits check their shapes: a point, a segment end or a
+  // box corner beyond kCoordBound throws CoordinateOutOfRange (operand kQuery; `vertex` is the
+  // argument's index, 0 for p, from or a box's min and 1 for to or a box's max, and the
+  // message names it). An inverted box is no error: it holds no point.
+  //
   // The material at p by the half-open rule: that of the face holding p + eps (1, eps), so a
   // point on a boundary has the material to its east (north-east on a horizontal edge), as a
   // pixel holds the points that round to it. Outside the world: kEmpty. O(depth + cell).
@@ -113,7 +118,7 @@ class EDGELAND_EXPORT Landscape {
   // Every material change along the segment from -> to, in order (the segment moved by
   // eps (1, eps), as material_at looks at points: segment_crossings.hpp). A change at t = 0
   // is one from the material just behind `from`. Cell lines and other edges between two pieces
-  // of one material are no change. from and to must be in range.
+  // of one material are no change.
   std::vector<MaterialCrossing> crossings(Point64 from, Point64 to) const;
   // The first place the ray from -> to enters a solid material other than the one it is in
   // (back faces culled, thesis 2.4.2): a ray starting in empty space hits the first surface; one
@@ -121,18 +126,16 @@ class EDGELAND_EXPORT Landscape {
   std::optional<MaterialCrossing> raycast(Point64 from, Point64 to) const;
   // The solid materials whose interiors meet the shape's interior (touching is not
   // overlapping), ascending; empty when none does. The box form is the fast path for
-  // character-sized boxes: its corners must be in range (else CoordinateOutOfRange, operand
-  // kQuery, vertex kNone, `where` the corner); a box of zero width or height, or an inverted
-  // one (min.x > max.x or min.y > max.y), has no interior and overlaps nothing: an empty
-  // answer, not an error (unlike clip_to_box, which throws InvalidBox).
+  // character-sized boxes; a box of zero width or height, or an inverted one (min.x > max.x or
+  // min.y > max.y), has no interior and overlaps nothing: an empty answer, not an error
+  // (unlike clip_to_box, which throws InvalidBox).
   std::vector<Material> overlaps(const Box64& box) const;
   std::vector<Material> overlaps(const ValidSet& shape) const;
   // Calls visit for every polygon whose bounding box meets the closed box; stop by returning
-  // false. Order: cell by cell in tree order, canonical order within a cell. Only compares
-  // coordinates, so any box is accepted; an inverted box holds no point and meets nothing.
+  // false. Order: cell by cell in tree order, canonical order within a cell.
   void polygons_in(const Box64& box, const std::function<bool(const PolygonView&)>& visit) const;
   // Calls visit for every cell whose closed box meets the closed box (empty cells included),
-  // in tree order; stop by returning false. Any box; an inverted one meets nothing.
+  // in tree order; stop by returning false.
   void cells_in(const Box64& box, const std::function<bool(const CellView&)>& visit) const;
   // Twice the area of a material (exact), over the whole world (material 0: the empty area).
   Int128 twice_area(Material m) const;
