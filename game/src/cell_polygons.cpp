@@ -5,8 +5,10 @@ namespace edgeland::game_detail {
 CellPolygons read_cell(const Landscape& world, const Box64& cell) {
   CellPolygons out;
   out.box = cell;
+  // The rings are read within the caller's one query of a landscape it does not edit: plain
+  // pointers into the tree, without the views' reference counts.
   world.polygons_in(cell, [&](const PolygonView& v) {
-    (v.cell == cell ? out.own : out.around).push_back({v.id, v.material, v.polygon});
+    (v.cell == cell ? out.own : out.around).push_back({v.id, v.material, v.polygon.get()});
     return true;
   });
   return out;

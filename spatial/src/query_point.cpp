@@ -23,7 +23,7 @@ bool open_overlap(const Box64& a, const Box64& b) {
 template <class F>
 bool visit_cells_meeting(const NodePtr& n, const Box64& box, bool open, F&& f) {
   if (open ? !open_overlap(n->box, box) : !n->box.overlaps(box)) return true;
-  if (n->is_cell()) return f(*n);
+  if (n->is_cell()) return f(n);
   for (std::uint32_t i = 0; i < n->child_count; ++i)
     if (!visit_cells_meeting(n->children[i], box, open, f)) return false;
   return true;
@@ -63,10 +63,12 @@ void Landscape::polygons_in(const Box64& box,
                             const std::function<bool(const PolygonView&)>& visit) const {
   detail::require_query_box(box);
   if (inverted(box)) return;
-  visit_cells_meeting(s_.root, box, false, [&](const Node& cell) {
-    for (std::size_t i = 0; i < cell.ids.size(); ++i) {
-      if (!cell.boxes[i].overlaps(box)) continue;
-      const PolygonView v{cell.ids[i], cell.material(i), &cell.polygon_set()[i], cell.box};
+  visit_cells_meeting(s_.root, box, false, [&](const NodePtr& cell) {
+    for (std::size_t i = 0; i < cell->ids.size(); ++i) {
+      if (!cell->boxes[i].overlaps(box)) continue;
+      // The view shares the cell: its polygon outlives any later edit (types.hpp).
+      const PolygonView v{cell->ids[i], cell->material(i),
+                          std::shared_ptr<const Polygon>(cell, &cell->polygon_set()[i]), cell->box};
       if (!visit(v)) return false;
     }
     return true;
@@ -77,8 +79,8 @@ void Landscape::cells_in(const Box64& box,
                          const std::function<bool(const CellView&)>& visit) const {
   detail::require_query_box(box);
   if (inverted(box)) return;
-  visit_cells_meeting(s_.root, box, false, [&](const Node& cell) {
-    return visit(CellView{cell.box, cell.depth, cell.polygons, cell.vertices});
+  visit_cells_meeting(s_.root, box, false, [&](const NodePtr& cell) {
+    return visit(CellView{cell->box, cell->depth, cell->polygons, cell->vertices});
   });
 }
 
@@ -86,7 +88,8 @@ std::vector<Material> Landscape::overlaps(const Box64& box) const {
   detail::require_query_box(box);
   std::bitset<kMaterialCount> found;
   if (box.min.x >= box.max.x || box.min.y >= box.max.y) return {};
-  visit_cells_meeting(s_.root, box, true, [&](const Node& cell) {
+  visit_cells_meeting(s_.root, box, true, [&](const NodePtr& c) {
+    const Node& cell = *c;
     for (std::size_t i = 0; i < cell.ids.size(); ++i) {
       const std::uint32_t m = cell.content.labels[i];
       if (found[m] || !open_overlap(cell.boxes[i], box)) continue;
@@ -101,7 +104,8 @@ std::vector<Material> Landscape::overlaps(const ValidSet& shape) const {
   std::bitset<kMaterialCount> found;
   for (const Polygon& s : shape.polygons()) {
     const Box64 sb = *bounding_box(s);
-    visit_cells_meeting(s_.root, sb, true, [&](const Node& cell) {
+    visit_cells_meeting(s_.root, sb, true, [&](const NodePtr& c) {
+      const Node& cell = *c;
       for (std::size_t i = 0; i < cell.ids.size(); ++i) {
         const std::uint32_t m = cell.content.labels[i];
         if (found[m] || !open_overlap(cell.boxes[i], sb)) continue;

@@ -1,4 +1,5 @@
-// The queries' contracts that issue 27 found loose: one rule for coordinates (point 9).
+// The queries' contracts that issue 27 found loose: one rule for coordinates (point 9) and views
+// that outlive the landscape they came from (point 7).
 #include <gtest/gtest.h>
 
 #include <limits>
@@ -8,6 +9,10 @@
 
 namespace edgeland::test {
 namespace {
+
+Polygon box_polygon(std::int64_t x0, std::int64_t y0, std::int64_t x1, std::int64_t y1) {
+  return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+}
 
 // Runs the query, which must throw CoordinateOutOfRange for the argument named `message`.
 template <class Query>
@@ -49,6 +54,30 @@ TEST(LandscapeQueries, EveryQueryRefusesACoordinateBeyondTheBound) {
   l.polygons_in(Box64{{50, 50}, {10, 10}}, [&](const PolygonView&) { return ++met, true; });
   EXPECT_EQ(met, 0u);
   EXPECT_EQ(l.state_hash(), before);
+}
+
+// Point 7: PolygonView::polygon pointed into the cell, which the next edit of the landscape
+// freed (ASan: heap-use-after-free), though the header said "valid while the landscape
+// lives". A view now shares its cell: the polygon outlives edits and the landscape itself. (The
+// sanitizer build runs this test: a dangling view is an ASan error there.)
+TEST(PolygonView, ThePolygonOutlivesEditsAndTheLandscape) {
+  std::vector<PolygonView> kept;
+  std::vector<Polygon> copies;
+  {
+    Landscape l({{0, 0}, {1000, 1000}});
+    for (int i = 0; i < 6; ++i)
+      l.fill(PolygonSet{box_polygon(100 * i, 0, 100 * i + 60, 50)}, 1 + i % 3);
+    l.polygons_in(l.world(), [&](const PolygonView& v) {
+      kept.push_back(v);
+      copies.push_back(*v.polygon);
+      return true;
+    });
+    ASSERT_EQ(kept.size(), 6u);
+    l.fill(PolygonSet{box_polygon(0, 0, 1000, 1000)}, 4);  // every cell replaced
+    l.carve(PolygonSet{box_polygon(0, 0, 1000, 1000)});
+    for (std::size_t i = 0; i < kept.size(); ++i) EXPECT_EQ(*kept[i].polygon, copies[i]);
+  }
+  for (std::size_t i = 0; i < kept.size(); ++i) EXPECT_EQ(*kept[i].polygon, copies[i]);
 }
 
 }  // namespace

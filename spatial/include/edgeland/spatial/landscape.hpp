@@ -132,7 +132,8 @@ class EDGELAND_EXPORT Landscape {
   std::vector<Material> overlaps(const Box64& box) const;
   std::vector<Material> overlaps(const ValidSet& shape) const;
   // Calls visit for every polygon whose bounding box meets the closed box; stop by returning
-  // false. Order: cell by cell in tree order, canonical order within a cell.
+  // false. Order: cell by cell in tree order, canonical order within a cell. A view shares its
+  // polygon's cell, so its polygon stays valid as long as the view lives (types.hpp).
   void polygons_in(const Box64& box, const std::function<bool(const PolygonView&)>& visit) const;
   // Calls visit for every cell whose closed box meets the closed box (empty cells included),
   // in tree order; stop by returning false.

@@ -3,6 +3,7 @@
 // landscape is configured with, what its queries and edits hand out. Plain data, no behaviour.
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -50,12 +51,16 @@ struct LandscapeLimits {
   std::size_t max_cells = std::size_t{1} << 22;
 };
 
-// One polygon of the landscape as a query or a change set shows it.
+// One polygon of the landscape as polygons_in shows it. The view shares ownership of the cell
+// holding the polygon (the tree is immutable and shared, so this costs a reference count, no
+// copy): `polygon` stays valid for as long as the view or a copy of it lives, whatever happens
+// to the landscape meanwhile, edits and destruction included. (A plain pointer dangled after the
+// next edit of the same landscape: issue 27, point 7.)
 struct PolygonView {
   PolygonId id = 0;
   Material material = kEmpty;
-  const Polygon* polygon = nullptr;  // valid while the landscape (or change set) holding it lives
-  Box64 cell;                        // the closed box of its cell
+  std::shared_ptr<const Polygon> polygon;
+  Box64 cell;  // the closed box of its cell
 };
 
 // One cell of the tree.
