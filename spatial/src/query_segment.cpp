@@ -147,6 +147,38 @@ class Profile {
   std::vector<Event> pending_;
 };
 
+// Whether the ray is inside the world just before `from` (after = false) or just after `to`
+// (after = true), as material_at sees points: the segment moved by eps (1, eps), then a step
+// back (or on) along it. Ties on a side line are decided by the direction, then by the move.
+bool inside_beyond_end(const Box64& w, Point64 p, Point64 d, bool after) {
+  const auto axis = [&](std::int64_t v, std::int64_t lo, std::int64_t hi, std::int64_t dv) {
+    const std::int64_t step = after ? dv : -dv;  // the sign of the step off the end
+    return (v > lo || (v == lo && step >= 0)) && (v < hi || (v == hi && step < 0));
+  };
+  return axis(p.x, w.min.x, w.max.x, d.x) && axis(p.y, w.min.y, w.max.y, d.y);
+}
+
+// The world box's border is no surface for rays (issue 27, point 15): where the ray enters
+// the world from outside or leaves it, the change from or into the outside is not reported,
+// so a ray starting on the world's edge sees the terrain, not the edge. The parameters of
+// those two places, when the ray has them.
+struct Border {
+  std::optional<Fraction> enter, leave;
+  bool at(const Fraction& t) const {
+    return (enter && compare(t, *enter) == 0) || (leave && compare(t, *leave) == 0);
+  }
+};
+
+Border border_of(const Box64& world, const Segment& s) {
+  Border b;
+  const auto range = clip_parameters(s, world);
+  if (!range) return b;
+  const Point64 d{s.b.x - s.a.x, s.b.y - s.a.y};
+  if (!inside_beyond_end(world, s.a, d, false)) b.enter = range->t0;
+  if (!inside_beyond_end(world, s.b, d, true)) b.leave = range->t1;
+  return b;
+}
+
 // Walks the cells along from -> to in order of entry, reporting material changes until
 // report returns false.
 template <class F>
@@ -169,13 +201,20 @@ void walk(const NodePtr& root, Point64 from, Point64 to, F&& report) {
   }
 }
 
+// The material changes inside the world, in order, until report returns false.
+template <class F>
+void walk_world(const Box64& world, const NodePtr& root, Point64 from, Point64 to, F&& report) {
+  detail::require_query_point(from, 0, "from");
+  detail::require_query_point(to, 1, "to");
+  const Border border = border_of(world, Segment{from, to});
+  walk(root, from, to, [&](const MaterialCrossing& c) { return border.at(c.t) || report(c); });
+}
+
 }  // namespace
 
 std::vector<MaterialCrossing> Landscape::crossings(Point64 from, Point64 to) const {
-  detail::require_query_point(from, 0, "from");
-  detail::require_query_point(to, 1, "to");
   std::vector<MaterialCrossing> out;
-  walk(s_.root, from, to, [&](const MaterialCrossing& c) {
+  walk_world(s_.world, s_.root, from, to, [&](const MaterialCrossing& c) {
     out.push_back(c);
     return true;
   });
@@ -183,10 +222,8 @@ std::vector<MaterialCrossing> Landscape::crossings(Point64 from, Point64 to) con
 }
 
 std::optional<MaterialCrossing> Landscape::raycast(Point64 from, Point64 to) const {
-  detail::require_query_point(from, 0, "from");
-  detail::require_query_point(to, 1, "to");
   std::optional<MaterialCrossing> hit;
-  walk(s_.root, from, to, [&](const MaterialCrossing& c) {
+  walk_world(s_.world, s_.root, from, to, [&](const MaterialCrossing& c) {
     if (c.after == kEmpty) return true;  // a back face: leaving into empty space
     hit = c;
     return false;

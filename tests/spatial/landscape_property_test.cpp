@@ -169,10 +169,11 @@ RC_GTEST_PROP(LandscapeProperty, MaterialsAreTheExactHistoryAwayFromBoundaries, 
   }
 }
 
-// Segment endpoints that hit the interesting places: vertices, cell lines, random points.
+// Segment endpoints that hit the interesting places: vertices, cell lines, the world's sides,
+// random points.
 Point64 probe_point(const Landscape& l, const std::vector<FlatPolygon>& polys) {
   const Box64& w = l.world();
-  const int kind = *rc::gen::inRange(0, 4);
+  const int kind = *rc::gen::inRange(0, 5);
   if (kind == 0 && !polys.empty()) {
     const FlatPolygon& p = polys[*rc::gen::inRange<std::size_t>(0, polys.size())];
     return p.ring[*rc::gen::inRange<std::size_t>(0, p.ring.size())];
@@ -180,6 +181,11 @@ Point64 probe_point(const Landscape& l, const std::vector<FlatPolygon>& polys) {
   if (kind == 1) {  // a cell line of a quadtree over the world
     const std::int64_t mx = w.min.x + (w.max.x - w.min.x) / 2;
     return {mx, *gen::coord(w.min.y - 4, w.max.y + 4)};
+  }
+  if (kind == 2) {  // a side line of the world, which is no surface for rays
+    const bool vertical = *rc::gen::arbitrary<bool>(), high = *rc::gen::arbitrary<bool>();
+    if (vertical) return {high ? w.max.x : w.min.x, *gen::coord(w.min.y - 4, w.max.y + 4)};
+    return {*gen::coord(w.min.x - 4, w.max.x + 4), high ? w.max.y : w.min.y};
   }
   return {*gen::coord(w.min.x - 4, w.max.x + 4), *gen::coord(w.min.y - 4, w.max.y + 4)};
 }
@@ -211,7 +217,7 @@ RC_GTEST_PROP(LandscapeProperty, QueriesAgreeWithBruteForce, ()) {
     if (*rc::gen::inRange(0, 3) == 0) b = {a.x + *gen::coord(-300, 300), a.y};  // horizontal
     if (a == b) continue;
     const std::vector<MaterialCrossing> got = l.crossings(a, b);
-    const std::vector<BruteCrossing> want = profile_brute(polys, a, b);
+    const std::vector<BruteCrossing> want = profile_brute(polys, l.world(), a, b);
     RC_ASSERT(got.size() == want.size());
     for (std::size_t i = 0; i < got.size(); ++i) {
       RC_ASSERT(rational(got[i].t) == want[i].t);

@@ -1,5 +1,6 @@
-// The queries' contracts that issue 27 found loose: one rule for coordinates (point 9) and views
-// that outlive the landscape they came from (point 7).
+// The queries' contracts that issue 27 found loose: one rule for coordinates (point 9), views
+// that outlive the landscape they came from (point 7), and the world's border, which is no
+// surface for rays (point 15).
 #include <gtest/gtest.h>
 
 #include <limits>
@@ -78,6 +79,37 @@ TEST(PolygonView, ThePolygonOutlivesEditsAndTheLandscape) {
     for (std::size_t i = 0; i < kept.size(); ++i) EXPECT_EQ(*kept[i].polygon, copies[i]);
   }
   for (std::size_t i = 0; i < kept.size(); ++i) EXPECT_EQ(*kept[i].polygon, copies[i]);
+}
+
+// Point 15: the README's raycast({0, 4040}, {8000, 4040}) in a world filled with rock "hit" the
+// world's west border at t = 0, as would any ray from the world's min edge. The world's border
+// is no surface for rays now: a ray entering or leaving the world reports no change there.
+TEST(LandscapeRays, TheWorldsBorderIsNoSurface) {
+  Landscape world({{0, 0}, {8192, 8192}}, 1);
+  world.carve(PolygonSet{box_polygon(3990, 4000, 4060, 4070)});
+  // From the west edge, inside rock: through the blast, the hit is its far wall.
+  const auto hit = world.raycast({0, 4040}, {8000, 4040});
+  ASSERT_TRUE(hit.has_value());
+  EXPECT_EQ(hit->rounded, (Point64{4060, 4040}));
+  EXPECT_EQ(hit->before, kEmpty);
+  EXPECT_EQ(hit->after, 1);
+  // The whole profile from outside the world to outside it: only the blast's two walls.
+  const std::vector<MaterialCrossing> all = world.crossings({-500, 4040}, {9000, 4040});
+  ASSERT_EQ(all.size(), 2u);
+  EXPECT_EQ(all[0].rounded, (Point64{3990, 4040}));
+  EXPECT_EQ(all[0].before, 1);
+  EXPECT_EQ(all[0].after, kEmpty);
+  EXPECT_EQ(all[1].rounded, (Point64{4060, 4040}));
+  // A ray from outside into rock, which it never leaves inside the world: nothing to hit.
+  EXPECT_FALSE(world.raycast({-100, 100}, {200, 100}).has_value());
+  // Along the world's min edges (inside, by the half-open rule): the blast is not on them, so
+  // the ray sees rock throughout.
+  EXPECT_TRUE(world.crossings({0, 0}, {8192, 0}).empty());
+  EXPECT_TRUE(world.crossings({0, 0}, {0, 8192}).empty());
+  // Inside the world nothing changed: a ray from empty space hits the first surface.
+  const auto from_blast = world.raycast({4000, 4040}, {0, 4040});
+  ASSERT_TRUE(from_blast.has_value());
+  EXPECT_EQ(from_blast->rounded, (Point64{3990, 4040}));
 }
 
 }  // namespace

@@ -52,10 +52,16 @@ Rational exact(Int128 v) {
   return Rational(negative ? BigInt(-r) : r);
 }
 
-// Parameters t in [0, 1] where the line a -> b meets a vertex or the line of an edge.
-std::vector<Rational> candidates(const std::vector<FlatPolygon>& polys, Point64 a, Point64 b) {
+// Parameters t in [0, 1] where the line a -> b meets a vertex, the line of an edge or a side
+// line of the world.
+std::vector<Rational> candidates(const std::vector<FlatPolygon>& polys, const Box64& world,
+                                 Point64 a, Point64 b) {
   const Point64 d{b.x - a.x, b.y - a.y};
   std::vector<Rational> ts{Rational(0), Rational(1)};
+  for (const std::int64_t x : {world.min.x, world.max.x})
+    if (d.x != 0) ts.push_back(Rational(x - a.x) / Rational(d.x));
+  for (const std::int64_t y : {world.min.y, world.max.y})
+    if (d.y != 0) ts.push_back(Rational(y - a.y) / Rational(d.y));
   for (const FlatPolygon& p : polys) {
     for (std::size_t i = 0, n = p.ring.size(); i < n; ++i) {
       const Point64 u = p.ring[i], v = p.ring[(i + 1) % n];
@@ -140,17 +146,31 @@ Material material_brute(const std::vector<FlatPolygon>& polys, const QPoint& q) 
   return kEmpty;
 }
 
-std::vector<BruteCrossing> profile_brute(const std::vector<FlatPolygon>& polys, Point64 from,
-                                         Point64 to) {
-  const std::vector<Rational> ts = candidates(polys, from, to);
+// Whether q moved by (eps, eps^2) lies in the open world box: where material_at looks.
+bool in_world(const Box64& w, const QPoint& q) {
+  const Rational eps = power_of_two(100);
+  const QPoint moved{q.x + eps, q.y + eps * eps};
+  return moved.x > Rational(w.min.x) && moved.x < Rational(w.max.x) &&
+         moved.y > Rational(w.min.y) && moved.y < Rational(w.max.y);
+}
+
+std::vector<BruteCrossing> profile_brute(const std::vector<FlatPolygon>& polys, const Box64& world,
+                                         Point64 from, Point64 to) {
+  const std::vector<Rational> ts = candidates(polys, world, from, to);
   const Rational eta = power_of_two(70);
-  Material prev = material_brute(polys, along(from, to, -eta));
+  QPoint sample = along(from, to, -eta);
+  Material prev = material_brute(polys, sample);
+  bool prev_inside = in_world(world, sample);
   std::vector<BruteCrossing> out;
   for (std::size_t k = 0; k < ts.size(); ++k) {
     const Rational next = k + 1 < ts.size() ? (ts[k] + ts[k + 1]) / 2 : Rational(1) + eta;
-    const Material after = material_brute(polys, along(from, to, next));
-    if (after != prev) out.push_back({ts[k], prev, after});
+    sample = along(from, to, next);
+    const Material after = material_brute(polys, sample);
+    const bool inside = in_world(world, sample);
+    // The world's border is no surface: a change between inside and outside is not one.
+    if (after != prev && inside == prev_inside) out.push_back({ts[k], prev, after});
     prev = after;
+    prev_inside = inside;
   }
   return out;
 }

@@ -45,8 +45,9 @@ struct BruteCrossing {
   Material before, after;
 };
 // The changes of material along from -> to (moved by eps (1, eps)), at t in [0, 1], with the
-// material just behind `from` as the first `before`.
-std::vector<BruteCrossing> profile_brute(const std::vector<FlatPolygon>& polys, Point64 from,
-                                         Point64 to);
+// material just behind `from` as the first `before`; a change where the segment enters or
+// leaves the world box is none (the world's border is no surface for rays).
+std::vector<BruteCrossing> profile_brute(const std::vector<FlatPolygon>& polys, const Box64& world,
+                                         Point64 from, Point64 to);
 
 }  // namespace edgeland::test

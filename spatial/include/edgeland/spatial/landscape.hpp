@@ -118,11 +118,15 @@ class EDGELAND_EXPORT Landscape {
   // Every material change along the segment from -> to, in order (the segment moved by
   // eps (1, eps), as material_at looks at points: segment_crossings.hpp). A change at t = 0
   // is one from the material just behind `from`. Cell lines and other edges between two pieces
-  // of one material are no change.
+  // of one material are no change, and neither is the world box's border: where the segment
+  // enters or leaves the world, nothing is reported (a ray starting on the world's edge sees
+  // the terrain, not the edge; before its first change a ray from outside is in the material
+  // where it enters).
   std::vector<MaterialCrossing> crossings(Point64 from, Point64 to) const;
   // The first place the ray from -> to enters a solid material other than the one it is in
   // (back faces culled, thesis 2.4.2): a ray starting in empty space hits the first surface; one
-  // starting inside rock hits only a different material, never the way out.
+  // starting inside rock hits only a different material, never the way out. The world's border
+  // is no surface (as for crossings).
   std::optional<MaterialCrossing> raycast(Point64 from, Point64 to) const;
   // The solid materials whose interiors meet the shape's interior (touching is not
   // overlapping), ascending; empty when none does. The box form is the fast path for
