@@ -20,30 +20,33 @@ Span side_extent(const Box64& box, Side side) {
                                                      : Span{box.min.y, box.max.y};
 }
 
-// Solid from across the side: the neighbours' solid edges on the side's line run the other way
-// (their polygons lie across the line), cut to the side's extent; ascending, disjoint.
-std::vector<Span> covered_from_across(const CellPolygons& cell, Side side,
-                                      const PhysicsMaterials& materials) {
-  const Span extent = side_extent(cell.box, side);
-  std::vector<Span> out;
+// Solid from across each side: the neighbours' solid edges on the side's line run the other way
+// (their polygons lie across the line), cut to the side's extent; per side, ascending and
+// disjoint. One pass over the neighbours' edges for all four sides (this read is most of a cell's
+// surface work: the neighbours' polygons are whole, most of their edges far from the box).
+std::array<std::vector<Span>, 4> covered_from_across(const CellPolygons& cell,
+                                                     const PhysicsMaterials& materials) {
+  std::array<std::vector<Span>, 4> out;
   for (const CellPolygon& p : cell.around) {
     if (!materials.is_solid(p.material)) continue;
     const Polygon& ring = *p.ring;
     for (std::size_t j = 0; j < ring.size(); ++j) {
       const Point64 a = ring[j], b = ring[(j + 1) % ring.size()];
-      // The neighbour's edge lies on this side's line, running against this cell's ports.
-      const auto on = side_of(cell.box, a, b);
-      if (!on || *on != side) continue;
-      const bool against = side == Side::kBottom || side == Side::kRight
-                               ? along(side, a) > along(side, b)
-                               : along(side, a) < along(side, b);
+      if (a.x != b.x && a.y != b.y) continue;  // on no side line
+      const auto side = side_of(cell.box, a, b);
+      if (!side) continue;
+      // Running against this cell's ports on that side.
+      const bool against = *side == Side::kBottom || *side == Side::kRight
+                               ? along(*side, a) > along(*side, b)
+                               : along(*side, a) < along(*side, b);
       if (!against) continue;
-      const Span s = span_of(side, a, b);
+      const Span s = span_of(*side, a, b), extent = side_extent(cell.box, *side);
       const Span cut{std::max(s.lo, extent.lo), std::min(s.hi, extent.hi)};
-      if (cut.lo < cut.hi) out.push_back(cut);
+      if (cut.lo < cut.hi) out[static_cast<std::size_t>(*side)].push_back(cut);
     }
   }
-  std::sort(out.begin(), out.end(), [](const Span& l, const Span& r) { return l.lo < r.lo; });
+  for (std::vector<Span>& spans : out)
+    std::sort(spans.begin(), spans.end(), [](const Span& l, const Span& r) { return l.lo < r.lo; });
   return out;
 }
 
@@ -104,16 +107,16 @@ bool on_world_border(const Box64& box, Side side, const Box64& world) {
 std::vector<SurfaceSegment> surface_segments(const CellPolygons& cell, const SolidBoundary& solid,
                                              const Box64& world, const SurfaceOptions& options) {
   std::vector<SurfaceSegment> out;
-  for (const BoundaryPiece& p : solid.free)
-    out.push_back({p.a, p.b, cell.own[p.polygon].material});
+  for (const BoundaryPiece& p : solid.free) out.push_back({p.a, p.b, cell.own[p.polygon].material});
+  const std::array<std::vector<Span>, 4> cover = covered_from_across(cell, options.materials);
   for (Side side : kSides) {
     if (on_world_border(cell.box, side, world)) {
       if (options.border_wall) add_wall(cell, side, solid, out);
       continue;
     }
-    const std::vector<Span> cover = covered_from_across(cell, side, options.materials);
     for (const BoundaryPiece& p : solid.ports[static_cast<std::size_t>(side)])
-      add_uncovered(cell.box, side, p.a, p.b, cell.own[p.polygon].material, cover, out);
+      add_uncovered(cell.box, side, p.a, p.b, cell.own[p.polygon].material,
+                    cover[static_cast<std::size_t>(side)], out);
   }
   return out;
 }

@@ -26,19 +26,20 @@ struct FixtureShape {
   friend auto operator<=>(const FixtureShape&, const FixtureShape&) = default;
 };
 
-std::vector<FixtureShape> fixtures_of(b2Body* body) {
+std::vector<FixtureShape> fixtures_of(const box2d::Terrain& terrain) {
   std::vector<FixtureShape> out;
-  for (b2Fixture* f = body->GetFixtureList(); f; f = f->GetNext()) {
-    const auto* chain = static_cast<const b2ChainShape*>(f->GetShape());
-    FixtureShape s;
-    for (int32 i = 0; i < chain->m_count; ++i)
-      s.points.emplace_back(chain->m_vertices[i].x, chain->m_vertices[i].y);
-    s.prev = {chain->m_prevVertex.x, chain->m_prevVertex.y};
-    s.next = {chain->m_nextVertex.x, chain->m_nextVertex.y};
-    s.loop = chain->m_count > 1 && chain->m_vertices[0] == chain->m_vertices[chain->m_count - 1];
-    s.material = f->GetUserData().pointer;
-    out.push_back(std::move(s));
-  }
+  for (b2Body* body : terrain.bodies())
+    for (b2Fixture* f = body->GetFixtureList(); f; f = f->GetNext()) {
+      const auto* chain = static_cast<const b2ChainShape*>(f->GetShape());
+      FixtureShape s;
+      for (int32 i = 0; i < chain->m_count; ++i)
+        s.points.emplace_back(chain->m_vertices[i].x, chain->m_vertices[i].y);
+      s.prev = {chain->m_prevVertex.x, chain->m_prevVertex.y};
+      s.next = {chain->m_nextVertex.x, chain->m_nextVertex.y};
+      s.loop = chain->m_count > 1 && chain->m_vertices[0] == chain->m_vertices[chain->m_count - 1];
+      s.material = f->GetUserData().pointer;
+      out.push_back(std::move(s));
+    }
   std::sort(out.begin(), out.end());
   return out;
 }
@@ -52,7 +53,10 @@ struct Body {
 class Simulation {
  public:
   explicit Simulation(std::uint64_t seed)
-      : rng_(seed), land_(layered_world(kSize)), world_(b2Vec2(0, -10)), terrain_(make_terrain()),
+      : rng_(seed),
+        land_(layered_world(kSize)),
+        world_(b2Vec2(0, -10)),
+        terrain_(make_terrain()),
         islands_(land_, materials()) {}
 
   static PhysicsMaterials materials() {
@@ -99,8 +103,8 @@ class Simulation {
   }
 
   int balls_and_boxes() const {
-    return static_cast<int>(std::count_if(bodies_.begin(), bodies_.end(),
-                                          [](const Body& b) { return !b.debris; }));
+    return static_cast<int>(
+        std::count_if(bodies_.begin(), bodies_.end(), [](const Body& b) { return !b.debris; }));
   }
 
   // Every tracker sees every edit, the detaches too. A detach can re-cut the cells of another
@@ -119,7 +123,8 @@ class Simulation {
         continue;
       }
       terrain_.update(land_, detached.changes);
-      for (Island& again : islands_.update(land_, detached.changes)) pending.push_back(std::move(again));
+      for (Island& again : islands_.update(land_, detached.changes))
+        pending.push_back(std::move(again));
       b2Body* debris = box2d::make_debris_body(world_, detached, terrain_.units());
       bodies_.push_back({debris, true, debris->GetPosition().y});
       ++detached_;
@@ -212,8 +217,9 @@ TEST(PhysicsSimulation, BodiesStayOutOfSolidWhileTheTerrainChangesUnderThem) {
     for (int k = 0; k < 3; ++k) sim.edit_near_a_body();
     sim.step();
     const std::vector<Point64> inside = sim.centres_in_solid();
-    ASSERT_TRUE(inside.empty()) << "frame " << frame << ": a body's centre is in solid material at ("
-                                << inside.front().x << " " << inside.front().y << ")";
+    ASSERT_TRUE(inside.empty()) << "frame " << frame
+                                << ": a body's centre is in solid material at (" << inside.front().x
+                                << " " << inside.front().y << ")";
     const std::vector<Point64> outside = sim.centres_outside_world();
     ASSERT_TRUE(outside.empty()) << "frame " << frame << ": a body left the world at ("
                                  << outside.front().x << " " << outside.front().y << ")";
@@ -235,7 +241,10 @@ TEST(PhysicsSimulation, BodiesStayOutOfSolidWhileTheTerrainChangesUnderThem) {
   options.surface.border_wall = true;
   options.units.units_per_engine_unit = kUnitsPerMetre;
   const box2d::Terrain fresh(fresh_world, sim.land(), options);
-  EXPECT_EQ(fixtures_of(sim.terrain().body()), fixtures_of(fresh.body()));
+  EXPECT_EQ(fixtures_of(sim.terrain()), fixtures_of(fresh));
+  // A static body per cell with chains: none left empty by the updates, none missing.
+  EXPECT_EQ(sim.terrain().bodies().size(), fresh.bodies().size());
+  for (const b2Body* body : sim.terrain().bodies()) EXPECT_NE(body->GetFixtureList(), nullptr);
 }
 
 // A box sliding without friction along a flat floor cut by a cell line every 64 units (2 m): its
@@ -275,8 +284,7 @@ Slide slide_a_box(AddTerrain add_terrain) {
     out.largest_vy = std::max(out.largest_vy, std::abs(box->GetLinearVelocity().y));
     out.largest_dvx = std::max(out.largest_dvx, std::abs(box->GetLinearVelocity().x - 5));
   }
-  out.cell_lines_crossed =
-      static_cast<int>((box->GetPosition().x - start_x) * kUnitsPerMetre / 64);
+  out.cell_lines_crossed = static_cast<int>((box->GetPosition().x - start_x) * kUnitsPerMetre / 64);
   return out;
 }
 
@@ -288,7 +296,7 @@ TEST(PhysicsSimulation, ABoxSlidesAcrossCellLinesWithoutBumps) {
     return std::make_unique<box2d::Terrain>(world, land, options);
   });
   EXPECT_GE(slide.cell_lines_crossed, 6);
-  EXPECT_LT(slide.largest_vy, 1e-3f);  // measured: 2e-6
+  EXPECT_LT(slide.largest_vy, 1e-3f);   // measured: 2e-6
   EXPECT_LT(slide.largest_dvx, 1e-3f);  // measured: 0
 }
 

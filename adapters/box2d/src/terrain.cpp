@@ -2,6 +2,7 @@
 // material, with the run's neighbours (or the chain's ghosts) as ghost vertices.
 #include "edgeland/box2d/terrain.hpp"
 
+#include <tuple>
 #include <vector>
 
 #include "edgeland/kernel/convex_pieces.hpp"
@@ -48,22 +49,45 @@ Terrain::Terrain(b2World& world, const Landscape& land, const TerrainOptions& op
       friction_(options.friction),
       tracker_(land, options.surface) {
   if (units_.origin == Point64{}) units_.origin = land.world().min;
-  b2BodyDef def;
-  def.type = b2_staticBody;
-  body_ = world_.CreateBody(&def);
   for (const auto& [id, chain] : tracker_.chains()) add(id, chain);
 }
 
-Terrain::~Terrain() { world_.DestroyBody(body_); }
+Terrain::~Terrain() {
+  for (const auto& [cell, body] : bodies_) world_.DestroyBody(body);
+}
+
+bool Terrain::BoxLess::operator()(const Box64& l, const Box64& r) const noexcept {
+  return std::tie(l.min.x, l.min.y, l.max.x, l.max.y) <
+         std::tie(r.min.x, r.min.y, r.max.x, r.max.y);
+}
+
+std::vector<b2Body*> Terrain::bodies() const {
+  std::vector<b2Body*> out;
+  for (const auto& [cell, body] : bodies_) out.push_back(body);
+  return out;
+}
 
 std::size_t Terrain::fixture_count() const {
   std::size_t n = 0;
-  for (const auto& [id, list] : fixtures_) n += list.size();
+  for (const auto& [id, chain] : fixtures_) n += chain.fixtures.size();
   return n;
 }
 
+b2Body* Terrain::body_of(const Box64& cell) {
+  b2Body*& body = bodies_[cell];
+  if (body == nullptr) {
+    b2BodyDef def;
+    def.type = b2_staticBody;
+    body = world_.CreateBody(&def);
+  }
+  return body;
+}
+
 void Terrain::add(ChainId id, const SurfaceChain& c) {
-  std::vector<b2Fixture*>& list = fixtures_[id];
+  b2Body* body = body_of(c.cell);
+  ChainFixtures& record = fixtures_[id];
+  record.cell = c.cell;
+  std::vector<b2Fixture*>& list = record.fixtures;
   const std::size_t n = c.points.size();
   for (const Run& run : runs_of(c)) {
     b2ChainShape shape;
@@ -75,8 +99,8 @@ void Terrain::add(ChainId id, const SurfaceChain& c) {
       for (std::size_t k = 0; k <= run.segments; ++k)
         v.push_back(to_b2(units_, c.points[(run.first + k) % n]));
       const std::size_t last = run.first + run.segments;  // not reduced: n - 1 ends an open chain
-      const Point64 prev = !c.closed && run.first == 0 ? c.ghost_prev
-                                                       : c.points[(run.first + n - 1) % n];
+      const Point64 prev =
+          !c.closed && run.first == 0 ? c.ghost_prev : c.points[(run.first + n - 1) % n];
       const Point64 next = !c.closed && last == n - 1 ? c.ghost_next : c.points[(last + 1) % n];
       shape.CreateChain(v.data(), static_cast<int32>(v.size()), to_b2(units_, prev),
                         to_b2(units_, next));
@@ -85,20 +109,31 @@ void Terrain::add(ChainId id, const SurfaceChain& c) {
     def.shape = &shape;
     def.friction = friction_[run.material];
     def.userData.pointer = run.material;
-    list.push_back(body_->CreateFixture(&def));
+    list.push_back(body->CreateFixture(&def));
   }
 }
 
-void Terrain::remove(ChainId id) {
+// The chain's fixtures destroyed; its cell is noted in `emptied` (its body may be left empty).
+void Terrain::remove(ChainId id, std::vector<Box64>& emptied) {
   const auto it = fixtures_.find(id);
   if (it == fixtures_.end()) return;
-  for (b2Fixture* f : it->second) body_->DestroyFixture(f);
+  for (b2Fixture* f : it->second.fixtures) f->GetBody()->DestroyFixture(f);
+  emptied.push_back(it->second.cell);
   fixtures_.erase(it);
 }
 
+// Removals first, then additions (a cell recomputed keeps its body); bodies left without
+// fixtures are destroyed last (their cells were split, merged or lost their surface).
 void Terrain::apply(const ChainUpdate& update) {
-  for (ChainId id : update.removed) remove(id);
+  std::vector<Box64> emptied;
+  for (ChainId id : update.removed) remove(id, emptied);
   for (const auto& [id, chain] : update.added) add(id, chain);
+  for (const Box64& cell : emptied) {
+    const auto it = bodies_.find(cell);
+    if (it == bodies_.end() || it->second->GetFixtureList() != nullptr) continue;
+    world_.DestroyBody(it->second);
+    bodies_.erase(it);
+  }
 }
 
 ChainUpdate Terrain::update(const Landscape& land, const ChangeSet& changes) {

@@ -1,13 +1,15 @@
 #pragma once
 // A Box2D 2.4 world kept in step with a landscape (adapters/box2d/README.md): the static terrain
-// as one body whose fixtures are the landscape's surface chains, replaced per change set only
+// as bodies whose fixtures are the landscape's surface chains, replaced per change set only
 // where the chains changed; and detached debris islands as dynamic bodies of convex pieces.
 // Everything geometric comes from the game layer (game/); this adapter only converts units.
 #include <box2d/box2d.h>
 
 #include <array>
 #include <cstdint>
+#include <map>
 #include <unordered_map>
+#include <vector>
 
 #include "edgeland/engine/units.hpp"
 #include "edgeland/game/islands.hpp"
@@ -24,9 +26,12 @@ struct TerrainOptions {
   TerrainOptions() { friction.fill(0.6f); }
 };
 
-// The terrain's body: one static body; one b2ChainShape fixture per run of one material of a
-// surface chain (the chain cut where its material changes, each run keeping the ghosts of its
-// neighbours, so the joints stay smooth). Fixture user data holds the material.
+// The terrain: one b2ChainShape fixture per run of one material of a surface chain (the chain
+// cut where its material changes, each run keeping the ghosts of its neighbours, so the joints
+// stay smooth), on a static body per landscape cell that has chains. Per cell, because Box2D's
+// DestroyFixture searches its body's whole fixture list: on one body for the world, replacing a
+// cell's chains cost a step per fixture of the world (0.8 ms per edit with 14,000 fixtures,
+// bench/README.md "Game layer"). Fixture user data holds the material.
 class Terrain {
  public:
   // Builds the fixtures of every chain. With the default origin (0, 0) the world box's corner is
@@ -43,22 +48,31 @@ class Terrain {
   // After any other change (a restored snapshot, a load).
   ChainUpdate resync(const Landscape& land);
 
-  b2Body* body() const { return body_; }
+  // The static bodies of the terrain, one per cell with chains, in no particular order.
+  std::vector<b2Body*> bodies() const;
   std::size_t fixture_count() const;
   const EngineUnits& units() const { return units_; }
   const SurfaceTracker& tracker() const { return tracker_; }
 
  private:
+  struct BoxLess {
+    bool operator()(const Box64& l, const Box64& r) const noexcept;
+  };
+  b2Body* body_of(const Box64& cell);
   void add(ChainId id, const SurfaceChain& chain);
-  void remove(ChainId id);
+  void remove(ChainId id, std::vector<Box64>& emptied);
   void apply(const ChainUpdate& update);
 
   b2World& world_;
-  b2Body* body_ = nullptr;
   EngineUnits units_;
   std::array<float, kMaterialCount> friction_;
   SurfaceTracker tracker_;
-  std::unordered_map<ChainId, std::vector<b2Fixture*>> fixtures_;
+  std::map<Box64, b2Body*, BoxLess> bodies_;  // per cell with chains
+  struct ChainFixtures {
+    Box64 cell;
+    std::vector<b2Fixture*> fixtures;
+  };
+  std::unordered_map<ChainId, ChainFixtures> fixtures_;
 };
 
 struct DebrisOptions {
