@@ -5,11 +5,6 @@
 namespace edgeland::game_detail {
 namespace {
 
-// A closed interval of positions along a side.
-struct Span {
-  std::int64_t lo = 0, hi = 0;
-};
-
 Span span_of(Side side, Point64 a, Point64 b) {
   return {std::min(along(side, a), along(side, b)), std::max(along(side, a), along(side, b))};
 }
@@ -20,13 +15,26 @@ Span side_extent(const Box64& box, Side side) {
                                                      : Span{box.min.y, box.max.y};
 }
 
-// Solid from across each side: the neighbours' solid edges on the side's line run the other way
-// (their polygons lie across the line), cut to the side's extent; per side, ascending and
-// disjoint. One pass over the neighbours' edges for all four sides (this read is most of a cell's
-// surface work: the neighbours' polygons are whole, most of their edges far from the box).
-std::array<std::vector<Span>, 4> covered_from_across(const CellPolygons& cell,
-                                                     const PhysicsMaterials& materials) {
-  std::array<std::vector<Span>, 4> out;
+// Ascending spans with touching or overlapping ones joined: the cover as a union, the same
+// whichever way the neighbours' polygons happen to be cut along the line.
+void merge_spans(std::vector<Span>& spans) {
+  std::sort(spans.begin(), spans.end(), [](const Span& l, const Span& r) { return l.lo < r.lo; });
+  std::size_t kept = 0;
+  for (const Span& s : spans) {
+    if (kept > 0 && s.lo <= spans[kept - 1].hi)
+      spans[kept - 1].hi = std::max(spans[kept - 1].hi, s.hi);
+    else
+      spans[kept++] = s;
+  }
+  spans.resize(kept);
+}
+
+}  // namespace
+
+// One pass over the neighbours' edges for all four sides (the neighbours' polygons are whole,
+// most of their edges far from the box).
+SideCovers side_covers(const CellPolygons& cell, const PhysicsMaterials& materials) {
+  SideCovers out;
   for (const CellPolygon& p : cell.around) {
     if (!materials.is_solid(p.material)) continue;
     const Polygon& ring = *p.ring;
@@ -42,13 +50,14 @@ std::array<std::vector<Span>, 4> covered_from_across(const CellPolygons& cell,
       if (!against) continue;
       const Span s = span_of(*side, a, b), extent = side_extent(cell.box, *side);
       const Span cut{std::max(s.lo, extent.lo), std::min(s.hi, extent.hi)};
-      if (cut.lo < cut.hi) out[static_cast<std::size_t>(*side)].push_back(cut);
+      if (cut.lo < cut.hi) out.sides[static_cast<std::size_t>(*side)].push_back(cut);
     }
   }
-  for (std::vector<Span>& spans : out)
-    std::sort(spans.begin(), spans.end(), [](const Span& l, const Span& r) { return l.lo < r.lo; });
+  for (std::vector<Span>& spans : out.sides) merge_spans(spans);
   return out;
 }
+
+namespace {
 
 // The parts of `piece` (along `side`) outside every span of `cover` (ascending, disjoint),
 // directed as the piece.
@@ -105,10 +114,10 @@ bool on_world_border(const Box64& box, Side side, const Box64& world) {
 }
 
 std::vector<SurfaceSegment> surface_segments(const CellPolygons& cell, const SolidBoundary& solid,
-                                             const Box64& world, const SurfaceOptions& options) {
+                                             const SideCovers& covers, const Box64& world,
+                                             const SurfaceOptions& options) {
   std::vector<SurfaceSegment> out;
   for (const BoundaryPiece& p : solid.free) out.push_back({p.a, p.b, cell.own[p.polygon].material});
-  const std::array<std::vector<Span>, 4> cover = covered_from_across(cell, options.materials);
   for (Side side : kSides) {
     if (on_world_border(cell.box, side, world)) {
       if (options.border_wall) add_wall(cell, side, solid, out);
@@ -116,7 +125,7 @@ std::vector<SurfaceSegment> surface_segments(const CellPolygons& cell, const Sol
     }
     for (const BoundaryPiece& p : solid.ports[static_cast<std::size_t>(side)])
       add_uncovered(cell.box, side, p.a, p.b, cell.own[p.polygon].material,
-                    cover[static_cast<std::size_t>(side)], out);
+                    covers.sides[static_cast<std::size_t>(side)], out);
   }
   return out;
 }

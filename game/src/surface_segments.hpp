@@ -11,13 +11,31 @@
 namespace edgeland::game_detail {
 
 struct SurfaceSegment {
-  Point64 a, b;               // solid on the left
+  Point64 a, b;                // solid on the left
   Material material = kEmpty;  // that solid's material (0 for a wall)
 };
 
-// O(n log n) in the cell's and its neighbours' edges along its sides.
+// A closed interval of positions along a side.
+struct Span {
+  std::int64_t lo = 0, hi = 0;
+  friend bool operator==(const Span&, const Span&) = default;
+};
+
+// Where solid of the neighbours lies across each side of the cell (their solid edges on the
+// side's line run against the cell's ports): per Side, merged, ascending, disjoint, cut to the
+// side's extent. With the cell's own polygons this is all stage 2 reads, so a cell whose polygons
+// and covers did not change keeps its chains (surface_tracker.cpp). O(n log n) in the
+// neighbours' edges.
+struct SideCovers {
+  std::array<std::vector<Span>, 4> sides;
+  friend bool operator==(const SideCovers&, const SideCovers&) = default;
+};
+SideCovers side_covers(const CellPolygons& cell, const PhysicsMaterials& materials);
+
+// O(n log n) in the cell's edges along its sides.
 std::vector<SurfaceSegment> surface_segments(const CellPolygons& cell, const SolidBoundary& solid,
-                                             const Box64& world, const SurfaceOptions& options);
+                                             const SideCovers& covers, const Box64& world,
+                                             const SurfaceOptions& options);
 
 // Whether the box's side lies on the world box's border.
 bool on_world_border(const Box64& box, Side side, const Box64& world);
