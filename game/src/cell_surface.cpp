@@ -18,7 +18,7 @@ std::vector<PolygonId> own_ids(const CellPolygons& polygons) {
   return out;
 }
 
-CellSurface cell_surface(const CellPolygons& polygons, SideCovers covers, const Box64& world,
+CellSurface cell_surface(const CellPolygons& polygons, SideSpans covers, const Box64& world,
                          const SurfaceOptions& options) {
   const Box64& cell = polygons.box;
   const SolidBoundary solid = solid_boundary(cell, polygons.own, options.materials);
@@ -27,6 +27,7 @@ CellSurface cell_surface(const CellPolygons& polygons, SideCovers covers, const 
   CellSurface out;
   out.ids = own_ids(polygons);
   out.covers = std::move(covers);
+  out.ports = port_spans(solid);
   out.chains.reserve(traced.size());
   for (TracedChain& t : traced) {
     SurfaceChain c;

@@ -33,8 +33,8 @@ void merge_spans(std::vector<Span>& spans) {
 
 // One pass over the neighbours' edges for all four sides (the neighbours' polygons are whole,
 // most of their edges far from the box).
-SideCovers side_covers(const CellPolygons& cell, const PhysicsMaterials& materials) {
-  SideCovers out;
+SideSpans side_covers(const CellPolygons& cell, const PhysicsMaterials& materials) {
+  SideSpans out;
   for (const CellPolygon& p : cell.around) {
     if (!materials.is_solid(p.material)) continue;
     const Polygon& ring = *p.ring;
@@ -54,6 +54,17 @@ SideCovers side_covers(const CellPolygons& cell, const PhysicsMaterials& materia
     }
   }
   for (std::vector<Span>& spans : out.sides) merge_spans(spans);
+  return out;
+}
+
+SideSpans port_spans(const SolidBoundary& solid) {
+  SideSpans out;
+  for (Side side : kSides) {
+    std::vector<Span>& spans = out.sides[static_cast<std::size_t>(side)];
+    for (const BoundaryPiece& p : solid.ports[static_cast<std::size_t>(side)])
+      spans.push_back(span_of(side, p.a, p.b));
+    merge_spans(spans);
+  }
   return out;
 }
 
@@ -114,7 +125,7 @@ bool on_world_border(const Box64& box, Side side, const Box64& world) {
 }
 
 std::vector<SurfaceSegment> surface_segments(const CellPolygons& cell, const SolidBoundary& solid,
-                                             const SideCovers& covers, const Box64& world,
+                                             const SideSpans& covers, const Box64& world,
                                              const SurfaceOptions& options) {
   std::vector<SurfaceSegment> out;
   for (const BoundaryPiece& p : solid.free) out.push_back({p.a, p.b, cell.own[p.polygon].material});

@@ -35,10 +35,11 @@ bool holds_an_end(const SurfaceChain& c, const Box64& box) {
   return box.contains(c.points.front()) || box.contains(c.points.back());
 }
 
-// A cell's covers as one list (per side: the count, then each span's ends), for its record.
-std::vector<std::int64_t> flat(const game_detail::SideCovers& covers) {
+// A cell's covers or ports as one list (per side: the count, then each span's ends), for its
+// record.
+std::vector<std::int64_t> flat(const game_detail::SideSpans& spans_per_side) {
   std::vector<std::int64_t> out;
-  for (const auto& spans : covers.sides) {
+  for (const auto& spans : spans_per_side.sides) {
     out.push_back(static_cast<std::int64_t>(spans.size()));
     for (const game_detail::Span& s : spans) {
       out.push_back(s.lo);
@@ -105,10 +106,12 @@ ChainUpdate SurfaceTracker::replace_cells(const Landscape& world, const std::vec
   // same box keeps those it has unchanged (most chains of a cell lie away from the edit), so an
   // engine replaces only what changed.
   std::map<Box64, std::vector<ChainId>, BoxLess> orphans;
+  std::map<Box64, std::vector<std::int64_t>, BoxLess> old_ports;
   for (const Box64& box : gone) {
     const auto it = cells_.find(box);
     if (it == cells_.end()) continue;
     orphans[box] = std::move(it->second.chains);
+    old_ports[box] = std::move(it->second.ports);
     cells_.erase(it);
   }
   const BoxSet changed(fresh.begin(), fresh.end());
@@ -119,9 +122,19 @@ ChainUpdate SurfaceTracker::replace_cells(const Landscape& world, const std::vec
   std::map<Box64, CellSurface, BoxLess> computed;
   for (const Box64& box : changed)
     computed.emplace(box, game_detail::cell_surface(world, box, options_));
-  for (const Box64& box : touching(world, changed, BoxSet{})) {
+  // A neighbour's covers are the ports of the cells across its sides: when the edit re-cut its
+  // cells in place (the same boxes) and left their ports as they were, no neighbour can see it.
+  const bool seen_from_outside = [&] {
+    if (old_ports.size() != changed.size()) return true;
+    for (const Box64& box : changed) {
+      const auto it = old_ports.find(box);
+      if (it == old_ports.end() || it->second != flat(computed.at(box).ports)) return true;
+    }
+    return false;
+  }();
+  for (const Box64& box : seen_from_outside ? touching(world, changed, BoxSet{}) : BoxSet{}) {
     const game_detail::CellPolygons polygons = game_detail::read_cell(world, box);
-    game_detail::SideCovers covers = game_detail::side_covers(polygons, options_.materials);
+    game_detail::SideSpans covers = game_detail::side_covers(polygons, options_.materials);
     const auto it = cells_.find(box);
     if (it != cells_.end() && it->second.covers == flat(covers) &&
         it->second.ids == game_detail::own_ids(polygons))
@@ -168,7 +181,7 @@ ChainUpdate SurfaceTracker::replace_cells(const Landscape& world, const std::vec
       before.insert(before.end(), o->second.begin(), o->second.end());
       orphans.erase(o);
     }
-    record = {surface.ids, {}, flat(surface.covers)};
+    record = {surface.ids, {}, flat(surface.covers), flat(surface.ports)};
     for (const SurfaceChain& c : surface.chains) {
       const auto same = std::find_if(before.begin(), before.end(),
                                      [&](ChainId id) { return chains_.at(id) == c; });

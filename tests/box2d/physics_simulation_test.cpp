@@ -242,7 +242,7 @@ TEST(PhysicsSimulation, BodiesStayOutOfSolidWhileTheTerrainChangesUnderThem) {
   options.units.units_per_engine_unit = kUnitsPerMetre;
   const box2d::Terrain fresh(fresh_world, sim.land(), options);
   EXPECT_EQ(fixtures_of(sim.terrain()), fixtures_of(fresh));
-  // A static body per cell with chains: none left empty by the updates, none missing.
+  // A static body per region with chains: none left empty by the updates, none missing.
   EXPECT_EQ(sim.terrain().bodies().size(), fresh.bodies().size());
   for (const b2Body* body : sim.terrain().bodies()) EXPECT_NE(body->GetFixtureList(), nullptr);
 }
