@@ -14,8 +14,8 @@
 //   pixel:    BitmapWorld::paint, the 64 x 64 chunks the shape's box meets traced again
 //             (PixelTerrain::trace) and their fixtures rebuilt (PixelTerrain::rebuild): the
 //             end-to-end time.
-// Each side has its own b2World (gravity, no other bodies): edgeland's terrain is one static
-// body (box2d::Terrain), the pixel pipeline's a static body per chunk (pixel_terrain.hpp). After
+// Each side has its own b2World (gravity, no other bodies) and its terrain on static bodies, one
+// per region of the same 16 x 16 grid (box2d::Terrain, pixel_terrain.hpp). After
 // every edit each world takes one Step (1/60 s), as a game's next frame would, timed as a row of
 // its own and not part of the end-to-end time: Box2D only forgets its new proxies in a step
 // (b2BroadPhase's move buffer, searched linearly by every DestroyProxy), so without steps the

@@ -25,8 +25,14 @@ PixelTerrain::PixelTerrain(b2World& world, const BitmapWorld& bitmap, const Opti
   for (std::size_t m = 1; m < kMaterialCount; ++m) mask_value_[m] = options.solid[m] ? 255 : 0;
   b2BodyDef def;
   def.type = b2_staticBody;
-  bodies_.resize(static_cast<std::size_t>(chunks_x_ * chunks_y_));
+  const std::int64_t grid = std::max<std::int64_t>(1, options.body_grid);
+  bodies_.resize(static_cast<std::size_t>(grid * grid));
   for (b2Body*& body : bodies_) body = world_.CreateBody(&def);
+  fixtures_.resize(static_cast<std::size_t>(chunks_x_ * chunks_y_));
+  for (std::int64_t cy = 0; cy < chunks_y_; ++cy)
+    for (std::int64_t cx = 0; cx < chunks_x_; ++cx)
+      region_.push_back(
+          static_cast<std::size_t>((cy * grid / chunks_y_) * grid + cx * grid / chunks_x_));
   for (std::int64_t cy = 0; cy < chunks_y_; ++cy) {
     traced_.assign(1, {});
     for (std::int64_t cx = 0; cx < chunks_x_; ++cx) {
@@ -42,15 +48,14 @@ PixelTerrain::~PixelTerrain() {
 
 std::size_t PixelTerrain::fixture_count() const {
   std::size_t n = 0;
-  for (const b2Body* body : bodies_)
-    for (const b2Fixture* f = body->GetFixtureList(); f; f = f->GetNext()) ++n;
+  for (const auto& list : fixtures_) n += list.size();
   return n;
 }
 
 std::size_t PixelTerrain::vertex_count() const {
   std::size_t n = 0;
-  for (const b2Body* body : bodies_)
-    for (const b2Fixture* f = body->GetFixtureList(); f; f = f->GetNext())
+  for (const auto& list : fixtures_)
+    for (const b2Fixture* f : list)
       n += static_cast<std::size_t>(static_cast<const b2ChainShape*>(f->GetShape())->m_count - 1);
   return n;
 }
@@ -110,8 +115,10 @@ const std::vector<PixelTerrain::ChunkLoops>& PixelTerrain::trace(const BitmapWor
 
 void PixelTerrain::rebuild(const std::vector<ChunkLoops>& traced) {
   for (const ChunkLoops& c : traced) {
-    b2Body* body = bodies_[c.chunk];
-    while (b2Fixture* f = body->GetFixtureList()) body->DestroyFixture(f);
+    b2Body* body = bodies_[region_[c.chunk]];
+    std::vector<b2Fixture*>& list = fixtures_[c.chunk];
+    for (b2Fixture* f : list) body->DestroyFixture(f);
+    list.clear();
     for (const std::vector<cv::Point>& loop : c.loops) {
       vertices_.clear();
       for (const cv::Point& p : loop)
@@ -122,7 +129,7 @@ void PixelTerrain::rebuild(const std::vector<ChunkLoops>& traced) {
       b2FixtureDef def;
       def.shape = &shape;
       def.friction = 0.6f;
-      body->CreateFixture(&def);
+      list.push_back(body->CreateFixture(&def));
     }
   }
 }

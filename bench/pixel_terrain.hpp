@@ -4,9 +4,11 @@
 // chunks, and after an edit every chunk the edit's box meets is traced again: OpenCV's
 // findContours on the chunk's solid squares, approxPolyDP on each contour, and the chunk's Box2D
 // fixtures replaced by b2ChainShape loops of the simplified contours (as DTerrain or
-// pixel-perfect for Phaser + Box2D do it). Each chunk has a static body of its own: Box2D's
-// DestroyFixture walks its body's fixture list, so one body for the whole world would make every
-// chunk's replacement cost as many steps as the world has loops.
+// pixel-perfect for Phaser + Box2D do it). The static bodies are grouped as box2d::Terrain groups
+// edgeland's chains (adapters/README.md): one per region of a 16 x 16 grid over the world, since
+// Box2D's DestroyFixture walks its body's fixture list (one body for the world would make every
+// chunk's replacement walk all the world's loops) and b2World::Step walks every body (a body
+// per chunk, 16,384 in the bench, would cost a frame 0.5 ms).
 //
 // Each chunk is traced alone, padded with empty squares, so its loops close along the chunk's
 // sides: solid crossing a chunk line becomes two loops meeting there, the seams edgeland's
@@ -34,6 +36,7 @@ class PixelTerrain {
     std::array<bool, kMaterialCount> solid{};  // squares of these materials are solid
     double units_per_metre = 32;               // bitmap squares per Box2D metre
     double epsilon = 1.0;                      // approxPolyDP's tolerance, in squares
+    std::int64_t body_grid = 16;               // regions per side, a static body each
   };
 
   // The loops of one chunk, in bitmap squares relative to the world's corner.
@@ -42,7 +45,7 @@ class PixelTerrain {
     std::vector<std::vector<cv::Point>> loops;
   };
 
-  // Traces every chunk of `bitmap` and creates a static body per chunk with its loops.
+  // Traces every chunk of `bitmap` and creates the bodies and loops.
   PixelTerrain(b2World& world, const BitmapWorld& bitmap, const Options& options);
   ~PixelTerrain();
   PixelTerrain(const PixelTerrain&) = delete;
@@ -63,7 +66,9 @@ class PixelTerrain {
   b2World& world_;
   Options options_;
   std::int64_t chunks_x_ = 0, chunks_y_ = 0;
-  std::vector<b2Body*> bodies_;  // per chunk, cy * chunks_x_ + cx
+  std::vector<b2Body*> bodies_;                    // per region, row by row
+  std::vector<std::size_t> region_;                // per chunk (cy * chunks_x_ + cx): its region
+  std::vector<std::vector<b2Fixture*>> fixtures_;  // per chunk
   // Scratch kept between edits, as a game would.
   std::array<std::uint8_t, kMaterialCount> mask_value_{};
   cv::Mat mask_;
