@@ -76,7 +76,7 @@ class BitmapWorld {
 
   Box64 world_;
   std::int64_t width_ = 0, height_ = 0;
-  std::vector<Material> cells_;
+  std::vector<std::uint8_t> cells_;  // material numbers
   // Scratch of paint(), kept to spare the allocations as a game would.
   std::vector<ScanEdge> edges_;
   std::vector<std::int64_t> crossings_;

@@ -17,8 +17,8 @@
 #include "demo_actions.hpp"
 #include "demo_editor.hpp"
 #include "demo_world.hpp"
+#include "edgeland/io/landscape_replay.hpp"
 #include "landscape_png.hpp"
-#include "landscape_report.hpp"
 #include "splitmix64.hpp"
 
 namespace edgeland::cli {
@@ -82,7 +82,7 @@ void print_summary(const Landscape& landscape, const DemoRun& run, const Landsca
   print_line("cells", std::to_string(stats.cells));
   print_line("depth", std::to_string(stats.depth));
   print_line("memory bytes", std::to_string(stats.bytes));
-  print_line("state hash", state_hash_hex(landscape.state_hash()));
+  print_line("state hash", log::state_hash_hex(landscape.state_hash()));
   print_line("check()", report.ok() ? "ok"
                                     : std::to_string(report.problems.size()) +
                                           " problem(s): " + report.problems.front());

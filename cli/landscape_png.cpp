@@ -48,7 +48,7 @@ void set_colour(cairo_t* cr, Rgb c) {
 std::array<std::vector<const Polygon*>, kMaterialCount> polygons_by_material(const Landscape& l) {
   std::array<std::vector<const Polygon*>, kMaterialCount> out;
   l.polygons_in(l.world(), [&](const PolygonView& v) {
-    out[v.material].push_back(v.polygon);
+    out[v.material.value()].push_back(v.polygon);
     return true;
   });
   return out;

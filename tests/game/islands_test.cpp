@@ -67,7 +67,7 @@ TEST(Islands, PointContactHoldsNothingButAnchoredMaterialDoes) {
 
 PhysicsMaterials random_materials() {
   PhysicsMaterials m;
-  for (Material k = 1; k < 6; ++k) {
+  for (int k = 1; k < 6; ++k) {
     m.solid[k] = *rc::gen::inRange(0, 5) != 0;
     m.anchored[k] = *rc::gen::inRange(0, 4) == 0;
   }
@@ -140,7 +140,7 @@ TEST(Islands, DetachTakesAwayExactlyEachIsland) {
     const Island island = std::move(pending.back());
     pending.pop_back();
     std::map<Material, Int128> expected;
-    for (Material m = 0; m < 6; ++m) expected[m] = world.twice_area(m);
+    for (int m = 0; m < 6; ++m) expected[m] = world.twice_area(m);
     for (const IslandPiece& p : island.pieces) {
       expected[p.material] -= twice_signed_area(p.polygon);
       expected[kEmpty] += twice_signed_area(p.polygon);
@@ -152,7 +152,7 @@ TEST(Islands, DetachTakesAwayExactlyEachIsland) {
       continue;
     }
     ++detached;
-    for (Material m = 0; m < 6; ++m) EXPECT_EQ(world.twice_area(m), expected[m]) << int(m);
+    for (int m = 0; m < 6; ++m) EXPECT_EQ(world.twice_area(m), expected[m]) << m;
     Int128 regions = 0;
     PolygonSet pieces;
     for (const DetachedIsland::Region& r : d.regions) regions += twice_signed_area(r.polygons);

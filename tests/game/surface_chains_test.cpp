@@ -124,7 +124,7 @@ void expect_matches_reference(const Landscape& world, const SurfaceOptions& opti
 SurfaceOptions random_options() {
   SurfaceOptions options;
   options.border_wall = *rc::gen::arbitrary<bool>();
-  for (Material m = 1; m < 6; ++m) options.materials.solid[m] = *rc::gen::inRange(0, 4) != 0;
+  for (int m = 1; m < 6; ++m) options.materials.solid[m] = *rc::gen::inRange(0, 4) != 0;
   return options;
 }
 

@@ -48,7 +48,7 @@ std::vector<SurfaceChain> sorted(std::vector<SurfaceChain> v) {
 SurfaceOptions random_options() {
   SurfaceOptions options;
   options.border_wall = *rc::gen::arbitrary<bool>();
-  for (Material m = 1; m < 6; ++m) options.materials.solid[m] = *rc::gen::inRange(0, 4) != 0;
+  for (int m = 1; m < 6; ++m) options.materials.solid[m] = *rc::gen::inRange(0, 4) != 0;
   return options;
 }
 

@@ -20,7 +20,7 @@ b2Vec2 to_b2(const EngineUnits& units, Point64 p);
 struct TerrainOptions {
   SurfaceOptions surface;  // what is solid; the border as a wall or not
   EngineUnits units;       // the origin defaults to the world box's corner (see Terrain)
-  std::array<float, kMaterialCount> friction;  // per material (0: the wall); default 0.6
+  std::array<float, kMaterialCount> friction;  // by Material::value() (0: the wall); default 0.6
   TerrainOptions() { friction.fill(0.6f); }
 };
 

@@ -1,6 +1,6 @@
-// Continuous-clip logs (cli/edit_log.hpp): the parser's typed line errors, the OGC reading of
+// Continuous-clip logs (io/.../clip_log.hpp): the parser's typed line errors, the OGC reading of
 // `set`, the evolving set's strong guarantee and the recorder's faithful replay.
-#include "edit_log.hpp"
+#include "edgeland/io/clip_log.hpp"
 
 #include <gtest/gtest.h>
 

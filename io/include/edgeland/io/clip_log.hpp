@@ -9,7 +9,7 @@
 //   difference WKT
 //   xor WKT
 //   # text            a comment; blank lines are ignored too
-// WKT is a POLYGON or MULTIPOLYGON with integer coordinates (cli/wkt_reader.hpp), on the same
+// WKT is a POLYGON or MULTIPOLYGON with integer coordinates (wkt_reader.hpp), on the same
 // line. Keywords are lower case and separated from the WKT by spaces or tabs; leading and
 // trailing white space and a final '\r' are ignored.
 //
@@ -18,8 +18,7 @@
 // bit for bit; any other WKT is imported with OGC semantics (clip.hpp import_polygons:
 // exteriors minus holes, members united). Both readings describe the same region.
 //
-// Not part of the installed library: target edgeland_log, linked by the CLI, the tests and the
-// fuzzers.
+// Part of edgeland::io (io/README.md).
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -28,18 +27,19 @@
 #include <vector>
 
 #include "edgeland/clip/clip.hpp"
+#include "edgeland/io/wkt_reader.hpp"
 #include "edgeland/kernel/errors.hpp"
+#include "edgeland/kernel/export.hpp"
 #include "edgeland/kernel/polygon.hpp"
-#include "wkt_reader.hpp"
 
 namespace edgeland::log {
 
 enum class StepKind : std::uint8_t { kSet, kUnion, kIntersection, kDifference, kXor };
 
 // The keyword of a step as written in a log ("set", "union", ...).
-const char* step_keyword(StepKind kind) noexcept;
+EDGELAND_EXPORT const char* step_keyword(StepKind kind) noexcept;
 // The step that applies `op` to the current set.
-StepKind step_kind(ClipOp op) noexcept;
+EDGELAND_EXPORT StepKind step_kind(ClipOp op) noexcept;
 
 // One parsed line.
 struct Step {
@@ -55,20 +55,22 @@ enum class LogErrorKind : std::uint8_t {
 };
 
 // Stable lower-case name, e.g. "unknown-step".
-const char* log_error_kind_name(LogErrorKind kind) noexcept;
+EDGELAND_EXPORT const char* log_error_kind_name(LogErrorKind kind) noexcept;
 
-// A line of a log could not be read. what() is one line starting "line N: ".
-class LogError : public Error {
+// A line of a log could not be read. what() is one line starting "line N: ", or
+// "line N, column C: " when the place within the line is known (as for LandscapeLogError).
+class EDGELAND_EXPORT LogError : public Error {
  public:
-  LogError(LogErrorKind kind, std::size_t line, const std::string& reason);
+  LogError(LogErrorKind kind, std::size_t line, const std::string& reason, std::size_t column = 0);
   LogErrorKind kind;
   std::size_t line;
+  std::size_t column;                     // 1-based within the line; 0: not known
   std::optional<WktErrorKind> wkt_error;  // set for kBadShape
 };
 
 // Reads one line (without its '\n'). Returns nothing for a blank or comment line.
 // Throws LogError. O(length of the line).
-std::optional<Step> parse_log_line(std::string_view line, std::size_t line_number);
+EDGELAND_EXPORT std::optional<Step> parse_log_line(std::string_view line, std::size_t line_number);
 
 // Every step of a log up to the first bad line, and the error of that line if there is one.
 struct ParsedLog {
@@ -77,16 +79,16 @@ struct ParsedLog {
 };
 
 // Never throws LogError: reading stops at the first bad line. O(length of the text).
-ParsedLog parse_log(std::string_view text);
+EDGELAND_EXPORT ParsedLog parse_log(std::string_view text);
 
 // The operand a shape stands for (see the note on valid sets above). Throws InvalidInput /
 // InternalError from import_polygons only.
-PolygonSet shape_to_set(const WktGeometry& shape, const ClipOptions& options = {});
+EDGELAND_EXPORT PolygonSet shape_to_set(const WktGeometry& shape, const ClipOptions& options = {});
 
 // One polygon set changed in place by a sequence of steps. Kept as a ValidSet: the set is
 // validated when it is assigned, not again on every step (a long log costs each step's change,
 // not a validation of the whole set).
-class EvolvingSet {
+class EDGELAND_EXPORT EvolvingSet {
  public:
   EvolvingSet() = default;
   // Throws InvalidInput if `initial` is not a valid set.
@@ -109,7 +111,7 @@ class EvolvingSet {
 // Records operations as log text. Typical use in a game: keep one EditLog per evolving set,
 // call record_clip after (or instead of, via clip()) each operation, and save text() when a
 // failure is reported.
-class EditLog {
+class EDGELAND_EXPORT EditLog {
  public:
   // A `# text` line (line breaks in `text` become spaces).
   void comment(std::string_view text);
@@ -137,10 +139,10 @@ class EditLog {
 };
 
 // FNV-1a 64-bit hash of `text`, as 16 lower-case hex digits. Deterministic on every platform.
-std::string fnv1a64_hex(std::string_view text);
+EDGELAND_EXPORT std::string fnv1a64_hex(std::string_view text);
 
 // The state hash `edgeland replay` prints: fnv1a64_hex(to_wkt(set)), i.e. the hash of the
 // WKT that `--dump` writes (without its final newline).
-std::string state_hash(const PolygonSet& set);
+EDGELAND_EXPORT std::string state_hash(const PolygonSet& set);
 
 }  // namespace edgeland::log

@@ -1,9 +1,12 @@
 #pragma once
 // Line and word splitting shared by the two log readers (edit_log.hpp, landscape_log.hpp):
 // both take one command per line, words separated by spaces or tabs, a final '\r' ignored.
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <string_view>
+
+#include "edgeland/io/wkt_reader.hpp"
 
 namespace edgeland::log {
 
@@ -25,6 +28,9 @@ std::string_view take_line(std::string_view& text) noexcept;
 // follows, without its leading blanks.
 std::string_view take_word(std::string_view& rest) noexcept;
 
+// "line N" or "line N, column C" (column 0: not known), as the logs' errors begin.
+std::string line_place(std::size_t line, std::size_t column);
+
 // A 64-bit hash as 16 lower-case hex digits (the state hashes both replays print).
 std::string hex16(std::uint64_t value);
 
@@ -32,9 +38,15 @@ std::string hex16(std::uint64_t value);
 // 24 characters, other bytes shown as '?'.
 std::string printable_excerpt(std::string_view word);
 
-// The message for a step's shape the WKT reader refused, given the reader's own message: when
-// the line ends with parentheses still open, the shape most likely went on over the next line,
-// so the message says that a shape must fit on its step's line.
-std::string shape_error_message(std::string_view wkt, std::string_view reader_message);
+// Where and why a step's shape was refused by the WKT reader, in the log line's terms: the
+// reader's reason (when the line ends with parentheses still open, the shape most likely went
+// on over the next line, and the message says that a shape must fit on its step's line), and
+// the column of the error within the log line (0 when the reader named no place). `wkt` is a
+// part of `line`.
+struct ShapeError {
+  std::string reason;
+  std::size_t column = 0;
+};
+ShapeError shape_error(std::string_view line, std::string_view wkt, const WktError& error);
 
 }  // namespace edgeland::log

@@ -1,4 +1,4 @@
-#include "edit_log.hpp"
+#include "edgeland/io/clip_log.hpp"
 
 #include <algorithm>
 #include <array>
@@ -63,8 +63,12 @@ const char* log_error_kind_name(LogErrorKind kind) noexcept {
   return "?";
 }
 
-LogError::LogError(LogErrorKind kind_, std::size_t line_, const std::string& reason)
-    : Error("line " + std::to_string(line_) + ": " + reason), kind(kind_), line(line_) {}
+LogError::LogError(LogErrorKind kind_, std::size_t line_, const std::string& reason,
+                   std::size_t column_)
+    : Error(line_place(line_, column_) + ": " + reason),
+      kind(kind_),
+      line(line_),
+      column(column_) {}
 
 std::optional<Step> parse_log_line(std::string_view raw, std::size_t line_number) {
   std::string_view rest = trim_blanks(raw);
@@ -88,9 +92,9 @@ std::optional<Step> parse_log_line(std::string_view raw, std::size_t line_number
   try {
     step.shape = read_wkt(wkt);
   } catch (const WktError& error) {
-    LogError log_error(
-        LogErrorKind::kBadShape, line_number,
-        std::string(step_keyword(*kind)) + ": " + shape_error_message(wkt, error.what()));
+    const ShapeError where = shape_error(raw, wkt, error);
+    LogError log_error(LogErrorKind::kBadShape, line_number,
+                       std::string(step_keyword(*kind)) + ": " + where.reason, where.column);
     log_error.wkt_error = error.kind;
     throw log_error;
   }

@@ -1,10 +1,10 @@
-#include "landscape_log.hpp"
+#include "edgeland/io/landscape_log.hpp"
 
 #include <array>
 #include <charconv>
 #include <utility>
 
-#include "edit_log.hpp"
+#include "edgeland/io/clip_log.hpp"
 #include "log_text.hpp"
 
 namespace edgeland::log {
@@ -77,7 +77,9 @@ WorldCommand parse_world(std::string_view rest, std::size_t line) {
   return world;
 }
 
-WktGeometry parse_shape(std::string_view wkt, std::string_view keyword, std::size_t line) {
+// `wkt` is the rest of `raw`, the whole line.
+WktGeometry parse_shape(std::string_view raw, std::string_view wkt, std::string_view keyword,
+                        std::size_t line) {
   if (wkt.empty()) {
     throw LandscapeLogError(LandscapeLogErrorKind::kMissingShape, line,
                             std::string(keyword) + ": missing WKT shape");
@@ -85,15 +87,16 @@ WktGeometry parse_shape(std::string_view wkt, std::string_view keyword, std::siz
   try {
     return read_wkt(wkt);
   } catch (const WktError& error) {
-    LandscapeLogError log_error(
-        LandscapeLogErrorKind::kBadShape, line,
-        std::string(keyword) + ": " + shape_error_message(wkt, error.what()));
+    const ShapeError where = shape_error(raw, wkt, error);
+    LandscapeLogError log_error(LandscapeLogErrorKind::kBadShape, line,
+                                std::string(keyword) + ": " + where.reason, where.column);
     log_error.wkt_error = error.kind;
     throw log_error;
   }
 }
 
-LandscapeEdit parse_edit(const EditKeyword& keyword, std::string_view rest, std::size_t line) {
+LandscapeEdit parse_edit(const EditKeyword& keyword, std::string_view raw, std::string_view rest,
+                         std::size_t line) {
   LandscapeEdit edit;
   edit.kind = keyword.kind;
   edit.line = line;
@@ -103,7 +106,7 @@ LandscapeEdit parse_edit(const EditKeyword& keyword, std::string_view rest, std:
     edit.material =
         take_material(rest, name + (keyword.materials == 2 ? ": TO" : ": material"), line);
   }
-  edit.shape = parse_shape(rest, keyword.word, line);
+  edit.shape = parse_shape(raw, rest, keyword.word, line);
   return edit;
 }
 
@@ -171,8 +174,11 @@ const char* landscape_log_error_kind_name(LandscapeLogErrorKind kind) noexcept {
 }
 
 LandscapeLogError::LandscapeLogError(LandscapeLogErrorKind kind_, std::size_t line_,
-                                     const std::string& reason)
-    : Error("line " + std::to_string(line_) + ": " + reason), kind(kind_), line(line_) {}
+                                     const std::string& reason, std::size_t column_)
+    : Error(line_place(line_, column_) + ": " + reason),
+      kind(kind_),
+      line(line_),
+      column(column_) {}
 
 std::optional<LandscapeCommand> parse_landscape_line(std::string_view raw,
                                                      std::size_t line_number) {
@@ -181,7 +187,7 @@ std::optional<LandscapeCommand> parse_landscape_line(std::string_view raw,
   const std::string_view word = take_word(rest);
   if (word == kWorldKeyword) return parse_world(rest, line_number);
   if (const EditKeyword* keyword = edit_keyword(word)) {
-    return parse_edit(*keyword, rest, line_number);
+    return parse_edit(*keyword, raw, rest, line_number);
   }
   throw LandscapeLogError(LandscapeLogErrorKind::kUnknownCommand, line_number,
                           "unknown command '" + printable_excerpt(word) +

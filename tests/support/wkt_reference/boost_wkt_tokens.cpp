@@ -1,12 +1,12 @@
-#include "wkt_tokens.hpp"
+#include "boost_wkt_tokens.hpp"
 
 #include <cstdint>
 #include <cstdio>
 #include <limits>
 
-#include "wkt_reader.hpp"
+#include "edgeland/io/wkt_reader.hpp"
 
-namespace edgeland::wkt_detail {
+namespace edgeland::wkt_reference {
 namespace {
 
 using Kind = Token::Kind;
@@ -298,4 +298,4 @@ CheckedText check_tokens(std::string_view input) {
   return checked;
 }
 
-}  // namespace edgeland::wkt_detail
+}  // namespace edgeland::wkt_reference

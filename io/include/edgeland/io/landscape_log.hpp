@@ -18,18 +18,17 @@
 // `replace 0 M` fills only empty space, `replace M 0` carves only M, and `world ... 0` is an
 // empty world. Coordinates are decimal integers with |c| <= kCoordBound, X0 < X1, Y0 < Y1.
 // WKT is a POLYGON or MULTIPOLYGON with integer coordinates on the same line, read as in
-// continuous-clip logs (edit_log.hpp): a valid edgeland set is taken vertex for vertex (so a
+// continuous-clip logs (clip_log.hpp): a valid edgeland set is taken vertex for vertex (so a
 // recorded log replays bit for bit, same state_hash), any other shape with OGC semantics
-// (log::shape_to_set). Keywords are lower case and separated by spaces or tabs; leading and
-// trailing white space and a final '\r' are ignored.
+// (log::shape_to_set, clip_log.hpp). Keywords are lower case and separated by spaces or tabs;
+// leading and trailing white space and a final '\r' are ignored.
 //
 // A log is a landscape log when its first command is `world`; any other first command makes
-// it a continuous-clip log (edit_log.hpp). The world line does not record the landscape's
+// it a continuous-clip log (clip_log.hpp). The world line does not record the landscape's
 // LandscapeConfig: a log replays onto the default configuration, which is what the state_hash
 // of a replay is comparable with.
 //
-// Not part of the installed library: target edgeland_landscape_log, linked by the CLI and the
-// tests.
+// Part of edgeland::io (io/README.md), with the replay of a whole log in landscape_replay.hpp.
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -38,10 +37,11 @@
 #include <variant>
 #include <vector>
 
+#include "edgeland/io/wkt_reader.hpp"
 #include "edgeland/kernel/bbox.hpp"
 #include "edgeland/kernel/errors.hpp"
+#include "edgeland/kernel/export.hpp"
 #include "edgeland/spatial/landscape.hpp"
-#include "wkt_reader.hpp"
 
 namespace edgeland::log {
 
@@ -55,7 +55,7 @@ struct WorldCommand {
 enum class LandscapeEditKind : std::uint8_t { kCarve, kFill, kFillEmpty, kReplace };
 
 // The keyword of an edit as written in a log ("carve", "fill", "fill_empty", "replace").
-const char* landscape_edit_keyword(LandscapeEditKind kind) noexcept;
+EDGELAND_EXPORT const char* landscape_edit_keyword(LandscapeEditKind kind) noexcept;
 
 // One edit line.
 struct LandscapeEdit {
@@ -79,21 +79,25 @@ enum class LandscapeLogErrorKind : std::uint8_t {
 };
 
 // Stable lower-case name, e.g. "missing-world".
-const char* landscape_log_error_kind_name(LandscapeLogErrorKind kind) noexcept;
+EDGELAND_EXPORT const char* landscape_log_error_kind_name(LandscapeLogErrorKind kind) noexcept;
 
-// A line of a landscape log could not be read. what() is one line starting "line N: ".
-class LandscapeLogError : public Error {
+// A line of a landscape log could not be read. what() is one line starting "line N: ", or
+// "line N, column C: " when the place within the line is known (a bad shape: the column of the
+// WKT error within the log line, one position for the reader).
+class EDGELAND_EXPORT LandscapeLogError : public Error {
  public:
-  LandscapeLogError(LandscapeLogErrorKind kind, std::size_t line, const std::string& reason);
+  LandscapeLogError(LandscapeLogErrorKind kind, std::size_t line, const std::string& reason,
+                    std::size_t column = 0);
   LandscapeLogErrorKind kind;
   std::size_t line;
+  std::size_t column;                     // 1-based within the line; 0: not known
   std::optional<WktErrorKind> wkt_error;  // set for kBadShape
 };
 
 // Reads one line (without its '\n'). Nothing for a blank or comment line. Checks the line
 // alone (not whether a world line may stand there). Throws LandscapeLogError. O(length).
-std::optional<LandscapeCommand> parse_landscape_line(std::string_view line,
-                                                     std::size_t line_number);
+EDGELAND_EXPORT std::optional<LandscapeCommand> parse_landscape_line(std::string_view line,
+                                                                     std::size_t line_number);
 
 // The world and every edit up to the first bad line, and the error of that line if there is
 // one. `world` is empty exactly when the log does not start with a good world line (`error`
@@ -106,26 +110,26 @@ struct ParsedLandscapeLog {
 };
 
 // Never throws LandscapeLogError: reading stops at the first bad line. O(length of the text).
-ParsedLandscapeLog parse_landscape_log(std::string_view text);
+EDGELAND_EXPORT ParsedLandscapeLog parse_landscape_log(std::string_view text);
 
 // True when the first command of `text` (skipping blank and comment lines) is `world`: the
 // way `edgeland replay` tells the two log kinds apart. O(length up to that command).
-bool is_landscape_log(std::string_view text);
+EDGELAND_EXPORT bool is_landscape_log(std::string_view text);
 
 // The landscape a world line describes (default configuration and limits). Throws
 // InvalidConfig only for a box parse_landscape_line would have refused.
-Landscape make_landscape(const WorldCommand& world);
+EDGELAND_EXPORT Landscape make_landscape(const WorldCommand& world);
 
 // Applies one edit: the shape is read as log::shape_to_set does (vertex for vertex when it is
 // a valid set, else OGC import), then the landscape's edit of that kind runs. Throws what those
 // throw: InvalidInput / CoordinateOutOfRange (a shape the kernel refuses), LimitExceeded,
 // InternalError (the OGC import failed its checks), LandscapeInternalError. The landscape's
 // strong guarantee holds: after a throw it is as it was.
-ChangeSet apply_edit(Landscape& landscape, const LandscapeEdit& edit);
+EDGELAND_EXPORT ChangeSet apply_edit(Landscape& landscape, const LandscapeEdit& edit);
 
 // The edit of `kind` with a shape already read: `material` is fill's / fill_empty's material
 // and replace's TO, `from` replace's FROM (both unused by carve). Throws as above.
-ChangeSet apply_edit(Landscape& landscape, LandscapeEditKind kind, const PolygonSet& shape,
-                     Material material, Material from);
+EDGELAND_EXPORT ChangeSet apply_edit(Landscape& landscape, LandscapeEditKind kind,
+                                     const PolygonSet& shape, Material material, Material from);
 
 }  // namespace edgeland::log

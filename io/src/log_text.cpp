@@ -34,6 +34,12 @@ std::string printable_excerpt(std::string_view word) {
   return out;
 }
 
+std::string line_place(std::size_t line, std::size_t column) {
+  std::string out = "line " + std::to_string(line);
+  if (column != 0) out += ", column " + std::to_string(column);
+  return out;
+}
+
 std::string hex16(std::uint64_t value) {
   static constexpr char kHex[] = "0123456789abcdef";
   std::string out(16, '0');
@@ -44,15 +50,19 @@ std::string hex16(std::uint64_t value) {
   return out;
 }
 
-std::string shape_error_message(std::string_view wkt, std::string_view reader_message) {
+ShapeError shape_error(std::string_view line, std::string_view wkt, const WktError& error) {
   std::int64_t open = 0;
   for (const char c : wkt) open += c == '(' ? 1 : c == ')' ? -1 : 0;
-  std::string message(reader_message);
+  ShapeError out{error.reason, 0};
   if (open > 0) {
-    message += " (the line ends with " + std::to_string(open) +
-               " parenthesis(es) open: a step's shape must fit on its one line)";
+    out.reason += " (the line ends with " + std::to_string(open) +
+                  " parenthesis(es) open: a step's shape must fit on its one line)";
   }
-  return message;
+  // A log line holds no line break, so the reader's position is on its line 1.
+  if (error.line == 1 && error.column != 0) {
+    out.column = static_cast<std::size_t>(wkt.data() - line.data()) + error.column;
+  }
+  return out;
 }
 
 }  // namespace edgeland::log

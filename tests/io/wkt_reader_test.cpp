@@ -1,7 +1,7 @@
-// The WKT reader (cli/wkt_reader.hpp): what it returns for good text, and the typed error it
+// The WKT reader (io/.../wkt_reader.hpp): what it returns for good text, and the typed error it
 // throws for each kind of bad text, including the inputs Boost's read_wkt accepts silently
 // (TOOLCHAIN.md pitfall 6).
-#include "wkt_reader.hpp"
+#include "edgeland/io/wkt_reader.hpp"
 
 #include <gtest/gtest.h>
 

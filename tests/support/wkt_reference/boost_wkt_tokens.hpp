@@ -8,7 +8,7 @@
 #include <string_view>
 #include <vector>
 
-namespace edgeland::wkt_detail {
+namespace edgeland::wkt_reference {
 
 struct TextPosition {
   std::size_t line = 1;  // 1-based
@@ -41,4 +41,4 @@ CheckedText check_tokens(std::string_view text);
 // "line 3, column 14"
 std::string describe_position(TextPosition at);
 
-}  // namespace edgeland::wkt_detail
+}  // namespace edgeland::wkt_reference

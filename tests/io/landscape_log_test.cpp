@@ -1,8 +1,8 @@
-// Landscape edit logs (cli/landscape_log.hpp): the parser's typed line errors, the reading of
+// Landscape edit logs (io/.../landscape_log.hpp): the parser's typed line errors, the reading of
 // shapes and materials, the round trip of the library's own recording (Landscape::start_log)
 // through the parser to the same state_hash, and the cells Landscape::cells_in lists against
 // the landscape's own cell count.
-#include "landscape_log.hpp"
+#include "edgeland/io/landscape_log.hpp"
 
 #include <gtest/gtest.h>
 
@@ -106,7 +106,17 @@ TEST(LandscapeLogParser, BadWktKeepsTheReadersErrorKind) {
   EXPECT_EQ(e.kind, LandscapeLogErrorKind::kBadShape);
   ASSERT_TRUE(e.wkt_error.has_value());
   EXPECT_EQ(*e.wkt_error, WktErrorKind::kNotInteger);
-  EXPECT_EQ(std::string(e.what()).rfind("line 4: fill: ", 0), 0u) << e.what();
+  // One position, in the log's terms (issue 27, point 17: it read "line 4: fill: line 1,
+  // column 16: ..."): '1.5' is column 16 of the WKT, which starts at column 8 of the line.
+  EXPECT_EQ(e.column, 23u);
+  EXPECT_EQ(std::string(e.what()),
+            "line 4, column 23: fill: coordinate '1.5' is not an integer; only integers are "
+            "accepted");
+  // An error about a vertex names it, at the vertex's place in the line.
+  const LandscapeLogError far = error_of("carve POLYGON ((0 0, 4294967296 0, 1 1, 0 0))", 2);
+  EXPECT_EQ(std::string(far.what()),
+            "line 2, column 22: carve: polygon 0 ring 0 vertex 1: coordinate (4294967296 0) is "
+            "beyond the bound |c| <= 2147483647");
 }
 
 TEST(LandscapeLogParser, TheWorldComesFirstAndOnlyOnce) {

@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
+#include "edgeland/io/wkt_reader.hpp"
 #include "edgeland/kernel/point.hpp"
 #include "edgeland/kernel/wkt_writer.hpp"
-#include "wkt_reader.hpp"
 
 namespace edgeland {
 namespace {

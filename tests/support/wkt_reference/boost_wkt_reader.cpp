@@ -1,4 +1,7 @@
-#include "wkt_reader.hpp"
+// The reader edgeland had before io/ (issue 27, point 13): lexical checks, then Boost.Geometry's
+// read_wkt for the structure, then the ring checks read_wkt does not make. Kept in the tests
+// as an independent oracle for io/'s own parser (tests/io/wkt_reader_oracle_test.cpp).
+#include "boost_wkt_reader.hpp"
 
 #include <boost/geometry/geometries/multi_polygon.hpp>
 #include <boost/geometry/geometries/point_xy.hpp>
@@ -7,7 +10,7 @@
 #include <exception>
 #include <new>
 
-#include "wkt_tokens.hpp"
+#include "boost_wkt_tokens.hpp"
 
 namespace edgeland {
 namespace {
@@ -20,7 +23,7 @@ using BgPolygon = bg::model::polygon<BgPoint, /*ClockWise=*/false, /*Closed=*/tr
 using BgMultiPolygon = bg::model::multi_polygon<BgPolygon>;
 using BgRing = BgPolygon::ring_type;
 
-using wkt_detail::TextPosition;
+using wkt_reference::TextPosition;
 
 // Boost's messages end with " in '<the whole text>'" (or " in (...)"): keep the reason and the
 // offending token, drop the echo so the message stays one short line.
@@ -93,7 +96,7 @@ class RingConverter {
     TextPosition at;
     const bool located = point_index < points_.size();
     if (located) at = points_[point_index];
-    if (located) prefix += " (" + wkt_detail::describe_position(at) + ")";
+    if (located) prefix += " (" + wkt_reference::describe_position(at) + ")";
     WktError error(kind, prefix + ": " + what);
     error.polygon = polygon;
     error.ring = ring;
@@ -122,37 +125,10 @@ WktPolygon convert_polygon(const BgPolygon& in, std::size_t index, RingConverter
 
 }  // namespace
 
-const char* wkt_error_kind_name(WktErrorKind kind) noexcept {
-  switch (kind) {
-    case WktErrorKind::kEmptyInput:
-      return "empty-input";
-    case WktErrorKind::kNotText:
-      return "not-text";
-    case WktErrorKind::kSyntax:
-      return "syntax";
-    case WktErrorKind::kNotInteger:
-      return "not-integer";
-    case WktErrorKind::kWrongDimension:
-      return "wrong-dimension";
-    case WktErrorKind::kUnsupportedGeometry:
-      return "unsupported-geometry";
-    case WktErrorKind::kEmptyGeometry:
-      return "empty-geometry";
-    case WktErrorKind::kTooFewPoints:
-      return "too-few-points";
-    case WktErrorKind::kUnclosedRing:
-      return "unclosed-ring";
-    case WktErrorKind::kCoordinateOutOfRange:
-      return "coordinate-out-of-range";
-  }
-  return "unknown";
-}
+namespace wkt_reference {
 
-WktError::WktError(WktErrorKind error_kind, const std::string& message)
-    : Error(message), kind(error_kind) {}
-
-WktGeometry read_wkt(std::string_view text) {
-  const wkt_detail::CheckedText checked = wkt_detail::check_tokens(text);
+WktGeometry read_wkt_with_boost(std::string_view text) {
+  const wkt_reference::CheckedText checked = wkt_reference::check_tokens(text);
   WktGeometry out;
   RingConverter rings(checked.points);
   try {
@@ -187,4 +163,5 @@ WktGeometry read_wkt(std::string_view text) {
   return out;
 }
 
+}  // namespace wkt_reference
 }  // namespace edgeland
