@@ -1,12 +1,13 @@
 // The JavaScript API of the WebAssembly module (embind): `new Module.World(x0, y0, x1, y1, fill,
 // seed)` with apply / undo / redo / everything / loadLog returning update objects of typed
-// arrays, log(), stateHash(), stats(); and `Module.replay(logText)`, the JSON text that
-// `edgeland replay` prints for that log. play/web/README.md documents it for the page.
+// arrays, log(), stateHash(), stats(); `Module.replay(logText)`, the JSON text that `edgeland replay`
+// prints for that log; `Module.materialColour(m)`. play/web/README.md documents it for the page.
 #include <emscripten/bind.h>
 #include <emscripten/val.h>
 
 #include <string>
 
+#include "material_palette.hpp"
 #include "replay_json.hpp"
 #include "web_world.hpp"
 
@@ -29,6 +30,7 @@ val to_js(const WebUpdate& u) {
   out.set("materials", typed_array("Uint8Array", u.materials));
   out.set("offsets", typed_array("Uint32Array", u.offsets));
   out.set("xy", typed_array("Int32Array", u.xy));
+  out.set("cells", typed_array("Int32Array", u.cells));
   out.set("error", u.error);
   return out;
 }
@@ -59,6 +61,7 @@ class JsWorld {
   val redo() { return to_js(world_.redo()); }
   val everything() const { return to_js(world_.everything()); }
   val load_log(const std::string& text) { return to_js(world_.load_log(text)); }
+  val cells() const { return typed_array("Int32Array", world_.cells()); }
   std::string log() const { return world_.log(); }
   std::string state_hash() const { return world_.state_hash(); }
   val stats() const {
@@ -88,6 +91,13 @@ val replay(const std::string& text) {
   return result;
 }
 
+// A material's colour in pictures (cli/material_palette.hpp) as 0xRRGGBB, so that the page
+// and the PNGs agree.
+int material_colour(int material) {
+  const cli::Rgb c = cli::material_colour(static_cast<Material>(material));
+  return c.r << 16 | c.g << 8 | c.b;
+}
+
 }  // namespace
 
 EMSCRIPTEN_BINDINGS(edgeland_web) {
@@ -98,10 +108,12 @@ EMSCRIPTEN_BINDINGS(edgeland_web) {
       .function("redo", &JsWorld::redo)
       .function("everything", &JsWorld::everything)
       .function("loadLog", &JsWorld::load_log)
+      .function("cells", &JsWorld::cells)
       .function("log", &JsWorld::log)
       .function("stateHash", &JsWorld::state_hash)
       .function("stats", &JsWorld::stats);
   emscripten::function("replay", &replay);
+  emscripten::function("materialColour", &material_colour);
 }
 
 }  // namespace edgeland::play

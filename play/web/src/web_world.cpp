@@ -25,8 +25,15 @@ void add_polygon(WebUpdate& update, PolygonId id, Material material, const Polyg
   update.offsets.push_back(static_cast<std::uint32_t>(update.xy.size() / 2));
 }
 
+void add_box(std::vector<std::int32_t>& out, const Box64& b) {
+  for (const std::int64_t c : {b.min.x, b.min.y, b.max.x, b.max.y}) {
+    out.push_back(static_cast<std::int32_t>(c));
+  }
+}
+
 WebUpdate from_changes(const ChangeSet& changes) {
   WebUpdate update;
+  for (const Box64& cell : changes.cells) add_box(update.cells, cell);
   for (const PolygonId id : changes.removed) update.removed.push_back(static_cast<double>(id));
   for (const ChangeSet::Added& a : changes.added) add_polygon(update, a.id, a.material, a.polygon);
   return update;
@@ -89,6 +96,16 @@ WebUpdate WebWorld::load_log(std::string_view text) {
   session_.reset(replayed_world(parsed));
   edits_ = 0;
   return everything();
+}
+
+std::vector<std::int32_t> WebWorld::cells() const {
+  std::vector<std::int32_t> out;
+  const Landscape& world = session_.world();
+  world.cells_in(world.world(), [&](const CellView& c) {
+    add_box(out, c.box);
+    return true;
+  });
+  return out;
 }
 
 std::string WebWorld::state_hash() const {

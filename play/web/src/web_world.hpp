@@ -20,6 +20,7 @@ struct WebUpdate {
   std::vector<std::uint8_t> materials;
   std::vector<std::uint32_t> offsets{0};  // vertex offsets, one more than polygons
   std::vector<std::int32_t> xy;           // |c| <= kCoordBound < 2^31
+  std::vector<std::int32_t> cells;        // the cells the edit made: x0, y0, x1, y1 each
   std::string error;                      // a refused edit: the reason; nothing changed
 };
 
@@ -43,6 +44,8 @@ class WebWorld {
   // update redraws it. The history starts again.
   WebUpdate load_log(std::string_view text);
 
+  // Every cell's box, x0, y0, x1, y1 each (the cell-lines overlay).
+  std::vector<std::int32_t> cells() const;
   std::string log() const { return session_.world().log(); }
   std::string state_hash() const;
   WebStats stats() const;
