@@ -137,8 +137,8 @@ void legend_text(cairo_t* cr, double x, double y, const std::string& text) {
 
 double legend_materials(cairo_t* cr, double x, double y, const Landscape& landscape) {
   const Box64& w = landscape.world();
-  const double world_area = static_cast<double>(w.max.x - w.min.x) *
-                            static_cast<double>(w.max.y - w.min.y);
+  const double world_area =
+      static_cast<double>(w.max.x - w.min.x) * static_cast<double>(w.max.y - w.min.y);
   for (std::size_t m = 0; m < kMaterialCount; ++m) {
     const auto material = static_cast<Material>(m);
     const Int128 twice = landscape.twice_area(material);
@@ -221,7 +221,8 @@ void write_landscape_png(const Landscape& landscape, const std::string& path,
                          const PictureOptions& options) {
   const Frame f = frame_for(landscape.world(), options);
   const Canvas canvas = canvas_for(f, landscape, options);
-  const Surface surface(cairo_image_surface_create(CAIRO_FORMAT_RGB24, canvas.width, canvas.height));
+  const Surface surface(
+      cairo_image_surface_create(CAIRO_FORMAT_RGB24, canvas.width, canvas.height));
   require_ok(cairo_surface_status(surface.get()), "PNG", path);
   const Context cr(cairo_create(surface.get()));
   draw_picture(cr.get(), f, canvas, landscape, options);

@@ -1,7 +1,7 @@
 #pragma once
-// The colours and names of the materials in pictures (`--png`, `render`, the front ends): a fixed table for the first materials,
-// chosen for the demo's layers, and a hash of the number for the rest, so that every
-// material always has the same colour in every picture.
+// The colours and names of the materials in pictures (`--png`, `render`, the front ends): a fixed
+// table for the first materials, chosen for the demo's layers, and a hash of the number for the
+// rest, so that every material always has the same colour in every picture.
 #include <array>
 #include <cstdint>
 

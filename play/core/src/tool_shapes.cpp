@@ -23,7 +23,8 @@ int heading(std::int64_t dx, std::int64_t dy) noexcept {
 Ring circle_ring(Point64 c, std::int64_t r) {
   constexpr int kCorners = 24;
   Ring ring;
-  for (int k = 0; k < kCorners; ++k) ring.push_back(cli::polar(c, r, k * cli::kFullTurn / kCorners));
+  for (int k = 0; k < kCorners; ++k)
+    ring.push_back(cli::polar(c, r, k * cli::kFullTurn / kCorners));
   return ring;
 }
 

@@ -1,7 +1,8 @@
 // The JavaScript API of the WebAssembly module (embind): `new Module.World(x0, y0, x1, y1, fill,
 // seed)` with apply / undo / redo / everything / loadLog returning update objects of typed
-// arrays, log(), stateHash(), stats(); `Module.replay(logText)`, the JSON text that `edgeland replay`
-// prints for that log; `Module.materialColour(m)`. play/web/README.md documents it for the page.
+// arrays, log(), stateHash(), stats(); `Module.replay(logText)`, the JSON text that `edgeland
+// replay` prints for that log; `Module.materialColour(m)`. play/web/README.md documents it for the
+// page.
 #include <emscripten/bind.h>
 #include <emscripten/val.h>
 

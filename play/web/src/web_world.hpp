@@ -26,8 +26,8 @@ struct WebUpdate {
 
 struct WebStats {
   std::size_t polygons = 0, vertices = 0, cells = 0, depth = 0, edits = 0;
-  double last_edit_ms = 0;    // the last apply(), edit and update together
-  double total_edit_ms = 0;   // all apply() calls
+  double last_edit_ms = 0;   // the last apply(), edit and update together
+  double total_edit_ms = 0;  // all apply() calls
 };
 
 class WebWorld {
