@@ -2,6 +2,7 @@
 
 #include <cairo-svg.h>
 #include <cairo.h>
+#include <fontconfig/fontconfig.h>
 
 #include <algorithm>
 #include <array>
@@ -215,10 +216,15 @@ void require_ok(cairo_status_t status, const char* kind, const std::string& path
   }
 }
 
-}  // namespace
+// The legend's text goes through fontconfig, which keeps its configuration and caches until the
+// process ends; they are released after each picture with text, so that a leak checker sees a
+// clean exit (fontconfig loads them again when asked).
+void release_font_caches() {
+  cairo_debug_reset_static_data();
+  FcFini();
+}
 
-void write_landscape_png(const Landscape& landscape, const std::string& path,
-                         const PictureOptions& options) {
+void draw_png(const Landscape& landscape, const std::string& path, const PictureOptions& options) {
   const Frame f = frame_for(landscape.world(), options);
   const Canvas canvas = canvas_for(f, landscape, options);
   const Surface surface(
@@ -231,8 +237,7 @@ void write_landscape_png(const Landscape& landscape, const std::string& path,
   require_ok(cairo_surface_write_to_png(surface.get(), path.c_str()), "PNG", path);
 }
 
-void write_landscape_svg(const Landscape& landscape, const std::string& path,
-                         const PictureOptions& options) {
+void draw_svg(const Landscape& landscape, const std::string& path, const PictureOptions& options) {
   const Frame f = frame_for(landscape.world(), options);
   const Canvas canvas = canvas_for(f, landscape, options);
   const Surface surface(cairo_svg_surface_create(path.c_str(), canvas.width, canvas.height));
@@ -244,6 +249,21 @@ void write_landscape_svg(const Landscape& landscape, const std::string& path,
   }
   cairo_surface_finish(surface.get());  // writes the file
   require_ok(cairo_surface_status(surface.get()), "SVG", path);
+}
+
+}  // namespace
+
+// The caches are released once every cairo object of the picture is gone (cairo asserts that).
+void write_landscape_png(const Landscape& landscape, const std::string& path,
+                         const PictureOptions& options) {
+  draw_png(landscape, path, options);
+  if (options.legend) release_font_caches();
+}
+
+void write_landscape_svg(const Landscape& landscape, const std::string& path,
+                         const PictureOptions& options) {
+  draw_svg(landscape, path, options);
+  if (options.legend) release_font_caches();
 }
 
 }  // namespace edgeland::cli

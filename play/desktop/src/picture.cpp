@@ -1,6 +1,7 @@
 #include "picture.hpp"
 
 #include <cairo.h>
+#include <fontconfig/fontconfig.h>
 
 #include <algorithm>
 #include <memory>
@@ -49,6 +50,11 @@ SDL_Texture* text_texture(SDL_Renderer* renderer, const std::vector<std::string>
                     cairo_image_surface_get_stride(surface.get()));
   SDL_SetTextureBlendMode(texture, SDL_BLENDMODE_BLEND);
   return texture;
+}
+
+void release_text_caches() {
+  cairo_debug_reset_static_data();
+  FcFini();
 }
 
 void save_screenshot(SDL_Renderer* renderer, const std::string& path) {

@@ -17,6 +17,10 @@ class PictureFailure : public std::runtime_error {
 // Lines of text on a translucent dark panel, as a texture (the caller destroys it).
 SDL_Texture* text_texture(SDL_Renderer* renderer, const std::vector<std::string>& lines);
 
+// Releases cairo's and fontconfig's caches, which the text fills and which otherwise live until
+// the process ends (a leak checker reports them): call once, at the end.
+void release_text_caches();
+
 // The renderer's current target as a PNG file. Throws PictureFailure.
 void save_screenshot(SDL_Renderer* renderer, const std::string& path);
 
