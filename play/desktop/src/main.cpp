@@ -1,10 +1,13 @@
 // `edgeland-play [--script FILE] [--record FILE] [--headless] [--frames N] [--screenshot FILE.png]
-// [--log-out FILE] [--seed S] [--save-file FILE]`: the desktop demo (play/desktop/README.md).
-// Prints one JSON line at the end: what the session did and what its checks found.
+// [--log-out FILE] [--seed S] [--save-file FILE] [--frame-dir DIR --frame-every K]`: the desktop
+// demo (play/desktop/README.md). Prints one JSON line at the end: what the session did and what its
+// checks found.
 #include <SDL.h>
 
 #include <CLI/CLI.hpp>
+#include <array>
 #include <chrono>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
@@ -23,6 +26,8 @@ namespace {
 struct MainOptions {
   AppOptions app;
   std::string script, record, screenshot, log_out;
+  std::string frame_dir;  // every frame_every-th frame as DIR/frame_NNNNN.png
+  std::uint64_t frame_every = 4;
   bool headless = false;
   std::uint64_t frames = 0;  // 0: until the window closes
 };
@@ -173,6 +178,12 @@ class Loop {
     app_.draw();
     const bool last = options_.frames != 0 && n + 1 == options_.frames;
     if (last && !options_.screenshot.empty()) save_screenshot(renderer, options_.screenshot);
+    if (!options_.frame_dir.empty() && n % options_.frame_every == 0) {
+      std::array<char, 32> name{};
+      std::snprintf(name.data(), name.size(), "/frame_%05llu.png",
+                    static_cast<unsigned long long>(n / options_.frame_every));
+      save_screenshot(renderer, options_.frame_dir + name.data());
+    }
     SDL_RenderPresent(renderer);
     app_.end_frame(
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
@@ -244,6 +255,11 @@ int main(int argc, char** argv) {
                "No display: SDL's dummy video driver and software renderer");
   cli.add_option("--frames", options.frames, "Stop after N frames (0: when the window closes)");
   cli.add_option("--screenshot", options.screenshot, "Save the last frame as PNG (needs --frames)");
+  cli.add_option("--frame-dir", options.frame_dir,
+                 "Save frames as DIR/frame_NNNNN.png (an animation's pictures)");
+  cli.add_option("--frame-every", options.frame_every, "Every K-th frame for --frame-dir")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
   cli.add_option("--log-out", options.log_out, "Write the world's edit log here at the end");
   cli.add_option("--seed", options.app.seed, "The demo world's seed")->capture_default_str();
   cli.add_option("--save-file", options.app.save_file, "Where F5 saves and F9 loads")

@@ -29,6 +29,7 @@ playground.ready = createEdgeland().then(module => {
   const frames = {count: 0, totalMs: 0, maxMs: 0, lastMs: 0};
   let dirtyCells = new Int32Array(0);
   let lastUpdate = {removed: 0, added: 0, ms: 0};
+  const timing = playground.timing = {viewMs: 0, collidersMs: 0};
 
   // Every change of the world goes through here: the view, the colliders, the overlay.
   function take(update) {
@@ -38,7 +39,10 @@ playground.ready = createEdgeland().then(module => {
     }
     const start = performance.now();
     view.apply(update);
+    const drawn = performance.now();
     physics.apply(update);
+    timing.viewMs += drawn - start;
+    timing.collidersMs += performance.now() - drawn;
     dirtyCells = update.cells;
     lastUpdate = {removed: update.removed.length, added: update.ids.length,
                   ms: performance.now() - start};
