@@ -24,8 +24,17 @@ playground.ready = createEdgeland().then(module => {
   const canvas = document.getElementById('view');
   const context = canvas.getContext('2d');
   let world = new M.World(kWorld.x0, kWorld.y0, kWorld.x1, kWorld.y1, 0, kSeed);
-  const view = new TerrainView(kWorld, canvas.width, canvas.height, colour);
-  const physics = new Physics(kWorld, kUnitsPerMetre, m => m !== 0 && m !== kWater);
+  let box = kWorld, view, physics;
+  // The view and the physics follow the world's box (a replayed log brings its own world).
+  function fitWorld() {
+    const b = world.box();
+    if (view && b[0] === box.x0 && b[1] === box.y0 && b[2] === box.x1 && b[3] === box.y1) return;
+    box = {x0: b[0], y0: b[1], x1: b[2], y1: b[3]};
+    view = new TerrainView(box, canvas.width, canvas.height, colour);
+    physics = new Physics(box, kUnitsPerMetre * (box.x1 - box.x0) / (kWorld.x1 - kWorld.x0),
+                          m => m !== 0 && m !== kWater);
+  }
+  fitWorld();
   const frames = {count: 0, totalMs: 0, maxMs: 0, lastMs: 0};
   let dirtyCells = new Int32Array(0);
   let lastUpdate = {removed: 0, added: 0, ms: 0};
@@ -37,6 +46,7 @@ playground.ready = createEdgeland().then(module => {
       playground.refused = (playground.refused || 0) + 1;
       return update;
     }
+    if (update.reset) fitWorld();
     const start = performance.now();
     view.apply(update);
     const drawn = performance.now();
@@ -78,8 +88,8 @@ playground.ready = createEdgeland().then(module => {
     if (!update.error) take(update);
     return JSON.parse(result.json);
   };
-  playground.dropBall = (x, y, r = 24) => physics.dropBall(x, y, r);
-  playground.dropBox = (x, y, h = 20) => physics.dropBox(x, y, h);
+  playground.dropBall = (x, y, r = bodySize()) => physics.dropBall(x, y, r);
+  playground.dropBox = (x, y, h = bodySize() * 0.8) => physics.dropBox(x, y, h);
   playground.bodyCentres = () => physics.centres();
   playground.frameStats = () => ({frames: frames.count, meanMs: frames.totalMs / Math.max(1, frames.count),
                                   maxMs: frames.maxMs, lastMs: frames.lastMs});
@@ -126,11 +136,12 @@ playground.ready = createEdgeland().then(module => {
     return {x: view.worldX(e.clientX - r.left), y: view.worldY(e.clientY - r.top)};
   };
   let stroke = null;  // the last point of a drag
+  const bodySize = () => 24 * (box.x1 - box.x0) / (kWorld.x1 - kWorld.x0);  // 6 pixels
 
   function use(from, to) {
     const tool = selected();
-    if (tool === 'ball') return physics.dropBall(to.x, to.y, 24);
-    if (tool === 'box') return physics.dropBox(to.x, to.y, 20);
+    if (tool === 'ball') return physics.dropBall(to.x, to.y, bodySize());
+    if (tool === 'box') return physics.dropBox(to.x, to.y, bodySize() * 0.8);
     const material = tool === 'water' ? kWater : Number(control('material').value);
     playground.apply(tool, from.x, from.y, to.x, to.y, radius(), material, Number(control('from').value));
   }
@@ -156,8 +167,8 @@ playground.ready = createEdgeland().then(module => {
   control('redo').onclick = () => playground.redo();
   control('rain').onclick = () => {
     for (let k = 0; k < 20; ++k) {
-      const x = kWorld.x0 + (k + 0.5) * (kWorld.x1 - kWorld.x0) / 20;
-      if (k % 2) physics.dropBall(x, kWorld.y1 - 64, 24); else physics.dropBox(x, kWorld.y1 - 64, 20);
+      const x = box.x0 + (k + 0.5) * (box.x1 - box.x0) / 20, y = box.y1 - (box.y1 - box.y0) / 32;
+      if (k % 2) physics.dropBall(x, y, bodySize()); else physics.dropBox(x, y, bodySize() * 0.8);
     }
   };
   control('share-log').onclick = () => {

@@ -62,6 +62,13 @@ class JsWorld {
   val redo() { return to_js(world_.redo()); }
   val everything() const { return to_js(world_.everything()); }
   val load_log(const std::string& text) { return to_js(world_.load_log(text)); }
+  // The world box as [x0, y0, x1, y1] (a loaded log brings its own).
+  val box() const {
+    const Box64& b = world_.landscape().world();
+    const std::vector<double> corners{static_cast<double>(b.min.x), static_cast<double>(b.min.y),
+                                      static_cast<double>(b.max.x), static_cast<double>(b.max.y)};
+    return typed_array("Float64Array", corners);
+  }
   val cells() const { return typed_array("Int32Array", world_.cells()); }
   std::string log() const { return world_.log(); }
   std::string state_hash() const { return world_.state_hash(); }
@@ -109,6 +116,7 @@ EMSCRIPTEN_BINDINGS(edgeland_web) {
       .function("redo", &JsWorld::redo)
       .function("everything", &JsWorld::everything)
       .function("loadLog", &JsWorld::load_log)
+      .function("box", &JsWorld::box)
       .function("cells", &JsWorld::cells)
       .function("log", &JsWorld::log)
       .function("stateHash", &JsWorld::state_hash)
