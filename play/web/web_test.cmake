@@ -29,7 +29,7 @@ if(EDGELAND_SANITIZE)
 elseif(EDGELAND_WEB_MISSING)
   string(REPLACE ";" ", " missing "${EDGELAND_WEB_MISSING}")
   add_test(NAME play.web_browser COMMAND ${CMAKE_COMMAND} -E echo
-    "skipped: the browser test needs ${missing} (apt-get install -y emscripten npm chromium chromium-driver python3-selenium)")
+    "skipped: the browser test needs ${missing} (apt-get install -y emscripten chromium chromium-driver python3-selenium; npm comes with Node.js)")
   set_tests_properties(play.web_browser PROPERTIES SKIP_REGULAR_EXPRESSION "skipped:" LABELS web)
 else()
   set(web_dir ${CMAKE_BINARY_DIR}/web)
