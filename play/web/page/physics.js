@@ -1,6 +1,6 @@
 // Physics in the page from a real engine: planck.js (a JavaScript port of Box2D, pinned by
-// play/web/package-lock.json). The terrain is static: one body per solid polygon of the
-// landscape, a chain loop around it, rebuilt from the module's updates for the polygons that
+// play/web/package-lock.json). The terrain is one static body with a fixture per solid
+// polygon of the landscape, a chain loop around it, rebuilt from the module's updates for the polygons that
 // changed only. Balls and boxes are dynamic bodies. Engine units: metres, `unitsPerMetre` world
 // units each, taken relative to the world box's corner (floats lose nothing there).
 'use strict';
@@ -11,7 +11,8 @@ class Physics {
     this.k = unitsPerMetre;
     this.isSolid = isSolid;
     this.world = new planck.World({gravity: planck.Vec2(0, -10)});
-    this.terrain = new Map();  // polygon id -> static body
+    this.ground = this.world.createBody();  // the static terrain: one fixture per polygon
+    this.terrain = new Map();  // polygon id -> fixture
     this.dynamic = [];         // {body, kind: 'ball' | 'box', size (world units)}
   }
 
@@ -21,21 +22,19 @@ class Physics {
   // The terrain colliders of one update (removed ids, added polygons; a reset drops all).
   apply(update) {
     if (update.reset) {
-      for (const body of this.terrain.values()) this.world.destroyBody(body);
+      for (const fixture of this.terrain.values()) this.ground.destroyFixture(fixture);
       this.terrain.clear();
     }
     for (const id of update.removed) {
-      const body = this.terrain.get(id);
-      if (body) this.world.destroyBody(body);
+      const fixture = this.terrain.get(id);
+      if (fixture) this.ground.destroyFixture(fixture);
       this.terrain.delete(id);
     }
     forEachAdded(update, (id, material, xy) => {
       if (!this.isSolid(material)) return;
       const points = [];
       for (let k = 0; k < xy.length; k += 2) points.push(this.metres(xy[k], xy[k + 1]));
-      const body = this.world.createBody();
-      body.createFixture(planck.Chain(points, true), {friction: 0.6});
-      this.terrain.set(id, body);
+      this.terrain.set(id, this.ground.createFixture(planck.Chain(points, true), {friction: 0.6}));
     });
   }
 

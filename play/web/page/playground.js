@@ -78,7 +78,7 @@ playground.ready = createEdgeland().then(module => {
   playground.log = () => world.log();
   playground.stateHash = () => world.stateHash();
   playground.stats = () => Object.assign(world.stats(), {bodies: physics.dynamic.length,
-                                                         terrainBodies: physics.terrain.size});
+                                                         terrainFixtures: physics.terrain.size});
   // replay(logText): replays a landscape edit log into the page's world (the page then shows
   // it) and returns the object `edgeland replay LOG` prints for it.
   playground.replay = text => {
