@@ -1,7 +1,7 @@
 // Physics in the page from a real engine: planck.js (a JavaScript port of Box2D, pinned by
 // play/web/package-lock.json). The terrain is one static body with a fixture per solid
-// polygon of the landscape, a chain loop around it, rebuilt from the module's updates for the polygons that
-// changed only. Balls and boxes are dynamic bodies. Engine units: metres, `unitsPerMetre` world
+// polygon of the landscape, a chain loop around it, rebuilt from the module's updates for the
+// polygons that changed only. Balls and boxes are dynamic bodies. Engine units: metres, `unitsPerMetre` world
 // units each, taken relative to the world box's corner (floats lose nothing there).
 'use strict';
 
