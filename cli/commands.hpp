@@ -12,7 +12,8 @@
   X(clip) \
   X(replay) \
   X(render) \
-  X(demo)
+  X(demo) \
+  X(export)
 // clang-format on
 
 namespace edgeland::cli {

@@ -27,6 +27,7 @@ struct Theorem {
 std::vector<Theorem> predicate_theorems();   // orient, dot_from, line_intersection, normalizing
 std::vector<Theorem> rounding_theorems();    // round_half_up: range, rule, output bound
 std::vector<Theorem> area_theorems();        // twice-area accumulation (area.cpp)
+std::vector<Theorem> centroid_theorems();    // moment sums and denominator (centroid.cpp)
 std::vector<Theorem> refutation_theorems();  // orient in int64 at the int32 bound
 std::vector<Theorem> probe_theorems();       // rays, exact points, closed pixels, grid sizing
 

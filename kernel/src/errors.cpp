@@ -15,6 +15,8 @@ const char* operand_name(Operand o) {
       return "rings";
     case Operand::kQuery:
       return "query";
+    case Operand::kPolygon:
+      return "polygon";
   }
   return "?";  // Not reached by tests: the switch covers every Operand.
 }
@@ -80,6 +82,23 @@ CoordinateOutOfRange::CoordinateOutOfRange(Operand which, std::size_t polygon_in
 
 InvalidBox::InvalidBox(Operand which, const Box64& b)
     : InvalidInput(which, inverted(b), inverted_description(b)), box(b) {}
+
+TooManyVertices::TooManyVertices(std::size_t max, std::size_t count)
+    : Error("too many vertices: " + std::to_string(count) + " given, at most " +
+            std::to_string(max) + " accepted"),
+      maximum(max),
+      requested(count) {}
+
+InvalidArgument::InvalidArgument(const char* name, std::size_t given, std::size_t least)
+    : Error(std::string("invalid argument: ") + name + " = " + std::to_string(given) +
+            ", must be at least " + std::to_string(least)),
+      argument(name),
+      value(given),
+      minimum(least) {}
+
+NonPositiveArea::NonPositiveArea(Int128 total)
+    : Error("no centroid: the total twice-area " + to_string(total) + " is not positive"),
+      twice_area(total) {}
 
 void throw_invalid_input(Operand operand, const Violation& violation) {
   if (violation.rule == Rule::kCoordinateOutOfRange) throw CoordinateOutOfRange(operand, violation);

@@ -8,6 +8,7 @@
 
 #include "edgeland/kernel/bbox.hpp"
 #include "edgeland/kernel/export.hpp"
+#include "edgeland/kernel/int128.hpp"
 #include "edgeland/kernel/point.hpp"
 #include "edgeland/kernel/validate.hpp"
 
@@ -19,9 +20,9 @@ class EDGELAND_EXPORT Error : public std::runtime_error {
 };
 
 // Which operand an InvalidInput error is about: the clipper's subject or clip (a landscape
-// edit's shape is its clip), the rings of normalize or import_polygons, or a query's point or
-// box.
-enum class Operand : std::uint8_t { kSubject, kClip, kRings, kQuery };
+// edit's shape is its clip), the rings of normalize or import_polygons, a query's point or
+// box, or the polygon (set) of a polygon algorithm (triangulate, convex_pieces, centroid).
+enum class Operand : std::uint8_t { kSubject, kClip, kRings, kQuery, kPolygon };
 
 // An operand failed validation; `violation` says which rule, polygon and edge.
 class EDGELAND_EXPORT InvalidInput : public Error {
@@ -69,6 +70,34 @@ class EDGELAND_EXPORT InvalidBox : public InvalidInput {
  public:
   InvalidBox(Operand operand, const Box64& box);
   Box64 box;
+};
+
+// More vertices than an operation can index or sum exactly: triangulate and convex_pieces
+// number vertices in 32 bits, centroid's sums are proven for a bounded vertex count
+// (centroid.hpp). `maximum` is the largest count accepted, `requested` the count given.
+class EDGELAND_EXPORT TooManyVertices : public Error {
+ public:
+  TooManyVertices(std::size_t maximum, std::size_t requested);
+  std::size_t maximum;
+  std::size_t requested;
+};
+
+// A numeric argument below the least value an operation accepts (convex_pieces' max_vertices
+// below 3). `argument` names it, as in the signature.
+class EDGELAND_EXPORT InvalidArgument : public Error {
+ public:
+  InvalidArgument(const char* argument, std::size_t value, std::size_t minimum);
+  const char* argument;
+  std::size_t value;
+  std::size_t minimum;
+};
+
+// A polygon set whose total signed area is not positive, so it has no centroid (centroid.hpp):
+// empty, or only rings of zero or negative area. `twice_area` is the total as computed.
+class EDGELAND_EXPORT NonPositiveArea : public Error {
+ public:
+  explicit NonPositiveArea(Int128 twice_area);
+  Int128 twice_area;
 };
 
 // Throws CoordinateOutOfRange for a coordinate out of range, InvalidInput for any other rule.

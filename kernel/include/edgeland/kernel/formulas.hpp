@@ -19,6 +19,14 @@ constexpr W cross(W ax, W ay, W bx, W by) {
   return ax * by - ay * bx;
 }
 
+// The offset of the line through p with direction (dx, dy): cross(d, p), equal for every point
+// of the line (supporting_line.hpp). d is a coordinate difference reduced by its gcd, so |d|
+// stays within 2 kCoordBound per component (theorem line_offset_int128).
+template <class W>
+constexpr W line_offset(W dx, W dy, W px, W py) {
+  return cross(dx, dy, px, py);
+}
+
 // Twice the signed area of triangle abc: > 0 when c is left of a->b.
 template <class W>
 constexpr W orient(W ax, W ay, W bx, W by, W cx, W cy) {
@@ -144,6 +152,22 @@ template <class D, class W>
 constexpr W pixel_line_slack(D ax, D ay, D bx, D by, D cx, D cy) {
   const W det = orient_widening<D, W>(ax, ay, bx, by, cx, cy);
   return W(taxicab_length<D>(ax, ay, bx, by)) - W(2) * magnitude(det);
+}
+
+// --- Centroids (centroid.hpp) ---
+
+// What edge a -> b of a ring adds to six times the ring's first moment along one axis: with c
+// the axis's coordinate, (c_a + c_b) cross(a, b). Summed over the ring (the shoelace form of the
+// moment integral) and divided by 3 times its twice-area, the centroid's coordinate.
+template <class W>
+constexpr W moment_term(W ca, W cb, W ax, W ay, W bx, W by) {
+  return (ca + cb) * cross(ax, ay, bx, by);
+}
+
+// The centroid's denominator: 3 times the total twice-area.
+template <class W>
+constexpr W centroid_denominator(W twice_area) {
+  return W(3) * twice_area;
 }
 
 // --- Grids of cells (segment and box grids of clip/) ---

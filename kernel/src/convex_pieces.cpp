@@ -1,0 +1,53 @@
+// convex_pieces(): triangulate (stage 1), merge into convex pieces (stage 2), write each piece
+// without its straight vertices (stage 3). kernel/README.md states what each stage hands on.
+#include "edgeland/kernel/convex_pieces.hpp"
+
+#include "convex_pieces_checks.hpp"
+#include "edgeland/kernel/assert.hpp"
+#include "edgeland/kernel/errors.hpp"
+#include "edgeland/kernel/predicates.hpp"
+#include "hertel_mehlhorn.hpp"
+#include "piece_mesh.hpp"
+#include "triangulation.hpp"
+
+namespace edgeland {
+namespace {
+
+// The piece holding half-edge `first`, its corners only, counter-clockwise; marks its
+// half-edges taken.
+Polygon corners_of_piece(const detail::PieceMesh& mesh, std::uint32_t first,
+                         std::vector<char>& taken) {
+  Polygon piece;
+  std::uint32_t h = first;
+  do {
+    taken[h] = 1;
+    const Point64 before = mesh.point(mesh.prev(h)), at = mesh.point(h);
+    const Point64 after = mesh.point(mesh.next(h));
+    if (orientation(before, at, after) == Orientation::kCounterClockwise) piece.push_back(at);
+    h = mesh.next(h);
+  } while (h != first);
+  return piece;
+}
+
+std::vector<Polygon> pieces_of(const detail::PieceMesh& mesh) {
+  std::vector<Polygon> pieces;
+  std::vector<char> taken(mesh.half_edge_count(), 0);
+  for (std::uint32_t h = 0; h < mesh.half_edge_count(); ++h)
+    if (mesh.alive(h) && !taken[h]) pieces.push_back(corners_of_piece(mesh, h, taken));
+  return pieces;
+}
+
+}  // namespace
+
+std::vector<Polygon> convex_pieces(const Polygon& polygon, std::size_t max_vertices) {
+  if (max_vertices < 3) throw InvalidArgument("max_vertices", max_vertices, 3);
+  detail::require_valid_polygon(polygon);
+  detail::PieceMesh mesh(polygon, detail::triangulate_valid(polygon));
+  detail::merge_convex_pieces(mesh, max_vertices);
+  std::vector<Polygon> pieces = pieces_of(mesh);
+  if constexpr (EDGELAND_ASSERTS_ENABLED)
+    detail::check_convex_pieces(polygon, pieces, max_vertices);
+  return pieces;
+}
+
+}  // namespace edgeland
