@@ -16,6 +16,14 @@ constexpr Material kWater = 5;
 
 bool solid(Material m) { return m != kEmpty && m != kWater; }
 
+// Water is no obstacle; the world's border is a wall, so that nothing rolls out of the world.
+SurfaceOptions surface_options() {
+  SurfaceOptions options;
+  options.materials.solid[kWater] = false;
+  options.border_wall = true;
+  return options;
+}
+
 double ms_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
       .count();
@@ -42,7 +50,8 @@ App::App(SDL_Renderer* renderer, const AppOptions& options)
       view_{options.world, options.width, options.height},
       session_(demo_landscape(options.world, options.seed)),
       mesh_(view_),
-      physics_(options.world, options.units_per_metre, solid) {
+      physics_(session_.world(), options.units_per_metre, surface_options()),
+      islands_(session_.world(), surface_options().materials) {
   take_world();
 }
 
@@ -158,18 +167,48 @@ void App::press_key(const std::string& key) {
 void App::take(const ChangeSet& changes, bool may_bury) {
   const auto start = std::chrono::steady_clock::now();
   mesh_.apply(changes);
-  physics_.apply(changes);
+  physics_.apply(session_.world(), changes);
   last_collider_ms_ = ms_since(start);
   report_.collider_ms_total += last_collider_ms_;
   dirty_ = changes.cells;
+  settle(islands_.update(session_.world(), changes));
   if (may_bury) bury();
 }
 
+// Undo, redo and load put the islands that were detached back into the landscape: their debris
+// goes, and the trackers see the whole world again.
 void App::take_world() {
   mesh_.reset(session_.world());
   physics_.reset(session_.world());
+  physics_.remove_debris();
   dirty_.clear();
+  settle(islands_.resync(session_.world()));
   bury();
+}
+
+// Every island falls: detached from the landscape as one edit (given to the trackers like any
+// other), it becomes a dynamic body. Detaching one island can re-cut the cells of another, which
+// is then stale and comes back re-cut from the tracker (game/islands.hpp).
+void App::settle(std::vector<Island> pending) {
+  Landscape& world = session_.world();
+  while (!pending.empty()) {
+    const Island island = std::move(pending.back());
+    pending.pop_back();
+    std::optional<DetachedIsland> detached;
+    try {
+      detached = detach(world, island);
+    } catch (const StaleIsland&) {
+      continue;
+    }
+    mesh_.apply(detached->changes);
+    physics_.apply(world, detached->changes);
+    for (Island& again : islands_.update(world, detached->changes)) {
+      pending.push_back(std::move(again));
+    }
+    physics_.add_debris(*detached);
+    ++report_.islands_detached;
+  }
+  report_.islands_left += islands_.island_count();
 }
 
 // A body whose centre an edit filled is buried: the game removes it.
@@ -206,6 +245,7 @@ void App::load() {
 void App::step() {
   physics_.step(1.0 / 60.0);
   for (const DynamicBody& body : physics_.bodies()) {
+    if (body.kind == BodyKind::kDebris) continue;  // its centroid may lie outside its own shape
     if (solid(session_.world().material_at(physics_.centre(body)))) ++report_.inside_solid;
   }
 }

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "edgeland/game/islands.hpp"
 #include "edgeland/play/session.hpp"
 #include "input_script.hpp"
 #include "physics.hpp"
@@ -28,7 +29,9 @@ struct AppOptions {
 struct AppReport {
   std::uint64_t frames = 0, edits = 0, refused = 0, undos = 0, redos = 0;
   std::uint64_t bodies_dropped = 0, bodies_buried = 0;
-  std::uint64_t inside_solid = 0;  // body centres found in solid material after a step
+  std::uint64_t inside_solid = 0;  // ball and box centres found in solid material after a step
+  std::uint64_t islands_detached = 0;
+  std::uint64_t islands_left = 0;  // islands still in the landscape after an edit settled
   std::uint64_t saves = 0, loads = 0, loads_matching_save = 0;
   double frame_ms_total = 0, frame_ms_max = 0, edit_ms_total = 0, collider_ms_total = 0;
 };
@@ -56,11 +59,13 @@ class App {
   void use_tool(Point64 from, Point64 to);
   void press_key(const std::string& key);
   void take(const ChangeSet& changes, bool may_bury);
-  void take_world();  // after undo, redo, load: everything again
+  void take_world();                         // after undo, redo, load: everything again
+  void settle(std::vector<Island> pending);  // detaches the islands an edit made
   void save();
   void load();
   void bury();
   void draw_bodies() const;
+  void draw_debris(const DynamicBody& debris) const;
   void draw_cells() const;
   void draw_overlay();
 
@@ -70,6 +75,7 @@ class App {
   Session session_;
   TerrainMesh mesh_;
   Physics physics_;
+  IslandTracker islands_;
   AppReport report_;
   // Tool state.
   std::string tool_ = "explosion";

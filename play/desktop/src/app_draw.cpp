@@ -76,8 +76,30 @@ void App::draw_cells() const {
   outline_boxes(renderer_, cells, view_);
 }
 
+// A debris body: its polygons' meshes in their materials' colours, turned and moved with it.
+void App::draw_debris(const DynamicBody& d) const {
+  const b2Vec2 p = d.body->GetPosition();
+  const double cx = physics_.world_x(p.x), cy = physics_.world_y(p.y);
+  const double c = std::cos(d.body->GetAngle()), s = std::sin(d.body->GetAngle());
+  for (const DynamicBody::Piece& piece : d.shape) {
+    const cli::Rgb colour = cli::material_colour(piece.material);
+    std::vector<SDL_Vertex> vertices;
+    for (const auto& [x, y] : piece.vertices) {
+      vertices.push_back({{view_.x(cx + c * x - s * y), view_.y(cy + s * x + c * y)},
+                          {colour.r, colour.g, colour.b, 255},
+                          {0, 0}});
+    }
+    SDL_RenderGeometry(renderer_, nullptr, vertices.data(), static_cast<int>(vertices.size()),
+                       piece.triangles.data(), static_cast<int>(piece.triangles.size()));
+  }
+}
+
 void App::draw_bodies() const {
   for (const DynamicBody& d : physics_.bodies()) {
+    if (d.kind == BodyKind::kDebris) {
+      draw_debris(d);
+      continue;
+    }
     const SDL_Color c =
         d.kind == BodyKind::kBall ? SDL_Color{255, 93, 143, 255} : SDL_Color{93, 242, 255, 255};
     fill_convex(renderer_, body_corners(physics_, d, view_), c);

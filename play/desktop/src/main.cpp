@@ -117,6 +117,8 @@ nlohmann::ordered_json summary(const App& app) {
   out["bodies_buried"] = r.bodies_buried;
   out["bodies"] = app.physics().bodies().size();
   out["inside_solid"] = r.inside_solid;
+  out["islands_detached"] = r.islands_detached;
+  out["islands_left"] = r.islands_left;
   out["saves"] = r.saves;
   out["loads"] = r.loads;
   out["loads_matching_save"] = r.loads_matching_save;

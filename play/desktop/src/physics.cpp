@@ -5,22 +5,23 @@
 
 namespace edgeland::play {
 
-Physics::Physics(const Box64& world, double units_per_metre, std::function<bool(Material)> solid)
-    : box_(world),
-      k_(units_per_metre),
-      solid_(std::move(solid)),
-      world_(std::make_unique<b2World>(b2Vec2(0.0f, -10.0f))) {}
-
-b2Vec2 Physics::metres(Point64 p) const {
-  return {static_cast<float>(static_cast<double>(p.x - box_.min.x) / k_),
-          static_cast<float>(static_cast<double>(p.y - box_.min.y) / k_)};
+Physics::Physics(const Landscape& land, double units_per_metre, const SurfaceOptions& surface)
+    : box_(land.world()),
+      units_{land.world().min, units_per_metre},
+      world_(std::make_unique<b2World>(b2Vec2(0.0f, -10.0f))) {
+  box2d::TerrainOptions options;
+  options.surface = surface;
+  options.units = units_;
+  terrain_.emplace(*world_, land, options);
 }
+
+b2Vec2 Physics::metres(Point64 p) const { return box2d::to_b2(units_, p); }
 
 double Physics::world_x(float metres_x) const {
-  return static_cast<double>(box_.min.x) + metres_x * k_;
+  return static_cast<double>(box_.min.x) + metres_x * units_.units_per_engine_unit;
 }
 double Physics::world_y(float metres_y) const {
-  return static_cast<double>(box_.min.y) + metres_y * k_;
+  return static_cast<double>(box_.min.y) + metres_y * units_.units_per_engine_unit;
 }
 
 Point64 Physics::centre(const DynamicBody& body) const {
@@ -28,42 +29,12 @@ Point64 Physics::centre(const DynamicBody& body) const {
   return {std::llround(world_x(p.x)), std::llround(world_y(p.y))};
 }
 
-void Physics::add_terrain(PolygonId id, Material material, const Polygon& polygon) {
-  if (!solid_(material)) return;
-  std::vector<b2Vec2> points;
-  points.reserve(polygon.size());
-  for (const Point64& p : polygon) points.push_back(metres(p));
-  b2BodyDef def;
-  b2Body* body = world_->CreateBody(&def);
-  b2ChainShape chain;
-  chain.CreateLoop(points.data(), static_cast<int32>(points.size()));
-  b2FixtureDef fixture;
-  fixture.shape = &chain;
-  fixture.friction = 0.6f;
-  body->CreateFixture(&fixture);
-  terrain_[id] = body;
+// Both happen between two steps: no body ever sees a missing wall.
+void Physics::apply(const Landscape& land, const ChangeSet& changes) {
+  terrain_->update(land, changes);
 }
 
-void Physics::remove_terrain(PolygonId id) {
-  const auto it = terrain_.find(id);
-  if (it == terrain_.end()) return;
-  world_->DestroyBody(it->second);
-  terrain_.erase(it);
-}
-
-void Physics::apply(const ChangeSet& changes) {
-  for (const PolygonId id : changes.removed) remove_terrain(id);
-  for (const ChangeSet::Added& a : changes.added) add_terrain(a.id, a.material, a.polygon);
-}
-
-void Physics::reset(const Landscape& landscape) {
-  for (const auto& [id, body] : terrain_) world_->DestroyBody(body);
-  terrain_.clear();
-  landscape.polygons_in(landscape.world(), [&](const PolygonView& v) {
-    add_terrain(v.id, v.material, *v.polygon);
-    return true;
-  });
-}
+void Physics::reset(const Landscape& land) { terrain_->resync(land); }
 
 void Physics::drop_ball(Point64 at, double radius) {
   b2BodyDef def;
@@ -71,7 +42,7 @@ void Physics::drop_ball(Point64 at, double radius) {
   def.position = metres(at);
   b2Body* body = world_->CreateBody(&def);
   b2CircleShape circle;
-  circle.m_radius = static_cast<float>(radius / k_);
+  circle.m_radius = static_cast<float>(radius / units_.units_per_engine_unit);
   b2FixtureDef fixture;
   fixture.shape = &circle;
   fixture.density = 1;
@@ -88,13 +59,33 @@ void Physics::drop_box(Point64 at, double half) {
   def.angle = 0.3f;
   b2Body* body = world_->CreateBody(&def);
   b2PolygonShape box;
-  box.SetAsBox(static_cast<float>(half / k_), static_cast<float>(half / k_));
+  const auto h = static_cast<float>(half / units_.units_per_engine_unit);
+  box.SetAsBox(h, h);
   b2FixtureDef fixture;
   fixture.shape = &box;
   fixture.density = 1;
   fixture.friction = 0.5f;
   body->CreateFixture(&fixture);
   bodies_.push_back({body, BodyKind::kBox, half});
+}
+
+void Physics::add_debris(const DetachedIsland& island) {
+  DynamicBody debris{box2d::make_debris_body(*world_, island, units_), BodyKind::kDebris, 0};
+  const EngineVec c = to_double(island.centroid);
+  for (const DetachedIsland::Region& region : island.regions) {
+    for (const Polygon& polygon : region.polygons) {
+      DynamicBody::Piece piece{region.material, {}, {}};
+      for (const Point64& p : polygon) {
+        piece.vertices.emplace_back(static_cast<double>(p.x) - c.x, static_cast<double>(p.y) - c.y);
+      }
+      for (const Triangle& t : polygon_mesh(0, region.material, polygon).triangles) {
+        for (const std::uint32_t i : {t.a, t.b, t.c})
+          piece.triangles.push_back(static_cast<int>(i));
+      }
+      debris.shape.push_back(std::move(piece));
+    }
+  }
+  bodies_.push_back(std::move(debris));
 }
 
 void Physics::step(double seconds) {
@@ -108,7 +99,15 @@ void Physics::step(double seconds) {
 
 std::size_t Physics::remove_buried(const std::function<bool(Point64)>& covered) {
   return std::erase_if(bodies_, [&](const DynamicBody& d) {
-    if (!covered(centre(d))) return false;
+    if (d.kind == BodyKind::kDebris || !covered(centre(d))) return false;
+    world_->DestroyBody(d.body);
+    return true;
+  });
+}
+
+void Physics::remove_debris() {
+  std::erase_if(bodies_, [&](const DynamicBody& d) {
+    if (d.kind != BodyKind::kDebris) return false;
     world_->DestroyBody(d.body);
     return true;
   });

@@ -1,11 +1,7 @@
 #include "terrain_mesh.hpp"
 
+#include "edgeland/game/render_meshes.hpp"
 #include "material_palette.hpp"
-
-#if __has_include("edgeland/kernel/triangulate.hpp")
-#include "edgeland/kernel/triangulate.hpp"
-#define EDGELAND_PLAY_HAS_TRIANGULATE 1
-#endif
 
 namespace edgeland::play {
 
@@ -16,14 +12,10 @@ void TerrainMesh::add(PolygonId id, Material material, const Polygon& polygon) {
   for (const Point64& p : polygon) {
     const SDL_FPoint at{view_.x(static_cast<double>(p.x)), view_.y(static_cast<double>(p.y))};
     mesh.vertices.push_back({at, {c.r, c.g, c.b, 255}, {0, 0}});
-    mesh.outline.push_back(at);
   }
-  mesh.outline.push_back(mesh.outline.front());
-#ifdef EDGELAND_PLAY_HAS_TRIANGULATE
-  for (const Triangle& t : triangulate(polygon)) {
+  for (const Triangle& t : polygon_mesh(id, material, polygon).triangles) {
     for (const std::uint32_t i : {t.a, t.b, t.c}) mesh.indices.push_back(static_cast<int>(i));
   }
-#endif
   triangles_ += mesh.indices.size() / 3;
   meshes_[id] = std::move(mesh);
 }
@@ -47,18 +39,11 @@ void TerrainMesh::reset(const Landscape& landscape) {
   });
 }
 
-// The meshes, or, while the kernel's triangulation is not in this build, the outlines.
 void TerrainMesh::draw(SDL_Renderer* renderer) const {
   for (const auto& [id, mesh] : meshes_) {
-    if (!mesh.indices.empty()) {
-      SDL_RenderGeometry(renderer, nullptr, mesh.vertices.data(),
-                         static_cast<int>(mesh.vertices.size()), mesh.indices.data(),
-                         static_cast<int>(mesh.indices.size()));
-    } else {
-      const SDL_Color c = mesh.vertices.front().color;
-      SDL_SetRenderDrawColor(renderer, c.r, c.g, c.b, 255);
-      SDL_RenderDrawLinesF(renderer, mesh.outline.data(), static_cast<int>(mesh.outline.size()));
-    }
+    SDL_RenderGeometry(renderer, nullptr, mesh.vertices.data(),
+                       static_cast<int>(mesh.vertices.size()), mesh.indices.data(),
+                       static_cast<int>(mesh.indices.size()));
   }
 }
 

@@ -1,7 +1,8 @@
 #pragma once
-// The landscape as triangles for SDL_RenderGeometry: one mesh per polygon id, from the kernel's
-// exact triangulation (edgeland/kernel/triangulate.hpp), built for the polygons a change set
-// adds and dropped for those it removes, so an edit costs the meshes of what it changed.
+// The landscape as triangles for SDL_RenderGeometry: one mesh per polygon id, the game layer's
+// render mesh (edgeland/game/render_meshes.hpp: the kernel's exact triangulation over the
+// polygon's own vertices), built for the polygons a change set adds and dropped for those it
+// removes, so an edit costs the meshes of what it changed.
 // Pixels are floats: drawing only.
 #include <SDL.h>
 
@@ -47,7 +48,6 @@ class TerrainMesh {
   struct Mesh {
     std::vector<SDL_Vertex> vertices;  // the polygon's own vertices, in pixels, coloured
     std::vector<int> indices;          // three per triangle
-    std::vector<SDL_FPoint> outline;   // the closed boundary
   };
   void add(PolygonId id, Material material, const Polygon& polygon);
 

@@ -2,6 +2,8 @@
 #   1. session.script for 420 frames: the world's state hash equals that of `edgeland replay`
 #      of the edit log the session wrote (the library replaying the same edits); no body's centre
 #      was ever inside solid material after a step; every tool made its edit, undo and redo ran;
+#      the piece of rock the script digs a ring around was detached as debris, and no island was
+#      ever left in the landscape after an edit;
 #      bodies are still in the world; the screenshot is not blank (png_colours counts its
 #      colours, apart from the program that drew it).
 #   2. save_load.script: F5 then edits then F9: the loaded world's state hash is the saved one.
@@ -38,7 +40,7 @@ string(JSON native_hash GET "${native}" state_hash)
 string(JSON play_hash GET "${session}" state_hash)
 expect("state hash: edgeland-play ${play_hash}, edgeland replay of its log ${native_hash}"
   native_hash STREQUAL play_hash)
-foreach(key edits undos redos inside_solid refused bodies)
+foreach(key edits undos redos inside_solid refused bodies islands_detached islands_left)
   string(JSON ${key} GET "${session}" ${key})
 endforeach()
 expect("${inside_solid} body centres were inside solid material"
@@ -49,6 +51,10 @@ expect("undos ${undos}, redos ${redos} (want 2 and 1)"
   undos EQUAL 2 AND redos EQUAL 1)
 expect("${refused} edits refused"
   refused EQUAL 0)
+expect("${islands_detached} islands detached (the ring dug around a piece of rock makes one)"
+  islands_detached GREATER_EQUAL 1)
+expect("${islands_left} islands left in the landscape after edits settled"
+  islands_left EQUAL 0)
 expect("no bodies left in the world"
   bodies GREATER 0)
 execute_process(COMMAND "${PNG_COLOURS}" "${WORK}/session.script.png" OUTPUT_VARIABLE shot
