@@ -198,7 +198,9 @@ void App::settle(std::vector<Island> pending) {
     try {
       detached = detach(world, island);
     } catch (const StaleIsland&) {
-      continue;
+      continue;  // re-cut by another detach: the tracker reports it again
+    } catch (const Error&) {
+      continue;  // refused (a bug of the game layer): it stays in the landscape, counted as left
     }
     mesh_.apply(detached->changes);
     physics_.apply(world, detached->changes);

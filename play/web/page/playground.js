@@ -31,8 +31,7 @@ playground.ready = createEdgeland().then(module => {
     if (view && b[0] === box.x0 && b[1] === box.y0 && b[2] === box.x1 && b[3] === box.y1) return;
     box = {x0: b[0], y0: b[1], x1: b[2], y1: b[3]};
     view = new TerrainView(box, canvas.width, canvas.height, colour);
-    physics = new Physics(box, kUnitsPerMetre * (box.x1 - box.x0) / (kWorld.x1 - kWorld.x0),
-                          m => m !== 0 && m !== kWater);
+    physics = new Physics(box, kUnitsPerMetre * (box.x1 - box.x0) / (kWorld.x1 - kWorld.x0));
   }
   fitWorld();
   const frames = {count: 0, totalMs: 0, maxMs: 0, lastMs: 0};
@@ -118,7 +117,8 @@ playground.ready = createEdgeland().then(module => {
         `frame ${frames.lastMs.toFixed(2)} ms   edit ${s.lastEditMs.toFixed(2)} ms   ` +
         `update ${lastUpdate.ms.toFixed(2)} ms (-${lastUpdate.removed} +${lastUpdate.added})\n` +
         `polygons ${s.polygons}   vertices ${s.vertices}   cells ${s.cells}   ` +
-        `bodies ${s.bodies}   edits ${s.edits}   hash ${world.stateHash()}`;
+        `chains ${s.chains}   bodies ${s.bodies}   islands ${s.islandsDetached}   edits ${s.edits}   ` +
+        `hash ${world.stateHash()}`;
   }
 
   function loop() { frame(); requestAnimationFrame(loop); }

@@ -32,6 +32,17 @@ val to_js(const WebUpdate& u) {
   out.set("offsets", typed_array("Uint32Array", u.offsets));
   out.set("xy", typed_array("Int32Array", u.xy));
   out.set("cells", typed_array("Int32Array", u.cells));
+  out.set("chainsRemoved", typed_array("Float64Array", u.chains_removed));
+  out.set("chainIds", typed_array("Float64Array", u.chain_ids));
+  out.set("chainClosed", typed_array("Uint8Array", u.chain_closed));
+  out.set("chainOffsets", typed_array("Uint32Array", u.chain_offsets));
+  out.set("chainXy", typed_array("Int32Array", u.chain_xy));
+  out.set("chainGhosts", typed_array("Int32Array", u.chain_ghosts));
+  out.set("debrisCentroids", typed_array("Float64Array", u.debris_centroids));
+  out.set("debrisPieces", typed_array("Uint32Array", u.debris_pieces));
+  out.set("pieceMaterials", typed_array("Uint8Array", u.piece_materials));
+  out.set("pieceOffsets", typed_array("Uint32Array", u.piece_offsets));
+  out.set("pieceXy", typed_array("Float64Array", u.piece_xy));
   out.set("error", u.error);
   return out;
 }
@@ -80,6 +91,8 @@ class JsWorld {
     out.set("cells", static_cast<double>(s.cells));
     out.set("depth", static_cast<double>(s.depth));
     out.set("edits", static_cast<double>(s.edits));
+    out.set("chains", static_cast<double>(s.chains));
+    out.set("islandsDetached", static_cast<double>(s.islands_detached));
     out.set("lastEditMs", s.last_edit_ms);
     out.set("totalEditMs", s.total_edit_ms);
     return out;

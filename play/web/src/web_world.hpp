@@ -1,18 +1,29 @@
 #pragma once
-// The page's world: a Session (play/core) plus what the page needs to redraw and rebuild its
-// colliders, as flat arrays that cross into JavaScript in one copy each. Floating point appears
-// only in the ids' transport type and the timings, never in the world.
+// The page's world: a Session (play/core), the game layer's trackers (surface chains for the
+// colliders, debris islands) and what the page needs to redraw and rebuild its colliders, as flat
+// arrays that cross into JavaScript in one copy each. Floating point appears only in the ids'
+// transport type, the debris centroids and the timings, never in the world.
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
+#include "edgeland/game/islands.hpp"
+#include "edgeland/game/surface_tracker.hpp"
 #include "edgeland/play/session.hpp"
 
 namespace edgeland::play {
 
-// What changed, for the page: drop the polygons `removed` (or everything, when `reset`), then
-// add polygon k: id ids[k], material materials[k], vertices xy[2 offsets[k] ..
-// 2 offsets[k + 1]) as x, y pairs, counter-clockwise.
+// What changed, for the page (everything first dropped when `reset`):
+//  * polygons (drawing): drop `removed`, add polygon k: id ids[k], material materials[k],
+//    vertices xy[2 offsets[k] .. 2 offsets[k + 1]) as x, y pairs, counter-clockwise;
+//  * surface chains (colliders): drop `chains_removed`, add chain k: id chain_ids[k], points
+//    chain_xy[2 chain_offsets[k] .. 2 chain_offsets[k + 1]), closed chain_closed[k], ghosts
+//    chain_ghosts[4k .. 4k + 4) (previous x, y, next x, y), solid on the left;
+//  * debris (islands detached by this change): island k at centroid debris_centroids[2k, 2k + 1]
+//    with convex pieces debris_pieces[k] .. debris_pieces[k + 1], piece j of material
+//    piece_materials[j] and vertices piece_xy[2 piece_offsets[j] .. 2 piece_offsets[j + 1])
+//    relative to the centroid.
 struct WebUpdate {
   bool reset = false;
   std::vector<double> removed;  // polygon ids; exact in a double below 2^53
@@ -21,13 +32,35 @@ struct WebUpdate {
   std::vector<std::uint32_t> offsets{0};  // vertex offsets, one more than polygons
   std::vector<std::int32_t> xy;           // |c| <= kCoordBound < 2^31
   std::vector<std::int32_t> cells;        // the cells the edit made: x0, y0, x1, y1 each
-  std::string error;                      // a refused edit: the reason; nothing changed
+  std::vector<double> chains_removed, chain_ids;
+  std::vector<std::uint8_t> chain_closed;
+  std::vector<std::uint32_t> chain_offsets{0};
+  std::vector<std::int32_t> chain_xy, chain_ghosts;
+  std::vector<double> debris_centroids, piece_xy;
+  std::vector<std::uint32_t> debris_pieces{0}, piece_offsets{0};
+  std::vector<std::uint8_t> piece_materials;
+  std::string error;  // a refused edit: the reason; nothing changed
 };
 
 struct WebStats {
-  std::size_t polygons = 0, vertices = 0, cells = 0, depth = 0, edits = 0;
-  double last_edit_ms = 0;   // the last apply(), edit and update together
+  std::size_t polygons = 0, vertices = 0, cells = 0, depth = 0, edits = 0, chains = 0;
+  std::size_t islands_detached = 0;
+  double last_edit_ms = 0;   // the last apply(): the edit, the trackers and the update
   double total_edit_ms = 0;  // all apply() calls
+};
+
+// The changes of one user action composed (an edit, then the detaches it caused): a polygon or
+// chain added and removed again within it never reaches the page.
+struct PendingChanges {
+  std::vector<PolygonId> removed;
+  std::map<PolygonId, std::pair<Material, Polygon>> added;
+  std::vector<Box64> cells;
+  std::vector<ChainId> chains_removed;
+  std::map<ChainId, SurfaceChain> chains_added;
+  std::vector<DetachedIsland> debris;
+
+  void take(const ChangeSet& changes);
+  void take(const ChainUpdate& chains);
 };
 
 class WebWorld {
@@ -52,8 +85,13 @@ class WebWorld {
   const Landscape& landscape() const noexcept { return session_.world(); }
 
  private:
+  void settle(std::vector<Island> pending, PendingChanges& changes);
+  WebUpdate world_swapped();  // after undo, redo, load
+
   Session session_;
-  std::size_t edits_ = 0;
+  SurfaceTracker surface_;
+  IslandTracker islands_;
+  std::size_t edits_ = 0, islands_detached_ = 0;
   double last_edit_ms_ = 0, total_edit_ms_ = 0;
 };
 
