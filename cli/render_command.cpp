@@ -1,6 +1,8 @@
-// `edgeland render INPUT (--png FILE | --svg FILE) [--cells] [--no-legend] [--size PIXELS]`:
-// a picture of a landscape, from its edit log (replayed; landscape_log.hpp) or its save file
-// (Landscape::load), with a legend of the materials (landscape_picture.hpp).
+// `edgeland render INPUT (--png FILE | --svg FILE) [--cells] [--chains] [--pieces] [--islands]
+// [--no-legend] [--size PIXELS]`: a picture of a landscape, from its edit log (replayed;
+// landscape_log.hpp) or its save file (Landscape::load), with a legend of the materials
+// (landscape_picture.hpp) and optionally the game layer's surface chains, convex pieces and
+// debris islands drawn over it.
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -8,6 +10,9 @@
 #include <string>
 
 #include "commands.hpp"
+#include "edgeland/game/islands.hpp"
+#include "edgeland/game/surface_chains.hpp"
+#include "edgeland/kernel/convex_pieces.hpp"
 #include "input_text.hpp"
 #include "landscape_log.hpp"
 #include "landscape_picture.hpp"
@@ -19,6 +24,7 @@ struct RenderOptions {
   std::string input;
   std::string png, svg;
   bool cells = false;
+  bool chains = false, pieces = false, islands = false;
   bool no_legend = false;
   int size = 0;  // the world's long side in pixels; 0: as `replay --png` (256..2048)
 };
@@ -65,9 +71,43 @@ std::optional<Refusal> read_landscape(const std::string& text, std::optional<Lan
   return std::nullopt;
 }
 
-PictureOptions picture_options(const RenderOptions& options) {
+// The collision surface: per-cell chains (solid on the left), ghosts left out.
+PictureLayer chains_layer(const Landscape& landscape) {
+  PictureLayer layer{.label = "surface chains", .colour = {255, 64, 160}, .line_width = 2};
+  layer.closed = false;
+  for (const SurfaceChain& chain : surface_chains(landscape)) {
+    std::vector<Point64> path = chain.points;
+    if (chain.closed) path.push_back(path.front());
+    layer.paths.push_back(std::move(path));
+  }
+  return layer;
+}
+
+PictureLayer pieces_layer(const Landscape& landscape) {
+  PictureLayer layer{
+      .label = "convex pieces", .colour = {255, 255, 255}, .opacity = 0.45, .line_width = 0.75};
+  landscape.polygons_in(landscape.world(), [&](const PolygonView& v) {
+    for (Polygon& piece : convex_pieces(*v.polygon)) layer.paths.push_back(std::move(piece));
+    return true;
+  });
+  return layer;
+}
+
+PictureLayer islands_layer(const Landscape& landscape) {
+  PictureLayer layer{
+      .label = "debris islands", .colour = {40, 255, 120}, .line_width = 2.5, .fill = true};
+  for (const Island& island : find_islands(landscape)) {
+    for (const IslandPiece& piece : island.pieces) layer.paths.push_back(piece.polygon);
+  }
+  return layer;
+}
+
+PictureOptions picture_options(const RenderOptions& options, const Landscape& landscape) {
   PictureOptions picture{.cells = options.cells, .legend = !options.no_legend};
   if (options.size > 0) picture.min_long_side = picture.max_long_side = options.size;
+  if (options.pieces) picture.layers.push_back(pieces_layer(landscape));
+  if (options.islands) picture.layers.push_back(islands_layer(landscape));
+  if (options.chains) picture.layers.push_back(chains_layer(landscape));
   return picture;
 }
 
@@ -83,7 +123,7 @@ int run_render(const RenderOptions& options) {
       std::cerr << "edgeland render: " << options.input << ": " << refusal->message << '\n';
       return refusal->status;
     }
-    const PictureOptions picture = picture_options(options);
+    const PictureOptions picture = picture_options(options, *landscape);
     if (options.png.empty()) {
       write_landscape_svg(*landscape, options.svg, picture);
     } else {
@@ -116,6 +156,10 @@ Command add_render_command(CLI::App& parent) {
   app->add_option("--png", options->png, "Write the picture as PNG to this file");
   app->add_option("--svg", options->svg, "Write the picture as SVG to this file");
   app->add_flag("--cells", options->cells, "Draw the cell lines");
+  app->add_flag("--chains", options->chains,
+                "Draw the collision surface: the game layer's per-cell surface chains");
+  app->add_flag("--pieces", options->pieces, "Draw every polygon's convex pieces (8 vertices)");
+  app->add_flag("--islands", options->islands, "Fill the debris islands (solid held by nothing)");
   app->add_flag("--no-legend", options->no_legend, "Leave out the legend's column");
   app->add_option("--size", options->size, "The world's long side in pixels (default 256..2048)")
       ->check(CLI::Range(16, 16384));
