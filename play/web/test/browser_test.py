@@ -216,7 +216,8 @@ def run(args):
               f"{page_rate:.0f} edits/s with drawing and colliders, {wasm_rate:.0f} edits/s "
               f"in the module alone")
         print(f"  of which the page's view {timing['viewMs']:.0f} ms, its planck.js colliders "
-              f"{timing['collidersMs']:.0f} ms")
+              f"{timing['collidersMs']:.0f} ms; {result['stats']['chains']} surface chains, "
+              f"{result['stats']['islandsDetached']} islands detached")
         for name, page, ref in (("the page's log", page_replay, native),
                                 (f'`edgeland demo --edits {args.speed_edits}` (best of 3)', page_speed,
                                  native_speed)):
