@@ -104,8 +104,7 @@ bool on_world_border(const Box64& box, Side side, const Box64& world) {
 std::vector<SurfaceSegment> surface_segments(const CellPolygons& cell, const SolidBoundary& solid,
                                              const Box64& world, const SurfaceOptions& options) {
   std::vector<SurfaceSegment> out;
-  for (const BoundaryPiece& p : solid.free)
-    out.push_back({p.a, p.b, cell.own[p.polygon].material});
+  for (const BoundaryPiece& p : solid.free) out.push_back({p.a, p.b, cell.own[p.polygon].material});
   for (Side side : kSides) {
     if (on_world_border(cell.box, side, world)) {
       if (options.border_wall) add_wall(cell, side, solid, out);

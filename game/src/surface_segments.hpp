@@ -11,7 +11,7 @@
 namespace edgeland::game_detail {
 
 struct SurfaceSegment {
-  Point64 a, b;               // solid on the left
+  Point64 a, b;                // solid on the left
   Material material = kEmpty;  // that solid's material (0 for a wall)
 };
 

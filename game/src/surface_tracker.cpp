@@ -102,7 +102,8 @@ ChainUpdate SurfaceTracker::replace_cells(const Landscape& world, const std::vec
   // Stages 1-3 for the changed cells and their neighbours.
   std::map<Box64, CellSurface, BoxLess> computed;
   for (const BoxSet* set : {&changed, &near})
-    for (const Box64& box : *set) computed.emplace(box, game_detail::cell_surface(world, box, options_));
+    for (const Box64& box : *set)
+      computed.emplace(box, game_detail::cell_surface(world, box, options_));
   // Chains around a point: the new ones where computed, the kept ones elsewhere.
   const game_detail::ChainsAround around = [&](Point64 p, std::vector<const SurfaceChain*>& out) {
     for (const Box64& box : game_detail::cells_at(world, p)) {
@@ -115,7 +116,8 @@ ChainUpdate SurfaceTracker::replace_cells(const Landscape& world, const std::vec
   };
   const Box64& w = world.world();
   for (auto& [box, surface] : computed)
-    for (SurfaceChain& c : surface.chains) game_detail::set_ghosts(c, around, w, options_.border_wall);
+    for (SurfaceChain& c : surface.chains)
+      game_detail::set_ghosts(c, around, w, options_.border_wall);
   // Chains of the cells beyond: the same points, but a ghost may point into a changed cell.
   BoxSet inner = changed;
   inner.insert(near.begin(), near.end());

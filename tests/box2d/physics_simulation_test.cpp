@@ -52,8 +52,9 @@ TEST(PhysicsSimulation, BodiesStayOutOfSolidWhileTheTerrainChangesUnderThem) {
   for (int frame = 0; frame < 1200; ++frame) {
     scene.frame();
     const std::vector<Point64> inside = scene.centres_in_solid();
-    ASSERT_TRUE(inside.empty()) << "frame " << frame << ": a body's centre is in solid material at ("
-                                << inside.front().x << " " << inside.front().y << ")";
+    ASSERT_TRUE(inside.empty()) << "frame " << frame
+                                << ": a body's centre is in solid material at (" << inside.front().x
+                                << " " << inside.front().y << ")";
     const std::vector<Point64> outside = scene.centres_outside_world();
     ASSERT_TRUE(outside.empty()) << "frame " << frame << ": a body left the world at ("
                                  << outside.front().x << " " << outside.front().y << ")";
@@ -112,8 +113,7 @@ Slide slide_a_box(AddTerrain add_terrain) {
     out.largest_vy = std::max(out.largest_vy, std::abs(box->GetLinearVelocity().y));
     out.largest_dvx = std::max(out.largest_dvx, std::abs(box->GetLinearVelocity().x - 5));
   }
-  out.cell_lines_crossed =
-      static_cast<int>((box->GetPosition().x - start_x) * kUnitsPerMetre / 64);
+  out.cell_lines_crossed = static_cast<int>((box->GetPosition().x - start_x) * kUnitsPerMetre / 64);
   return out;
 }
 
@@ -125,7 +125,7 @@ TEST(PhysicsSimulation, ABoxSlidesAcrossCellLinesWithoutBumps) {
     return std::make_unique<box2d::Terrain>(world, land, options);
   });
   EXPECT_GE(slide.cell_lines_crossed, 6);
-  EXPECT_LT(slide.largest_vy, 1e-3f);  // measured: 2e-6
+  EXPECT_LT(slide.largest_vy, 1e-3f);   // measured: 2e-6
   EXPECT_LT(slide.largest_dvx, 1e-3f);  // measured: 0
 }
 

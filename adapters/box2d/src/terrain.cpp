@@ -75,8 +75,8 @@ void Terrain::add(ChainId id, const SurfaceChain& c) {
       for (std::size_t k = 0; k <= run.segments; ++k)
         v.push_back(to_b2(units_, c.points[(run.first + k) % n]));
       const std::size_t last = run.first + run.segments;  // not reduced: n - 1 ends an open chain
-      const Point64 prev = !c.closed && run.first == 0 ? c.ghost_prev
-                                                       : c.points[(run.first + n - 1) % n];
+      const Point64 prev =
+          !c.closed && run.first == 0 ? c.ghost_prev : c.points[(run.first + n - 1) % n];
       const Point64 next = !c.closed && last == n - 1 ? c.ghost_next : c.points[(last + 1) % n];
       shape.CreateChain(v.data(), static_cast<int32>(v.size()), to_b2(units_, prev),
                         to_b2(units_, next));
