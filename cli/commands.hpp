@@ -11,7 +11,8 @@
   X(validate) \
   X(clip) \
   X(replay) \
-  X(demo)
+  X(demo) \
+  X(export)
 // clang-format on
 
 namespace edgeland::cli {

@@ -17,11 +17,7 @@
 namespace edgeland::cli {
 namespace {
 
-struct Failure {
-  std::size_t line = 0;  // 0: not about one line (the final check)
-  std::string message;
-  int status = kExitOk;
-};
+using Failure = ReplayFailure;
 
 // An error's text on one line: internal errors carry the operands' WKT on lines of their own.
 std::string one_line(std::string text) {
@@ -140,26 +136,38 @@ int report_failure(const ReplayOptions& options, const Failure& failure) {
 
 }  // namespace
 
-int replay_landscape_log(std::string_view text, const ReplayOptions& options) {
+ReplayedWorld replay_world(std::string_view text, bool check) {
   const log::ParsedLandscapeLog parsed = log::parse_landscape_log(text);
+  ReplayedWorld out;
   if (!parsed.world) {
-    const Failure failure{parsed.error->line, parsed.error->what(), kExitUnreadable};
-    print_json({{"edits", 0}}, failure);
-    return report_failure(options, failure);
+    out.failure = Failure{parsed.error->line, parsed.error->what(), kExitUnreadable};
+    return out;
   }
-  Landscape landscape = log::make_landscape(*parsed.world);
-  landscape.set_checked(options.check);
-  Applied applied = apply_edits(landscape, parsed.edits);
-  std::optional<Failure> failure = applied.failure;
-  if (!failure && parsed.error) {
-    failure = Failure{parsed.error->line, parsed.error->what(), kExitUnreadable};
+  Landscape& landscape = out.world.emplace(log::make_landscape(*parsed.world));
+  landscape.set_checked(check);
+  const Applied applied = apply_edits(landscape, parsed.edits);
+  out.edits = applied.edits;
+  out.seconds = applied.seconds;
+  out.failure = applied.failure;
+  if (!out.failure && parsed.error) {
+    out.failure = Failure{parsed.error->line, parsed.error->what(), kExitUnreadable};
   }
-  if (options.check && (!failure || failure->status != kExitInternal)) {
-    if (std::optional<Failure> broken = final_check(landscape)) failure = broken;
+  if (check && (!out.failure || out.failure->status != kExitInternal)) {
+    if (std::optional<Failure> broken = final_check(landscape)) out.failure = broken;
   }
-  print_json(summary(landscape, applied), failure);
-  const int written = write_outputs(landscape, options);
-  if (failure) return report_failure(options, *failure);
+  return out;
+}
+
+int replay_landscape_log(std::string_view text, const ReplayOptions& options) {
+  const ReplayedWorld replayed = replay_world(text, options.check);
+  if (!replayed.world) {
+    print_json({{"edits", 0}}, replayed.failure);
+    return report_failure(options, *replayed.failure);
+  }
+  print_json(summary(*replayed.world, Applied{replayed.edits, replayed.seconds, std::nullopt}),
+             replayed.failure);
+  const int written = write_outputs(*replayed.world, options);
+  if (replayed.failure) return report_failure(options, *replayed.failure);
   return written;
 }
 

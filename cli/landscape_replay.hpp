@@ -9,11 +9,33 @@
 // "stopped_at_line" and "error" follow: the JSON then describes the world after the edits
 // before that line (which are kept). A log whose world line is bad has no world to describe:
 // its JSON is {"edits":0,"stopped_at_line":N,"error":"..."}.
+#include <optional>
+#include <string>
 #include <string_view>
 
+#include "edgeland/spatial/landscape.hpp"
 #include "replay_options.hpp"
 
 namespace edgeland::cli {
+
+// Why a replay stopped: a line (0: not about one line, the final check), a one-line message
+// naming it, and the exit status (command.hpp).
+struct ReplayFailure {
+  std::size_t line = 0;
+  std::string message;
+  int status = 0;
+};
+
+// A landscape log applied: the world after every edit before the first failure.
+struct ReplayedWorld {
+  std::optional<Landscape> world;  // empty when the log has no good world line
+  std::size_t edits = 0;           // edits applied
+  double seconds = 0;              // their time (reporting only)
+  std::optional<ReplayFailure> failure;
+};
+
+// Parses and applies a landscape log (checked mode with `check`, and then check() at the end).
+ReplayedWorld replay_world(std::string_view text, bool check);
 
 // Returns the exit status (command.hpp): 0; 2 for a bad line or a shape the kernel refuses (a
 // one-line message naming the line on stderr); 3 for an internal error of the landscape or of

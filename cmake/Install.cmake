@@ -1,14 +1,24 @@
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
-install(TARGETS edgeland_kernel edgeland_clip edgeland_spatial edgeland
+install(TARGETS edgeland_kernel edgeland_clip edgeland_spatial edgeland_game edgeland_engine edgeland
   EXPORT edgelandTargets
   ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
   LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
   RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
   INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
-install(DIRECTORY kernel/include/ clip/include/ spatial/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+install(DIRECTORY kernel/include/ clip/include/ spatial/include/ game/include/
+  adapters/engine/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(EXPORT edgelandTargets NAMESPACE edgeland:: DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/edgeland)
+# The Box2D adapter, when built, in an export set of its own: edgelandConfig.cmake loads it only
+# where Box2D is found, so a user without Box2D still finds the rest.
+if(TARGET edgeland_box2d)
+  install(TARGETS edgeland_box2d EXPORT edgelandBox2dTargets
+    ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
+  install(DIRECTORY adapters/box2d/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+  install(EXPORT edgelandBox2dTargets NAMESPACE edgeland::
+    DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/edgeland)
+endif()
 configure_package_config_file(cmake/edgelandConfig.cmake.in
   ${CMAKE_CURRENT_BINARY_DIR}/edgelandConfig.cmake
   INSTALL_DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/edgeland)

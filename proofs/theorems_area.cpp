@@ -48,13 +48,25 @@ void area_sum(Prover& p) {
   p.establish("|S_k + A| <= (k+m)*T", within(total.term(), (k.term() + m.term()) * T));
 }
 
+// supporting_line (supporting_line.cpp): the offset cross(d, p) of a line whose direction d is
+// a coordinate difference reduced by its gcd, so |d_x|, |d_y| <= 2 B.
+void line_offset(Prover& p) {
+  const std::string two_b = cpp_int(2 * kB).str(), minus_two_b = cpp_int(-2 * kB).str();
+  const SymInt dx = p.integer("dx", minus_two_b, two_b), dy = p.integer("dy", minus_two_b, two_b);
+  const SymInt px = p.coordinate("px"), py = p.coordinate("py");
+  formulas::line_offset<SymInt>(dx, dy, px, py);
+}
+
 }  // namespace
 
 std::vector<Theorem> area_theorems() {
   return {Theorem("area_sum_int128",
                   "twice_signed_area sums of cross(p_i, p_(i+1)) fit Int128 for up to N = " +
                       kMaxVertices.str() + " vertices in all",
-                  128, area_sum)};
+                  128, area_sum),
+          Theorem("line_offset_int128",
+                  "supporting_line's offset cross(d, p) fits Int128 for |d| <= 2 kCoordBound",
+                  128, line_offset)};
 }
 
 }  // namespace edgeland::proofs

@@ -2,6 +2,8 @@
 
 #include <string>
 
+#include "edgeland/spatial/tree_boxes.hpp"
+
 namespace edgeland::detail {
 namespace {
 
@@ -58,3 +60,12 @@ std::uint32_t child_holding(const Box64& parent, const std::vector<Box64>& child
 }
 
 }  // namespace edgeland::detail
+
+namespace edgeland {
+
+std::vector<Box64> child_boxes(const Box64& node, const LandscapeConfig& config) {
+  if (!detail::can_split(node, config)) return {};
+  return detail::split_boxes(node, config);
+}
+
+}  // namespace edgeland

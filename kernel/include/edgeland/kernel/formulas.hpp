@@ -19,6 +19,14 @@ constexpr W cross(W ax, W ay, W bx, W by) {
   return ax * by - ay * bx;
 }
 
+// The offset of the line through p with direction (dx, dy): cross(d, p), equal for every point
+// of the line (supporting_line.hpp). d is a coordinate difference reduced by its gcd, so |d|
+// stays within 2 kCoordBound per component (theorem line_offset_int128).
+template <class W>
+constexpr W line_offset(W dx, W dy, W px, W py) {
+  return cross(dx, dy, px, py);
+}
+
 // Twice the signed area of triangle abc: > 0 when c is left of a->b.
 template <class W>
 constexpr W orient(W ax, W ay, W bx, W by, W cx, W cy) {

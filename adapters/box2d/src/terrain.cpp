@@ -1,0 +1,144 @@
+// The Box2D 2.4 terrain (terrain.hpp): chains become b2ChainShape fixtures, one per run of one
+// material, with the run's neighbours (or the chain's ghosts) as ghost vertices.
+#include "edgeland/box2d/terrain.hpp"
+
+#include <vector>
+
+#include "edgeland/kernel/convex_pieces.hpp"
+
+namespace edgeland::box2d {
+namespace {
+
+// A part of a chain in one material: `segments` segments from point `first` on (modulo the
+// chain's size when it is closed).
+struct Run {
+  std::size_t first = 0, segments = 0;
+  Material material = kEmpty;
+};
+
+// The chain cut where its material changes. A closed chain's runs start where a material
+// begins; a closed chain of one material is one run of all its segments (a loop).
+std::vector<Run> runs_of(const SurfaceChain& c) {
+  const std::size_t count = c.materials.size();
+  std::size_t start = 0;
+  if (c.closed)
+    while (start < count && c.materials[start] == c.materials[(start + count - 1) % count]) ++start;
+  if (start == count) return {{0, count, c.materials[0]}};
+  std::vector<Run> out;
+  for (std::size_t k = 0; k < count;) {
+    const std::size_t s = (start + k) % count;
+    std::size_t length = 1;
+    while (k + length < count && c.materials[(s + length) % count] == c.materials[s]) ++length;
+    out.push_back({s, length, c.materials[s]});
+    k += length;
+  }
+  return out;
+}
+
+}  // namespace
+
+b2Vec2 to_b2(const EngineUnits& units, Point64 p) {
+  const EngineVec v = units.to_engine(p);
+  return {static_cast<float>(v.x), static_cast<float>(v.y)};
+}
+
+Terrain::Terrain(b2World& world, const Landscape& land, const TerrainOptions& options)
+    : world_(world),
+      units_(options.units),
+      friction_(options.friction),
+      tracker_(land, options.surface) {
+  if (units_.origin == Point64{}) units_.origin = land.world().min;
+  b2BodyDef def;
+  def.type = b2_staticBody;
+  body_ = world_.CreateBody(&def);
+  for (const auto& [id, chain] : tracker_.chains()) add(id, chain);
+}
+
+Terrain::~Terrain() { world_.DestroyBody(body_); }
+
+std::size_t Terrain::fixture_count() const {
+  std::size_t n = 0;
+  for (const auto& [id, list] : fixtures_) n += list.size();
+  return n;
+}
+
+void Terrain::add(ChainId id, const SurfaceChain& c) {
+  std::vector<b2Fixture*>& list = fixtures_[id];
+  const std::size_t n = c.points.size();
+  for (const Run& run : runs_of(c)) {
+    b2ChainShape shape;
+    std::vector<b2Vec2> v;
+    if (c.closed && run.segments == n) {
+      for (const Point64& p : c.points) v.push_back(to_b2(units_, p));
+      shape.CreateLoop(v.data(), static_cast<int32>(v.size()));
+    } else {
+      for (std::size_t k = 0; k <= run.segments; ++k)
+        v.push_back(to_b2(units_, c.points[(run.first + k) % n]));
+      const std::size_t last = run.first + run.segments;  // not reduced: n - 1 ends an open chain
+      const Point64 prev = !c.closed && run.first == 0 ? c.ghost_prev
+                                                       : c.points[(run.first + n - 1) % n];
+      const Point64 next = !c.closed && last == n - 1 ? c.ghost_next : c.points[(last + 1) % n];
+      shape.CreateChain(v.data(), static_cast<int32>(v.size()), to_b2(units_, prev),
+                        to_b2(units_, next));
+    }
+    b2FixtureDef def;
+    def.shape = &shape;
+    def.friction = friction_[run.material];
+    def.userData.pointer = run.material;
+    list.push_back(body_->CreateFixture(&def));
+  }
+}
+
+void Terrain::remove(ChainId id) {
+  const auto it = fixtures_.find(id);
+  if (it == fixtures_.end()) return;
+  for (b2Fixture* f : it->second) body_->DestroyFixture(f);
+  fixtures_.erase(it);
+}
+
+void Terrain::apply(const ChainUpdate& update) {
+  for (ChainId id : update.removed) remove(id);
+  for (const auto& [id, chain] : update.added) add(id, chain);
+}
+
+ChainUpdate Terrain::update(const Landscape& land, const ChangeSet& changes) {
+  ChainUpdate u = tracker_.update(land, changes);
+  apply(u);
+  return u;
+}
+
+ChainUpdate Terrain::resync(const Landscape& land) {
+  ChainUpdate u = tracker_.resync(land);
+  apply(u);
+  return u;
+}
+
+b2Body* make_debris_body(b2World& world, const DetachedIsland& island, const EngineUnits& units,
+                         const DebrisOptions& options) {
+  const EngineVec centre = units.to_engine(island.centroid);
+  b2BodyDef def;
+  def.type = b2_dynamicBody;
+  def.position.Set(static_cast<float>(centre.x), static_cast<float>(centre.y));
+  b2Body* body = world.CreateBody(&def);
+  for (const DetachedIsland::Region& region : island.regions)
+    for (const Polygon& polygon : region.polygons)
+      for (const Polygon& piece : convex_pieces(polygon, options.max_piece_vertices)) {
+        std::vector<b2Vec2> v;
+        for (const Point64& p : piece) {
+          const EngineVec e = units.to_engine(p);
+          v.push_back({static_cast<float>(e.x - centre.x), static_cast<float>(e.y - centre.y)});
+        }
+        b2PolygonShape shape;
+        shape.Set(v.data(), static_cast<int32>(v.size()));
+        b2FixtureDef fixture;
+        fixture.shape = &shape;
+        fixture.density = options.density;
+        fixture.friction = options.friction;
+        fixture.restitution = options.restitution;
+        fixture.userData.pointer = region.material;
+        body->CreateFixture(&fixture);
+      }
+  return body;
+}
+
+}  // namespace edgeland::box2d

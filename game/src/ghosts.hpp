@@ -1,0 +1,44 @@
+#pragma once
+// Stage 4 of the surface (game/README.md): where an open chain goes on. At its last point t the
+// surface continues with the chain, in any cell around t, whose first segment is the first one
+// clockwise from the way back (the face-tracing rule of chain_tracing.hpp, now over all cells;
+// the sweep stops only at the world border, unless that is a wall). Its second point is the
+// chain's next ghost. The previous ghost is found the same way counter-clockwise among chains
+// ending at the first point. A chain that meets the world border (no wall) goes on in a straight
+// line: the ghost continues its end segment.
+#include <functional>
+#include <unordered_map>
+#include <vector>
+
+#include "edgeland/game/surface_chains.hpp"
+
+namespace edgeland::game_detail {
+
+// Appends the open chains of the cells around p (every cell whose closed box holds p) that
+// start or end at p.
+using ChainsAround = std::function<void(Point64 p, std::vector<const SurfaceChain*>& out)>;
+
+// The chain that goes on from chain's last point / leads into its first point, if any.
+const SurfaceChain* following(const SurfaceChain& chain, const ChainsAround& around,
+                              const Box64& world, bool border_wall);
+const SurfaceChain* preceding(const SurfaceChain& chain, const ChainsAround& around,
+                              const Box64& world, bool border_wall);
+
+// Sets an open chain's ghosts from the chains around its ends (closed chains keep theirs).
+void set_ghosts(SurfaceChain& chain, const ChainsAround& around, const Box64& world,
+                bool border_wall);
+
+// Where a chain goes on straight: end + (end - before).
+Point64 straight_on(Point64 end, Point64 before);
+
+// An index of open chains by their end points, for a whole landscape's chains at once.
+class ChainEndIndex {
+ public:
+  void add(const SurfaceChain& chain);
+  ChainsAround lookup() const;
+
+ private:
+  std::unordered_map<Point64, std::vector<const SurfaceChain*>, Point64Hash> at_;
+};
+
+}  // namespace edgeland::game_detail

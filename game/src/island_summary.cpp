@@ -1,0 +1,140 @@
+#include "island_summary.hpp"
+
+#include <algorithm>
+
+namespace edgeland::game_detail {
+namespace {
+
+// splitmix64's finaliser: spreads ids so that sums of different sets rarely collide.
+std::uint64_t mixed(std::uint64_t x) {
+  x += 0x9E3779B97F4A7C15ull;
+  x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
+  x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
+  return x ^ (x >> 31);
+}
+
+// Groups 0..n-1 united into classes; keeps the classes that still have ports (renumbered in
+// order of first appearance along the sides) and closes the others.
+Summary finish(std::array<std::vector<Port>, 4> ports, std::vector<Group> groups, UnionFind& uf) {
+  for (std::uint32_t g = 0; g < groups.size(); ++g) {
+    const std::uint32_t root = uf.find(g);
+    if (root == g) continue;
+    groups[root].anchored = groups[root].anchored || groups[g].anchored;
+    groups[root].key.add(groups[g].key);
+  }
+  Summary out;
+  std::vector<std::uint32_t> renumbered(groups.size(), kNotSolid);
+  for (std::vector<Port>& side : ports)
+    for (Port& p : side) {
+      std::uint32_t& n = renumbered[uf.find(p.group)];
+      if (n == kNotSolid) {
+        n = static_cast<std::uint32_t>(out.groups.size());
+        out.groups.push_back(groups[uf.find(p.group)]);
+      }
+      p.group = n;
+    }
+  out.ports = std::move(ports);
+  for (std::uint32_t g = 0; g < groups.size(); ++g) {
+    const Group& root = groups[g];
+    if (uf.find(g) != g || renumbered[g] != kNotSolid || root.anchored) continue;
+    out.closed.push_back({root.key, root.representative, root.representative_cell});
+  }
+  return out;
+}
+
+// Unites the groups of two port lists facing each other across a line wherever they overlap
+// over a positive length (both ascending, disjoint within each).
+void match(std::span<const Port> a, std::uint32_t a_offset, std::span<const Port> b,
+           std::uint32_t b_offset, UnionFind& uf, std::size_t& matched) {
+  matched += a.size() + b.size();
+  std::size_t i = 0, j = 0;
+  while (i < a.size() && j < b.size()) {
+    if (std::min(a[i].hi, b[j].hi) > std::max(a[i].lo, b[j].lo))
+      uf.unite(a[i].group + a_offset, b[j].group + b_offset);
+    if (a[i].hi < b[j].hi)
+      ++i;
+    else
+      ++j;
+  }
+}
+
+constexpr std::size_t side_index(Side s) { return static_cast<std::size_t>(s); }
+
+// Whether child c's side `s` lies on the node's side `s`.
+bool on_node_side(const Box64& node, const Box64& c, Side s) {
+  switch (s) {
+    case Side::kBottom:
+      return c.min.y == node.min.y;
+    case Side::kRight:
+      return c.max.x == node.max.x;
+    case Side::kTop:
+      return c.max.y == node.max.y;
+    case Side::kLeft:
+      return c.min.x == node.min.x;
+  }
+  return false;
+}
+
+}  // namespace
+
+IslandKey IslandKey::of(PolygonId id) { return {id, 1, id, mixed(id)}; }
+
+void IslandKey::add(const IslandKey& o) {
+  min_id = std::min(min_id, o.min_id);
+  count += o.count;
+  sum += o.sum;
+  mix += o.mix;
+}
+
+Summary leaf_summary(const CellSolids& cell) {
+  std::vector<Group> groups(cell.groups);
+  for (std::uint32_t i = 0; i < cell.group_of.size(); ++i) {
+    const std::uint32_t g = cell.group_of[i];
+    if (g == kNotSolid) continue;
+    const IslandKey key = IslandKey::of(cell.polygons.own[i].id);
+    if (groups[g].key.count == 0) {
+      groups[g] = {cell.anchored[g], key, key.min_id, cell.polygons.box};
+    } else {
+      groups[g].key.add(key);
+    }
+  }
+  UnionFind uf(groups.size());
+  return finish(cell.ports, std::move(groups), uf);
+}
+
+Summary combine(const Box64& node, std::span<const Box64> children,
+                std::span<const Summary* const> summaries, std::size_t& matched) {
+  std::vector<std::uint32_t> offset(children.size());
+  std::vector<Group> groups;
+  for (std::size_t c = 0; c < children.size(); ++c) {
+    offset[c] = static_cast<std::uint32_t>(groups.size());
+    groups.insert(groups.end(), summaries[c]->groups.begin(), summaries[c]->groups.end());
+  }
+  UnionFind uf(groups.size());
+  for (std::size_t a = 0; a < children.size(); ++a)
+    for (std::size_t b = 0; b < children.size(); ++b) {
+      const Box64 &ba = children[a], &bb = children[b];
+      const Summary &sa = *summaries[a], &sb = *summaries[b];
+      if (ba.max.x == bb.min.x && ba.min.y < bb.max.y && bb.min.y < ba.max.y)
+        match(sa.ports[side_index(Side::kRight)], offset[a], sb.ports[side_index(Side::kLeft)],
+              offset[b], uf, matched);
+      if (ba.max.y == bb.min.y && ba.min.x < bb.max.x && bb.min.x < ba.max.x)
+        match(sa.ports[side_index(Side::kTop)], offset[a], sb.ports[side_index(Side::kBottom)],
+              offset[b], uf, matched);
+    }
+  std::array<std::vector<Port>, 4> ports;
+  for (Side s : kSides) {
+    std::vector<Port>& out = ports[side_index(s)];
+    for (std::size_t c = 0; c < children.size(); ++c) {
+      if (!on_node_side(node, children[c], s)) continue;
+      for (Port p : summaries[c]->ports[side_index(s)]) {
+        p.group += offset[c];
+        out.push_back(p);
+      }
+    }
+    std::sort(out.begin(), out.end(), [](const Port& l, const Port& r) { return l.lo < r.lo; });
+  }
+  return finish(std::move(ports), std::move(groups), uf);
+}
+
+}  // namespace edgeland::game_detail

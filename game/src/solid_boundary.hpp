@@ -1,0 +1,47 @@
+#pragma once
+// Stage 1 of the surface (game/README.md): where the boundary of a cell's solid polygons lies.
+// Each edge of a solid polygon is cut into pieces that lie
+//   * on another solid polygon of the cell, edge against edge in opposite directions: a CONTACT
+//     (the two polygons are one piece of solid there; nothing to export);
+//   * on one of the cell's sides: a PORT (what lies across depends on the neighbour cell);
+//   * elsewhere: FREE, which is surface (non-solid on the right).
+// Exact: pieces end at polygon vertices only (supporting_line.hpp groups collinear edges).
+#include <array>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "cell_polygons.hpp"
+
+namespace edgeland::game_detail {
+
+// A piece of a solid polygon's boundary, directed with the polygon on its left.
+struct BoundaryPiece {
+  Point64 a, b;
+  std::uint32_t polygon = 0;  // index in the cell's polygons
+};
+
+// The sides of a box in counter-clockwise order. A solid polygon's edge on a side runs along the
+// box counter-clockwise: +x on the bottom, +y on the right, -x on the top, -y on the left.
+enum class Side : std::uint8_t { kBottom, kRight, kTop, kLeft };
+inline constexpr std::array<Side, 4> kSides{Side::kBottom, Side::kRight, Side::kTop, Side::kLeft};
+
+struct SolidBoundary {
+  std::vector<BoundaryPiece> free;
+  std::array<std::vector<BoundaryPiece>, 4> ports;  // per Side, in counter-clockwise order
+  std::vector<std::array<std::uint32_t, 2>> contacts;  // polygon pairs, lower index first, unique
+};
+
+// O(n log n) for n edges of the cell's solid polygons.
+SolidBoundary solid_boundary(const Box64& box, std::span<const CellPolygon> polygons,
+                             const PhysicsMaterials& materials);
+
+// The side of `box` the segment a -> b lies on (both ends on one side line), if any.
+std::optional<Side> side_of(const Box64& box, Point64 a, Point64 b);
+
+// The coordinate that runs along a side (x on the bottom and top, y on the right and left).
+std::int64_t along(Side side, Point64 p);
+// The point of the side's line at coordinate `t` along it.
+Point64 point_on(const Box64& box, Side side, std::int64_t t);
+
+}  // namespace edgeland::game_detail
