@@ -27,7 +27,7 @@ BitmapWorld::BitmapWorld(const Box64& world, Material fill)
     : world_(world), width_(world.max.x - world.min.x), height_(world.max.y - world.min.y) {
   if (width_ <= 0 || height_ <= 0 || width_ > kMaxLocal || height_ > kMaxLocal)
     throw std::invalid_argument("bitmap world: unusable world box");
-  cells_.assign(static_cast<std::size_t>(width_ * height_), fill);
+  cells_.assign(static_cast<std::size_t>(width_ * height_), fill.value());
 }
 
 // The scanline y = row + 1/2 never meets a vertex (integer y), so every edge it crosses is
@@ -61,11 +61,11 @@ void BitmapWorld::collect_edges(const PolygonSet& shape) {
 // Even-odd spans between the sorted crossings of one row, clipped to the world.
 void BitmapWorld::fill_row(std::int64_t row, Material material) {
   std::sort(crossings_.begin(), crossings_.end());
-  Material* line = cells_.data() + row * width_;
+  std::uint8_t* line = cells_.data() + row * width_;
   for (std::size_t k = 0; k + 1 < crossings_.size(); k += 2) {
     const std::int64_t from = std::max<std::int64_t>(crossings_[k], 0);
     const std::int64_t to = std::min(crossings_[k + 1], width_);
-    if (from < to) std::memset(line + from, material, static_cast<std::size_t>(to - from));
+    if (from < to) std::memset(line + from, material.value(), static_cast<std::size_t>(to - from));
   }
 }
 
@@ -159,7 +159,7 @@ std::vector<Material> BitmapWorld::overlaps(const Box64& box) const {
   const std::int64_t y0 = std::max(box.min.y - world_.min.y, std::int64_t{0});
   const std::int64_t y1 = std::min(box.max.y - world_.min.y, height_);
   for (std::int64_t y = y0; y < y1; ++y) {
-    const Material* line = cells_.data() + y * width_;
+    const std::uint8_t* line = cells_.data() + y * width_;
     for (std::int64_t x = x0; x < x1; ++x) found[line[x]] = 1;
   }
   std::vector<Material> out;

@@ -60,9 +60,9 @@ class BitmapWorld {
   std::size_t bytes() const noexcept { return cells_.size(); }
   std::int64_t width() const noexcept { return width_; }
   std::int64_t height() const noexcept { return height_; }
-  // The squares of row `y` (local: 0 <= y < height()), width() bytes: what a game's contour
-  // tracer reads (bench/pixel_terrain.hpp).
-  const Material* row(std::int64_t y) const noexcept {
+  // The material numbers of row `y` (local: 0 <= y < height()), width() bytes: what a game's
+  // contour tracer reads (bench/pixel_terrain.hpp).
+  const std::uint8_t* row(std::int64_t y) const noexcept {
     return cells_.data() + static_cast<std::size_t>(y * width_);
   }
 
@@ -83,7 +83,7 @@ class BitmapWorld {
 
   Box64 world_;
   std::int64_t width_ = 0, height_ = 0;
-  std::vector<Material> cells_;
+  std::vector<std::uint8_t> cells_;  // material numbers
   // Scratch of paint(), kept to spare the allocations as a game would.
   std::vector<ScanEdge> edges_;
   std::vector<std::int64_t> crossings_;

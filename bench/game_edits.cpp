@@ -146,7 +146,7 @@ struct PixelSide {
   static PixelTerrain::Options options() {
     PixelTerrain::Options o;
     o.solid.fill(true);
-    o.solid[kEmpty] = false;
+    o.solid[kEmpty.value()] = false;
     o.units_per_metre = kUnitsPerMetre;
     return o;
   }

@@ -24,8 +24,7 @@ std::size_t demo_edits() { return env_count("EDGELAND_GAME_DEMO_EDITS", 6000); }
 
 SurfaceOptions demo_surface() {
   SurfaceOptions o;
-  o.materials.solid[cli::demo::kWater] = false;
-  o.materials.anchored[cli::demo::kBedrock] = true;
+  o.materials.set_solid(cli::demo::kWater, false).set_anchored(cli::demo::kBedrock);
   return o;
 }
 

@@ -176,7 +176,8 @@ template <class W>
 QueryRun run_world(Query q, const W& w) {
   if (q == Query::kMaterialAt || q == Query::kMaterialAtWalk) {
     const std::vector<Point64>& p = points(q);
-    return run_batches(p.size(), [&](std::size_t i) { return double(w.material_at(p[i])); });
+    return run_batches(p.size(),
+                       [&](std::size_t i) { return double(w.material_at(p[i]).value()); });
   }
   if (q == Query::kOverlaps)
     return run_batches(boxes().size(),

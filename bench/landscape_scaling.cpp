@@ -73,8 +73,8 @@ void time_queries(Scaled& s, const World& reference, std::int64_t side) {
   std::size_t sink = 0;
   std::visit(
       [&](const auto& w) {
-        s.point_seconds =
-            batch_seconds(points.size(), [&](std::size_t i) { sink += w.material_at(points[i]); });
+        s.point_seconds = batch_seconds(
+            points.size(), [&](std::size_t i) { sink += w.material_at(points[i]).value(); });
         s.ray_seconds = batch_seconds(ray_set.size(), [&](std::size_t i) {
           sink += w.raycast(ray_set[i].first, ray_set[i].second).has_value();
         });

@@ -75,7 +75,7 @@ void PixelTerrain::trace_chunk(const BitmapWorld& bitmap, std::int64_t cx, std::
       std::fill(line, line + kChunk, 0);
       continue;
     }
-    const Material* squares = bitmap.row(y0 + y) + x0;
+    const std::uint8_t* squares = bitmap.row(y0 + y) + x0;
     for (std::int64_t x = 0; x < w; ++x) line[x] = mask_value_[squares[x]];
     std::fill(line + w, line + kChunk, 0);
   }

@@ -33,7 +33,7 @@ class PixelTerrain {
   static constexpr std::int64_t kChunk = 64;
 
   struct Options {
-    std::array<bool, kMaterialCount> solid{};  // squares of these materials are solid
+    std::array<bool, kMaterialCount> solid{};  // by Material::value(): these squares are solid
     double units_per_metre = 32;               // bitmap squares per Box2D metre
     double epsilon = 1.0;                      // approxPolyDP's tolerance, in squares
     std::int64_t body_grid = 16;               // regions per side, a static body each

@@ -10,9 +10,9 @@
 
 #include "commands.hpp"
 #include "edgeland/clip/clip.hpp"
+#include "edgeland/io/wkt_reader.hpp"
 #include "edgeland/kernel/wkt_writer.hpp"
 #include "input_text.hpp"
-#include "wkt_reader.hpp"
 
 namespace edgeland::cli {
 namespace {

@@ -3,9 +3,9 @@
 // applies one edit with it, counting the edits.
 #include <cstddef>
 
+#include "edgeland/io/landscape_log.hpp"
 #include "edgeland/kernel/polygon.hpp"
 #include "edgeland/spatial/landscape.hpp"
-#include "landscape_log.hpp"
 
 namespace edgeland::cli::demo {
 

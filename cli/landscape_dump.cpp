@@ -9,7 +9,7 @@ namespace edgeland::cli {
 std::string landscape_dump(const Landscape& landscape) {
   std::array<PolygonSet, kMaterialCount> by_material;
   landscape.polygons_in(landscape.world(), [&](const PolygonView& v) {
-    by_material[v.material].push_back(*v.polygon);
+    by_material[v.material.value()].push_back(*v.polygon);
     return true;
   });
   std::string out;

@@ -1,8 +1,8 @@
 // `edgeland replay LOG [--check] [--dump FILE] [--png FILE.png] [--cells]`: replays a log and
 // prints one JSON object on one line. The first command tells the two log kinds apart: `world`
-// starts a landscape log (landscape_log.hpp, replayed by landscape_replay.cpp, whose header
-// describes its JSON); anything else is a continuous-clip log (edit_log.hpp), applied here to
-// an initially empty set:
+// starts a landscape log (edgeland/io/landscape_log.hpp, replayed by
+// edgeland/io/landscape_replay.hpp, whose header describes its JSON); anything else is a
+// continuous-clip log (edgeland/io/clip_log.hpp), applied here to an initially empty set:
 //   {"steps":N,"polygons":P,"vertices":V,"twice_area":"A","state_hash":"H","steps_per_second":S}
 // plus, when the log could not be applied to the end, "stopped_at_line" and "error": the JSON
 // then describes the state after the steps before that line (which are kept).
@@ -18,12 +18,12 @@
 #include <string_view>
 
 #include "commands.hpp"
+#include "edgeland/io/clip_log.hpp"
+#include "edgeland/io/landscape_log.hpp"
 #include "edgeland/kernel/area.hpp"
 #include "edgeland/kernel/int128.hpp"
 #include "edgeland/kernel/wkt_writer.hpp"
-#include "edit_log.hpp"
 #include "input_text.hpp"
-#include "landscape_log.hpp"
 #include "landscape_replay.hpp"
 #include "replay_options.hpp"
 

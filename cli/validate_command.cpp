@@ -6,10 +6,10 @@
 #include <string>
 
 #include "commands.hpp"
+#include "edgeland/io/wkt_reader.hpp"
 #include "edgeland/kernel/polygon.hpp"
 #include "edgeland/kernel/validate.hpp"
 #include "input_text.hpp"
-#include "wkt_reader.hpp"
 
 namespace edgeland::cli {
 namespace {

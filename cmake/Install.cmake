@@ -1,13 +1,14 @@
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
-install(TARGETS edgeland_kernel edgeland_clip edgeland_spatial edgeland_game edgeland_engine edgeland
+install(TARGETS edgeland_kernel edgeland_clip edgeland_spatial edgeland_io edgeland_game edgeland_engine
+  edgeland
   EXPORT edgelandTargets
   ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
   LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
   RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
   INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
-install(DIRECTORY kernel/include/ clip/include/ spatial/include/ game/include/
+install(DIRECTORY kernel/include/ clip/include/ spatial/include/ io/include/ game/include/
   adapters/engine/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(EXPORT edgelandTargets NAMESPACE edgeland:: DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/edgeland)
 # The Box2D adapter, when built, in an export set of its own: edgelandConfig.cmake loads it only

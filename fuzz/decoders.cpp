@@ -11,6 +11,8 @@
 #include <vector>
 
 #include "edgeland/clip/clip.hpp"
+#include "edgeland/io/clip_log.hpp"
+#include "edgeland/io/wkt_reader.hpp"
 #include "edgeland/kernel/angle.hpp"
 #include "edgeland/kernel/area.hpp"
 #include "edgeland/kernel/canonical_form.hpp"
@@ -20,8 +22,6 @@
 #include "edgeland/kernel/predicates.hpp"
 #include "edgeland/kernel/validate.hpp"
 #include "edgeland/kernel/wkt_writer.hpp"
-#include "edit_log.hpp"
-#include "wkt_reader.hpp"
 
 namespace edgeland::fuzz {
 namespace {
@@ -792,6 +792,7 @@ Runner runner_for(std::string_view target) {
   if (target == "parse") return run_parse;
   if (target == "edit_sequence") return run_edit_sequence;
   if (target == "load") return run_load;
+  if (target == "polygon_pieces") return run_polygon_pieces;
   if (target == "game_sequence") return run_game_sequence;
   return nullptr;
 }

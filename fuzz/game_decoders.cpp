@@ -30,9 +30,9 @@ using test::IdSet;
 // wall or not.
 SurfaceOptions decode_options(Provider& in) {
   SurfaceOptions o;
-  for (Material m = 1; m <= 4; ++m) {
-    o.materials.solid[m] = in.ConsumeIntegralInRange(0, 3) != 0;
-    o.materials.anchored[m] = in.ConsumeIntegralInRange(0, 3) == 0;
+  for (int m = 1; m <= 4; ++m) {
+    o.materials.set_solid(m, in.ConsumeIntegralInRange(0, 3) != 0);
+    o.materials.set_anchored(m, in.ConsumeIntegralInRange(0, 3) == 0);
   }
   o.border_wall = in.ConsumeBool();
   return o;
@@ -40,8 +40,8 @@ SurfaceOptions decode_options(Provider& in) {
 
 std::string options_text(const SurfaceOptions& o) {
   std::string solid, anchored;
-  for (Material m = 1; m <= 4; ++m) {
-    if (o.materials.solid[m]) solid += std::to_string(m) + " ";
+  for (int m = 1; m <= 4; ++m) {
+    if (o.materials.is_solid(m)) solid += std::to_string(m) + " ";
     if (o.materials.anchored[m]) anchored += std::to_string(m) + " ";
   }
   return "solid {" + solid + "} anchored {" + anchored + "} border wall " +

@@ -139,8 +139,8 @@ Point64 EditDecoder::landscape_vertex(const Landscape& l) {
 DecodedEdit next_edit(Provider& in, EditDecoder& decode, const Landscape& l) {
   DecodedEdit e;
   e.kind = in.ConsumeIntegralInRange(0, 3);
-  e.a = in.ConsumeIntegralInRange<Material>(e.kind == 3 ? 0 : 1, 4);
-  e.b = in.ConsumeIntegralInRange<Material>(0, 4);
+  e.a = in.ConsumeIntegralInRange<std::uint8_t>(e.kind == 3 ? 0 : 1, 4);
+  e.b = in.ConsumeIntegralInRange<std::uint8_t>(0, 4);
   e.shape = decode.shape(l);
   e.snapshot = in.ConsumeBool();
   return e;
@@ -148,7 +148,7 @@ DecodedEdit next_edit(Provider& in, EditDecoder& decode, const Landscape& l) {
 
 Landscape decode_world(Provider& in, EditDecoder& decode) {
   const Box64 world = decode.world();
-  const Material fill = in.ConsumeIntegralInRange<Material>(0, 3);
+  const Material fill = in.ConsumeIntegralInRange<std::uint8_t>(0, 3);
   return Landscape(world, fill, decode.config(), kLimits);
 }
 
@@ -158,11 +158,12 @@ std::string edit_text(const DecodedEdit& d) {
     case 0:
       return "carve " + wkt;
     case 1:
-      return "fill " + std::to_string(d.a) + " " + wkt;
+      return "fill " + std::to_string(d.a.value()) + " " + wkt;
     case 2:
-      return "fill_empty " + std::to_string(d.a) + " " + wkt;
+      return "fill_empty " + std::to_string(d.a.value()) + " " + wkt;
     default:
-      return "replace " + std::to_string(d.a) + " " + std::to_string(d.b) + " " + wkt;
+      return "replace " + std::to_string(d.a.value()) + " " + std::to_string(d.b.value()) + " " +
+             wkt;
   }
 }
 

@@ -5,7 +5,7 @@
 // percent of a small operation.
 #include <cstdint>
 
-#include "edgeland/clip/clip.hpp"
+#include "edgeland/clip/types.hpp"
 #include "labeling.hpp"
 
 namespace edgeland::detail {

@@ -8,7 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "edgeland/clip/clip.hpp"
+#include "edgeland/clip/errors.hpp"
+#include "edgeland/clip/types.hpp"
+#include "edgeland/clip/valid_set.hpp"
 #include "edgeland/kernel/canonical_form.hpp"
 #include "face_label.hpp"
 #include "input_edges.hpp"

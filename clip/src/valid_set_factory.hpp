@@ -3,7 +3,7 @@
 // output (valid by clip.hpp's guarantee, re-checked in checked mode).
 #include <utility>
 
-#include "edgeland/clip/clip.hpp"
+#include "edgeland/clip/valid_set.hpp"
 
 namespace edgeland {
 

@@ -8,7 +8,8 @@
 #include <vector>
 
 #include "edgeland/kernel/bbox.hpp"
-#include "edgeland/spatial/landscape.hpp"
+#include "edgeland/spatial/errors.hpp"
+#include "edgeland/spatial/types.hpp"
 
 namespace edgeland::detail {
 

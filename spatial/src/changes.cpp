@@ -29,7 +29,7 @@ void walk(const NodePtr& o, const NodePtr& n, Changes& out) {
 }
 
 struct Seen {
-  const Landscape::Node* cell;
+  const Node* cell;
   std::size_t index;
 };
 
@@ -56,14 +56,14 @@ ChangeSet change_set(const Changes& changes) {
   for (const auto& [id, seen] : before) {
     if (after.count(id)) continue;
     out.removed.push_back(id);
-    const auto m = static_cast<Material>(seen.cell->content.labels[seen.index]);
+    const auto m = seen.cell->material(seen.index);
     const Int128 a = twice_signed_area(seen.cell->polygon_set()[seen.index]);
     delta[m] -= a;
     delta[kEmpty] += a;
   }
   for (const auto& [id, seen] : after) {
     if (before.count(id)) continue;
-    const auto m = static_cast<Material>(seen.cell->content.labels[seen.index]);
+    const auto m = seen.cell->material(seen.index);
     const Polygon& p = seen.cell->polygon_set()[seen.index];
     out.added.push_back({id, m, p, seen.cell->box});
     const Int128 a = twice_signed_area(p);

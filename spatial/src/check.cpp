@@ -12,7 +12,7 @@
 namespace edgeland::detail {
 namespace {
 
-std::string name(const Landscape::Node& n) {
+std::string name(const Node& n) {
   std::ostringstream s;
   s << (n.is_cell() ? "cell (" : "node (") << n.box.min.x << ' ' << n.box.min.y << ' '
     << n.box.max.x << ' ' << n.box.max.y << ")";
@@ -23,13 +23,13 @@ bool inside(const Box64& inner, const Box64& outer) {
   return outer.contains(inner.min) && outer.contains(inner.max);
 }
 
-void check_parallel_arrays(const Landscape::Node& c, std::vector<std::string>& problems) {
+void check_parallel_arrays(const Node& c, std::vector<std::string>& problems) {
   const std::size_t n = c.polygon_set().size();
   if (c.content.labels.size() != n || c.ids.size() != n || c.boxes.size() != n)
     problems.push_back(name(c) + ": labels, ids or boxes do not match the polygons");
 }
 
-void check_polygons(const Landscape::Node& c, std::vector<std::string>& problems) {
+void check_polygons(const Node& c, std::vector<std::string>& problems) {
   const PolygonSet& polys = c.polygon_set();
   const ValidationReport v = validate(polys, 1);
   if (!v.ok()) problems.push_back(name(c) + ": invalid: " + v.violations.front().describe());
@@ -45,14 +45,13 @@ void check_polygons(const Landscape::Node& c, std::vector<std::string>& problems
   }
 }
 
-void check_canonical(const Landscape::Node& c, std::vector<std::string>& problems) {
+void check_canonical(const Node& c, std::vector<std::string>& problems) {
   const LabeledClipResult again = relabel(c.content.set, c.content.labels, ValidSet(), c.box, {});
   if (again.regions.labels != c.content.labels || again.regions.set.polygons() != c.polygon_set())
     problems.push_back(name(c) + ": content is not the canonical decomposition of its regions");
 }
 
-void check_sums(const Landscape::Node& n, const NodePtr& rebuilt,
-                std::vector<std::string>& problems) {
+void check_sums(const Node& n, const NodePtr& rebuilt, std::vector<std::string>& problems) {
   if (rebuilt->polygons != n.polygons || rebuilt->vertices != n.vertices ||
       rebuilt->cells != n.cells || rebuilt->deepest != n.deepest || rebuilt->hash != n.hash ||
       rebuilt->cut_x != n.cut_x || rebuilt->cut_y != n.cut_y || rebuilt->x_line != n.x_line ||
@@ -62,8 +61,7 @@ void check_sums(const Landscape::Node& n, const NodePtr& rebuilt,
 
 }  // namespace
 
-void check_cell(const Landscape::Node& c, const LandscapeConfig& config,
-                std::vector<std::string>& problems) {
+void check_cell(const Node& c, const LandscapeConfig& config, std::vector<std::string>& problems) {
   const std::size_t before = problems.size();
   check_parallel_arrays(c, problems);
   if (problems.size() != before) return;
@@ -75,8 +73,7 @@ void check_cell(const Landscape::Node& c, const LandscapeConfig& config,
   check_sums(c, make_cell(c.box, c.depth, c.content, c.ids), problems);
 }
 
-void check_inner(const Landscape::Node& n, const LandscapeConfig& config,
-                 std::vector<std::string>& problems) {
+void check_inner(const Node& n, const LandscapeConfig& config, std::vector<std::string>& problems) {
   if (!can_split(n.box, config)) {
     problems.push_back(name(n) + ": split although it may not");
     return;
@@ -106,8 +103,8 @@ void check_inner(const Landscape::Node& n, const LandscapeConfig& config,
 std::string check_edit(const Landscape& l, const NodePtr& new_root, const Changes& changes,
                        PolygonId old_next_id) {
   std::vector<std::string> problems;
-  const LandscapeConfig& config = LandscapeAccess::config(l);
-  if (new_root->box != LandscapeAccess::world(l) || new_root->depth != 0)
+  const LandscapeConfig& config = LandscapeAccess::state(l).config;
+  if (new_root->box != LandscapeAccess::state(l).world || new_root->depth != 0)
     problems.push_back("the root is not the world");
   for (const NodePtr& c : changes.new_cells) check_cell(*c, config, problems);
   for (const NodePtr& n : changes.new_inner) check_inner(*n, config, problems);
@@ -130,7 +127,7 @@ namespace {
 
 void check_subtree(const NodePtr& n, const LandscapeConfig& config,
                    std::vector<std::string>& problems, std::set<PolygonId>& ids,
-                   Landscape::AreaTable& areas) {
+                   detail::AreaTable& areas) {
   if (n->is_cell()) {
     check_cell(*n, config, problems);
     for (std::size_t i = 0; i < n->ids.size(); ++i) {
@@ -150,16 +147,16 @@ void check_subtree(const NodePtr& n, const LandscapeConfig& config,
 
 LandscapeReport check_all(const Landscape& l) {
   LandscapeReport report;
-  const NodePtr& root = LandscapeAccess::root(l);
-  if (root->box != LandscapeAccess::world(l) || root->depth != 0)
+  const NodePtr& root = LandscapeAccess::state(l).root;
+  if (root->box != LandscapeAccess::state(l).world || root->depth != 0)
     report.problems.push_back("the root is not the world");
   std::set<PolygonId> ids;
-  Landscape::AreaTable areas{};
-  check_subtree(root, LandscapeAccess::config(l), report.problems, ids, areas);
-  if (!ids.empty() && *ids.rbegin() >= LandscapeAccess::next_id(l))
+  detail::AreaTable areas{};
+  check_subtree(root, LandscapeAccess::state(l).config, report.problems, ids, areas);
+  if (!ids.empty() && *ids.rbegin() >= LandscapeAccess::state(l).next_id)
     report.problems.push_back("an id is not below the next id");
   for (std::size_t m = 1; m < kMaterialCount; ++m)
-    if (areas[m] != LandscapeAccess::areas(l)[m])
+    if (areas[m] != (*LandscapeAccess::state(l).areas)[m])
       report.problems.push_back("the area of material " + std::to_string(m) +
                                 " is not the sum of its polygons");
   return report;

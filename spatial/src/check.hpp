@@ -5,15 +5,16 @@
 #include <vector>
 
 #include "changes.hpp"
+#include "edgeland/spatial/landscape.hpp"
 #include "node.hpp"
 
 namespace edgeland::detail {
 
 // Problems of one cell (I1, I2, I3, I5 and its own sums), each a line naming the cell.
-void check_cell(const Landscape::Node& cell, const LandscapeConfig& config,
+void check_cell(const Node& cell, const LandscapeConfig& config,
                 std::vector<std::string>& problems);
 // Problems of one inner node (I4, I7, I8) with respect to its children.
-void check_inner(const Landscape::Node& node, const LandscapeConfig& config,
+void check_inner(const Node& node, const LandscapeConfig& config,
                  std::vector<std::string>& problems);
 
 // What is wrong with the tree an edit built (empty: nothing). old_next_id: the landscape's next

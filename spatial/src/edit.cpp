@@ -11,6 +11,7 @@
 #include "check.hpp"
 #include "edgeland/kernel/wkt_writer.hpp"
 #include "ids.hpp"
+#include "landscape_access.hpp"
 #include "log_line.hpp"
 
 namespace edgeland {
@@ -36,16 +37,20 @@ std::size_t vertices_of(const LabeledSet& s) {
 }  // namespace
 
 LandscapeEditor::LandscapeEditor(const Landscape& l, const ValidSet& shape, EditTable table)
-    : l_(l), shape_(shape), table_(table), next_id_(l.next_id_) {
+    : l_(l),
+      s_(LandscapeAccess::state(l)),
+      shape_(shape),
+      table_(std::move(table)),
+      next_id_(s_.next_id) {
   if (const auto b = bounding_box(shape.polygons())) shape_box_ = *b;
 }
 
 void LandscapeEditor::grow(std::size_t before, std::size_t after) {
   if (after <= before) return;
   growth_ += after - before;
-  const std::size_t could_be = l_.root_->vertices + growth_;
-  if (could_be > l_.limits_.max_vertices)
-    throw LimitExceeded(LimitExceeded::Limit::kVertices, l_.limits_.max_vertices, could_be);
+  const std::size_t could_be = s_.root->vertices + growth_;
+  if (could_be > s_.limits.max_vertices)
+    throw LimitExceeded(LimitExceeded::Limit::kVertices, s_.limits.max_vertices, could_be);
 }
 
 LandscapeEditor::Draft LandscapeEditor::Draft::keep(const NodePtr& node) {
@@ -85,7 +90,7 @@ LandscapeEditor::Draft LandscapeEditor::edit_cell(const NodePtr& cell) {
 }
 
 LandscapeEditor::Draft LandscapeEditor::split_if_needed(Draft cell) {
-  const LandscapeConfig& config = l_.config_;
+  const LandscapeConfig& config = s_.config;
   if (config.grid_depth >= 0 || cell.vertices <= config.edge_cap ||
       !detail::can_split(cell.box, config))
     return cell;
@@ -107,7 +112,7 @@ LandscapeEditor::Draft LandscapeEditor::merge_if_small(const NodePtr& old,
   Draft inner = Draft::inner(old->box, old->depth, std::move(children));
   const bool all_cells = std::all_of(inner.children.begin(), inner.children.end(),
                                      [](const Draft& c) { return c.is_cell(); });
-  if (l_.config_.grid_depth >= 0 || inner.vertices > l_.config_.merge_below || !all_cells)
+  if (s_.config.grid_depth >= 0 || inner.vertices > s_.config.merge_below || !all_cells)
     return inner;
   PolygonSet all;
   std::vector<RegionLabel> labels;
@@ -165,14 +170,14 @@ ChangeSet LandscapeEditor::run(Landscape& target, const std::function<std::strin
     for (const Polygon& p : shape_.polygons()) n += p.size();
     return n;
   }();
-  if (shape_vertices > l_.limits_.max_shape_vertices)
-    throw LimitExceeded(LimitExceeded::Limit::kShapeVertices, l_.limits_.max_shape_vertices,
+  if (shape_vertices > s_.limits.max_shape_vertices)
+    throw LimitExceeded(LimitExceeded::Limit::kShapeVertices, s_.limits.max_shape_vertices,
                         shape_vertices);
-  NodePtr root = l_.root_;
+  NodePtr root = s_.root;
   try {
-    if (!shape_.polygons().empty() && open_overlap(l_.world_, shape_box_)) {
-      Draft draft = rebuild(l_.root_);
-      root = finish(draft, l_.root_);
+    if (!shape_.polygons().empty() && open_overlap(s_.world, shape_box_)) {
+      Draft draft = rebuild(s_.root);
+      root = finish(draft, s_.root);
     }
   } catch (const InternalError& e) {
     throw detail::internal_error(
@@ -181,23 +186,25 @@ ChangeSet LandscapeEditor::run(Landscape& target, const std::function<std::strin
   } catch (const InvalidOverlay& e) {
     throw detail::internal_error(l_, e.what(), log_line());
   }
-  if (root->vertices > l_.limits_.max_vertices)
-    throw LimitExceeded(LimitExceeded::Limit::kVertices, l_.limits_.max_vertices, root->vertices);
-  detail::Changes changes = detail::diff(l_.root_, root);
-  if (l_.checked_) {
-    const std::string problem = detail::check_edit(l_, root, changes, l_.next_id_);
+  if (root->vertices > s_.limits.max_vertices)
+    throw LimitExceeded(LimitExceeded::Limit::kVertices, s_.limits.max_vertices, root->vertices);
+  detail::Changes changes = detail::diff(s_.root, root);
+  if (s_.checked) {
+    const std::string problem = detail::check_edit(l_, root, changes, s_.next_id);
     if (!problem.empty()) throw detail::internal_error(l_, problem, log_line());
   }
   ChangeSet out = detail::change_set(changes);
-  // Commit: nothing above may have touched `target`.
-  auto areas = std::make_shared<Landscape::AreaTable>(*l_.areas_);
+  // The next state, committed by one assignment: nothing before it touches `target`.
+  detail::LandscapeState next = s_;
+  auto areas = std::make_shared<detail::AreaTable>(*s_.areas);
   for (const auto& [m, delta] : out.twice_area_delta)
-    if (m != kEmpty) (*areas)[m] += delta;
-  target.root_ = std::move(root);
-  target.areas_ = std::move(areas);
-  target.next_id_ = next_id_;
-  ++target.edits_;
-  if (target.logging_) detail::append_log(target, log_line());
+    if (m != kEmpty) (*areas)[m.value()] += delta;
+  next.root = std::move(root);
+  next.areas = std::move(areas);
+  next.next_id = next_id_;
+  ++next.edits;
+  if (next.logging) detail::append_log(next, log_line());
+  LandscapeAccess::commit(target, std::move(next));
   return out;
 }
 

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "edgeland/clip/relabel.hpp"
+#include "edgeland/spatial/landscape.hpp"
 #include "ids.hpp"
 #include "node.hpp"
 
@@ -14,12 +15,14 @@ namespace edgeland {
 struct EditTable {
   std::vector<RegionLabel> table;
   static EditTable carve() { return {std::vector<RegionLabel>(kMaterialCount, 0)}; }
-  static EditTable fill(Material m) { return {std::vector<RegionLabel>(kMaterialCount, m)}; }
-  static EditTable fill_empty(Material m) { return {{m}}; }
+  static EditTable fill(Material m) {
+    return {std::vector<RegionLabel>(kMaterialCount, m.value())};
+  }
+  static EditTable fill_empty(Material m) { return {{m.value()}}; }
   static EditTable replace(Material from, Material to) {
     std::vector<RegionLabel> t(kMaterialCount);
     for (std::size_t i = 0; i < t.size(); ++i) t[i] = static_cast<RegionLabel>(i);
-    t[from] = to;
+    t[from.value()] = to.value();
     return {t};
   }
 };
@@ -59,12 +62,13 @@ class LandscapeEditor {
   Draft merge_if_small(const detail::NodePtr& old, std::vector<Draft> children);
   detail::NodePtr finish(Draft& draft, const detail::NodePtr& old);
   detail::NodePtr finish_within(Draft& draft, const detail::IdSource& previous);
-  ClipOptions clip_options() const { return ClipOptions{.checked = l_.checked_}; }
+  ClipOptions clip_options() const { return ClipOptions{.checked = s_.checked}; }
   // Counts the vertices a new cell adds over what it replaces, and throws LimitExceeded as
   // soon as the landscape could pass its vertex limit (a runaway split stops early).
   void grow(std::size_t before, std::size_t after);
 
   const Landscape& l_;
+  const detail::LandscapeState& s_;  // l_'s state
   const ValidSet& shape_;
   EditTable table_;
   Box64 shape_box_;

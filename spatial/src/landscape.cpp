@@ -84,20 +84,28 @@ LoadError::LoadError(const std::string& what, std::size_t at)
     : LandscapeError("cannot load landscape at byte " + std::to_string(at) + ": " + what),
       offset(at) {}
 
+InvalidMaterial::InvalidMaterial(std::int64_t n)
+    : LandscapeError("material " + std::to_string(n) + " outside 0..255"), number(n) {}
+
+void detail::throw_invalid_material(std::int64_t number) { throw InvalidMaterial(number); }
+
 Landscape::Landscape(const Box64& world, Material fill, const LandscapeConfig& config,
-                     const LandscapeLimits& limits)
-    : world_(world), config_(config), limits_(limits), initial_fill_(fill) {
+                     const LandscapeLimits& limits) {
   detail::require_config(world, config);
   LabeledSet content;
+  auto areas = std::make_shared<detail::AreaTable>();
   if (fill != kEmpty) {
     content.set = ValidSet(
         PolygonSet{{world.min, {world.max.x, world.min.y}, world.max, {world.min.x, world.max.y}}});
-    content.labels = {fill};
+    content.labels = {fill.value()};
+    (*areas)[fill.value()] = twice_signed_area(content.set.polygons().front());
   }
-  auto areas = std::make_shared<AreaTable>();
-  if (fill != kEmpty) (*areas)[fill] = twice_signed_area(content.set.polygons().front());
-  areas_ = std::move(areas);
-  root_ = grid(world, 0, std::max(config.grid_depth, 0), std::move(content), config, next_id_);
+  s_.world = world;
+  s_.config = config;
+  s_.limits = limits;
+  s_.initial_fill = fill;
+  s_.areas = std::move(areas);
+  s_.root = grid(world, 0, std::max(config.grid_depth, 0), std::move(content), config, s_.next_id);
 }
 
 ChangeSet Landscape::carve(const ValidSet& shape) {
@@ -130,36 +138,38 @@ ChangeSet Landscape::replace(const PolygonSet& shape, Material from, Material to
 }
 
 Int128 Landscape::twice_area(Material m) const {
-  if (m != kEmpty) return (*areas_)[m];
+  if (m != kEmpty) return (*s_.areas)[m.value()];
   Int128 solid = 0;
-  for (std::size_t i = 1; i < kMaterialCount; ++i) solid += (*areas_)[i];
-  const Ring world{
-      world_.min, {world_.max.x, world_.min.y}, world_.max, {world_.min.x, world_.max.y}};
+  for (std::size_t i = 1; i < kMaterialCount; ++i) solid += (*s_.areas)[i];
+  const Box64& w = s_.world;
+  const Ring world{w.min, {w.max.x, w.min.y}, w.max, {w.min.x, w.max.y}};
   return twice_signed_area(world) - solid;
 }
 
 std::uint64_t Landscape::state_hash() const noexcept {
   detail::StateHash h;
-  h.add(world_)
-      .add(static_cast<std::uint64_t>(config_.tree))
-      .add(static_cast<std::uint64_t>(config_.edge_cap))
-      .add(static_cast<std::uint64_t>(config_.merge_below))
-      .add(static_cast<std::uint64_t>(config_.min_cell_size))
-      .add(static_cast<std::uint64_t>(static_cast<std::int64_t>(config_.grid_depth)))
-      .add(static_cast<std::uint64_t>(next_id_))
-      .add(root_->hash);
+  const LandscapeConfig& c = s_.config;
+  h.add(s_.world)
+      .add(static_cast<std::uint64_t>(c.tree))
+      .add(static_cast<std::uint64_t>(c.edge_cap))
+      .add(static_cast<std::uint64_t>(c.merge_below))
+      .add(static_cast<std::uint64_t>(c.min_cell_size))
+      .add(static_cast<std::uint64_t>(static_cast<std::int64_t>(c.grid_depth)))
+      .add(static_cast<std::uint64_t>(s_.next_id))
+      .add(s_.root->hash);
   return h.value();
 }
 
 LandscapeReport Landscape::check() const { return detail::check_all(*this); }
 
 void Landscape::start_log() {
-  if (logging_) return;
-  logging_ = true;
-  log_.reset();
-  detail::append_log(*this, detail::state_log(*this));
+  if (s_.logging) return;
+  const std::string first = detail::state_log(*this);
+  s_.logging = true;
+  s_.log.reset();
+  detail::append_log(s_, first);
 }
 
-std::string Landscape::log() const { return detail::log_text(*this); }
+std::string Landscape::log() const { return detail::log_text(s_); }
 
 }  // namespace edgeland

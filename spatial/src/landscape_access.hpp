@@ -1,21 +1,14 @@
 #pragma once
-// The landscape's private state for the parts of spatial/src that are not members.
-#include "node.hpp"
+// The landscape's private state for spatial/src: the one door in (the Landscape's only friend).
+#include "edgeland/spatial/landscape.hpp"
 
 namespace edgeland {
 
 struct LandscapeAccess {
-  static const Box64& world(const Landscape& l) { return l.world_; }
-  static const LandscapeConfig& config(const Landscape& l) { return l.config_; }
-  static const detail::NodePtr& root(const Landscape& l) { return l.root_; }
-  static PolygonId next_id(const Landscape& l) { return l.next_id_; }
-  static const Landscape::AreaTable& areas(const Landscape& l) { return *l.areas_; }
-  static Material initial_fill(const Landscape& l) { return l.initial_fill_; }
-  static std::uint64_t edits(const Landscape& l) { return l.edits_; }
-  static const std::shared_ptr<const Landscape::LogLine>& log(const Landscape& l) { return l.log_; }
-  static void set_log(Landscape& l, std::shared_ptr<const Landscape::LogLine> last) {
-    l.log_ = std::move(last);
-  }
+  static const detail::LandscapeState& state(const Landscape& l) noexcept { return l.s_; }
+  // Commits a whole new state (an edit's last step, a load's result).
+  static void commit(Landscape& l, detail::LandscapeState next) noexcept { l.s_ = std::move(next); }
+  static Landscape make(detail::LandscapeState state) { return Landscape(std::move(state)); }
 };
 
 }  // namespace edgeland

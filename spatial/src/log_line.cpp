@@ -9,7 +9,7 @@
 namespace edgeland::detail {
 namespace {
 
-std::string number(Material m) { return std::to_string(static_cast<unsigned>(m)); }
+std::string number(Material m) { return std::to_string(m.value()); }
 
 }  // namespace
 
@@ -32,31 +32,32 @@ std::string world_line(const Box64& w, Material fill) {
 }
 
 std::string state_log(const Landscape& l) {
-  if (LandscapeAccess::edits(l) == 0)
-    return world_line(l.world(), LandscapeAccess::initial_fill(l));
+  const LandscapeState& s = LandscapeAccess::state(l);
+  if (s.edits == 0) return world_line(s.world, s.initial_fill);
   std::map<Material, PolygonSet> by_material;
-  l.polygons_in(l.world(), [&](const PolygonView& v) {
+  l.polygons_in(s.world, [&](const PolygonView& v) {
     by_material[v.material].push_back(*v.polygon);
     return true;
   });
-  std::string out = world_line(l.world(), kEmpty);
+  std::string out = world_line(s.world, kEmpty);
   for (const auto& [m, set] : by_material) out += fill_line(set, m);
   return out;
 }
 
-std::string replay_log(const Landscape& l) { return l.logging() ? log_text(l) : state_log(l); }
-
-void append_log(Landscape& l, const std::string& line) {
-  auto next = std::make_shared<Landscape::LogLine>();
-  next->prev = LandscapeAccess::log(l);
-  next->text = line;
-  LandscapeAccess::set_log(l, std::move(next));
+std::string replay_log(const Landscape& l) {
+  return l.logging() ? log_text(LandscapeAccess::state(l)) : state_log(l);
 }
 
-std::string log_text(const Landscape& l) {
-  std::vector<const Landscape::LogLine*> lines;
-  for (const Landscape::LogLine* p = LandscapeAccess::log(l).get(); p; p = p->prev.get())
-    lines.push_back(p);
+void append_log(LandscapeState& state, const std::string& line) {
+  auto next = std::make_shared<LogLine>();
+  next->prev = state.log;
+  next->text = line;
+  state.log = std::move(next);
+}
+
+std::string log_text(const LandscapeState& state) {
+  std::vector<const LogLine*> lines;
+  for (const LogLine* p = state.log.get(); p; p = p->prev.get()) lines.push_back(p);
   std::string out;
   for (auto it = lines.rbegin(); it != lines.rend(); ++it) out += (*it)->text;
   return out;

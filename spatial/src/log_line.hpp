@@ -6,9 +6,9 @@
 
 #include "edgeland/spatial/landscape.hpp"
 
-namespace edgeland {
+namespace edgeland::detail {
 
-struct Landscape::LogLine {
+struct LogLine {
   LogLine() = default;
   LogLine(const LogLine&) = delete;
   LogLine& operator=(const LogLine&) = delete;
@@ -21,8 +21,6 @@ struct Landscape::LogLine {
   mutable std::shared_ptr<const LogLine> prev;
   std::string text;  // one line, with its '\n'
 };
-
-namespace detail {
 
 // "carve WKT", "fill M WKT", "fill_empty M WKT", "replace FROM TO WKT", each ending in '\n'.
 std::string carve_line(const PolygonSet& shape);
@@ -38,8 +36,8 @@ std::string state_log(const Landscape& l);
 // The recorded log if the landscape records one, else state_log.
 std::string replay_log(const Landscape& l);
 
-void append_log(Landscape& l, const std::string& line);
-std::string log_text(const Landscape& l);
+// The state with `line` appended to its log.
+void append_log(LandscapeState& state, const std::string& line);
+std::string log_text(const LandscapeState& state);
 
-}  // namespace detail
-}  // namespace edgeland
+}  // namespace edgeland::detail

@@ -8,7 +8,7 @@ namespace edgeland::detail {
 
 NodePtr make_cell(const Box64& box, std::uint32_t depth, LabeledSet content,
                   std::vector<PolygonId> ids) {
-  auto node = std::make_shared<Landscape::Node>();
+  auto node = std::make_shared<Node>();
   node->box = box;
   node->depth = depth;
   node->deepest = depth;
@@ -32,7 +32,7 @@ NodePtr make_cell(const Box64& box, std::uint32_t depth, LabeledSet content,
 }
 
 NodePtr make_inner(const Box64& box, std::uint32_t depth, const std::vector<NodePtr>& children) {
-  auto node = std::make_shared<Landscape::Node>();
+  auto node = std::make_shared<Node>();
   node->box = box;
   node->depth = depth;
   node->child_count = static_cast<std::uint32_t>(children.size());

@@ -9,11 +9,11 @@
 #include <vector>
 
 #include "edgeland/clip/relabel.hpp"
-#include "edgeland/spatial/landscape.hpp"
+#include "edgeland/spatial/types.hpp"
 
-namespace edgeland {
+namespace edgeland::detail {
 
-struct Landscape::Node {
+struct Node {
   Box64 box;
   std::uint32_t depth = 0;        // the root is 0
   std::uint32_t child_count = 0;  // 0 for a cell
@@ -42,11 +42,11 @@ struct Landscape::Node {
     return *children[ix + (cut_x ? 2 : 1) * iy];
   }
   const PolygonSet& polygon_set() const noexcept { return content.set.polygons(); }
+  // The material of polygon i (labels are materials 1..255 by I1).
+  Material material(std::size_t i) const { return content.labels[i]; }
 };
 
-namespace detail {
-
-using NodePtr = std::shared_ptr<const Landscape::Node>;
+using NodePtr = std::shared_ptr<const Node>;
 
 // A cell from its content (canonical, inside box) and the ids of its polygons.
 NodePtr make_cell(const Box64& box, std::uint32_t depth, LabeledSet content,
@@ -64,5 +64,4 @@ void for_each_cell(const NodePtr& node, F&& f) {
   for (std::uint32_t i = 0; i < node->child_count; ++i) for_each_cell(node->children[i], f);
 }
 
-}  // namespace detail
-}  // namespace edgeland
+}  // namespace edgeland::detail

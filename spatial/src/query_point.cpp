@@ -7,10 +7,12 @@
 #include "edgeland/kernel/point_in_polygon.hpp"
 #include "edgeland/spatial/landscape.hpp"
 #include "landscape_access.hpp"
+#include "node.hpp"
 
 namespace edgeland {
 namespace {
 
+using detail::Node;
 using detail::NodePtr;
 
 bool open_overlap(const Box64& a, const Box64& b) {
@@ -40,16 +42,17 @@ std::vector<Material> sorted_materials(const std::bitset<kMaterialCount>& found)
 
 Material Landscape::material_at(Point64 p) const {
   // p + eps (1, eps) lies in the world only if p is in its half-open box.
-  if (p.x < world_.min.x || p.y < world_.min.y || p.x >= world_.max.x || p.y >= world_.max.y)
+  if (p.x < s_.world.min.x || p.y < s_.world.min.y || p.x >= s_.world.max.x ||
+      p.y >= s_.world.max.y)
     return kEmpty;
-  const Node* n = root_.get();
+  const Node* n = s_.root.get();
   while (!n->is_cell()) n = &n->child_at(p);
   const PolygonSet& polys = n->polygon_set();
   for (std::size_t i = 0; i < polys.size(); ++i) {
     const Box64& b = n->boxes[i];
     // p + eps (1, eps) is in the closed box only if p.x < max.x and p.y < max.y.
     if (p.x < b.min.x || p.y < b.min.y || p.x >= b.max.x || p.y >= b.max.y) continue;
-    if (inside_half_open(p, polys[i])) return static_cast<Material>(n->content.labels[i]);
+    if (inside_half_open(p, polys[i])) return n->material(i);
   }
   return kEmpty;
 }
@@ -57,11 +60,10 @@ Material Landscape::material_at(Point64 p) const {
 void Landscape::polygons_in(const Box64& box,
                             const std::function<bool(const PolygonView&)>& visit) const {
   if (inverted(box)) return;
-  visit_cells_meeting(root_, box, false, [&](const Node& cell) {
+  visit_cells_meeting(s_.root, box, false, [&](const Node& cell) {
     for (std::size_t i = 0; i < cell.ids.size(); ++i) {
       if (!cell.boxes[i].overlaps(box)) continue;
-      const PolygonView v{cell.ids[i], static_cast<Material>(cell.content.labels[i]),
-                          &cell.polygon_set()[i], cell.box};
+      const PolygonView v{cell.ids[i], cell.material(i), &cell.polygon_set()[i], cell.box};
       if (!visit(v)) return false;
     }
     return true;
@@ -71,7 +73,7 @@ void Landscape::polygons_in(const Box64& box,
 void Landscape::cells_in(const Box64& box,
                          const std::function<bool(const CellView&)>& visit) const {
   if (inverted(box)) return;
-  visit_cells_meeting(root_, box, false, [&](const Node& cell) {
+  visit_cells_meeting(s_.root, box, false, [&](const Node& cell) {
     return visit(CellView{cell.box, cell.depth, cell.polygons, cell.vertices});
   });
 }
@@ -82,7 +84,7 @@ std::vector<Material> Landscape::overlaps(const Box64& box) const {
     if (!in_range(corner)) throw CoordinateOutOfRange(Operand::kQuery, 0, 0, kNone, corner);
   std::bitset<kMaterialCount> found;
   if (box.min.x >= box.max.x || box.min.y >= box.max.y) return {};
-  visit_cells_meeting(root_, box, true, [&](const Node& cell) {
+  visit_cells_meeting(s_.root, box, true, [&](const Node& cell) {
     for (std::size_t i = 0; i < cell.ids.size(); ++i) {
       const std::uint32_t m = cell.content.labels[i];
       if (found[m] || !open_overlap(cell.boxes[i], box)) continue;
@@ -97,7 +99,7 @@ std::vector<Material> Landscape::overlaps(const ValidSet& shape) const {
   std::bitset<kMaterialCount> found;
   for (const Polygon& s : shape.polygons()) {
     const Box64 sb = *bounding_box(s);
-    visit_cells_meeting(root_, sb, true, [&](const Node& cell) {
+    visit_cells_meeting(s_.root, sb, true, [&](const Node& cell) {
       for (std::size_t i = 0; i < cell.ids.size(); ++i) {
         const std::uint32_t m = cell.content.labels[i];
         if (found[m] || !open_overlap(cell.boxes[i], sb)) continue;
@@ -113,12 +115,12 @@ std::vector<Material> Landscape::overlaps(const ValidSet& shape) const {
 
 LandscapeStats Landscape::stats() const {
   LandscapeStats s;
-  s.polygons = root_->polygons;
-  s.vertices = root_->vertices;
-  s.cells = root_->cells;
-  s.depth = root_->deepest;
+  s.polygons = s_.root->polygons;
+  s.vertices = s_.root->vertices;
+  s.cells = s_.root->cells;
+  s.depth = s_.root->deepest;
   // Memory: every node once, its content's arrays by capacity.
-  std::vector<const Node*> stack{root_.get()};
+  std::vector<const Node*> stack{s_.root.get()};
   while (!stack.empty()) {
     const Node* n = stack.back();
     stack.pop_back();

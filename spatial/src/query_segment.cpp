@@ -8,15 +8,17 @@
 #include "edgeland/kernel/segment_crossings.hpp"
 #include "edgeland/spatial/landscape.hpp"
 #include "landscape_access.hpp"
+#include "node.hpp"
 
 namespace edgeland {
 namespace {
 
+using detail::Node;
 using detail::NodePtr;
 
 struct CellOnSegment {
   Fraction t0;
-  const Landscape::Node* cell;
+  const Node* cell;
 };
 
 // The cells whose closed box meets the segment (whose box is `reach`), with the parameter
@@ -35,7 +37,7 @@ void cells_on(const NodePtr& n, const Segment& s, const Box64& reach,
 
 struct Event {
   SegmentCrossing c;
-  const Landscape::Node* cell;
+  const Node* cell;
   std::uint32_t polygon;
 };
 
@@ -49,7 +51,7 @@ class Profile {
                {std::max(s.a.x, s.b.x), std::max(s.a.y, s.b.y)}} {}
 
   // Adds the crossings of the polygons of one cell.
-  void add_cell(const Landscape::Node& cell) {
+  void add_cell(const Node& cell) {
     const PolygonSet& polys = cell.polygon_set();
     for (std::uint32_t i = 0; i < polys.size(); ++i) {
       if (!cell.boxes[i].overlaps(reach_) || !clip_parameters(s_, cell.boxes[i])) continue;
@@ -85,13 +87,11 @@ class Profile {
 
  private:
   struct Active {
-    const Landscape::Node* cell = nullptr;
+    const Node* cell = nullptr;
     std::uint32_t polygon = 0;
     bool operator==(const Active&) const = default;
   };
-  Material material(const Active& a) const {
-    return a.cell ? static_cast<Material>(a.cell->content.labels[a.polygon]) : kEmpty;
-  }
+  Material material(const Active& a) const { return a.cell ? a.cell->material(a.polygon) : kEmpty; }
 
   // Crossings [i, j) share their parameter: the polygon inside after them is the one whose
   // net count leaves it inside (the one before, unless it left).
@@ -178,7 +178,7 @@ std::vector<MaterialCrossing> Landscape::crossings(Point64 from, Point64 to) con
   require_in_range(from);
   require_in_range(to);
   std::vector<MaterialCrossing> out;
-  walk(root_, from, to, [&](const MaterialCrossing& c) {
+  walk(s_.root, from, to, [&](const MaterialCrossing& c) {
     out.push_back(c);
     return true;
   });
@@ -189,7 +189,7 @@ std::optional<MaterialCrossing> Landscape::raycast(Point64 from, Point64 to) con
   require_in_range(from);
   require_in_range(to);
   std::optional<MaterialCrossing> hit;
-  walk(root_, from, to, [&](const MaterialCrossing& c) {
+  walk(s_.root, from, to, [&](const MaterialCrossing& c) {
     if (c.after == kEmpty) return true;  // a back face: leaving into empty space
     hit = c;
     return false;

@@ -50,7 +50,7 @@ class Writer {
   std::string out_;
 };
 
-void write_node(Writer& w, const Landscape::Node& n) {
+void write_node(Writer& w, const detail::Node& n) {
   if (!n.is_cell()) {
     w.u8(1);
     for (std::uint32_t i = 0; i < n.child_count; ++i) write_node(w, *n.children[i]);
@@ -90,22 +90,23 @@ class LandscapeLoader {
     if (checksum != fnv1a64(bytes_, end_)) fail("checksum mismatch: the file is corrupt");
     at_ = sizeof(kMagic);
     if (const auto v = fixed(4); v != kVersion) fail("unsupported version " + std::to_string(v));
-    Landscape l;
-    read_config(l);
-    l.limits_ = limits_;
-    l.root_ = read_node(l.world_, 0, l.config_);
+    detail::LandscapeState st;
+    read_config(st);
+    st.limits = limits_;
+    st.root = read_node(st.world, 0, st.config);
     if (at_ != end_) fail("bytes left after the tree");
-    l.next_id_ = next_id_;
-    auto areas = std::make_shared<Landscape::AreaTable>();
-    detail::for_each_cell(l.root_, [&](const detail::NodePtr& c) {
+    st.next_id = next_id_;
+    auto areas = std::make_shared<detail::AreaTable>();
+    detail::for_each_cell(st.root, [&](const detail::NodePtr& c) {
       for (std::size_t i = 0; i < c->ids.size(); ++i)
         (*areas)[c->content.labels[i]] += twice_signed_area(c->polygon_set()[i]);
     });
-    l.areas_ = std::move(areas);
-    if (l.root_->vertices > limits_.max_vertices) fail("more vertices than the limit");
+    st.areas = std::move(areas);
+    if (st.root->vertices > limits_.max_vertices) fail("more vertices than the limit");
+    st.edits = 1;  // its log is not known: a recording starts from its state
+    Landscape l = LandscapeAccess::make(std::move(st));
     const LandscapeReport report = detail::check_all(l);
     if (!report.ok()) fail("invalid world: " + report.problems.front());
-    l.edits_ = 1;  // its log is not known: a recording starts from its state
     return l;
   }
 
@@ -146,8 +147,8 @@ class LandscapeLoader {
     return static_cast<std::size_t>(n);
   }
 
-  void read_config(Landscape& l) {
-    LandscapeConfig& c = l.config_;
+  void read_config(detail::LandscapeState& l) {
+    LandscapeConfig& c = l.config;
     const auto tree = fixed(1);
     if (tree > 1) fail("unknown tree kind");
     c.tree = static_cast<TreeKind>(tree);
@@ -155,13 +156,13 @@ class LandscapeLoader {
     c.merge_below = static_cast<std::uint32_t>(fixed(4));
     c.min_cell_size = static_cast<std::int64_t>(fixed(8));
     c.grid_depth = static_cast<int>(static_cast<std::int32_t>(fixed(4)));
-    l.world_.min.x = coordinate();
-    l.world_.min.y = coordinate();
-    l.world_.max.x = coordinate();
-    l.world_.max.y = coordinate();
+    l.world.min.x = coordinate();
+    l.world.min.y = coordinate();
+    l.world.max.x = coordinate();
+    l.world.max.y = coordinate();
     next_id_ = fixed(8);
     try {
-      detail::require_config(l.world_, c);
+      detail::require_config(l.world, c);
     } catch (const InvalidConfig& e) {
       fail(e.what());
     }
@@ -229,15 +230,16 @@ void Landscape::save(std::ostream& out) const {
   Writer w;
   for (char c : kMagic) w.u8(static_cast<std::uint8_t>(c));
   w.fixed(kVersion, 4);
-  w.fixed(static_cast<std::uint64_t>(config_.tree), 1);
-  w.fixed(config_.edge_cap, 4);
-  w.fixed(config_.merge_below, 4);
-  w.fixed(static_cast<std::uint64_t>(config_.min_cell_size), 8);
-  w.fixed(static_cast<std::uint32_t>(config_.grid_depth), 4);
-  for (std::int64_t c : {world_.min.x, world_.min.y, world_.max.x, world_.max.y})
-    w.fixed(static_cast<std::uint64_t>(c), 8);
-  w.fixed(next_id_, 8);
-  write_node(w, *root_);
+  const LandscapeConfig& c = s_.config;
+  w.fixed(static_cast<std::uint64_t>(c.tree), 1);
+  w.fixed(c.edge_cap, 4);
+  w.fixed(c.merge_below, 4);
+  w.fixed(static_cast<std::uint64_t>(c.min_cell_size), 8);
+  w.fixed(static_cast<std::uint32_t>(c.grid_depth), 4);
+  for (std::int64_t v : {s_.world.min.x, s_.world.min.y, s_.world.max.x, s_.world.max.y})
+    w.fixed(static_cast<std::uint64_t>(v), 8);
+  w.fixed(s_.next_id, 8);
+  write_node(w, *s_.root);
   w.fixed(fnv1a64(w.bytes(), w.bytes().size()), 8);
   out.write(w.bytes().data(), static_cast<std::streamsize>(w.bytes().size()));
 }

@@ -15,13 +15,14 @@ file(REMOVE_RECURSE ${WORK_DIR})
 
 step("cmake --install" ${CMAKE_COMMAND} --install ${EDGELAND_BUILD_DIR} --prefix ${prefix})
 # The installed tree holds the public headers and the package files, and nothing private.
-foreach(expected include/edgeland/kernel/validate.hpp include/edgeland/clip/clip.hpp bin/edgeland)
+foreach(expected include/edgeland/kernel/validate.hpp include/edgeland/clip/clip.hpp
+    include/edgeland/io/landscape_replay.hpp bin/edgeland)
   if(NOT EXISTS ${prefix}/${expected})
     message(FATAL_ERROR "not installed: ${expected}")
   endif()
 endforeach()
 file(GLOB_RECURSE configs ${prefix}/*/edgelandConfig.cmake)
-file(GLOB_RECURSE private_headers ${prefix}/include/*wkt_reader.hpp ${prefix}/include/*command.hpp
+file(GLOB_RECURSE private_headers ${prefix}/include/*wkt_tokens.hpp ${prefix}/include/*log_text.hpp ${prefix}/include/*command.hpp
   ${prefix}/include/*scratch.hpp ${prefix}/include/*assert.hpp ${prefix}/include/*point_text.hpp)
 if(NOT configs OR private_headers)
   message(FATAL_ERROR "config files: '${configs}'; private headers installed: '${private_headers}'")

@@ -34,10 +34,10 @@ std::set<IdSet> islands_brute(const Landscape& world, const PhysicsMaterials& ma
   std::map<Line, std::vector<Edge>> lines;
   const Box64 w = world.world();
   world.polygons_in(w, [&](const PolygonView& v) {
-    if (v.material == kEmpty || !materials.solid[v.material]) return true;
+    if (v.material == kEmpty || !materials.solid[v.material.value()]) return true;
     const std::size_t index = ids.size();
     ids.push_back(v.id);
-    held.push_back(materials.anchored[v.material]);
+    held.push_back(materials.anchored[v.material.value()]);
     const Polygon& r = *v.polygon;
     for (std::size_t i = 0; i < r.size(); ++i) {
       const Point64 a = r[i], b = r[(i + 1) % r.size()];

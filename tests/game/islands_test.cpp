@@ -2,12 +2,11 @@
 // against the brute-force reference (island_oracle.hpp), incrementally after every edit.
 #include "edgeland/game/islands.hpp"
 
-#include "edgeland/kernel/area.hpp"
-#include "edgeland/kernel/centroid.hpp"
-
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
+#include "edgeland/kernel/area.hpp"
+#include "edgeland/kernel/centroid.hpp"
 #include "game_worlds.hpp"
 #include "island_oracle.hpp"
 #include "landscape_cases.hpp"
@@ -35,9 +34,9 @@ TEST(Islands, CarvingARingAroundABlockCutsItOff) {
   IslandTracker tracker(world);
   EXPECT_EQ(tracker.island_count(), 0u);
   // A square ring 10 wide around [300, 500] x [150, 350], across cell lines.
-  const ChangeSet changes = world.carve(
-      PolygonSet{rect(290, 140, 510, 150), rect(500, 150, 510, 360), rect(290, 350, 500, 360),
-                 rect(290, 150, 300, 350)});
+  const ChangeSet changes =
+      world.carve(PolygonSet{rect(290, 140, 510, 150), rect(500, 150, 510, 360),
+                             rect(290, 350, 500, 360), rect(290, 150, 300, 350)});
   const std::vector<Island> fresh = tracker.update(world, changes);
   ASSERT_EQ(fresh.size(), 1u);
   EXPECT_EQ(fresh[0].twice_area, Int128{2} * 200 * 200);
@@ -50,10 +49,10 @@ TEST(Islands, CarvingARingAroundABlockCutsItOff) {
 TEST(Islands, PointContactHoldsNothingButAnchoredMaterialDoes) {
   Landscape world({{0, 0}, {100, 100}});
   world.fill(PolygonSet{rect(0, 0, 100, 20)}, 1);
-  world.fill(PolygonSet{rect(20, 20, 40, 40)}, 1);   // on the floor: held
-  world.fill(PolygonSet{rect(40, 40, 60, 60)}, 2);   // touches the first at (40, 40) only
-  world.fill(PolygonSet{rect(70, 50, 90, 70)}, 3);   // bedrock in mid air
-  world.fill(PolygonSet{rect(70, 70, 90, 80)}, 2);   // on the bedrock
+  world.fill(PolygonSet{rect(20, 20, 40, 40)}, 1);  // on the floor: held
+  world.fill(PolygonSet{rect(40, 40, 60, 60)}, 2);  // touches the first at (40, 40) only
+  world.fill(PolygonSet{rect(70, 50, 90, 70)}, 3);  // bedrock in mid air
+  world.fill(PolygonSet{rect(70, 70, 90, 80)}, 2);  // on the bedrock
   PhysicsMaterials materials;
   materials.anchored[3] = true;
   const std::vector<Island> islands = find_islands(world, materials);
@@ -67,7 +66,7 @@ TEST(Islands, PointContactHoldsNothingButAnchoredMaterialDoes) {
 
 PhysicsMaterials random_materials() {
   PhysicsMaterials m;
-  for (Material k = 1; k < 6; ++k) {
+  for (int k = 1; k < 6; ++k) {
     m.solid[k] = *rc::gen::inRange(0, 5) != 0;
     m.anchored[k] = *rc::gen::inRange(0, 4) == 0;
   }
@@ -140,7 +139,7 @@ TEST(Islands, DetachTakesAwayExactlyEachIsland) {
     const Island island = std::move(pending.back());
     pending.pop_back();
     std::map<Material, Int128> expected;
-    for (Material m = 0; m < 6; ++m) expected[m] = world.twice_area(m);
+    for (int m = 0; m < 6; ++m) expected[m] = world.twice_area(m);
     for (const IslandPiece& p : island.pieces) {
       expected[p.material] -= twice_signed_area(p.polygon);
       expected[kEmpty] += twice_signed_area(p.polygon);
@@ -152,7 +151,7 @@ TEST(Islands, DetachTakesAwayExactlyEachIsland) {
       continue;
     }
     ++detached;
-    for (Material m = 0; m < 6; ++m) EXPECT_EQ(world.twice_area(m), expected[m]) << int(m);
+    for (int m = 0; m < 6; ++m) EXPECT_EQ(world.twice_area(m), expected[m]) << m;
     Int128 regions = 0;
     PolygonSet pieces;
     for (const DetachedIsland::Region& r : d.regions) regions += twice_signed_area(r.polygons);

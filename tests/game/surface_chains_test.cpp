@@ -67,9 +67,9 @@ TEST(SurfaceChains, NonSolidMaterialsHaveNoSurface) {
   world.fill(PolygonSet{rect(0, 40, 100, 60)}, 7);
   SurfaceOptions options;
   options.materials.solid[7] = false;
-  EXPECT_EQ(surface_difference(surface_brute(world, options),
-                               surface_of(surface_chains(world, options))),
-            "");
+  EXPECT_EQ(
+      surface_difference(surface_brute(world, options), surface_of(surface_chains(world, options))),
+      "");
   const std::vector<SurfaceChain> loops = surface_loops(world, options);
   ASSERT_EQ(loops.size(), 1u);
   EXPECT_EQ(loops[0].points, (std::vector<Point64>{{100, 40}, {0, 40}}));
@@ -124,7 +124,7 @@ void expect_matches_reference(const Landscape& world, const SurfaceOptions& opti
 SurfaceOptions random_options() {
   SurfaceOptions options;
   options.border_wall = *rc::gen::arbitrary<bool>();
-  for (Material m = 1; m < 6; ++m) options.materials.solid[m] = *rc::gen::inRange(0, 4) != 0;
+  for (int m = 1; m < 6; ++m) options.materials.solid[m] = *rc::gen::inRange(0, 4) != 0;
   return options;
 }
 

@@ -48,7 +48,7 @@ std::vector<SurfaceChain> sorted(std::vector<SurfaceChain> v) {
 SurfaceOptions random_options() {
   SurfaceOptions options;
   options.border_wall = *rc::gen::arbitrary<bool>();
-  for (Material m = 1; m < 6; ++m) options.materials.solid[m] = *rc::gen::inRange(0, 4) != 0;
+  for (int m = 1; m < 6; ++m) options.materials.solid[m] = *rc::gen::inRange(0, 4) != 0;
   return options;
 }
 
@@ -99,7 +99,8 @@ TEST(SurfaceTracker, AnEditReplacesOnlyChainsNearIt) {
   SurfaceTracker tracker(world);
   const std::size_t before = tracker.chains().size();
   EXPECT_EQ(before, 32u);  // the floor, cut at 32 cells
-  const ChangeSet changes = world.carve(PolygonSet{{{500, 990}, {520, 990}, {520, 1010}, {500, 1010}}});
+  const ChangeSet changes =
+      world.carve(PolygonSet{{{500, 990}, {520, 990}, {520, 1010}, {500, 1010}}});
   const ChainUpdate u = tracker.update(world, changes);
   // The notch's cell gets a new chain; the cells beside it keep their points but their ghosts
   // at the shared corners now point down the notch... only where the notch reaches the line.
@@ -149,7 +150,8 @@ TEST(SurfaceTracker, MirrorHoldsOverALongGame) {
       for (ChainId id : u.removed) ASSERT_EQ(mirror.erase(id), 1u);
       for (const auto& [id, chain] : u.added) ASSERT_TRUE(mirror.emplace(id, chain).second);
       if (++edit % 50 == 0) {
-        ASSERT_EQ(sorted(values(mirror)), sorted(surface_chains(world, options))) << "edit " << edit;
+        ASSERT_EQ(sorted(values(mirror)), sorted(surface_chains(world, options)))
+            << "edit " << edit;
       }
     });
     EXPECT_GT(world.stats().cells, 100u);

@@ -1,6 +1,6 @@
 #pragma once
 // WKT POLYGON / MULTIPOLYGON text with decimal coordinates, as peers write it, read into exact
-// decimals. edgeland's own reader (cli/wkt_reader.hpp) accepts integers only, by design; the
+// decimals. edgeland's own reader (io/.../wkt_reader.hpp) accepts integers only, by design; the
 // peers' data is decimal, so it is read here and scaled to integers (integer_operands.hpp).
 // Rings are kept as written, closing point included; whether a ring is closed is decided after
 // scaling (some peers' rings close only up to the last digit, e.g. Boost.Geometry's

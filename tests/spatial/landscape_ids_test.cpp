@@ -54,7 +54,7 @@ std::size_t carve_keeping_ids(Landscape& l, const PolygonSet& shape) {
     const auto it = before.find(key);
     if (it == before.end()) continue;
     ++unchanged;
-    EXPECT_EQ(id, it->second) << "an unchanged polygon of material " << int(key.first)
+    EXPECT_EQ(id, it->second) << "an unchanged polygon of material " << int(key.first.value())
                               << " got a new id";
   }
   EXPECT_EQ(cs.removed, ids_missing_in(before, after));

@@ -39,7 +39,7 @@ RC_GTEST_PROP(LandscapeProperty, EditsKeepEveryInvariantAndReportWhatChanged, ()
   for (const LandscapeEdit& e : c.edits) {
     const std::map<PolygonId, FlatPolygon> before = by_id(l);
     std::array<Int128, 6> area_before{};
-    for (Material m = 0; m < 6; ++m) area_before[m] = l.twice_area(m);
+    for (int m = 0; m < 6; ++m) area_before[m] = l.twice_area(m);
     const ChangeSet cs = apply(l, e);
     const std::map<PolygonId, FlatPolygon> after = by_id(l);
     std::map<PolygonId, FlatPolygon> expected = before;
@@ -68,7 +68,7 @@ RC_GTEST_PROP(LandscapeProperty, EditsKeepEveryInvariantAndReportWhatChanged, ()
     std::map<Material, Int128> delta;
     for (const auto& [m, d] : cs.twice_area_delta) delta[m] = d;
     Int128 total = 0;
-    for (Material m = 0; m < 6; ++m) {
+    for (int m = 0; m < 6; ++m) {
       RC_ASSERT(l.twice_area(m) - area_before[m] == delta[m]);
       total += delta[m];
     }
@@ -269,7 +269,7 @@ RC_GTEST_PROP(LandscapeProperty, SaveAndLoadGiveTheSameState, ()) {
   const Landscape back = Landscape::load(file);
   RC_ASSERT(back.state_hash() == l.state_hash());
   RC_ASSERT(flatten(back).size() == flatten(l).size());
-  for (Material m = 0; m < 6; ++m) RC_ASSERT(back.twice_area(m) == l.twice_area(m));
+  for (int m = 0; m < 6; ++m) RC_ASSERT(back.twice_area(m) == l.twice_area(m));
 }
 
 }  // namespace

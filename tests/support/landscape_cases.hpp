@@ -23,9 +23,9 @@ struct LandscapeCase {
 
 inline void showValue(const LandscapeCase& c, std::ostream& os) {
   os << "world " << c.world.min.x << ' ' << c.world.min.y << ' ' << c.world.max.x << ' '
-     << c.world.max.y << ' ' << int(c.fill) << "\n  config: tree " << int(c.config.tree) << " cap "
-     << c.config.edge_cap << " merge " << c.config.merge_below << " min " << c.config.min_cell_size
-     << " grid " << c.config.grid_depth;
+     << c.world.max.y << ' ' << int(c.fill.value()) << "\n  config: tree " << int(c.config.tree)
+     << " cap " << c.config.edge_cap << " merge " << c.config.merge_below << " min "
+     << c.config.min_cell_size << " grid " << c.config.grid_depth;
   for (const LandscapeEdit& e : c.edits) os << "\n  " << describe(e);
 }
 
@@ -72,7 +72,7 @@ inline rc::Gen<LandscapeCase> landscape_case(int max_edits = 8) {
 
 // The landscape of a case after its edits, checked; fails the property on any exception.
 inline Landscape run_case(const LandscapeCase& c, const LandscapeConfig& config,
-                   std::uint32_t* deepest = nullptr) {
+                          std::uint32_t* deepest = nullptr) {
   Landscape l(c.world, c.fill, config);
   l.set_checked(true);
   for (const LandscapeEdit& e : c.edits) {

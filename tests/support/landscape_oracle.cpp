@@ -84,11 +84,12 @@ std::string describe(const LandscapeEdit& e) {
     case LandscapeEdit::Kind::kCarve:
       return "carve " + wkt;
     case LandscapeEdit::Kind::kFill:
-      return "fill " + std::to_string(e.a) + " " + wkt;
+      return "fill " + std::to_string(e.a.value()) + " " + wkt;
     case LandscapeEdit::Kind::kFillEmpty:
-      return "fill_empty " + std::to_string(e.a) + " " + wkt;
+      return "fill_empty " + std::to_string(e.a.value()) + " " + wkt;
     case LandscapeEdit::Kind::kReplace:
-      return "replace " + std::to_string(e.a) + " " + std::to_string(e.b) + " " + wkt;
+      return "replace " + std::to_string(e.a.value()) + " " + std::to_string(e.b.value()) + " " +
+             wkt;
   }
   return "?";
 }

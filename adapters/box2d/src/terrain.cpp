@@ -119,8 +119,8 @@ void Terrain::add(ChainId id, const SurfaceChain& c) {
     }
     b2FixtureDef def;
     def.shape = &shape;
-    def.friction = friction_[run.material];
-    def.userData.pointer = run.material;
+    def.friction = friction_[run.material.value()];
+    def.userData.pointer = run.material.value();
     list.push_back(body->CreateFixture(&def));
   }
 }
@@ -182,7 +182,7 @@ b2Body* make_debris_body(b2World& world, const DetachedIsland& island, const Eng
         fixture.density = options.density;
         fixture.friction = options.friction;
         fixture.restitution = options.restitution;
-        fixture.userData.pointer = region.material;
+        fixture.userData.pointer = region.material.value();
         body->CreateFixture(&fixture);
       }
   return body;

@@ -40,11 +40,17 @@
 // Arrays over 8 MiB are not kept but freed after the operation, and at most 16 arrays of each
 // element type are kept; the rest is freed at thread exit.
 // THREADS. Operations share no state between threads; concurrent calls are safe.
+// HEADERS. This is the front end and includes types.hpp (ClipOp, FillRule, ClipOptions,
+// ClipStats, ClipResult), valid_set.hpp (ValidSet, ValidClipResult) and errors.hpp
+// (InternalError, InvalidOverlay), which code needing only those can include alone.
 #include <cstddef>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "edgeland/clip/errors.hpp"
+#include "edgeland/clip/types.hpp"
+#include "edgeland/clip/valid_set.hpp"
 #include "edgeland/kernel/bbox.hpp"
 #include "edgeland/kernel/errors.hpp"
 #include "edgeland/kernel/export.hpp"
@@ -53,42 +59,6 @@
 
 namespace edgeland {
 
-enum class ClipOp : std::uint8_t { kUnion, kIntersection, kDifference, kXor };
-// How arbitrary rings are filled by normalize(): a point is inside when its winding number w
-// satisfies: odd (kEvenOdd), w != 0 (kNonZero), w > 0 (kPositive), w < 0 (kNegative).
-enum class FillRule : std::uint8_t { kEvenOdd, kNonZero, kPositive, kNegative };
-
-EDGELAND_EXPORT const char* op_name(ClipOp op) noexcept;
-EDGELAND_EXPORT const char* fill_rule_name(FillRule rule) noexcept;
-
-struct ClipOptions {
-  // Check every stage's result and re-validate every output (on in tests, fuzzers, `--check`).
-  bool checked = false;
-};
-
-struct ClipStats {
-  std::size_t intersections = 0;      // edge pairs meeting other than at shared vertices
-  std::size_t vertices_snapped = 0;   // points moved to the grid by snap rounding
-  std::size_t holes_split = 0;        // holes removed by cutting their polygon
-  std::size_t zero_area_dropped = 0;  // collapsed pieces removed
-};
-
-struct ClipResult {
-  PolygonSet polygons;
-  ClipStats stats;
-};
-
-// Operand, InvalidInput and its subclasses CoordinateOutOfRange and InvalidBox are in
-// edgeland/kernel/errors.hpp.
-
-// A result failed the checkers in checked mode: a bug in edgeland. Carries the inputs.
-class EDGELAND_EXPORT InternalError : public Error {
- public:
-  InternalError(const std::string& what, std::string subject_wkt, std::string clip_wkt);
-  std::string subject_wkt;
-  std::string clip_wkt;
-};
-
 // subject OP clip. Both must be valid polygon sets: an invalid one throws InvalidInput with
 // validate()'s first violation, the subject's before the clip's. O((n + k) log n) for n input
 // vertices and k intersections. The operands are validated by the operation itself, mostly
@@ -96,36 +66,6 @@ class EDGELAND_EXPORT InternalError : public Error {
 // overload's.
 EDGELAND_EXPORT ClipResult clip(ClipOp op, const PolygonSet& subject, const PolygonSet& clip,
                                 const ClipOptions& options = {});
-
-// A polygon set known to be valid, so that operations on it need not validate it again: a game
-// that carves one set thousands of times pays for validation once, when the set is built, not
-// on every operation (validation is O(n log n) in the whole set, the operation near-linear in
-// the part that changes). Constructed only by validating (throws InvalidInput) or as the output
-// of an operation below, which is valid by this header's guarantee (re-checked in checked mode).
-// Immutable: the only way to change it is another operation.
-class EDGELAND_EXPORT ValidSet {
- public:
-  ValidSet() = default;  // the empty set
-  // Validates `set`; throws InvalidInput naming `which` operand on the first violation.
-  explicit ValidSet(PolygonSet set, Operand which = Operand::kSubject);
-  const PolygonSet& polygons() const noexcept { return set_; }
-  PolygonSet release() && noexcept { return std::move(set_); }
-
- private:
-  struct Trusted {};
-  ValidSet(PolygonSet set, Trusted) noexcept : set_(std::move(set)) {}
-  friend struct ValidSetFactory;
-  PolygonSet set_;
-  bool canonical_ = false;  // in canonical form (an operation's output)
-  // No ring has three consecutive collinear vertices (canonical sets, and validated sets found
-  // so): the pipeline then tests only the vertices an operation creates for collinearity.
-  bool collinear_free_ = false;
-};
-
-struct ValidClipResult {
-  ValidSet set;
-  ClipStats stats;
-};
 
 // The same operations on sets already known valid: no input validation; the result is a
 // ValidSet for the next operation. Results are identical to the PolygonSet overloads'.

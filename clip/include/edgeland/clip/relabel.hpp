@@ -24,8 +24,11 @@
 #include <string>
 #include <vector>
 
-#include "edgeland/clip/clip.hpp"
+#include "edgeland/clip/errors.hpp"
+#include "edgeland/clip/types.hpp"
+#include "edgeland/clip/valid_set.hpp"
 #include "edgeland/kernel/bbox.hpp"
+#include "edgeland/kernel/export.hpp"
 
 namespace edgeland {
 
@@ -41,21 +44,6 @@ struct LabeledSet {
 struct LabeledClipResult {
   LabeledSet regions;
   ClipStats stats;
-};
-
-// The arguments of an overlay do not fit together (the geometry itself is checked by ValidSet).
-class EDGELAND_EXPORT InvalidOverlay : public Error {
- public:
-  enum class Reason : std::uint8_t {
-    kLabelCount,      // labels.size() differs from the number of polygons
-    kZeroLabel,       // a member is labeled 0
-    kOutsideWindow,   // a member of `regions` is not inside the window
-    kBadWindow,       // a window is not a box with positive area within the coordinate bound
-    kWindowsOverlap,  // two windows share interior points
-  };
-  InvalidOverlay(Reason reason, std::size_t index);
-  Reason reason;
-  std::size_t index;  // the member or window concerned
 };
 
 // Inside shape ∩ window, a point of label l becomes table[l] (l = 0: a point no member covers;

@@ -32,6 +32,10 @@
 // THREADS. A Landscape is a value: distinct objects (copies included) may be used from different
 // threads; one object must not be modified while used elsewhere. No threads, files or printing
 // inside; save/load take the caller's streams.
+//
+// HEADERS. This is the front end and the umbrella: it includes material.hpp (Material),
+// types.hpp (the configuration, views, change sets, crossings, reports) and errors.hpp (the
+// landscape's errors), which code that only handles those types can include alone.
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -40,6 +44,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "edgeland/clip/clip.hpp"
@@ -51,151 +56,35 @@
 #include "edgeland/kernel/polygon.hpp"
 #include "edgeland/kernel/predicates.hpp"
 #include "edgeland/kernel/validate.hpp"
+#include "edgeland/spatial/errors.hpp"
+#include "edgeland/spatial/material.hpp"
+#include "edgeland/spatial/types.hpp"
 
 namespace edgeland {
 
-// 0 is empty space; 1..255 are solid materials.
-using Material = std::uint8_t;
-inline constexpr Material kEmpty = 0;
-inline constexpr std::size_t kMaterialCount = 256;
+namespace detail {
 
-using PolygonId = std::uint64_t;
+struct Node;     // the tree (spatial/src/node.hpp)
+struct LogLine;  // the recorded log, a persistent list shared by copies (spatial/src/log_line.hpp)
+using AreaTable = std::array<Int128, kMaterialCount>;
 
-enum class TreeKind : std::uint8_t {
-  kQuadtree,  // four children, cut at both midpoint lines
-  kKdTree,    // two children, cut at the midpoint of the longer side (x on ties)
-};
-
-struct LandscapeConfig {
-  TreeKind tree = TreeKind::kQuadtree;
-  // A cell whose polygons have more edges than this splits (unless both its sides are at most
-  // min_cell_size); siblings whose cells together have at most merge_below edges merge back.
-  // merge_below < edge_cap is the hysteresis that keeps a digger going back and forth over a
-  // cell line from splitting and merging on every edit. edge_cap >= 32: a cell crossed by a
-  // boundary or two must not split (a long slanted boundary would split every cell along it).
-  std::uint32_t edge_cap = 64;
-  std::uint32_t merge_below = 24;
-  std::int64_t min_cell_size = 16;
-  // >= 0: a uniform grid (thesis 4.4): the tree is built to this depth at once and never
-  // splits or merges. -1: adaptive.
-  int grid_depth = -1;
-};
-
-// Limits on what one landscape may hold; an edit that would pass one throws LimitExceeded and
-// changes nothing.
-struct LandscapeLimits {
-  std::size_t max_vertices = std::size_t{1} << 28;        // all polygons together
-  std::size_t max_shape_vertices = std::size_t{1} << 24;  // one edit's shape
-};
-
-// Every landscape error is an edgeland::Error; each keeps its data in fields.
-class EDGELAND_EXPORT LandscapeError : public Error {
- public:
-  using Error::Error;
-};
-
-// The world box or the configuration is unusable (inverted or degenerate box, box beyond the
-// coordinate bound, edge_cap < 32, merge_below >= edge_cap, min_cell_size < 1, grid_depth
-// outside -1..10).
-// `setting` names the rule broken; `world` is the world box given and `config` the
-// configuration, whichever of them is wrong.
-class EDGELAND_EXPORT InvalidConfig : public LandscapeError {
- public:
-  enum class Setting : std::uint8_t {
-    kWorldOutOfRange,  // a corner beyond kCoordBound
-    kWorldEmpty,       // width or height not positive (inverted or degenerate)
-    kEdgeCap,          // edge_cap below 32
-    kMergeBelow,       // merge_below not below edge_cap
-    kMinCellSize,      // min_cell_size below 1
-    kGridDepth,        // grid_depth outside -1..10
-    kTree,             // not a TreeKind
-  };
-  InvalidConfig(Setting setting, const Box64& world, const LandscapeConfig& config);
-  Setting setting;
+// A landscape's whole state (private: spatial/src reaches it through landscape_access.hpp). An
+// edit builds the next state and commits it by one assignment, so a throw leaves it as it was.
+struct LandscapeState {
   Box64 world;
   LandscapeConfig config;
+  LandscapeLimits limits;
+  std::shared_ptr<const Node> root;
+  std::shared_ptr<const AreaTable> areas;  // twice the area of every solid material
+  PolygonId next_id = 1;
+  std::uint64_t edits = 0;  // successful edits since construction (or load)
+  Material initial_fill = kEmpty;
+  bool checked = false;
+  bool logging = false;
+  std::shared_ptr<const LogLine> log;  // the last line recorded
 };
 
-class EDGELAND_EXPORT LimitExceeded : public LandscapeError {
- public:
-  enum class Limit : std::uint8_t { kVertices, kShapeVertices };
-  LimitExceeded(Limit limit, std::size_t maximum, std::size_t requested);
-  Limit limit;
-  std::size_t maximum;
-  std::size_t requested;
-};
-
-// A checked-mode invariant failed: a bug in edgeland. `state` is the landscape before the
-// edit as a save file (Landscape::load reads it), `log` an edit log that replays to it (exactly
-// when the landscape recorded its log from the start, else approximately: the world and one
-// fill per material) followed by the failing edit.
-class EDGELAND_EXPORT LandscapeInternalError : public LandscapeError {
- public:
-  LandscapeInternalError(const std::string& what, std::string state, std::string log);
-  std::string state;
-  std::string log;
-};
-
-// A save file could not be read: truncated, corrupt, of another version, or describing a
-// world that breaks an invariant. `offset` is where reading stopped (bytes from the start).
-class EDGELAND_EXPORT LoadError : public LandscapeError {
- public:
-  LoadError(const std::string& what, std::size_t offset);
-  std::size_t offset;
-};
-
-// One polygon of the landscape as a query or a change set shows it.
-struct PolygonView {
-  PolygonId id = 0;
-  Material material = kEmpty;
-  const Polygon* polygon = nullptr;  // valid while the landscape (or change set) holding it lives
-  Box64 cell;                        // the closed box of its cell
-};
-
-// One cell of the tree.
-struct CellView {
-  Box64 box;
-  std::uint32_t depth = 0;
-  std::size_t polygons = 0, vertices = 0;
-};
-
-// What an edit changed.
-struct ChangeSet {
-  std::vector<PolygonId> removed;  // ids that no longer exist, ascending
-  struct Added {
-    PolygonId id;
-    Material material;
-    Polygon polygon;
-    Box64 cell;
-  };
-  std::vector<Added> added;  // by ascending id
-  std::vector<Box64> cells;  // the cells whose content is new (leaves after the edit)
-  // Twice the change of area per material (exact; sums to 0 over all materials including 0).
-  std::vector<std::pair<Material, Int128>> twice_area_delta;
-  bool empty() const noexcept { return removed.empty() && added.empty(); }
-};
-
-// The material profile along a segment: a place where the material changes.
-struct MaterialCrossing {
-  Fraction t;           // at from + t (to - from), 0 <= t <= 1 (exact)
-  RationalPoint point;  // the same point, exactly
-  Point64 rounded;      // round_to_grid(point): the kernel's one rounding
-  Material before = kEmpty, after = kEmpty;
-  PolygonId polygon = 0;   // the polygon entered (after != 0), else the one left
-  std::uint32_t edge = 0;  // its edge crossed: from vertex edge to vertex edge + 1
-  Point64 normal;          // that edge's outward normal (dy, -dx): not normalised, exact
-};
-
-// What check() found; empty when every invariant holds.
-struct LandscapeReport {
-  std::vector<std::string> problems;  // one line each, e.g. "cell (0 0 64 64): polygon 3 outside"
-  bool ok() const noexcept { return problems.empty(); }
-};
-
-struct LandscapeStats {
-  std::size_t polygons = 0, vertices = 0, cells = 0, depth = 0;
-  std::size_t bytes = 0;  // memory of the cells and nodes this landscape holds (shared or not)
-};
+}  // namespace detail
 
 class EDGELAND_EXPORT Landscape {
  public:
@@ -249,9 +138,9 @@ class EDGELAND_EXPORT Landscape {
   Int128 twice_area(Material m) const;
   LandscapeStats stats() const;
 
-  const Box64& world() const noexcept { return world_; }
-  const LandscapeConfig& config() const noexcept { return config_; }
-  const LandscapeLimits& limits() const noexcept { return limits_; }
+  const Box64& world() const noexcept { return s_.world; }
+  const LandscapeConfig& config() const noexcept { return s_.config; }
+  const LandscapeLimits& limits() const noexcept { return s_.limits; }
 
   // --- state -----------------------------------------------------------------------------
   // FNV-style 64-bit hash of the whole state (world, configuration, tree, every polygon with
@@ -260,8 +149,8 @@ class EDGELAND_EXPORT Landscape {
   // Verifies every invariant of spatial/README.md over the whole landscape; the report lists
   // what broke. O(N log N).
   LandscapeReport check() const;
-  void set_checked(bool on) noexcept { checked_ = on; }
-  bool checked() const noexcept { return checked_; }
+  void set_checked(bool on) noexcept { s_.checked = on; }
+  bool checked() const noexcept { return s_.checked; }
   // Recording: every successful edit is appended to log() as a line of the landscape edit log
   // format (README.md "Landscape edit logs"). Started on a landscape that was never edited, the
   // log replays to the same state bit for bit. Started later, it begins with the current state
@@ -269,8 +158,8 @@ class EDGELAND_EXPORT Landscape {
   // replayed world has its own cells, so later edits may round differently there (within the
   // accuracy contract) and the state hashes differ.
   void start_log();
-  void stop_log() noexcept { logging_ = false; }
-  bool logging() const noexcept { return logging_; }
+  void stop_log() noexcept { s_.logging = false; }
+  bool logging() const noexcept { return s_.logging; }
   // The recorded lines, each ending in '\n'. O(length).
   std::string log() const;
 
@@ -279,27 +168,12 @@ class EDGELAND_EXPORT Landscape {
   void save(std::ostream& out) const;
   static Landscape load(std::istream& in, const LandscapeLimits& limits = {});
 
-  struct Node;     // the tree (spatial/src/node.hpp)
-  struct LogLine;  // the recorded log, a persistent list shared by copies
-  using AreaTable = std::array<Int128, kMaterialCount>;
-
  private:
-  Landscape() = default;
-  friend class LandscapeEditor;
-  friend class LandscapeLoader;
+  // The one way into the state for spatial/src (landscape_access.hpp).
   friend struct LandscapeAccess;
+  explicit Landscape(detail::LandscapeState state) : s_(std::move(state)) {}
 
-  Box64 world_;
-  LandscapeConfig config_;
-  LandscapeLimits limits_;
-  std::shared_ptr<const Node> root_;
-  std::shared_ptr<const AreaTable> areas_;  // twice the area of every solid material
-  PolygonId next_id_ = 1;
-  std::uint64_t edits_ = 0;  // successful edits since construction (or load)
-  Material initial_fill_ = kEmpty;
-  bool checked_ = false;
-  bool logging_ = false;
-  std::shared_ptr<const LogLine> log_;  // the last line recorded
+  detail::LandscapeState s_;
 };
 
 }  // namespace edgeland

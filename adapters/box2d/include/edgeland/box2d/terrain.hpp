@@ -21,7 +21,7 @@ b2Vec2 to_b2(const EngineUnits& units, Point64 p);
 struct TerrainOptions {
   SurfaceOptions surface;  // what is solid; the border as a wall or not
   EngineUnits units;       // the origin defaults to the world box's corner (see Terrain)
-  std::array<float, kMaterialCount> friction;  // per material (0: the wall); default 0.6
+  std::array<float, kMaterialCount> friction;  // by Material::value() (0: the wall); default 0.6
   // The world box cut into body_grid x body_grid regions, a static body per region with chains
   // (see Terrain). At least 1.
   std::int64_t body_grid = 16;

@@ -1,0 +1,42 @@
+#pragma once
+// ValidSet: a polygon set known to be valid (clip.hpp's operations take and return it).
+#include <utility>
+
+#include "edgeland/clip/types.hpp"
+#include "edgeland/kernel/errors.hpp"
+#include "edgeland/kernel/export.hpp"
+#include "edgeland/kernel/polygon.hpp"
+
+namespace edgeland {
+
+// A polygon set known to be valid, so that operations on it need not validate it again: a game
+// that carves one set thousands of times pays for validation once, when the set is built, not
+// on every operation (validation is O(n log n) in the whole set, the operation near-linear in
+// the part that changes). Constructed only by validating (throws InvalidInput) or as the output
+// of an operation of clip.hpp or relabel.hpp, which is valid by their guarantee (re-checked in
+// checked mode). Immutable: the only way to change it is another operation.
+class EDGELAND_EXPORT ValidSet {
+ public:
+  ValidSet() = default;  // the empty set
+  // Validates `set`; throws InvalidInput naming `which` operand on the first violation.
+  explicit ValidSet(PolygonSet set, Operand which = Operand::kSubject);
+  const PolygonSet& polygons() const noexcept { return set_; }
+  PolygonSet release() && noexcept { return std::move(set_); }
+
+ private:
+  struct Trusted {};
+  ValidSet(PolygonSet set, Trusted) noexcept : set_(std::move(set)) {}
+  friend struct ValidSetFactory;
+  PolygonSet set_;
+  bool canonical_ = false;  // in canonical form (an operation's output)
+  // No ring has three consecutive collinear vertices (canonical sets, and validated sets found
+  // so): the pipeline then tests only the vertices an operation creates for collinearity.
+  bool collinear_free_ = false;
+};
+
+struct ValidClipResult {
+  ValidSet set;
+  ClipStats stats;
+};
+
+}  // namespace edgeland

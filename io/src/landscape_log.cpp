@@ -1,0 +1,239 @@
+#include "edgeland/io/landscape_log.hpp"
+
+#include <array>
+#include <charconv>
+#include <utility>
+
+#include "edgeland/io/clip_log.hpp"
+#include "log_text.hpp"
+
+namespace edgeland::log {
+namespace {
+
+constexpr std::string_view kWorldKeyword = "world";
+
+struct EditKeyword {
+  std::string_view word;
+  LandscapeEditKind kind;
+  int materials;  // how many material numbers stand between the keyword and the WKT
+};
+constexpr std::array<EditKeyword, 4> kEditKeywords{
+    {{"carve", LandscapeEditKind::kCarve, 0},
+     {"fill", LandscapeEditKind::kFill, 1},
+     {"fill_empty", LandscapeEditKind::kFillEmpty, 1},
+     {"replace", LandscapeEditKind::kReplace, 2}}};
+
+LandscapeLogError bad_argument(std::size_t line, const std::string& reason) {
+  return LandscapeLogError(LandscapeLogErrorKind::kBadArgument, line, reason);
+}
+
+// A whole word as a decimal integer (an optional '-', then digits; no '+', no spaces).
+std::optional<std::int64_t> integer_of(std::string_view word) {
+  std::int64_t value = 0;
+  const char* end = word.data() + word.size();
+  const auto [stop, error] = std::from_chars(word.data(), end, value);
+  if (word.empty() || error != std::errc() || stop != end) return std::nullopt;
+  return value;
+}
+
+Material take_material(std::string_view& rest, std::string_view what, std::size_t line) {
+  const std::string_view word = take_word(rest);
+  if (word.empty()) throw bad_argument(line, std::string(what) + " is missing");
+  const std::optional<std::int64_t> value = integer_of(word);
+  if (!value || *value < 0 || *value > 255) {
+    throw bad_argument(line, std::string(what) + " '" + printable_excerpt(word) +
+                                 "' is not a material number 0..255");
+  }
+  return static_cast<Material>(*value);
+}
+
+std::int64_t take_coordinate(std::string_view& rest, std::size_t line) {
+  const std::string_view word = take_word(rest);
+  if (word.empty()) throw bad_argument(line, "world: expected X0 Y0 X1 Y1 [MATERIAL]");
+  const std::optional<std::int64_t> value = integer_of(word);
+  if (!value || !coord_in_range(*value)) {
+    throw bad_argument(line, "world: coordinate '" + printable_excerpt(word) +
+                                 "' is not an integer within +-" + std::to_string(kCoordBound));
+  }
+  return *value;
+}
+
+// `X0 Y0 X1 Y1 [MATERIAL]`, the box of positive width and height.
+WorldCommand parse_world(std::string_view rest, std::size_t line) {
+  WorldCommand world;
+  world.line = line;
+  world.box.min.x = take_coordinate(rest, line);
+  world.box.min.y = take_coordinate(rest, line);
+  world.box.max.x = take_coordinate(rest, line);
+  world.box.max.y = take_coordinate(rest, line);
+  if (!rest.empty()) world.fill = take_material(rest, "world: material", line);
+  if (!rest.empty()) {
+    throw bad_argument(
+        line, "world: unexpected '" + printable_excerpt(rest) + "' after X0 Y0 X1 Y1 [MATERIAL]");
+  }
+  if (world.box.min.x >= world.box.max.x || world.box.min.y >= world.box.max.y) {
+    throw bad_argument(line, "world: the box needs X0 < X1 and Y0 < Y1");
+  }
+  return world;
+}
+
+// `wkt` is the rest of `raw`, the whole line.
+WktGeometry parse_shape(std::string_view raw, std::string_view wkt, std::string_view keyword,
+                        std::size_t line) {
+  if (wkt.empty()) {
+    throw LandscapeLogError(LandscapeLogErrorKind::kMissingShape, line,
+                            std::string(keyword) + ": missing WKT shape");
+  }
+  try {
+    return read_wkt(wkt);
+  } catch (const WktError& error) {
+    const ShapeError where = shape_error(raw, wkt, error);
+    LandscapeLogError log_error(LandscapeLogErrorKind::kBadShape, line,
+                                std::string(keyword) + ": " + where.reason, where.column);
+    log_error.wkt_error = error.kind;
+    throw log_error;
+  }
+}
+
+LandscapeEdit parse_edit(const EditKeyword& keyword, std::string_view raw, std::string_view rest,
+                         std::size_t line) {
+  LandscapeEdit edit;
+  edit.kind = keyword.kind;
+  edit.line = line;
+  const std::string name(keyword.word);
+  if (keyword.materials == 2) edit.from = take_material(rest, name + ": FROM", line);
+  if (keyword.materials >= 1) {
+    edit.material =
+        take_material(rest, name + (keyword.materials == 2 ? ": TO" : ": material"), line);
+  }
+  edit.shape = parse_shape(raw, rest, keyword.word, line);
+  return edit;
+}
+
+const EditKeyword* edit_keyword(std::string_view word) {
+  for (const EditKeyword& k : kEditKeywords) {
+    if (k.word == word) return &k;
+  }
+  return nullptr;
+}
+
+// The first command word of the text, or empty when it has no command.
+std::string_view first_command(std::string_view text) {
+  while (!text.empty()) {
+    std::string_view line = trim_blanks(take_line(text));
+    if (!is_skipped_line(line)) return take_word(line);
+  }
+  return {};
+}
+
+LandscapeLogError missing_world(std::size_t line) {
+  return LandscapeLogError(LandscapeLogErrorKind::kMissingWorld, line,
+                           "a landscape log starts with `world X0 Y0 X1 Y1 [MATERIAL]`");
+}
+
+// Places one parsed command in the log: the world line first and only there.
+void add_command(ParsedLandscapeLog& parsed, LandscapeCommand command, std::size_t line) {
+  if (auto* world = std::get_if<WorldCommand>(&command)) {
+    if (parsed.world) {
+      throw LandscapeLogError(
+          LandscapeLogErrorKind::kRepeatedWorld, line,
+          "a second world line (the first is line " + std::to_string(parsed.world->line) + ")");
+    }
+    parsed.world = *world;
+    return;
+  }
+  if (!parsed.world) throw missing_world(line);
+  parsed.edits.push_back(std::get<LandscapeEdit>(std::move(command)));
+}
+
+}  // namespace
+
+const char* landscape_edit_keyword(LandscapeEditKind kind) noexcept {
+  for (const EditKeyword& k : kEditKeywords) {
+    if (k.kind == kind) return k.word.data();
+  }
+  return "?";
+}
+
+const char* landscape_log_error_kind_name(LandscapeLogErrorKind kind) noexcept {
+  switch (kind) {
+    case LandscapeLogErrorKind::kUnknownCommand:
+      return "unknown-command";
+    case LandscapeLogErrorKind::kMissingWorld:
+      return "missing-world";
+    case LandscapeLogErrorKind::kRepeatedWorld:
+      return "repeated-world";
+    case LandscapeLogErrorKind::kBadArgument:
+      return "bad-argument";
+    case LandscapeLogErrorKind::kMissingShape:
+      return "missing-shape";
+    case LandscapeLogErrorKind::kBadShape:
+      return "bad-shape";
+  }
+  return "?";
+}
+
+LandscapeLogError::LandscapeLogError(LandscapeLogErrorKind kind_, std::size_t line_,
+                                     const std::string& reason, std::size_t column_)
+    : Error(line_place(line_, column_) + ": " + reason),
+      kind(kind_),
+      line(line_),
+      column(column_) {}
+
+std::optional<LandscapeCommand> parse_landscape_line(std::string_view raw,
+                                                     std::size_t line_number) {
+  std::string_view rest = trim_blanks(raw);
+  if (is_skipped_line(rest)) return std::nullopt;
+  const std::string_view word = take_word(rest);
+  if (word == kWorldKeyword) return parse_world(rest, line_number);
+  if (const EditKeyword* keyword = edit_keyword(word)) {
+    return parse_edit(*keyword, raw, rest, line_number);
+  }
+  throw LandscapeLogError(LandscapeLogErrorKind::kUnknownCommand, line_number,
+                          "unknown command '" + printable_excerpt(word) +
+                              "' (expected world, carve, fill, fill_empty or replace)");
+}
+
+ParsedLandscapeLog parse_landscape_log(std::string_view text) {
+  ParsedLandscapeLog parsed;
+  std::size_t line_number = 0;
+  try {
+    while (!text.empty()) {
+      ++line_number;
+      if (std::optional<LandscapeCommand> command =
+              parse_landscape_line(take_line(text), line_number)) {
+        add_command(parsed, std::move(*command), line_number);
+      }
+    }
+    if (!parsed.world) throw missing_world(1);
+  } catch (const LandscapeLogError& error) {
+    parsed.error = error;
+  }
+  return parsed;
+}
+
+bool is_landscape_log(std::string_view text) { return first_command(text) == kWorldKeyword; }
+
+Landscape make_landscape(const WorldCommand& world) { return Landscape(world.box, world.fill); }
+
+ChangeSet apply_edit(Landscape& landscape, const LandscapeEdit& edit) {
+  const PolygonSet shape = shape_to_set(edit.shape, ClipOptions{.checked = landscape.checked()});
+  return apply_edit(landscape, edit.kind, shape, edit.material, edit.from);
+}
+
+ChangeSet apply_edit(Landscape& landscape, LandscapeEditKind kind, const PolygonSet& shape,
+                     Material material, Material from) {
+  switch (kind) {
+    case LandscapeEditKind::kCarve:
+      return landscape.carve(shape);
+    case LandscapeEditKind::kFill:
+      return landscape.fill(shape, material);
+    case LandscapeEditKind::kFillEmpty:
+      return landscape.fill_empty(shape, material);
+    case LandscapeEditKind::kReplace:
+      break;
+  }
+  return landscape.replace(shape, from, material);
+}
+
+}  // namespace edgeland::log

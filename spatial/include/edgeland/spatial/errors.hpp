@@ -1,0 +1,80 @@
+#pragma once
+// The landscape's errors: every one is an edgeland::Error (kernel/errors.hpp) and keeps its data
+// in fields. Edits also throw the kernel's InvalidInput / CoordinateOutOfRange for a bad shape.
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+#include "edgeland/kernel/bbox.hpp"
+#include "edgeland/kernel/errors.hpp"
+#include "edgeland/kernel/export.hpp"
+#include "edgeland/spatial/types.hpp"
+
+namespace edgeland {
+
+// Every landscape error is an edgeland::Error; each keeps its data in fields.
+class EDGELAND_EXPORT LandscapeError : public Error {
+ public:
+  using Error::Error;
+};
+
+// The world box or the configuration is unusable (inverted or degenerate box, box beyond the
+// coordinate bound, edge_cap < 32, merge_below >= edge_cap, min_cell_size < 1, grid_depth
+// outside -1..10).
+// `setting` names the rule broken; `world` is the world box given and `config` the
+// configuration, whichever of them is wrong.
+class EDGELAND_EXPORT InvalidConfig : public LandscapeError {
+ public:
+  enum class Setting : std::uint8_t {
+    kWorldOutOfRange,  // a corner beyond kCoordBound
+    kWorldEmpty,       // width or height not positive (inverted or degenerate)
+    kEdgeCap,          // edge_cap below 32
+    kMergeBelow,       // merge_below not below edge_cap
+    kMinCellSize,      // min_cell_size below 1
+    kGridDepth,        // grid_depth outside -1..10
+    kTree,             // not a TreeKind
+  };
+  InvalidConfig(Setting setting, const Box64& world, const LandscapeConfig& config);
+  Setting setting;
+  Box64 world;
+  LandscapeConfig config;
+};
+
+// A number given as a material is outside 0..255 (material.hpp: thrown where it becomes a
+// Material, before the call it is an argument of). `number` is the value given (saturated to
+// the int64 range).
+class EDGELAND_EXPORT InvalidMaterial : public LandscapeError {
+ public:
+  explicit InvalidMaterial(std::int64_t number);
+  std::int64_t number;
+};
+
+class EDGELAND_EXPORT LimitExceeded : public LandscapeError {
+ public:
+  enum class Limit : std::uint8_t { kVertices, kShapeVertices };
+  LimitExceeded(Limit limit, std::size_t maximum, std::size_t requested);
+  Limit limit;
+  std::size_t maximum;
+  std::size_t requested;
+};
+
+// A checked-mode invariant failed: a bug in edgeland. `state` is the landscape before the
+// edit as a save file (Landscape::load reads it), `log` an edit log that replays to it (exactly
+// when the landscape recorded its log from the start, else approximately: the world and one
+// fill per material) followed by the failing edit.
+class EDGELAND_EXPORT LandscapeInternalError : public LandscapeError {
+ public:
+  LandscapeInternalError(const std::string& what, std::string state, std::string log);
+  std::string state;
+  std::string log;
+};
+
+// A save file could not be read: truncated, corrupt, of another version, or describing a
+// world that breaks an invariant. `offset` is where reading stopped (bytes from the start).
+class EDGELAND_EXPORT LoadError : public LandscapeError {
+ public:
+  LoadError(const std::string& what, std::size_t offset);
+  std::size_t offset;
+};
+
+}  // namespace edgeland

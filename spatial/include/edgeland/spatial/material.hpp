@@ -1,0 +1,80 @@
+#pragma once
+// A material of the landscape: 0 is empty space, 1..255 are solid materials.
+//
+// A strong type, so that a number out of range cannot pass silently: as a plain uint8_t,
+// `fill(shape, 260)` filled material 4 and `replace(shape, 1, -1)` wrote 255 with no warning,
+// even under -Wconversion (issue 27, point 8). Any integer converts implicitly, checked: a value
+// outside 0..255 throws InvalidMaterial (spatial/errors.hpp) before anything happens, at compile
+// time where the value is a constant expression (`constexpr Material m = 300;` does not
+// compile). So every call written with a literal (`fill(shape, 2)`) reads as before, and a
+// computed number is checked exactly once, where it becomes a material. value() gives the
+// number back (an explicit step: a Material is not an integer, so it never indexes, adds or
+// shifts by accident).
+#include <compare>
+#include <concepts>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <string>
+#include <utility>
+
+#include "edgeland/kernel/export.hpp"
+
+namespace edgeland {
+
+namespace detail {
+// Throws InvalidMaterial(number); out of line, so this header needs no error class.
+[[noreturn]] EDGELAND_EXPORT void throw_invalid_material(std::int64_t number);
+}  // namespace detail
+
+// The integer types a material number may come as: every integer type but bool and the
+// character types (std::in_range takes no others, and 'a' is no material).
+template <class T>
+concept MaterialNumber = std::integral<T> && !std::same_as<T, bool> && !std::same_as<T, char> &&
+                         !std::same_as<T, wchar_t> && !std::same_as<T, char8_t> &&
+                         !std::same_as<T, char16_t> && !std::same_as<T, char32_t>;
+
+class Material {
+ public:
+  // Empty space.
+  constexpr Material() noexcept = default;
+  // Checked: 0..255, else InvalidMaterial (its `number` is the value given, saturated to the
+  // int64 range).
+  template <MaterialNumber T>
+  constexpr Material(T number) : value_(checked(number)) {}  // NOLINT: implicit by design
+
+  // The material's number, 0..255.
+  constexpr std::uint8_t value() const noexcept { return value_; }
+  // Not empty space.
+  constexpr bool solid() const noexcept { return value_ != 0; }
+
+  friend constexpr bool operator==(Material, Material) noexcept = default;
+  friend constexpr std::strong_ordering operator<=>(Material, Material) noexcept = default;
+
+ private:
+  template <class T>
+  static constexpr std::uint8_t checked(T number) {
+    if (!std::in_range<std::uint8_t>(number)) {
+      constexpr std::int64_t kMax = std::numeric_limits<std::int64_t>::max();
+      detail::throw_invalid_material(
+          std::cmp_greater(number, kMax) ? kMax : static_cast<std::int64_t>(number));
+    }
+    return static_cast<std::uint8_t>(number);
+  }
+  std::uint8_t value_ = 0;
+};
+
+// The number in decimal, as edit logs write it.
+inline std::string to_string(Material m) { return std::to_string(m.value()); }
+
+inline constexpr Material kEmpty{};
+// Materials 0..255: an array indexed by Material::value() has this many entries.
+inline constexpr std::size_t kMaterialCount = 256;
+
+}  // namespace edgeland
+
+template <>
+struct std::hash<edgeland::Material> {
+  std::size_t operator()(edgeland::Material m) const noexcept { return m.value(); }
+};

@@ -1,0 +1,102 @@
+#pragma once
+// The landscape's value types (landscape.hpp is the front end, errors.hpp its errors): what a
+// landscape is configured with, what its queries and edits hand out. Plain data, no behaviour.
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "edgeland/kernel/bbox.hpp"
+#include "edgeland/kernel/fraction.hpp"
+#include "edgeland/kernel/int128.hpp"
+#include "edgeland/kernel/point.hpp"
+#include "edgeland/kernel/polygon.hpp"
+#include "edgeland/kernel/predicates.hpp"
+#include "edgeland/spatial/material.hpp"
+
+namespace edgeland {
+
+using PolygonId = std::uint64_t;
+
+enum class TreeKind : std::uint8_t {
+  kQuadtree,  // four children, cut at both midpoint lines
+  kKdTree,    // two children, cut at the midpoint of the longer side (x on ties)
+};
+
+struct LandscapeConfig {
+  TreeKind tree = TreeKind::kQuadtree;
+  // A cell whose polygons have more edges than this splits (unless both its sides are at most
+  // min_cell_size); siblings whose cells together have at most merge_below edges merge back.
+  // merge_below < edge_cap is the hysteresis that keeps a digger going back and forth over a
+  // cell line from splitting and merging on every edit. edge_cap >= 32: a cell crossed by a
+  // boundary or two must not split (a long slanted boundary would split every cell along it).
+  std::uint32_t edge_cap = 64;
+  std::uint32_t merge_below = 24;
+  std::int64_t min_cell_size = 16;
+  // >= 0: a uniform grid (thesis 4.4): the tree is built to this depth at once and never
+  // splits or merges. -1: adaptive.
+  int grid_depth = -1;
+};
+
+// Limits on what one landscape may hold; an edit that would pass one throws LimitExceeded and
+// changes nothing.
+struct LandscapeLimits {
+  std::size_t max_vertices = std::size_t{1} << 28;        // all polygons together
+  std::size_t max_shape_vertices = std::size_t{1} << 24;  // one edit's shape
+};
+
+// One polygon of the landscape as a query or a change set shows it.
+struct PolygonView {
+  PolygonId id = 0;
+  Material material = kEmpty;
+  const Polygon* polygon = nullptr;  // valid while the landscape (or change set) holding it lives
+  Box64 cell;                        // the closed box of its cell
+};
+
+// One cell of the tree.
+struct CellView {
+  Box64 box;
+  std::uint32_t depth = 0;
+  std::size_t polygons = 0, vertices = 0;
+};
+
+// What an edit changed.
+struct ChangeSet {
+  std::vector<PolygonId> removed;  // ids that no longer exist, ascending
+  struct Added {
+    PolygonId id;
+    Material material;
+    Polygon polygon;
+    Box64 cell;
+  };
+  std::vector<Added> added;  // by ascending id
+  std::vector<Box64> cells;  // the cells whose content is new (leaves after the edit)
+  // Twice the change of area per material (exact; sums to 0 over all materials including 0).
+  std::vector<std::pair<Material, Int128>> twice_area_delta;
+  bool empty() const noexcept { return removed.empty() && added.empty(); }
+};
+
+// The material profile along a segment: a place where the material changes.
+struct MaterialCrossing {
+  Fraction t;           // at from + t (to - from), 0 <= t <= 1 (exact)
+  RationalPoint point;  // the same point, exactly
+  Point64 rounded;      // round_to_grid(point): the kernel's one rounding
+  Material before = kEmpty, after = kEmpty;
+  PolygonId polygon = 0;   // the polygon entered (after != 0), else the one left
+  std::uint32_t edge = 0;  // its edge crossed: from vertex edge to vertex edge + 1
+  Point64 normal;          // that edge's outward normal (dy, -dx): not normalised, exact
+};
+
+// What check() found; empty when every invariant holds.
+struct LandscapeReport {
+  std::vector<std::string> problems;  // one line each, e.g. "cell (0 0 64 64): polygon 3 outside"
+  bool ok() const noexcept { return problems.empty(); }
+};
+
+struct LandscapeStats {
+  std::size_t polygons = 0, vertices = 0, cells = 0, depth = 0;
+  std::size_t bytes = 0;  // memory of the cells and nodes this landscape holds (shared or not)
+};
+
+}  // namespace edgeland
