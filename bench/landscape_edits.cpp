@@ -36,28 +36,15 @@ const char* workload_name(Workload w) {
 
 std::size_t edit_count() { return env_count("EDGELAND_LANDSCAPE_EDITS", 10000); }
 
-std::vector<ValidSet> circles(std::uint64_t seed, std::size_t n) {
-  std::vector<Polygon> polygons;
-  for (const Point64& c : random_points(seed, n, kWorld)) polygons.push_back(ngon(c, 40, 32));
-  return as_shapes(polygons);
-}
-
-std::vector<ValidSet> strokes(std::size_t n) {
-  const std::vector<Point64> walk = random_walk(0xD16'6E2, n, 10.0, inset(kWorld, 64));
-  std::vector<Polygon> polygons;
-  for (std::size_t i = 0; i < n; ++i) polygons.push_back(capsule(walk[i], walk[i + 1], 20, 32));
-  return as_shapes(polygons);
-}
-
 const std::vector<ValidSet>& shapes(Workload w) {
   static std::map<Workload, std::vector<ValidSet>> cache;
   auto it = cache.find(w);
   if (it == cache.end()) {
     const std::size_t n = edit_count();
     it = cache
-             .emplace(w, w == Workload::kCarve ? circles(0xCA4'F1A6, n)
-                         : w == Workload::kDig ? strokes(n)
-                                               : circles(0xF111'0002, n))
+             .emplace(w, w == Workload::kCarve ? explosions(kCarveSeed, n, kWorld)
+                         : w == Workload::kDig ? digger_strokes(kDigSeed, n, kWorld)
+                                               : explosions(kFillSeed, n, kWorld))
              .first;
   }
   return it->second;

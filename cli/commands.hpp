@@ -11,6 +11,7 @@
   X(validate) \
   X(clip) \
   X(replay) \
+  X(render) \
   X(demo) \
   X(export)
 // clang-format on

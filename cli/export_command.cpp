@@ -20,11 +20,11 @@
 #include "edgeland/clip/clip.hpp"
 #include "edgeland/game/islands.hpp"
 #include "edgeland/game/surface_chains.hpp"
+#include "edgeland/io/landscape_replay.hpp"
 #include "edgeland/kernel/convex_pieces.hpp"
 #include "edgeland/kernel/triangulate.hpp"
 #include "edgeland/kernel/wkt_writer.hpp"
 #include "input_text.hpp"
-#include "landscape_replay.hpp"
 
 namespace edgeland::cli {
 namespace {
@@ -50,7 +50,7 @@ class ExportError : public std::runtime_error {
 std::vector<Material> material_list(const std::string& text, const char* option) {
   std::vector<Material> out;
   if (text == "all") {
-    for (int m = 1; m < 256; ++m) out.push_back(static_cast<Material>(m));
+    for (int m = 1; m < 256; ++m) out.push_back(m);
     return out;
   }
   std::stringstream in(text);
@@ -64,7 +64,7 @@ std::vector<Material> material_list(const std::string& text, const char* option)
     }
     if (used != item.size() || value < 0 || value > 255)
       throw ExportError(std::string(option) + ": '" + item + "' is not a material 0..255");
-    out.push_back(static_cast<Material>(value));
+    out.push_back(value);
   }
   return out;
 }
@@ -108,12 +108,12 @@ void export_world(const Landscape& world, const ExportOptions& o, Counts& n) {
   world.polygons_in(world.world(), [&](const PolygonView& v) {
     for (const Triangle& t : triangulate(*v.polygon)) {
       const Polygon& p = *v.polygon;
-      mesh << int(v.material.value()) << '\t' << to_wkt(Polygon{p[t.a], p[t.b], p[t.c]}) << '\n';
+      mesh << to_string(v.material) << '\t' << to_wkt(Polygon{p[t.a], p[t.b], p[t.c]}) << '\n';
       ++n.triangles;
     }
     if (!surface.materials.is_solid(v.material)) return true;
     for (const Polygon& piece : convex_pieces(*v.polygon, o.max_piece_vertices)) {
-      pieces << int(v.material.value()) << '\t' << to_wkt(piece) << '\n';
+      pieces << to_string(v.material) << '\t' << to_wkt(piece) << '\n';
       ++n.pieces;
     }
     return true;
@@ -152,7 +152,8 @@ int run_export(const ExportOptions& o) {
     std::cout << out.dump() << '\n';
     if (replayed.failure) {
       std::cerr << "edgeland export: " << o.path << ": " << replayed.failure->message << '\n';
-      return exit_status(*replayed.failure);
+      return replayed.failure->kind == log::ReplayFailure::Kind::kInternal ? kExitInternal
+                                                                           : kExitUnreadable;
     }
     return kExitOk;
   } catch (const InputError& e) {

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "command.hpp"
+#include "edgeland/io/landscape_replay.hpp"
 #include "landscape_dump.hpp"
 #include "landscape_png.hpp"
 
@@ -40,14 +41,10 @@ std::string log_name(const ReplayOptions& options) {
 
 int report_failure(const ReplayOptions& options, const log::ReplayFailure& failure) {
   std::cerr << "edgeland replay: " << log_name(options) << ": " << failure.message << '\n';
-  return exit_status(failure);
+  return failure.kind == log::ReplayFailure::Kind::kInternal ? kExitInternal : kExitUnreadable;
 }
 
 }  // namespace
-
-int exit_status(const log::ReplayFailure& failure) {
-  return failure.kind == log::ReplayFailure::Kind::kInternal ? kExitInternal : kExitUnreadable;
-}
 
 int replay_landscape_log(std::string_view text, const ReplayOptions& options) {
   const log::LandscapeReplay replay =

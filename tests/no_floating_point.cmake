@@ -1,9 +1,9 @@
-# Fails if a source or header of kernel/, clip/, spatial/, io/ or game/ names a floating-point
-# type or function (results must be bit-identical across compilers: issue 15, "Standards").
-# Comments are stripped first, so prose may mention them.
+# Fails if a source or header of kernel/, clip/, spatial/, io/, game/ or play/core/ (the front
+# ends' shared core) names a floating-point type or function (results must be bit-identical
+# across compilers: issue 15, "Standards"). Comments are stripped first, so prose may mention them.
 file(GLOB_RECURSE files ${ROOT}/kernel/*.hpp ${ROOT}/kernel/*.cpp ${ROOT}/clip/*.hpp
   ${ROOT}/clip/*.cpp ${ROOT}/spatial/*.hpp ${ROOT}/spatial/*.cpp ${ROOT}/io/*.hpp ${ROOT}/io/*.cpp
-  ${ROOT}/game/*.hpp ${ROOT}/game/*.cpp)
+  ${ROOT}/game/*.hpp ${ROOT}/game/*.cpp ${ROOT}/play/core/*.hpp ${ROOT}/play/core/*.cpp)
 set(found "")
 foreach(f ${files})
   file(STRINGS ${f} lines)

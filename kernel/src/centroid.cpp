@@ -21,7 +21,8 @@ void require_centroid_input(const PolygonSet& set) {
     for (std::size_t v = 0; v < set[i].size(); ++v)
       if (!in_range(set[i][v])) throw CoordinateOutOfRange(Operand::kPolygon, i, 0, v, set[i][v]);
   }
-  if (vertices > kMaxCentroidVertices) throw TooManyVertices(kMaxCentroidVertices, vertices);
+  if (static_cast<std::uint64_t>(vertices) > kMaxCentroidVertices)
+    throw TooManyVertices(static_cast<std::size_t>(kMaxCentroidVertices), vertices);
 }
 
 // Six times the first moments about both axes, summed over every edge of every ring of at least

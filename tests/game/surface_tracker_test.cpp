@@ -110,6 +110,27 @@ TEST(SurfaceTracker, AnEditReplacesOnlyChainsNearIt) {
   EXPECT_EQ(tracker.chains().size(), before);
 }
 
+// An edit replaces only the chains that changed, even in the cell it re-cuts: two holes carved
+// into one cell keep their chains (ids and all) when a third hole is carved beside them.
+TEST(SurfaceTracker, AnEditKeepsTheUnchangedChainsOfItsCell) {
+  LandscapeConfig grid;
+  grid.grid_depth = 2;  // 4 x 4 cells of 64 units
+  Landscape world({{0, 0}, {256, 256}}, 1, grid);
+  world.carve(PolygonSet{{{70, 70}, {76, 70}, {76, 76}, {70, 76}},
+                         {{100, 70}, {106, 70}, {106, 76}, {100, 76}}});
+  SurfaceTracker tracker(world);
+  ASSERT_EQ(tracker.chains().size(), 2u);  // two closed loops in the cell (64 64 128 128)
+  const auto kept = tracker.chains();
+  const ChangeSet changes = world.carve(PolygonSet{{{80, 100}, {86, 100}, {86, 106}, {80, 106}}});
+  ASSERT_EQ(changes.cells, (std::vector<Box64>{{{64, 64}, {128, 128}}}));
+  const ChainUpdate u = tracker.update(world, changes);
+  EXPECT_TRUE(u.removed.empty());
+  ASSERT_EQ(u.added.size(), 1u);
+  EXPECT_TRUE(u.added.front().second.closed);
+  EXPECT_EQ(u.added.front().second.points.size(), 4u);
+  for (const auto& [id, chain] : kept) EXPECT_EQ(tracker.chains().at(id), chain);
+}
+
 // A long game: hundreds of edits in a layered world whose cells split and merge all the time,
 // with and without a wall, water not solid; the mirror is checked against a full export.
 TEST(SurfaceTracker, MirrorHoldsOverALongGame) {

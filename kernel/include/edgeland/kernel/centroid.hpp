@@ -2,6 +2,7 @@
 // The exact centroid (centre of mass at uniform density) of a polygon set: where the game layer
 // puts a detached island's body.
 #include <cstddef>
+#include <cstdint>
 
 #include "edgeland/kernel/export.hpp"
 #include "edgeland/kernel/polygon.hpp"
@@ -12,7 +13,9 @@ namespace edgeland {
 // The most vertices, all rings together, centroid() accepts: floor((2^127 - 1) / (4 B^3)) with
 // B = kCoordBound, about 2^32 (proofs/: centroid_sums_int128). Each edge adds at most 4 B^3 to a
 // moment sum, so the sums stay within Int128 up to this many edges.
-inline constexpr std::size_t kMaxCentroidVertices = 4294967302;
+// A 64-bit constant: where std::size_t has 32 bits (WebAssembly) it would wrap around to 6, and
+// no vector there can hold more vertices than it anyway.
+inline constexpr std::uint64_t kMaxCentroidVertices = 4294967302;
 
 // The centroid of the set's area, each ring weighted by its signed area: for a valid polygon set
 // (validate(set) passes) the centre of mass of the region it covers. Exact, as a RationalPoint

@@ -1,0 +1,50 @@
+#include "terrain_mesh.hpp"
+
+#include "edgeland/game/render_meshes.hpp"
+#include "material_palette.hpp"
+
+namespace edgeland::play {
+
+void TerrainMesh::add(PolygonId id, Material material, const Polygon& polygon) {
+  if (material == kEmpty) return;
+  const cli::Rgb c = cli::material_colour(material);
+  Mesh mesh;
+  for (const Point64& p : polygon) {
+    const SDL_FPoint at{view_.x(static_cast<double>(p.x)), view_.y(static_cast<double>(p.y))};
+    mesh.vertices.push_back({at, {c.r, c.g, c.b, 255}, {0, 0}});
+  }
+  for (const Triangle& t : polygon_mesh(id, material, polygon).triangles) {
+    for (const std::uint32_t i : {t.a, t.b, t.c}) mesh.indices.push_back(static_cast<int>(i));
+  }
+  triangles_ += mesh.indices.size() / 3;
+  meshes_[id] = std::move(mesh);
+}
+
+void TerrainMesh::apply(const ChangeSet& changes) {
+  for (const PolygonId id : changes.removed) {
+    const auto it = meshes_.find(id);
+    if (it == meshes_.end()) continue;
+    triangles_ -= it->second.indices.size() / 3;
+    meshes_.erase(it);
+  }
+  for (const ChangeSet::Added& a : changes.added) add(a.id, a.material, a.polygon);
+}
+
+void TerrainMesh::reset(const Landscape& landscape) {
+  meshes_.clear();
+  triangles_ = 0;
+  landscape.polygons_in(landscape.world(), [&](const PolygonView& v) {
+    add(v.id, v.material, *v.polygon);
+    return true;
+  });
+}
+
+void TerrainMesh::draw(SDL_Renderer* renderer) const {
+  for (const auto& [id, mesh] : meshes_) {
+    SDL_RenderGeometry(renderer, nullptr, mesh.vertices.data(),
+                       static_cast<int>(mesh.vertices.size()), mesh.indices.data(),
+                       static_cast<int>(mesh.indices.size()));
+  }
+}
+
+}  // namespace edgeland::play
