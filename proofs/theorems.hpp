@@ -30,6 +30,7 @@ std::vector<Theorem> area_theorems();        // twice-area accumulation (area.cp
 std::vector<Theorem> centroid_theorems();    // moment sums and denominator (centroid.cpp)
 std::vector<Theorem> refutation_theorems();  // orient in int64 at the int32 bound
 std::vector<Theorem> probe_theorems();       // rays, exact points, closed pixels, grid sizing
+std::vector<Theorem> shape_theorems();       // the shape builders (shapes.hpp)
 
 // Input coordinates, declared in this order (braced initialization evaluates left to right,
 // so counterexamples list them in reading order).

@@ -17,6 +17,8 @@ const char* operand_name(Operand o) {
       return "query";
     case Operand::kPolygon:
       return "polygon";
+    case Operand::kShape:
+      return "shape";
   }
   return "?";  // Not reached by tests: the switch covers every Operand.
 }
@@ -90,9 +92,13 @@ CoordinateOutOfRange::CoordinateOutOfRange(Operand which, std::size_t vertex_ind
 
 CoordinateOutOfRange CoordinateOutOfRange::query_argument(std::size_t index, const char* name,
                                                           Point64 location) {
-  return CoordinateOutOfRange(Operand::kQuery, index, location,
-                              std::string(rule_name(Rule::kCoordinateOutOfRange)) + ": " + name +
-                                  " at " + text(location));
+  return argument(Operand::kQuery, index, name, location);
+}
+
+CoordinateOutOfRange CoordinateOutOfRange::argument(Operand which, std::size_t index,
+                                                    const char* name, Point64 location) {
+  const std::string rule = rule_name(Rule::kCoordinateOutOfRange);
+  return CoordinateOutOfRange(which, index, location, rule + ": " + name + " at " + text(location));
 }
 
 InvalidBox::InvalidBox(Operand which, const Box64& b)
@@ -110,6 +116,15 @@ InvalidArgument::InvalidArgument(const char* name, std::size_t given, std::size_
       argument(name),
       value(given),
       minimum(least) {}
+
+ArgumentOutOfRange::ArgumentOutOfRange(const char* name, std::int64_t given, std::int64_t least,
+                                       std::int64_t most)
+    : Error(std::string("argument out of range: ") + name + " = " + std::to_string(given) +
+            ", must be in [" + std::to_string(least) + ", " + std::to_string(most) + "]"),
+      argument(name),
+      value(given),
+      minimum(least),
+      maximum(most) {}
 
 NonPositiveArea::NonPositiveArea(Int128 total)
     : Error("no centroid: the total twice-area " + to_string(total) + " is not positive"),

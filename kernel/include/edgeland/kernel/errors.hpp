@@ -21,8 +21,9 @@ class EDGELAND_EXPORT Error : public std::runtime_error {
 
 // Which operand an InvalidInput error is about: the clipper's subject or clip (a landscape
 // edit's shape is its clip), the rings of normalize or import_polygons, a query's point or
-// box, or the polygon (set) of a polygon algorithm (triangulate, convex_pieces, centroid).
-enum class Operand : std::uint8_t { kSubject, kClip, kRings, kQuery, kPolygon };
+// box, the polygon (set) of a polygon algorithm (triangulate, convex_pieces, centroid), or the
+// points a shape builder is given (shapes.hpp).
+enum class Operand : std::uint8_t { kSubject, kClip, kRings, kQuery, kPolygon, kShape };
 
 // An operand failed validation; `violation` says which rule, polygon and edge.
 class EDGELAND_EXPORT InvalidInput : public Error {
@@ -59,6 +60,10 @@ class EDGELAND_EXPORT CoordinateOutOfRange : public InvalidInput {
   // the argument's index (0: the point, `from` or a box's min; 1: `to` or a box's max), and the
   // message names the argument: "invalid query: coordinate-out-of-range: to at (2147483648 0)".
   static CoordinateOutOfRange query_argument(std::size_t index, const char* name, Point64 where);
+  // The same for any operation's point argument: "invalid shape: coordinate-out-of-range:
+  // center at (2147483648 0)".
+  static CoordinateOutOfRange argument(Operand operand, std::size_t index, const char* name,
+                                       Point64 where);
   std::size_t polygon;
   std::size_t ring;
   std::size_t vertex;
@@ -98,6 +103,20 @@ class EDGELAND_EXPORT InvalidArgument : public Error {
   const char* argument;
   std::size_t value;
   std::size_t minimum;
+};
+
+// A number outside the range an operation accepts (a shape builder's radius, side count, half
+// extent or turn denominator: shapes.hpp). `argument` names it as in the signature; the
+// accepted range is [minimum, maximum]. "argument out of range: radius = 0, must be in
+// [1, 8589934592]".
+class EDGELAND_EXPORT ArgumentOutOfRange : public Error {
+ public:
+  ArgumentOutOfRange(const char* argument, std::int64_t value, std::int64_t minimum,
+                     std::int64_t maximum);
+  const char* argument;
+  std::int64_t value;
+  std::int64_t minimum;
+  std::int64_t maximum;
 };
 
 // A polygon set whose total signed area is not positive, so it has no centroid (centroid.hpp):

@@ -196,4 +196,36 @@ constexpr W cells_area(W s, W n) {
   return s * s * n;
 }
 
+// --- Shape builders (shapes.hpp): fixed point with `one` = 2^62, points within 2^35 ---------
+
+// One step of the Taylor series of cosine and sine (shape_trig.cpp): the next term
+// x^j / j! from the last, floor(floor(t x / one) / j), for 0 <= t, x <= one and j >= 1.
+template <class W>
+constexpr W taylor_step(W t, W x, W one, W j) {
+  return floor_div(floor_div(t * x, one), j);
+}
+
+// The angle rem / q of an eighth of a turn in fixed point: floor(quarter_pi rem / q), for
+// 0 <= rem <= q <= 2^48 and quarter_pi = pi/4 in fixed point.
+template <class W>
+constexpr W octant_angle(W quarter_pi, W rem, W q) {
+  return floor_div(quarter_pi * rem, q);
+}
+
+// A point's offset along the rotated axes: (a c - b s) / one rounded to the nearest integer,
+// halves up, for |a|, |b| <= 2^33 (a radius or half extent) and |c|, |s| <= one (a unit vector's
+// components in fixed point). With b = 0 the offset of a point at distance a in direction c.
+template <class W>
+constexpr W rotated_offset(W a, W b, W c, W s, W one) {
+  return floor_div(a * c - b * s + floor_div(one, W(2)), one);
+}
+
+// Where the segment from a (x < limit) to b (x > limit) crosses the line x = limit: at
+// y = ay + num / den, with num = (limit - ax)(by - ay) and den = bx - ax > 0 (shape_cut.cpp
+// rounds it toward the shape's inside with floor_div).
+template <class W>
+constexpr W crossing_numerator(W limit, W ax, W ay, W by) {
+  return (limit - ax) * (by - ay);
+}
+
 }  // namespace edgeland::formulas
