@@ -15,13 +15,14 @@ constexpr std::string_view kWorldKeyword = "world";
 struct EditKeyword {
   std::string_view word;
   LandscapeEditKind kind;
-  int materials;  // how many material numbers stand between the keyword and the WKT
+  int materials;  // how many material numbers stand between the keyword and the WKT (-1: pairs)
 };
-constexpr std::array<EditKeyword, 4> kEditKeywords{
+constexpr std::array<EditKeyword, 5> kEditKeywords{
     {{"carve", LandscapeEditKind::kCarve, 0},
      {"fill", LandscapeEditKind::kFill, 1},
      {"fill_empty", LandscapeEditKind::kFillEmpty, 1},
-     {"replace", LandscapeEditKind::kReplace, 2}}};
+     {"replace", LandscapeEditKind::kReplace, 2},
+     {"relabel", LandscapeEditKind::kRelabel, -1}}};
 
 LandscapeLogError bad_argument(std::size_t line, const std::string& reason) {
   return LandscapeLogError(LandscapeLogErrorKind::kBadArgument, line, reason);
@@ -95,12 +96,28 @@ WktGeometry parse_shape(std::string_view raw, std::string_view wkt, std::string_
   }
 }
 
+// relabel's `FROM TO` pairs, up to the WKT (whose keyword is no number); a FROM at most once.
+MaterialMap take_pairs(std::string_view& rest, std::size_t line) {
+  MaterialMap map;
+  std::array<bool, kMaterialCount> named{};
+  for (std::string_view ahead = rest; integer_of(take_word(ahead)); ahead = rest) {
+    const Material from = take_material(rest, "relabel: FROM", line);
+    if (named[from.value()]) {
+      throw bad_argument(line, "relabel: FROM " + to_string(from) + " is given twice");
+    }
+    named[from.value()] = true;
+    map.set(from, take_material(rest, "relabel: TO", line));
+  }
+  return map;
+}
+
 LandscapeEdit parse_edit(const EditKeyword& keyword, std::string_view raw, std::string_view rest,
                          std::size_t line) {
   LandscapeEdit edit;
   edit.kind = keyword.kind;
   edit.line = line;
   const std::string name(keyword.word);
+  if (keyword.materials < 0) edit.map = take_pairs(rest, line);
   if (keyword.materials == 2) edit.from = take_material(rest, name + ": FROM", line);
   if (keyword.materials >= 1) {
     edit.material =
@@ -191,7 +208,7 @@ std::optional<LandscapeCommand> parse_landscape_line(std::string_view raw,
   }
   throw LandscapeLogError(LandscapeLogErrorKind::kUnknownCommand, line_number,
                           "unknown command '" + printable_excerpt(word) +
-                              "' (expected world, carve, fill, fill_empty or replace)");
+                              "' (expected world, carve, fill, fill_empty, replace or relabel)");
 }
 
 ParsedLandscapeLog parse_landscape_log(std::string_view text) {
@@ -218,6 +235,7 @@ Landscape make_landscape(const WorldCommand& world) { return Landscape(world.box
 
 ChangeSet apply_edit(Landscape& landscape, const LandscapeEdit& edit) {
   const PolygonSet shape = shape_to_set(edit.shape, ClipOptions{.checked = landscape.checked()});
+  if (edit.kind == LandscapeEditKind::kRelabel) return landscape.relabel(shape, edit.map);
   return apply_edit(landscape, edit.kind, shape, edit.material, edit.from);
 }
 
@@ -231,6 +249,7 @@ ChangeSet apply_edit(Landscape& landscape, LandscapeEditKind kind, const Polygon
     case LandscapeEditKind::kFillEmpty:
       return landscape.fill_empty(shape, material);
     case LandscapeEditKind::kReplace:
+    case LandscapeEditKind::kRelabel:
       break;
   }
   return landscape.replace(shape, from, material);

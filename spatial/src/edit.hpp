@@ -25,6 +25,11 @@ struct EditTable {
     t[from.value()] = to.value();
     return {t};
   }
+  static EditTable relabel(const MaterialMap& map) {
+    std::vector<RegionLabel> t(kMaterialCount);
+    for (std::size_t i = 0; i < t.size(); ++i) t[i] = map[static_cast<std::uint8_t>(i)].value();
+    return {t};
+  }
 };
 
 // Builds the tree after one edit from the landscape's current one, never touching the

@@ -153,6 +153,11 @@ ChangeSet Landscape::replace(const ValidSet& shape, Material from, Material to) 
     return detail::replace_line(shape.polygons(), from, to);
   });
 }
+ChangeSet Landscape::relabel(const ValidSet& shape, const MaterialMap& map) {
+  return LandscapeEditor(*this, shape, EditTable::relabel(map)).run(*this, [&] {
+    return detail::relabel_line(shape.polygons(), map);
+  });
+}
 ChangeSet Landscape::carve(const PolygonSet& shape) { return carve(shape_of(shape)); }
 ChangeSet Landscape::fill(const PolygonSet& shape, Material m) { return fill(shape_of(shape), m); }
 ChangeSet Landscape::fill_empty(const PolygonSet& shape, Material m) {
@@ -160,6 +165,9 @@ ChangeSet Landscape::fill_empty(const PolygonSet& shape, Material m) {
 }
 ChangeSet Landscape::replace(const PolygonSet& shape, Material from, Material to) {
   return replace(shape_of(shape), from, to);
+}
+ChangeSet Landscape::relabel(const PolygonSet& shape, const MaterialMap& map) {
+  return relabel(shape_of(shape), map);
 }
 
 Int128 Landscape::twice_area(Material m) const {

@@ -23,6 +23,14 @@ std::string fill_empty_line(const PolygonSet& shape, Material m) {
 std::string replace_line(const PolygonSet& shape, Material from, Material to) {
   return "replace " + number(from) + " " + number(to) + " " + to_wkt(shape) + "\n";
 }
+std::string relabel_line(const PolygonSet& shape, const MaterialMap& map) {
+  std::string line = "relabel ";
+  for (std::size_t i = 0; i < kMaterialCount; ++i) {
+    const Material from = static_cast<std::uint8_t>(i);
+    if (map[from] != from) line += number(from) + " " + number(map[from]) + " ";
+  }
+  return line + to_wkt(shape) + "\n";
+}
 std::string world_line(const Box64& w, Material fill) {
   std::string s = "world " + std::to_string(w.min.x) + " " + std::to_string(w.min.y) + " " +
                   std::to_string(w.max.x) + " " + std::to_string(w.max.y);

@@ -22,11 +22,13 @@ struct LogLine {
   std::string text;  // one line, with its '\n'
 };
 
-// "carve WKT", "fill M WKT", "fill_empty M WKT", "replace FROM TO WKT", each ending in '\n'.
+// "carve WKT", "fill M WKT", "fill_empty M WKT", "replace FROM TO WKT", "relabel [FROM TO]...
+// WKT" (the pairs where the map changes a material, ascending), each ending in '\n'.
 std::string carve_line(const PolygonSet& shape);
 std::string fill_line(const PolygonSet& shape, Material m);
 std::string fill_empty_line(const PolygonSet& shape, Material m);
 std::string replace_line(const PolygonSet& shape, Material from, Material to);
+std::string relabel_line(const PolygonSet& shape, const MaterialMap& map);
 // "world X0 Y0 X1 Y1[ M]".
 std::string world_line(const Box64& world, Material fill);
 

@@ -57,6 +57,33 @@ TEST(LandscapeLogParser, ReadsEveryCommandAndSkipsCommentsBlankLinesAndCarriageR
   EXPECT_EQ(parsed.edits[3].line, 8u);
 }
 
+// relabel's FROM TO pairs (issue 27, point 11): any number of them, then the shape; the
+// materials not named stay.
+TEST(LandscapeLogParser, RelabelReadsItsPairs) {
+  const auto edit = std::get<LandscapeEdit>(
+      *parse_landscape_line(std::string("relabel 1 2 2 1\t3 0 ") + kBox, 4));
+  EXPECT_EQ(edit.kind, LandscapeEditKind::kRelabel);
+  EXPECT_EQ(edit.map, MaterialMap().set(1, 2).set(2, 1).set(3, 0));
+  EXPECT_EQ(edit.shape.polygons.size(), 1u);
+  const auto none =
+      std::get<LandscapeEdit>(*parse_landscape_line(std::string("relabel ") + kBox, 1));
+  EXPECT_EQ(none.map, MaterialMap());
+  EXPECT_STREQ(landscape_edit_keyword(LandscapeEditKind::kRelabel), "relabel");
+}
+
+TEST(LandscapeLogParser, RelabelRefusesHalfPairsRepeatsAndBadMaterials) {
+  const LandscapeLogError half = error_of(std::string("relabel 1 ") + kBox);
+  EXPECT_EQ(half.kind, LandscapeLogErrorKind::kBadArgument);
+  EXPECT_NE(std::string(half.what()).find("relabel: TO 'POLYGON'"), std::string::npos)
+      << half.what();
+  const LandscapeLogError twice = error_of(std::string("relabel 1 2 1 3 ") + kBox);
+  EXPECT_EQ(twice.kind, LandscapeLogErrorKind::kBadArgument);
+  EXPECT_STREQ(twice.what(), "line 3: relabel: FROM 1 is given twice");
+  EXPECT_EQ(error_of(std::string("relabel 1 256 ") + kBox).kind,
+            LandscapeLogErrorKind::kBadArgument);
+  EXPECT_EQ(error_of("relabel 1 2").kind, LandscapeLogErrorKind::kMissingShape);
+}
+
 TEST(LandscapeLogParser, WorldWithoutMaterialIsEmptyAndTheWholeBoundIsAllowed) {
   const auto world = std::get<WorldCommand>(
       *parse_landscape_line("world -2147483647 -2147483647 2147483647 2147483647", 1));
@@ -219,7 +246,8 @@ Ring random_ring(cli::SplitMix64& random, const Box64& area) {
   return ring;
 }
 
-// `count` random edits of every kind (materials 0..6, so fill 0 and replace from or to 0 too),
+// `count` random edits of every kind (materials 0..6, so fill 0 and replace from or to 0 too;
+// relabels of random maps of 0..6),
 // each shape a valid set made by the OGC import; some reach past the world box.
 void random_edits(Landscape& l, std::uint64_t seed, int count) {
   cli::SplitMix64 random(seed);
@@ -229,10 +257,16 @@ void random_edits(Landscape& l, std::uint64_t seed, int count) {
     std::vector<std::vector<Ring>> rings{{random_ring(random, area)}};
     if (random.chance(20)) rings.push_back({random_ring(random, area)});
     const PolygonSet shape = import_polygons(rings).polygons;
-    const auto kind = static_cast<LandscapeEditKind>(random.between(0, 3));
+    const auto kind = static_cast<LandscapeEditKind>(random.between(0, 4));
     const auto material = static_cast<Material>(random.between(0, 6));
     const auto from = static_cast<Material>(random.between(0, 6));
-    apply_edit(l, kind, shape, material, from);
+    if (kind != LandscapeEditKind::kRelabel) {
+      apply_edit(l, kind, shape, material, from);
+      continue;
+    }
+    MaterialMap map;
+    for (int m = 0; m < 7; ++m) map.set(m, static_cast<Material>(random.between(0, 6)));
+    l.relabel(shape, map);
   }
 }
 

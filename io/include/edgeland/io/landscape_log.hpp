@@ -11,6 +11,8 @@
 //   fill MATERIAL WKT              everything inside becomes MATERIAL
 //   fill_empty MATERIAL WKT        only the empty space inside becomes MATERIAL
 //   replace FROM TO WKT            only material FROM inside becomes TO
+//   relabel [FROM TO]... WKT       inside, each FROM becomes its TO, all at once (a FROM at
+//                                  most once; materials not named stay)
 //   # text                         a comment; blank lines are ignored too
 // Materials are decimal integers 0..255 everywhere, 0 being empty space: the library accepts
 // every one of them and its recorder writes them back as given, so a recorded log never holds
@@ -52,9 +54,10 @@ struct WorldCommand {
   std::size_t line = 0;  // 1-based line number in the log
 };
 
-enum class LandscapeEditKind : std::uint8_t { kCarve, kFill, kFillEmpty, kReplace };
+enum class LandscapeEditKind : std::uint8_t { kCarve, kFill, kFillEmpty, kReplace, kRelabel };
 
-// The keyword of an edit as written in a log ("carve", "fill", "fill_empty", "replace").
+// The keyword of an edit as written in a log ("carve", "fill", "fill_empty", "replace",
+// "relabel").
 EDGELAND_EXPORT const char* landscape_edit_keyword(LandscapeEditKind kind) noexcept;
 
 // One edit line.
@@ -62,6 +65,7 @@ struct LandscapeEdit {
   LandscapeEditKind kind = LandscapeEditKind::kCarve;
   Material material = kEmpty;  // fill / fill_empty: the material; replace: TO; carve: unused
   Material from = kEmpty;      // replace: FROM; otherwise unused
+  MaterialMap map;             // relabel: the pairs; otherwise unused (the identity)
   WktGeometry shape;           // as read
   std::size_t line = 0;        // 1-based line number in the log
 };
@@ -69,7 +73,7 @@ struct LandscapeEdit {
 using LandscapeCommand = std::variant<WorldCommand, LandscapeEdit>;
 
 enum class LandscapeLogErrorKind : std::uint8_t {
-  kUnknownCommand,  // the first word is not one of the five keywords
+  kUnknownCommand,  // the first word is not one of the six keywords
   kMissingWorld,    // an edit (or the end of the log) before any world line
   kRepeatedWorld,   // a second world line
   kBadArgument,     // a material or coordinate that is not a decimal integer in its range,
@@ -128,7 +132,8 @@ EDGELAND_EXPORT Landscape make_landscape(const WorldCommand& world);
 EDGELAND_EXPORT ChangeSet apply_edit(Landscape& landscape, const LandscapeEdit& edit);
 
 // The edit of `kind` with a shape already read: `material` is fill's / fill_empty's material
-// and replace's TO, `from` replace's FROM (both unused by carve). Throws as above.
+// and replace's TO, `from` replace's FROM (both unused by carve); a relabel here maps `from`
+// to `material` alone (a replace: the whole map needs the LandscapeEdit). Throws as above.
 EDGELAND_EXPORT ChangeSet apply_edit(Landscape& landscape, LandscapeEditKind kind,
                                      const PolygonSet& shape, Material material, Material from);
 

@@ -100,10 +100,16 @@ class EDGELAND_EXPORT Landscape {
   ChangeSet fill(const ValidSet& shape, Material material);        // everything under it: material
   ChangeSet fill_empty(const ValidSet& shape, Material material);  // only where empty
   ChangeSet replace(const ValidSet& shape, Material from, Material to);
+  // The general edit: inside the shape every material m becomes map[m] (material.hpp), in one
+  // pass over the touched cells, where the same change as several replace() calls would take
+  // one pass each (and a swap of two materials, none of them alone). The four edits above are
+  // relabel() with their maps; the same guarantees and errors.
+  ChangeSet relabel(const ValidSet& shape, const MaterialMap& map);
   ChangeSet carve(const PolygonSet& shape);
   ChangeSet fill(const PolygonSet& shape, Material material);
   ChangeSet fill_empty(const PolygonSet& shape, Material material);
   ChangeSet replace(const PolygonSet& shape, Material from, Material to);
+  ChangeSet relabel(const PolygonSet& shape, const MaterialMap& map);
 
   // --- queries -------------------------------------------------------------------------------
   // Queries check their coordinates as edits check their shapes: a point, a segment end or a

@@ -10,6 +10,7 @@
 // computed number is checked exactly once, where it becomes a material. value() gives the
 // number back (an explicit step: a Material is not an integer, so it never indexes, adds or
 // shifts by accident).
+#include <array>
 #include <compare>
 #include <concepts>
 #include <cstddef>
@@ -71,6 +72,32 @@ inline std::string to_string(Material m) { return std::to_string(m.value()); }
 inline constexpr Material kEmpty{};
 // Materials 0..255: an array indexed by Material::value() has this many entries.
 inline constexpr std::size_t kMaterialCount = 256;
+
+// What Landscape::relabel makes of each material under its shape: material m becomes
+// map[m]. A new map is the identity (nothing changes); set() changes one entry, uniform() maps
+// every material to one. "An explosion that spares bedrock" is
+// MaterialMap::uniform(kEmpty).set(bedrock, bedrock); fill(s, m) is relabel(s, uniform(m)),
+// replace(s, a, b) is relabel(s, MaterialMap().set(a, b)).
+class MaterialMap {
+ public:
+  constexpr MaterialMap() noexcept {
+    for (std::size_t i = 0; i < kMaterialCount; ++i) to_[i] = static_cast<std::uint8_t>(i);
+  }
+  static constexpr MaterialMap uniform(Material to) noexcept {
+    MaterialMap map;
+    for (std::uint8_t& entry : map.to_) entry = to.value();
+    return map;
+  }
+  constexpr MaterialMap& set(Material from, Material to) noexcept {
+    to_[from.value()] = to.value();
+    return *this;
+  }
+  constexpr Material operator[](Material from) const noexcept { return to_[from.value()]; }
+  friend constexpr bool operator==(const MaterialMap&, const MaterialMap&) noexcept = default;
+
+ private:
+  std::array<std::uint8_t, kMaterialCount> to_{};
+};
 
 }  // namespace edgeland
 
