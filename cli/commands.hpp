@@ -9,6 +9,7 @@
 // clang-format off
 #define EDGELAND_CLI_COMMANDS(X) \
   X(validate) \
+  X(inspect) \
   X(clip) \
   X(replay) \
   X(render) \
