@@ -13,6 +13,7 @@
 #include "edgeland/kernel/point_in_polygon.hpp"
 #include "edgeland/kernel/wkt_writer.hpp"
 #include "edgeland/spatial/landscape.hpp"
+#include "edgeland/spatial/tree_boxes.hpp"
 #include "landscape_decoding.hpp"
 
 namespace edgeland::fuzz {
@@ -150,7 +151,11 @@ DecodedEdit next_edit(Provider& in, EditDecoder& decode, const Landscape& l) {
 Landscape decode_world(Provider& in, EditDecoder& decode) {
   const Box64 world = decode.world();
   const Material fill = in.ConsumeIntegralInRange<std::uint8_t>(0, 3);
-  return Landscape(world, fill, decode.config(), kLimits);
+  LandscapeConfig config = decode.config();
+  // A grid deeper than min_cell_size lets this world split is refused (InvalidConfig): take
+  // the deepest one it allows.
+  config.grid_depth = std::min(config.grid_depth, max_grid_depth(world, config));
+  return Landscape(world, fill, config, kLimits);
 }
 
 std::string edit_text(const DecodedEdit& d) {

@@ -23,6 +23,7 @@ void require_config(const Box64& world, const LandscapeConfig& c) {
   if (c.min_cell_size < 1) refuse(Setting::kMinCellSize);
   if (c.grid_depth < -1 || c.grid_depth > kMaxGridDepth) refuse(Setting::kGridDepth);
   if (c.tree != TreeKind::kQuadtree && c.tree != TreeKind::kKdTree) refuse(Setting::kTree);
+  if (c.grid_depth > max_grid_depth(world, c)) refuse(Setting::kGridDepthBeyondCells);
 }
 
 bool can_split(const Box64& box, const LandscapeConfig& config) noexcept {

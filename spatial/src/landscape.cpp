@@ -4,6 +4,7 @@
 #include "cell_split.hpp"
 #include "check.hpp"
 #include "edgeland/kernel/area.hpp"
+#include "edgeland/spatial/tree_boxes.hpp"
 #include "edit.hpp"
 #include "landscape_access.hpp"
 #include "log_line.hpp"
@@ -61,6 +62,9 @@ std::string config_problem(InvalidConfig::Setting setting, const Box64& w,
       return "min_cell_size " + n(c.min_cell_size) + " below 1";
     case Setting::kGridDepth:
       return "grid_depth " + n(c.grid_depth) + " outside -1.." + n(detail::kMaxGridDepth);
+    case Setting::kGridDepthBeyondCells:
+      return "grid_depth " + n(c.grid_depth) + " deeper than min_cell_size " + n(c.min_cell_size) +
+             " lets the " + box + " split (at most " + n(max_grid_depth(w, c)) + ")";
     case Setting::kTree:
       return "unknown tree kind " + n(static_cast<int>(c.tree));
   }

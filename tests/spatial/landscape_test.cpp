@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "check.hpp"  // spatial/src: the error checked mode throws
+#include "edgeland/spatial/tree_boxes.hpp"
 #include "polygon_set_helpers.hpp"
 
 namespace edgeland::test {
@@ -297,6 +298,35 @@ TEST(Landscape, OverlapsRefusesABoxCornerBeyondTheBound) {
     EXPECT_EQ(e.where, far);
     EXPECT_EQ(e.vertex, 0u);
   }
+}
+
+// Point 16 of issue 27: grid_depth was silently capped by min_cell_size (a 100 x 100 world with
+// min_cell_size 16 and grid_depth 5 built a grid of depth 3). Now the deepest grid the world
+// allows is max_grid_depth, and a deeper grid_depth is refused with a typed error naming it.
+TEST(LandscapeLimits, AGridDeeperThanItsCellsIsRefused) {
+  const Box64 world{{0, 0}, {100, 100}};  // 100 -> 50 -> 25 -> 12 or 13: no side above 16
+  LandscapeConfig grid;
+  grid.grid_depth = 3;
+  EXPECT_EQ(max_grid_depth(world, grid), 3);
+  const Landscape full(world, 1, grid);
+  EXPECT_EQ(full.stats().cells, 64u);
+  EXPECT_EQ(full.stats().depth, 3u);
+  grid.grid_depth = 4;
+  const InvalidConfig deep = config_error(world, grid);
+  EXPECT_EQ(deep.setting, InvalidConfig::Setting::kGridDepthBeyondCells);
+  EXPECT_STREQ(deep.what(),
+               "grid_depth 4 deeper than min_cell_size 16 lets the world box (0 0, 100 100) "
+               "split (at most 3)");
+  // A kd-tree halves one side per level: twice the levels of the quadtree, and a long thin
+  // world splits only along its long side once the short one is down to min_cell_size.
+  grid.tree = TreeKind::kKdTree;
+  EXPECT_EQ(max_grid_depth(world, grid), 6);
+  EXPECT_EQ(max_grid_depth({{0, 0}, {1024, 16}}, grid), 6);  // 1024 -> 16 along x only
+  grid.tree = TreeKind::kQuadtree;
+  EXPECT_EQ(max_grid_depth({{0, 0}, {1024, 16}}, grid), 6);
+  grid.min_cell_size = 1;
+  EXPECT_EQ(max_grid_depth({{0, 0}, {1, 1}}, grid), 0);
+  EXPECT_EQ(max_grid_depth({{0, 0}, {1024, 1024}}, grid), 10);
 }
 
 }  // namespace

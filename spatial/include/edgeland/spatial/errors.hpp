@@ -20,19 +20,21 @@ class EDGELAND_EXPORT LandscapeError : public Error {
 
 // The world box or the configuration is unusable (inverted or degenerate box, box beyond the
 // coordinate bound, edge_cap < 32, merge_below >= edge_cap, min_cell_size < 1, grid_depth
-// outside -1..10).
+// outside -1..10 or deeper than min_cell_size lets the world split).
 // `setting` names the rule broken; `world` is the world box given and `config` the
 // configuration, whichever of them is wrong.
 class EDGELAND_EXPORT InvalidConfig : public LandscapeError {
  public:
   enum class Setting : std::uint8_t {
-    kWorldOutOfRange,  // a corner beyond kCoordBound
-    kWorldEmpty,       // width or height not positive (inverted or degenerate)
-    kEdgeCap,          // edge_cap below 32
-    kMergeBelow,       // merge_below not below edge_cap
-    kMinCellSize,      // min_cell_size below 1
-    kGridDepth,        // grid_depth outside -1..10
-    kTree,             // not a TreeKind
+    kWorldOutOfRange,       // a corner beyond kCoordBound
+    kWorldEmpty,            // width or height not positive (inverted or degenerate)
+    kEdgeCap,               // edge_cap below 32
+    kMergeBelow,            // merge_below not below edge_cap
+    kMinCellSize,           // min_cell_size below 1
+    kGridDepth,             // grid_depth outside -1..10
+    kTree,                  // not a TreeKind
+    kGridDepthBeyondCells,  // grid_depth deeper than min_cell_size lets the world split
+                            // (max_grid_depth in tree_boxes.hpp); never silently shallower
   };
   InvalidConfig(Setting setting, const Box64& world, const LandscapeConfig& config);
   Setting setting;

@@ -15,4 +15,11 @@ namespace edgeland {
 // with one side at most min_cell_size), or none when no side is longer than min_cell_size. O(1).
 EDGELAND_EXPORT std::vector<Box64> child_boxes(const Box64& node, const LandscapeConfig& config);
 
+// The deepest uniform grid (LandscapeConfig::grid_depth) the world allows with this
+// configuration: a cell splits only while a side is longer than min_cell_size, so below this
+// depth some cells would be missing. A deeper grid_depth is refused (InvalidConfig,
+// kGridDepthBeyondCells) rather than built shallower. The world must be a valid one (positive
+// width and height) and min_cell_size >= 1. O(depth).
+EDGELAND_EXPORT int max_grid_depth(const Box64& world, const LandscapeConfig& config);
+
 }  // namespace edgeland

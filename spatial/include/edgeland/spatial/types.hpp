@@ -36,7 +36,8 @@ struct LandscapeConfig {
   std::uint32_t merge_below = 24;
   std::int64_t min_cell_size = 16;
   // >= 0: a uniform grid (thesis 4.4): the tree is built to this depth at once and never
-  // splits or merges. -1: adaptive.
+  // splits or merges; at most max_grid_depth(world, config) (tree_boxes.hpp), the depth at
+  // which cells still split given min_cell_size, else InvalidConfig. -1: adaptive.
   int grid_depth = -1;
 };
 
