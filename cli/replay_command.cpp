@@ -14,12 +14,14 @@
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <string_view>
 
 #include "commands.hpp"
 #include "edgeland/io/clip_log.hpp"
 #include "edgeland/io/landscape_log.hpp"
+#include "edgeland/io/log_kind.hpp"
 #include "edgeland/kernel/area.hpp"
 #include "edgeland/kernel/int128.hpp"
 #include "edgeland/kernel/wkt_writer.hpp"
@@ -110,7 +112,13 @@ int run_replay(const ReplayOptions& options) {
     std::cerr << "edgeland replay: " << error.what() << '\n';
     return kExitUnreadable;
   }
-  if (log::is_landscape_log(text)) return replay_landscape_log(text, options);
+  const log::LogStart start = log::log_start(text);
+  if (const std::optional<std::string> problem = log::log_start_problem(start)) {
+    std::cerr << "edgeland replay: " << (options.path == "-" ? "standard input" : options.path)
+              << ": " << *problem << '\n';
+    return kExitUnreadable;
+  }
+  if (start.kind == log::LogKind::kLandscape) return replay_landscape_log(text, options);
   if (!options.png.empty() || options.cells) {
     std::cerr << "edgeland replay: --png and --cells need a landscape log (one whose first "
                  "command is `world`)\n";
@@ -126,7 +134,8 @@ Command add_replay_command(CLI::App& parent) {
   CLI::App* app = parent.add_subcommand(
       "replay",
       "Replay an edit log and print the final state as one JSON line: a landscape log "
-      "(first command `world`, then carve/fill/fill_empty/replace WKT) or a continuous-clip "
+      "(first command `world`, then carve/fill/fill_empty/replace/relabel WKT) or a "
+      "continuous-clip "
       "log (set/union/intersection/difference/xor WKT, one step per line).");
   app->add_option("LOG", options->path, "log file, or - for standard input")->required();
   app->add_flag("--check", options->check,
@@ -142,10 +151,12 @@ Command add_replay_command(CLI::App& parent) {
       "Prints {steps, polygons, vertices, twice_area, state_hash, steps_per_second} for a "
       "continuous-clip log, {edits, polygons, vertices, cells, depth, area, state_hash, "
       "edits_per_second} for a landscape log, as JSON. "
-      "Exit status: 0 when every step was applied; 2 at the first bad line or shape (the JSON "
-      "then describes the steps before it and adds stopped_at_line and error; a one-line "
-      "message naming the line goes to stderr); 3 when a step hits an internal error (or, "
-      "with --check, the landscape's final check fails).");
+      "Exit status: 0 when every step was applied; 2 for a file with no command or whose first "
+      "command starts neither kind of log (one line on stderr, no JSON), and at the first bad "
+      "line or shape (the JSON then describes the steps before it and adds stopped_at_line and "
+      "error; --dump and --png are still written, of that same state; a one-line message "
+      "naming the line goes to stderr); 3 when a step hits an internal error (or, with "
+      "--check, the landscape's final check fails).");
   return {app, [options] { return run_replay(*options); }};
 }
 

@@ -12,6 +12,7 @@
 #include <tuple>
 
 #include "edgeland/clip/clip.hpp"
+#include "edgeland/io/log_kind.hpp"
 #include "integer_trig.hpp"
 #include "splitmix64.hpp"
 
@@ -184,6 +185,24 @@ TEST(LandscapeLogKind, TheFirstCommandWorldMakesALandscapeLog) {
   EXPECT_FALSE(is_landscape_log(std::string("carve ") + kBox + "\nworld 0 0 1 1"));
   EXPECT_FALSE(is_landscape_log("worldly 0 0 1 1"));
   EXPECT_FALSE(is_landscape_log(""));
+}
+
+// log_kind.hpp (issue 27, point 17): no command and an unknown first command are neither kind
+// of log, and the one line about them names what both kinds start with.
+TEST(LandscapeLogKind, TextsThatAreNeitherKindOfLogSaySo) {
+  EXPECT_EQ(log_start("# c\n\n world 0 0 1 1").kind, LogKind::kLandscape);
+  EXPECT_EQ(log_start("# c\n\n world 0 0 1 1").line, 3u);
+  EXPECT_EQ(log_start(std::string("xor ") + kBox).kind, LogKind::kClip);
+  EXPECT_FALSE(log_start_problem(log_start(std::string("set ") + kBox)).has_value());
+  const LogStart none = log_start("# only\n  \n# comments\r\n");
+  EXPECT_EQ(none.kind, LogKind::kNoCommand);
+  EXPECT_EQ(log_start_problem(none)->rfind("no command: ", 0), 0u);
+  const LogStart junk = log_start("\n carve " + std::string(kBox));
+  EXPECT_EQ(junk.kind, LogKind::kUnknown);  // an edit before any world line
+  EXPECT_EQ(*log_start_problem(junk),
+            "line 2: unknown command 'carve' (a landscape log starts with `world X0 Y0 X1 Y1 "
+            "[MATERIAL]`, a continuous-clip log with a step: set, union, intersection, "
+            "difference or xor)");
 }
 
 // --- applying edits -----------------------------------------------------------------------
