@@ -54,7 +54,7 @@ constexpr T sub(T a, T b) noexcept {
 // 128-bit multiply-with-overflow: clang lowers __builtin_mul_overflow on __int128 to
 // __muloti4, which libgcc does not provide, so the 128-bit check is done by hand.
 constexpr bool mul_overflows(Int128 a, Int128 b, Int128* out) noexcept {
-  using U = unsigned __int128;
+  using U = UInt128;
   const U ua = unsigned_abs(a), ub = unsigned_abs(b);
   const bool negative = (a < 0) != (b < 0);
   const U limit = negative ? (U(1) << 127) : (U(1) << 127) - 1;

@@ -22,11 +22,11 @@ EDGELAND_EXPORT int compare(const Fraction& a, const Fraction& b) noexcept;
 
 // The full 256-bit product of two unsigned 128-bit numbers, as (high, low) halves. O(1).
 struct UInt256 {
-  unsigned __int128 hi = 0;
-  unsigned __int128 lo = 0;
+  UInt128 hi = 0;
+  UInt128 lo = 0;
   friend constexpr bool operator==(const UInt256&, const UInt256&) = default;
   friend constexpr auto operator<=>(const UInt256&, const UInt256&) = default;
 };
-EDGELAND_EXPORT UInt256 multiply_wide(unsigned __int128 a, unsigned __int128 b) noexcept;
+EDGELAND_EXPORT UInt256 multiply_wide(UInt128 a, UInt128 b) noexcept;
 
 }  // namespace edgeland

@@ -21,7 +21,7 @@ struct PerimeterBounds {
 
 // floor(sqrt(n)) for every unsigned 128-bit n, exactly (digit-by-digit method, no
 // floating point). O(1): at most 64 iterations.
-EDGELAND_EXPORT unsigned __int128 isqrt(unsigned __int128 n) noexcept;
+EDGELAND_EXPORT UInt128 isqrt(UInt128 n) noexcept;
 
 // Bounds on the ring's perimeter, edge n-1 -> 0 included. A squared edge length is at most
 // 2 * (2 kCoordBound)^2 < 2^65 and a length below 2^33, so the sums cannot overflow.

@@ -1,0 +1,25 @@
+# Fails if a public header other than kernel/.../int128.hpp names __int128: the 128-bit integers
+# of the API go by the aliases Int128 and UInt128, so that a port to a compiler without
+# __int128 has one header to change (README.md, "Supported platforms"; issue 27, point 19).
+# Comments are stripped first, so prose may mention the type.
+file(GLOB_RECURSE headers ${ROOT}/*/include/edgeland/*.hpp ${ROOT}/adapters/*/include/edgeland/*.hpp)
+set(found "")
+foreach(f ${headers})
+  if(f MATCHES "/kernel/int128\\.hpp$")
+    continue()
+  endif()
+  file(STRINGS ${f} lines)
+  set(n 0)
+  foreach(line IN LISTS lines)
+    math(EXPR n "${n} + 1")
+    string(REGEX REPLACE "//.*$" "" code "${line}")
+    if(code MATCHES "__int128")
+      string(APPEND found "${f}:${n}: ${line}\n")
+    endif()
+  endforeach()
+endforeach()
+list(LENGTH headers count)
+if(found)
+  message(FATAL_ERROR "__int128 named in a public header (use Int128 / UInt128):\n${found}")
+endif()
+message(STATUS "__int128 only in int128.hpp among ${count} public headers")
