@@ -152,8 +152,7 @@ int run_export(const ExportOptions& o) {
     std::cout << out.dump() << '\n';
     if (replayed.failure) {
       std::cerr << "edgeland export: " << o.path << ": " << replayed.failure->message << '\n';
-      return replayed.failure->kind == log::ReplayFailure::Kind::kInternal ? kExitInternal
-                                                                           : kExitUnreadable;
+      return exit_status(*replayed.failure);
     }
     return kExitOk;
   } catch (const InputError& e) {
