@@ -25,6 +25,7 @@
 #include "edgeland/kernel/triangulate.hpp"
 #include "edgeland/kernel/wkt_writer.hpp"
 #include "input_text.hpp"
+#include "landscape_replay.hpp"
 
 namespace edgeland::cli {
 namespace {
