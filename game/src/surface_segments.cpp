@@ -70,6 +70,44 @@ SideSpans port_spans(const SolidBoundary& solid) {
 
 namespace {
 
+Side opposite(Side side) { return static_cast<Side>((static_cast<int>(side) + 2) % 4); }
+
+// Whether `other` lies across `side` of `box`: its opposite side on the same line.
+bool across(const Box64& box, Side side, const Box64& other) {
+  switch (side) {
+    case Side::kBottom:
+      return other.max.y == box.min.y;
+    case Side::kRight:
+      return other.min.x == box.max.x;
+    case Side::kTop:
+      return other.min.y == box.max.y;
+    case Side::kLeft:
+      return other.max.x == box.min.x;
+  }
+  return false;
+}
+
+}  // namespace
+
+SideSpans covers_from_ports(const Box64& box, std::span<const NeighbourPorts> neighbours) {
+  SideSpans out;
+  for (Side side : kSides) {
+    const Span extent = side_extent(box, side);
+    std::vector<Span>& spans = out.sides[static_cast<std::size_t>(side)];
+    for (const NeighbourPorts& n : neighbours) {
+      if (!across(box, side, n.box)) continue;
+      for (const Span& s : n.ports->sides[static_cast<std::size_t>(opposite(side))]) {
+        const Span cut{std::max(s.lo, extent.lo), std::min(s.hi, extent.hi)};
+        if (cut.lo < cut.hi) spans.push_back(cut);
+      }
+    }
+    merge_spans(spans);
+  }
+  return out;
+}
+
+namespace {
+
 // The parts of `piece` (along `side`) outside every span of `cover` (ascending, disjoint),
 // directed as the piece.
 void add_uncovered(const Box64& box, Side side, Point64 a, Point64 b, Material material,

@@ -4,6 +4,7 @@
 #include "edgeland/game/surface_tracker.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <set>
 
 #include "cell_polygons.hpp"
@@ -47,6 +48,47 @@ std::vector<std::int64_t> flat(const game_detail::SideSpans& spans_per_side) {
     }
   }
   return out;
+}
+
+// The inverse of flat.
+game_detail::SideSpans unflat(const std::vector<std::int64_t>& flat_spans) {
+  game_detail::SideSpans out;
+  std::size_t at = 0;
+  for (auto& spans : out.sides) {
+    const auto count = static_cast<std::size_t>(flat_spans.at(at++));
+    for (std::size_t k = 0; k < count; ++k, at += 2)
+      spans.push_back({flat_spans.at(at), flat_spans.at(at + 1)});
+  }
+  return out;
+}
+
+// A cell's covers from the ports of the cells around it: the computed ones' new ports, the
+// others' kept ones (`records`, the tracker's cells); nothing when a cell around it has neither
+// (never after an update that saw every change: the caller then reads the polygons).
+template <class Computed, class Records>
+std::optional<game_detail::SideSpans> covers_around(const Landscape& world, const Box64& box,
+                                     const Computed& computed, const Records& records) {
+  std::vector<game_detail::SideSpans> kept;  // the kept cells' ports, decoded
+  std::vector<std::pair<Box64, const game_detail::SideSpans*>> found;
+  bool complete = true;
+  world.cells_in(box, [&](const CellView& c) {
+    if (c.box == box) return true;
+    if (const auto it = computed.find(c.box); it != computed.end()) {
+      found.emplace_back(c.box, &it->second.ports);
+    } else if (const auto rec = records.find(c.box); rec != records.end()) {
+      kept.push_back(unflat(rec->second.ports));
+      found.emplace_back(c.box, nullptr);
+    } else {
+      complete = false;
+    }
+    return complete;
+  });
+  if (!complete) return std::nullopt;
+  std::vector<game_detail::NeighbourPorts> neighbours;
+  std::size_t next_kept = 0;
+  for (const auto& [b, ports] : found)
+    neighbours.push_back({b, ports ? ports : &kept[next_kept++]});
+  return game_detail::covers_from_ports(box, neighbours);
 }
 
 }  // namespace
@@ -132,14 +174,16 @@ ChainUpdate SurfaceTracker::replace_cells(const Landscape& world, const std::vec
     }
     return false;
   }();
+  // A neighbour's covers come from the ports of the cells around it (the changed ones' new
+  // ports, the others' kept ones), so one whose covers stayed is never read; its own polygons
+  // are those it had (the change set names every cell the edit replaced).
   for (const Box64& box : seen_from_outside ? touching(world, changed, BoxSet{}) : BoxSet{}) {
-    const game_detail::CellPolygons polygons = game_detail::read_cell(world, box);
-    game_detail::SideSpans covers = game_detail::side_covers(polygons, options_.materials);
+    std::optional<game_detail::SideSpans> covers = covers_around(world, box, computed, cells_);
     const auto it = cells_.find(box);
-    if (it != cells_.end() && it->second.covers == flat(covers) &&
-        it->second.ids == game_detail::own_ids(polygons))
-      continue;
-    computed.emplace(box, game_detail::cell_surface(polygons, std::move(covers), w, options_));
+    if (covers && it != cells_.end() && it->second.covers == flat(*covers)) continue;
+    game_detail::CellPolygons polygons = game_detail::read_cell(world, box);
+    if (!covers) covers = game_detail::side_covers(polygons, options_.materials);
+    computed.emplace(box, game_detail::cell_surface(polygons, std::move(*covers), w, options_));
   }
   // Chains around a point: the new ones where computed, the kept ones elsewhere.
   const game_detail::ChainsAround around = [&](Point64 p, std::vector<const SurfaceChain*>& out) {
