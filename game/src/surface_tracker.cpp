@@ -67,7 +67,8 @@ game_detail::SideSpans unflat(const std::vector<std::int64_t>& flat_spans) {
 // (never after an update that saw every change: the caller then reads the polygons).
 template <class Computed, class Records>
 std::optional<game_detail::SideSpans> covers_around(const Landscape& world, const Box64& box,
-                                     const Computed& computed, const Records& records) {
+                                                    const Computed& computed,
+                                                    const Records& records) {
   std::vector<game_detail::SideSpans> kept;  // the kept cells' ports, decoded
   std::vector<std::pair<Box64, const game_detail::SideSpans*>> found;
   bool complete = true;
