@@ -87,7 +87,30 @@ bool across(const Box64& box, Side side, const Box64& other) {
   return false;
 }
 
+// One side's span ends in a flattened list.
+std::span<const std::int64_t> flat_side(std::span<const std::int64_t> flat, Side side) {
+  std::size_t at = 0;
+  for (Side s : kSides) {
+    const auto count = static_cast<std::size_t>(flat[at]);
+    if (s == side) return flat.subspan(at + 1, 2 * count);
+    at += 1 + 2 * count;
+  }
+  return {};
+}
+
 }  // namespace
+
+std::vector<std::int64_t> flatten(const SideSpans& spans_per_side) {
+  std::vector<std::int64_t> out;
+  for (const std::vector<Span>& spans : spans_per_side.sides) {
+    out.push_back(static_cast<std::int64_t>(spans.size()));
+    for (const Span& s : spans) {
+      out.push_back(s.lo);
+      out.push_back(s.hi);
+    }
+  }
+  return out;
+}
 
 SideSpans covers_from_ports(const Box64& box, std::span<const NeighbourPorts> neighbours) {
   SideSpans out;
@@ -96,8 +119,9 @@ SideSpans covers_from_ports(const Box64& box, std::span<const NeighbourPorts> ne
     std::vector<Span>& spans = out.sides[static_cast<std::size_t>(side)];
     for (const NeighbourPorts& n : neighbours) {
       if (!across(box, side, n.box)) continue;
-      for (const Span& s : n.ports->sides[static_cast<std::size_t>(opposite(side))]) {
-        const Span cut{std::max(s.lo, extent.lo), std::min(s.hi, extent.hi)};
+      const std::span<const std::int64_t> ports = flat_side(n.ports, opposite(side));
+      for (std::size_t k = 0; k + 1 < ports.size(); k += 2) {
+        const Span cut{std::max(ports[k], extent.lo), std::min(ports[k + 1], extent.hi)};
         if (cut.lo < cut.hi) spans.push_back(cut);
       }
     }

@@ -38,10 +38,14 @@ SideSpans side_covers(const CellPolygons& cell, const PhysicsMaterials& material
 // of it. O(n log n) in the ports.
 SideSpans port_spans(const SolidBoundary& solid);
 
-// A cell next to another, with its ports.
+// Spans as one list (per side: the count, then each span's ends), as a tracker keeps a cell's
+// covers and ports.
+std::vector<std::int64_t> flatten(const SideSpans& spans);
+
+// A cell next to another, with its ports flattened.
 struct NeighbourPorts {
   Box64 box;
-  const SideSpans* ports = nullptr;
+  std::span<const std::int64_t> ports;
 };
 
 // The same covers as side_covers, from the neighbours' ports instead of their polygons: a

@@ -36,59 +36,28 @@ bool holds_an_end(const SurfaceChain& c, const Box64& box) {
   return box.contains(c.points.front()) || box.contains(c.points.back());
 }
 
-// A cell's covers or ports as one list (per side: the count, then each span's ends), for its
-// record.
-std::vector<std::int64_t> flat(const game_detail::SideSpans& spans_per_side) {
-  std::vector<std::int64_t> out;
-  for (const auto& spans : spans_per_side.sides) {
-    out.push_back(static_cast<std::int64_t>(spans.size()));
-    for (const game_detail::Span& s : spans) {
-      out.push_back(s.lo);
-      out.push_back(s.hi);
-    }
-  }
-  return out;
-}
-
-// The inverse of flat.
-game_detail::SideSpans unflat(const std::vector<std::int64_t>& flat_spans) {
-  game_detail::SideSpans out;
-  std::size_t at = 0;
-  for (auto& spans : out.sides) {
-    const auto count = static_cast<std::size_t>(flat_spans.at(at++));
-    for (std::size_t k = 0; k < count; ++k, at += 2)
-      spans.push_back({flat_spans.at(at), flat_spans.at(at + 1)});
-  }
-  return out;
-}
-
-// A cell's covers from the ports of the cells around it: the computed ones' new ports, the
-// others' kept ones (`records`, the tracker's cells); nothing when a cell around it has neither
-// (never after an update that saw every change: the caller then reads the polygons).
-template <class Computed, class Records>
+// A cell's covers from the ports of the cells across its sides: a changed cell's new ones
+// (`new_ports`), the others' kept in their records; nothing when such a cell has neither (never
+// after an update that saw every change: the caller then reads the polygons).
+template <class NewPorts, class Records>
 std::optional<game_detail::SideSpans> covers_around(const Landscape& world, const Box64& box,
-                                                    const Computed& computed,
+                                                    const NewPorts& new_ports,
                                                     const Records& records) {
-  std::vector<game_detail::SideSpans> kept;  // the kept cells' ports, decoded
-  std::vector<std::pair<Box64, const game_detail::SideSpans*>> found;
+  std::vector<game_detail::NeighbourPorts> neighbours;
   bool complete = true;
   world.cells_in(box, [&](const CellView& c) {
-    if (c.box == box) return true;
-    if (const auto it = computed.find(c.box); it != computed.end()) {
-      found.emplace_back(c.box, &it->second.ports);
-    } else if (const auto rec = records.find(c.box); rec != records.end()) {
-      kept.push_back(unflat(rec->second.ports));
-      found.emplace_back(c.box, nullptr);
-    } else {
+    const bool overlaps_x = c.box.max.x > box.min.x && c.box.min.x < box.max.x;
+    const bool overlaps_y = c.box.max.y > box.min.y && c.box.min.y < box.max.y;
+    if (c.box == box || !(overlaps_x || overlaps_y)) return true;  // itself, or at a corner
+    if (const auto it = new_ports.find(c.box); it != new_ports.end())
+      neighbours.push_back({c.box, it->second});
+    else if (const auto rec = records.find(c.box); rec != records.end())
+      neighbours.push_back({c.box, rec->second.ports});
+    else
       complete = false;
-    }
     return complete;
   });
   if (!complete) return std::nullopt;
-  std::vector<game_detail::NeighbourPorts> neighbours;
-  std::size_t next_kept = 0;
-  for (const auto& [b, ports] : found)
-    neighbours.push_back({b, ports ? ports : &kept[next_kept++]});
   return game_detail::covers_from_ports(box, neighbours);
 }
 
@@ -167,21 +136,19 @@ ChainUpdate SurfaceTracker::replace_cells(const Landscape& world, const std::vec
     computed.emplace(box, game_detail::cell_surface(world, box, options_));
   // A neighbour's covers are the ports of the cells across its sides: when the edit re-cut its
   // cells in place (the same boxes) and left their ports as they were, no neighbour can see it.
-  const bool seen_from_outside = [&] {
-    if (old_ports.size() != changed.size()) return true;
-    for (const Box64& box : changed) {
-      const auto it = old_ports.find(box);
-      if (it == old_ports.end() || it->second != flat(computed.at(box).ports)) return true;
-    }
-    return false;
-  }();
+  std::map<Box64, std::vector<std::int64_t>, BoxLess> new_ports;
+  for (const auto& [box, surface] : computed)
+    new_ports.emplace(box, game_detail::flatten(surface.ports));
+  const bool seen_from_outside = old_ports.size() != changed.size() ||
+                                 !std::equal(new_ports.begin(), new_ports.end(), old_ports.begin());
   // A neighbour's covers come from the ports of the cells around it (the changed ones' new
   // ports, the others' kept ones), so one whose covers stayed is never read; its own polygons
   // are those it had (the change set names every cell the edit replaced).
   for (const Box64& box : seen_from_outside ? touching(world, changed, BoxSet{}) : BoxSet{}) {
-    std::optional<game_detail::SideSpans> covers = covers_around(world, box, computed, cells_);
+    std::optional<game_detail::SideSpans> covers = covers_around(world, box, new_ports, cells_);
     const auto it = cells_.find(box);
-    if (covers && it != cells_.end() && it->second.covers == flat(*covers)) continue;
+    if (covers && it != cells_.end() && it->second.covers == game_detail::flatten(*covers))
+      continue;
     game_detail::CellPolygons polygons = game_detail::read_cell(world, box);
     if (!covers) covers = game_detail::side_covers(polygons, options_.materials);
     computed.emplace(box, game_detail::cell_surface(polygons, std::move(*covers), w, options_));
@@ -226,7 +193,8 @@ ChainUpdate SurfaceTracker::replace_cells(const Landscape& world, const std::vec
       before.insert(before.end(), o->second.begin(), o->second.end());
       orphans.erase(o);
     }
-    record = {surface.ids, {}, flat(surface.covers), flat(surface.ports)};
+    record = {
+        surface.ids, {}, game_detail::flatten(surface.covers), game_detail::flatten(surface.ports)};
     for (const SurfaceChain& c : surface.chains) {
       const auto same = std::find_if(before.begin(), before.end(),
                                      [&](ChainId id) { return chains_.at(id) == c; });
