@@ -18,7 +18,7 @@
 #include "labeling.hpp"
 #include "operand_screen.hpp"
 #include "pipeline.hpp"
-#include "planar_graph.hpp"
+#include "plane_graph.hpp"
 #include "snap_rounding.hpp"
 #include "valid_set_factory.hpp"
 

@@ -15,7 +15,7 @@
 #include "face_label.hpp"
 #include "input_edges.hpp"
 #include "labeling.hpp"
-#include "planar_graph.hpp"
+#include "plane_graph.hpp"
 
 namespace edgeland::detail {
 
