@@ -83,6 +83,11 @@ std::optional<Finding> run_polygon_pieces(const std::uint8_t* data, std::size_t 
 // the same way. game_decoders.cpp.
 std::optional<Finding> run_game_sequence(const std::uint8_t* data, std::size_t size);
 
+// The logs the inputs of clip_pair (its four operations) and clip_sequence (the steps as
+// recorded) decode to, as continuous-clip logs.
+std::string clip_pair_log(const std::uint8_t* data, std::size_t size);
+std::string clip_sequence_log(const std::uint8_t* data, std::size_t size);
+
 // The landscape edit log an edit_sequence input decodes to (recorded by the landscape itself).
 std::string edit_sequence_log(const std::uint8_t* data, std::size_t size);
 

@@ -9,7 +9,7 @@
 #include "edgeland/kernel/scratch.hpp"
 #include "face_label.hpp"
 #include "labeling.hpp"
-#include "planar_graph.hpp"
+#include "plane_graph.hpp"
 
 namespace edgeland::detail {
 

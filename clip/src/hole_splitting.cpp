@@ -12,7 +12,7 @@
 #include "edgeland/kernel/point_in_polygon.hpp"
 #include "edgeland/kernel/predicates.hpp"
 #include "edgeland/kernel/ray.hpp"
-#include "planar_graph.hpp"
+#include "plane_graph.hpp"
 #include "point_key.hpp"
 
 namespace edgeland::detail {

@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "planar_graph.hpp"
+#include "plane_graph.hpp"
 
 namespace edgeland::detail {
 

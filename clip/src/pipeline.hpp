@@ -1,7 +1,7 @@
 #pragma once
 // The pipeline of clip/README.md as one call: the tagged edges of the operands in, the
 // canonical result polygons out. clip(), clip_to_box(), normalize() and the labeled overlays
-// (relabel.hpp) each fill a Pipeline and call run().
+// (relabel.hpp) each describe theirs with a PipelineBuilder (pipeline_builder.hpp) and run it.
 #include <functional>
 #include <optional>
 #include <stdexcept>
@@ -10,12 +10,11 @@
 
 #include "edgeland/clip/errors.hpp"
 #include "edgeland/clip/types.hpp"
-#include "edgeland/clip/valid_set.hpp"
 #include "edgeland/kernel/canonical_form.hpp"
+#include "edgeland/kernel/validate.hpp"
 #include "face_label.hpp"
 #include "input_edges.hpp"
 #include "labeling.hpp"
-#include "planar_graph.hpp"
 
 namespace edgeland::detail {
 

@@ -1,5 +1,5 @@
 #pragma once
-// The steps of build_plane_graph (planar_graph.hpp), each handing the next a typed result:
+// The steps of build_plane_graph (plane_graph.hpp), each handing the next a typed result:
 //   chain_plan       which segments become edges alone (touched) and which are chained;
 //   number_vertices  every vertex occurrence (starts of pieces and chains, open ends) sorted
 //                    once, which numbers the vertices and gives each piece its end ids;
@@ -12,7 +12,7 @@
 
 #include "edgeland/kernel/scratch.hpp"
 #include "input_edges.hpp"
-#include "planar_graph.hpp"
+#include "plane_graph.hpp"
 #include "snap_rounding.hpp"
 
 namespace edgeland::detail::plane_graph_build {
@@ -34,7 +34,7 @@ class FragmentRanges {
   ScratchVector<std::uint32_t> first_;
 };
 
-// Step 1. Untouched segments are chained along their ring (planar_graph.hpp says why and where
+// Step 1. Untouched segments are chained along their ring (plane_graph.hpp says why and where
 // chains are cut); touched segments become pieces, one per fragment.
 struct ChainPlan {
   ScratchVector<PlaneGraph::Chain> chains;  // by first segment

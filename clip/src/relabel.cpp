@@ -4,29 +4,12 @@
 
 #include <algorithm>
 
-#include "canonical.hpp"
 #include "edgeland/kernel/wkt_writer.hpp"
-#include "pipeline.hpp"
+#include "pipeline_builder.hpp"
 #include "valid_set_factory.hpp"
 
 namespace edgeland {
 namespace {
-
-const char* reason_text(InvalidOverlay::Reason r) {
-  switch (r) {
-    case InvalidOverlay::Reason::kLabelCount:
-      return "the number of labels differs from the number of polygons";
-    case InvalidOverlay::Reason::kZeroLabel:
-      return "a polygon is labeled 0";
-    case InvalidOverlay::Reason::kOutsideWindow:
-      return "a polygon is not inside the window";
-    case InvalidOverlay::Reason::kBadWindow:
-      return "a window is not a box of positive area within the coordinate bound";
-    case InvalidOverlay::Reason::kWindowsOverlap:
-      return "two windows overlap";
-  }
-  return "?";  // Not reached by tests: the switch covers every Reason.
-}
 
 Ring box_ring(const Box64& b) { return {b.min, {b.max.x, b.min.y}, b.max, {b.min.x, b.max.y}}; }
 
@@ -73,12 +56,6 @@ void check_inside(const PolygonSet& set, const Box64& window, const std::string&
 
 }  // namespace
 
-InvalidOverlay::InvalidOverlay(Reason r, std::size_t i)
-    : Error(std::string("invalid overlay: ") + reason_text(r) + " (index " + std::to_string(i) +
-            ")"),
-      reason(r),
-      index(i) {}
-
 LabeledClipResult relabel(const ValidSet& regions, std::span<const RegionLabel> labels,
                           const ValidSet& shape, const Box64& window,
                           std::span<const RegionLabel> table, const ClipOptions& options) {
@@ -101,24 +78,21 @@ LabeledClipResult relabel(const ValidSet& regions, std::span<const RegionLabel> 
   }
   const PolygonSet window_rings{box_ring(window)};
   detail::RelabelTable rt{labels.data(), table.data(), table.size(), all_inside ? 1 : 2};
-  // The two lambdas are called, and the unwinding of `p` below runs, only for an internal
-  // error: not reached by tests.
+  // The two lambdas are called, and the unwinding of the builder below runs, only for an
+  // internal error: not reached by tests.
   auto inputs = [&] { return to_wkt(members); };
   auto shape_wkt = [&] { return to_wkt(shape.polygons()) + " within " + to_wkt(window_rings); };
   detail::PipelineResult r = detail::guarded(
       [&] {
-        detail::Pipeline p;
-        p.check_stages = options.checked;
-        detail::append_ring_edges(members, detail::kSubjectChannel, true, p.edges);
-        detail::append_ring_edges(shape.polygons(), detail::kClipChannel, true, p.edges, &near);
-        if (!all_inside)
-          detail::append_ring_edges(window_rings, detail::kClipChannel, true, p.edges);
-        p.mode = detail::LabelMode::kOwnerAndCount;
-        p.label_of = detail::LabelOf::relabel(rt);
-        p.collinear_free_operands =
-            ValidSetFactory::collinear_free(regions) && ValidSetFactory::collinear_free(shape);
-        p.corner_bridges = true;
-        return detail::run(p, nullptr, true);
+        detail::PipelineBuilder p(detail::LabelMode::kOwnerAndCount, detail::LabelOf::relabel(rt),
+                                  options.checked);
+        p.subject(members).clip(shape.polygons(), &near);
+        if (!all_inside) p.clip(window_rings);
+        return p
+            .collinear_free(ValidSetFactory::collinear_free(regions) &&
+                            ValidSetFactory::collinear_free(shape))
+            .corner_bridges()
+            .run(nullptr, true);
       },
       options, "relabel", inputs, shape_wkt);
   if (options.checked) check_inside(r.clipped.polygons, window, "relabel", inputs);
@@ -142,21 +116,19 @@ std::vector<LabeledSet> cut_to_windows(const ValidSet& regions, std::span<const 
     throw InvalidOverlay(InvalidOverlay::Reason::kWindowsOverlap,
                          disjoint.violations.front().polygon);
   const PolygonSet& members = regions.polygons();
-  // As in relabel(): the lambdas and the unwinding of `p` below run only for an internal
-  // error, not reached by tests.
+  // As in relabel(): the lambdas and the unwinding of the builder below run only for an
+  // internal error, not reached by tests.
   auto inputs = [&] { return to_wkt(members); };
   auto windows_wkt = [&] { return to_wkt(window_rings); };
   detail::PipelineResult r = detail::guarded(
       [&] {
-        detail::Pipeline p;
-        p.check_stages = options.checked;
-        detail::append_ring_edges(members, detail::kSubjectChannel, true, p.edges);
-        detail::append_ring_edges(window_rings, detail::kClipChannel, true, p.edges);
-        p.mode = detail::LabelMode::kOwner;
-        p.label_of = detail::LabelOf::windows(labels.data());
-        p.collinear_free_operands = ValidSetFactory::collinear_free(regions);
-        p.corner_bridges = true;
-        return detail::run(p, nullptr, true);
+        return detail::PipelineBuilder(detail::LabelMode::kOwner,
+                                       detail::LabelOf::windows(labels.data()), options.checked)
+            .subject(members)
+            .clip(window_rings)
+            .collinear_free(ValidSetFactory::collinear_free(regions))
+            .corner_bridges()
+            .run(nullptr, true);
       },
       options, "cut_to_windows", inputs, windows_wkt);
   // Stable partition by window keeps each window's polygons in canonical order.

@@ -18,7 +18,7 @@
 #include "assembly.hpp"
 #include "input_edges.hpp"
 #include "labeling.hpp"
-#include "planar_graph.hpp"
+#include "plane_graph.hpp"
 #include "snap_rounding.hpp"
 
 namespace edgeland::detail {

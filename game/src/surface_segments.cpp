@@ -70,23 +70,6 @@ SideSpans port_spans(const SolidBoundary& solid) {
 
 namespace {
 
-Side opposite(Side side) { return static_cast<Side>((static_cast<int>(side) + 2) % 4); }
-
-// Whether `other` lies across `side` of `box`: its opposite side on the same line.
-bool across(const Box64& box, Side side, const Box64& other) {
-  switch (side) {
-    case Side::kBottom:
-      return other.max.y == box.min.y;
-    case Side::kRight:
-      return other.min.x == box.max.x;
-    case Side::kTop:
-      return other.min.y == box.max.y;
-    case Side::kLeft:
-      return other.max.x == box.min.x;
-  }
-  return false;
-}
-
 // One side's span ends in a flattened list.
 std::span<const std::int64_t> flat_side(std::span<const std::int64_t> flat, Side side) {
   std::size_t at = 0;

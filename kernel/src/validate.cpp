@@ -4,7 +4,7 @@
 #include <span>
 
 #include "validate_checks.hpp"
-#include "validate_sweep.hpp"
+#include "validate_report_sweep.hpp"
 
 namespace edgeland {
 namespace {

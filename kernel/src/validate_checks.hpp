@@ -10,7 +10,7 @@
 
 #include "edgeland/kernel/polygon.hpp"
 #include "edgeland/kernel/validate.hpp"
-#include "validate_sweep.hpp"
+#include "validate_report_sweep.hpp"
 
 namespace edgeland::detail {
 
@@ -48,7 +48,7 @@ std::optional<Violation> find_self_intersection(const std::vector<SweepEdge>& ed
                                                 std::size_t ring_size);
 
 // Whether `polygons` is a valid polygon set, proven by the local rules of each ring and one
-// sweep over all edges (validate_one_sweep.cpp): O(n log n), and cheaper than the checks below.
+// sweep over all edges (validate_accept_sweep.cpp): O(n log n), and cheaper than the checks below.
 // True only for a valid input; false means invalid or undecided, and reports nothing: the
 // checks below then find and report what is wrong.
 bool accepted_by_one_sweep(std::span<const Polygon> polygons);

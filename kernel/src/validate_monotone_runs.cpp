@@ -14,7 +14,7 @@
 //     lies inside the other (Jordan), and then its box inside the other's box: one
 //     point-in-polygon test per such pair of boxes settles nesting.
 // Edges of different rings that touch without crossing are allowed but need the winding
-// walk of the vertex sweep (validate_one_sweep.cpp): the answer is then kUndecided.
+// walk of the vertex sweep (validate_accept_sweep.cpp): the answer is then kUndecided.
 #include "validate_monotone_runs.hpp"
 
 #include <algorithm>

@@ -1,5 +1,5 @@
 // Disjoint interiors of a set of strictly simple counter-clockwise rings, by the sweep of
-// validate_sweep.hpp.
+// validate_report_sweep.hpp.
 //
 // Each ring has winding number 1 inside and 0 outside, so the winding number of all rings
 // together counts the members covering a point: interiors are pairwise disjoint iff it never

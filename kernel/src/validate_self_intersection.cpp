@@ -1,4 +1,4 @@
-// Strict simplicity of one ring by the sweep of validate_sweep.hpp: non-adjacent edges share
+// Strict simplicity of one ring by the sweep of validate_report_sweep.hpp: non-adjacent edges share
 // no point. Adjacent edges share their common vertex; if they share more they fold back, which
 // check_spikes reports, so pairs of adjacent edges are never reported here.
 #include <array>

@@ -1,5 +1,5 @@
 #pragma once
-// Private to validate_one_sweep.cpp: the sweep status, a sequence of edge numbers bottom-up.
+// Private to validate_accept_sweep.cpp: the sweep status, a sequence of edge numbers bottom-up.
 //
 // Usually only a few edges are cut by the sweep line, and a flat array is the cheapest
 // status there is. But a spiky ring can keep 10^4 edges in it, and a flat array would then

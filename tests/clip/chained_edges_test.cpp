@@ -1,4 +1,4 @@
-// The plane graph chains untouched segments into one polyline edge (clip/src/planar_graph.hpp).
+// The plane graph chains untouched segments into one polyline edge (clip/src/plane_graph.hpp).
 // These cases put what the labeling must see through such edges in every place it can be:
 // a component whose smallest vertex lies directly above a chain's interior vertex, above the
 // interior of a chain piece running east or west, above the top of a vertical chain piece,

@@ -1,4 +1,4 @@
-// The plane graph (clip/src/planar_graph.hpp): build_plane_graph on real snapped fragments
+// The plane graph (clip/src/plane_graph.hpp): build_plane_graph on real snapped fragments
 // (crowded random rings, stacks of collinear edges merged as normalize merges them, and hand
 // cases), checked against its contract by brute force:
 //  * vertices are sorted and unique: every end of a touched segment's fragment, and otherwise
@@ -13,6 +13,8 @@
 //    comparison), turn_at[h] is the position of the half-edge clockwise from h's twin, and the
 //    faces it traces satisfy Euler's formula per component (a planar rotation system);
 //  * cancelled_edges counts the groups of coinciding touched fragments whose nets all sum to 0.
+#include "plane_graph.hpp"
+
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
@@ -27,7 +29,6 @@
 
 #include "collinear_merge.hpp"
 #include "edgeland/kernel/predicates.hpp"
-#include "planar_graph.hpp"
 #include "stage_inputs.hpp"
 
 namespace edgeland::test {

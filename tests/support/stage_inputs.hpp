@@ -22,7 +22,7 @@
 #include "input_edges.hpp"
 #include "labeling.hpp"
 #include "noding.hpp"
-#include "planar_graph.hpp"
+#include "plane_graph.hpp"
 #include "snap_rounding.hpp"
 #include "stage_outputs.hpp"
 

@@ -12,8 +12,8 @@
 // It only ever concludes "valid". At the first sign of trouble it gives up, and validate()
 // runs the reporting checks, which say exactly what is wrong; so reports never depend on it.
 //
-// Why one sweep suffices: it is the sweep of validate_sweep.hpp over all edges, asking at each
-// event point q and of each new pair of status neighbours the union of the questions of the
+// Why one sweep suffices: it is the sweep of validate_report_sweep.hpp over all edges, asking at
+// each event point q and of each new pair of status neighbours the union of the questions of the
 // two reporting checks (validate_self_intersection.cpp, validate_overlap.cpp):
 //   * two edges of one ring that are not ring neighbours must share no point: at q, every edge
 //     containing q is listed, so touching and collinear overlap are seen at an event; a
@@ -22,8 +22,8 @@
 //     directions cross at q;
 //   * the winding walk of validate_overlap.cpp around q must never count 2.
 // If no two edges cross, the status order is consistent and the Shamos-Hoey argument of
-// validate_sweep.hpp applies to the whole arrangement: the leftmost crossing, if any, is seen
-// at an event or between new status neighbours. Without crossings, the rings are strictly
+// validate_report_sweep.hpp applies to the whole arrangement: the leftmost crossing, if any, is
+// seen at an event or between new status neighbours. Without crossings, the rings are strictly
 // simple (nothing else can make two edges of one ring meet), counter-clockwise (checked
 // locally), and the winding walk is exact.
 #include <algorithm>
@@ -79,7 +79,7 @@ struct EdgeSigns {
   }
 
   // -1 when the status edge t passes strictly below q, 0 through q, +1 above
-  // (validate_sweep.hpp).
+  // (validate_report_sweep.hpp).
   static int side_of_point(const Edge& t, Point64 q) noexcept {
     if (is_vertical(t)) return 0;
     return -orient(t, q);

@@ -1,6 +1,7 @@
 #pragma once
-// Private to validate_*.cpp: the plane sweep shared by the ring check (strict simplicity) and
-// the set check (disjoint interiors).
+// Private to validate_*.cpp: the plane sweep of the reporting checks, shared by the ring check
+// (strict simplicity, validate_self_intersection.cpp) and the set check (disjoint interiors,
+// validate_overlap.cpp). The fast path that only accepts has its own (validate_accept_sweep.cpp).
 //
 // Events are the edge endpoints in lexicographic (x, then y) order: a sweep line in x, tilted
 // infinitesimally so that it meets the points of one vertical line from the bottom up. The

@@ -1,4 +1,5 @@
-#include "validate_sweep.hpp"
+// The reporting checks' sweep (validate_report_sweep.hpp): ring edges in sweep order.
+#include "validate_report_sweep.hpp"
 
 #include <algorithm>
 #include <cstdint>

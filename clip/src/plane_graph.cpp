@@ -1,5 +1,5 @@
 // The plane graph: its build, step by step (plane_graph_build.hpp), and the reading of its chains.
-#include "planar_graph.hpp"
+#include "plane_graph.hpp"
 
 #include <algorithm>
 
