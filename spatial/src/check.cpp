@@ -20,10 +20,6 @@ std::string name(const Node& n) {
   return s.str();
 }
 
-bool inside(const Box64& inner, const Box64& outer) {
-  return outer.contains(inner.min) && outer.contains(inner.max);
-}
-
 void check_parallel_arrays(const Node& c, std::vector<std::string>& problems) {
   const std::size_t n = c.polygon_set().size();
   if (c.content.labels.size() != n || c.ids.size() != n || c.boxes.size() != n)
@@ -45,7 +41,7 @@ void check_validity(const Node& c, std::vector<std::string>& problems) {
 // I2 and the materials.
 void check_placement(const Node& c, std::vector<std::string>& problems) {
   for (std::size_t i = 0; i < c.polygons; ++i) {
-    if (!inside(c.boxes[i], c.box))
+    if (!c.box.contains(c.boxes[i]))
       problems.push_back(name(c) + ": polygon " + std::to_string(i) + " outside the cell");
     if (c.content.labels[i] == 0 || c.content.labels[i] >= kMaterialCount)
       problems.push_back(name(c) + ": polygon " + std::to_string(i) + " has material " +
