@@ -28,9 +28,20 @@ class Rng {
 // Values where the rules change: 0, 1, the ends of the ranges, off by one.
 std::int64_t edge_value(Rng& rng, std::int64_t around) {
   constexpr std::int64_t kBig = std::numeric_limits<std::int64_t>::max();
-  const std::int64_t values[] = {0,          1,           -1,           around - 1,
-                                 around + 1, kCoordBound, -kCoordBound, kCoordBound + 1,
-                                 kBig,       -kBig,       around * 2};
+  // around +- 1 and around * 2 wrap (the mutator may be handed any value a file held).
+  const auto wrapped = [](std::uint64_t v) { return static_cast<std::int64_t>(v); };
+  const auto u = static_cast<std::uint64_t>(around);
+  const std::int64_t values[] = {0,
+                                 1,
+                                 -1,
+                                 wrapped(u - 1),
+                                 wrapped(u + 1),
+                                 kCoordBound,
+                                 -kCoordBound,
+                                 kCoordBound + 1,
+                                 kBig,
+                                 -kBig,
+                                 wrapped(u * 2)};
   return values[rng.below(std::size(values))];
 }
 

@@ -13,28 +13,10 @@ struct BoxLess {
   }
 };
 
-// The side of a neighbour that faces side `s` of a cell.
-Side facing(Side s) { return static_cast<Side>((static_cast<int>(s) + 2) % 4); }
-
 // The segment of side `s` of `box` from lo to hi along it, as a (flat) box.
 Box64 side_box(const Box64& box, Side s, std::int64_t lo, std::int64_t hi) {
   const Point64 a = point_on(box, s, lo), b = point_on(box, s, hi);
   return segment_box(a, b);
-}
-
-// Whether `other` lies across side s of `box` (its facing side on the same line).
-bool across(const Box64& box, Side s, const Box64& other) {
-  switch (s) {
-    case Side::kBottom:
-      return other.max.y == box.min.y;
-    case Side::kRight:
-      return other.min.x == box.max.x;
-    case Side::kTop:
-      return other.min.y == box.max.y;
-    case Side::kLeft:
-      return other.max.x == box.min.x;
-  }
-  return false;
 }
 
 class Walk {
@@ -88,7 +70,7 @@ class Walk {
       return true;
     });
     for (const Box64& n : neighbours)
-      for (const Port& q : solids(n).ports[static_cast<std::size_t>(facing(side))])
+      for (const Port& q : solids(n).ports[static_cast<std::size_t>(opposite(side))])
         if (std::min(p.hi, q.hi) > std::max(p.lo, q.lo)) visit(n, q.group);
   }
 

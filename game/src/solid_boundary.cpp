@@ -111,6 +111,22 @@ Point64 point_on(const Box64& box, Side side, std::int64_t t) {
   return {};
 }
 
+Side opposite(Side side) { return static_cast<Side>((static_cast<int>(side) + 2) % 4); }
+
+bool across(const Box64& box, Side side, const Box64& other) {
+  switch (side) {
+    case Side::kBottom:
+      return other.max.y == box.min.y;
+    case Side::kRight:
+      return other.min.x == box.max.x;
+    case Side::kTop:
+      return other.min.y == box.max.y;
+    case Side::kLeft:
+      return other.max.x == box.min.x;
+  }
+  return false;
+}
+
 SolidBoundary solid_boundary(const Box64& box, std::span<const CellPolygon> polygons,
                              const PhysicsMaterials& materials) {
   SolidBoundary out;

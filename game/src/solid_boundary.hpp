@@ -43,5 +43,10 @@ std::optional<Side> side_of(const Box64& box, Point64 a, Point64 b);
 std::int64_t along(Side side, Point64 p);
 // The point of the side's line at coordinate `t` along it.
 Point64 point_on(const Box64& box, Side side, std::int64_t t);
+// The side facing it (bottom and top, right and left).
+Side opposite(Side side);
+// Whether `other` lies across `side` of `box`: its opposite side on the same line (whether they
+// share a stretch of positive length is the caller's to check).
+bool across(const Box64& box, Side side, const Box64& other);
 
 }  // namespace edgeland::game_detail
