@@ -129,6 +129,15 @@ TEST(LoadRefuses, IdsOutsideOneToTheNextIdOrTwice) {
   EXPECT_TRUE(Landscape::load(in).check().ok());
 }
 
+// I4/I5 as the tree is read: a node with no side longer than min_cell_size is a cell.
+TEST(LoadRefuses, ANodeTooSmallToSplitThatIsSplit) {
+  SaveFile f;
+  f.min_cell_size = 1024;  // the whole world is one cell
+  f.nodes.push_back(SavedNode{true, {}});
+  for (int i = 0; i < 4; ++i) f.nodes.push_back(SavedNode{});
+  EXPECT_TRUE(says(load_error(fuzz::encode_save(f)), "a cell too small to split is split"));
+}
+
 // I9 as the tree is read: in grid mode nothing splits at or below the grid depth.
 TEST(LoadRefuses, AGridNodeSplitBelowTheGridDepth) {
   SaveFile f;
