@@ -91,6 +91,13 @@ std::vector<Theorem> probe_theorems() {
                  const PointTripleInputs in = point_triple_inputs(p);
                  formulas::taxicab_length<SymInt>(in.ax, in.ay, in.bx, in.by);
                }});
+  t.push_back({"outward_normal_int64",
+               "outward_normal (edge_normal.hpp: a ray hit's normal) fits int64 for in-range "
+               "points, the negation included",
+               64, [](Prover& p) {
+                 const PointTripleInputs in = point_triple_inputs(p);
+                 formulas::outward_normal<SymInt>(in.ax, in.ay, in.bx, in.by);
+               }});
   t.push_back({"pixel_line_slack_int128",
                "pixel_line_slack (segment_meets_closed_pixel): 2 |orient| and the slack fit "
                "Int128",

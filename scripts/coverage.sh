@@ -12,6 +12,13 @@
 # figures exclude the branches the compiler adds for exceptions (--exclude-throw-branches) and
 # ones it proves unreachable.
 #
+# EDGELAND_COVERAGE_TARGETS (optional): build only these targets, for a figure of one folder from
+# the tests that reach it, e.g. spatial/:
+#   EDGELAND_COVERAGE_TARGETS="spatial_tests spatial_memory_tests game_tests io_tests \
+#     edgeland_cli regress_replay" scripts/coverage.sh -L '^(spatial|game|io|cli|regress)$'
+# (tests whose executables were not built then fail and count nothing). Compile without ccache:
+# its base_dir makes the recorded source paths relative, which gcovr cannot resolve.
+#
 # Counted: the objects of the executables the chosen tests ran, and the three libraries. Left
 # out: executables no chosen test ran (their copies of our inline header code would count as
 # unreached lines), and determinism_O0/O3, which compile the library sources a second and third
@@ -24,7 +31,12 @@ jobs="${EDGELAND_JOBS:-$(nproc)}"
 cmake -S . -B "$build" -DCMAKE_CXX_COMPILER=g++ -DCMAKE_BUILD_TYPE=Debug \
   -DCMAKE_CXX_FLAGS="--coverage -O0" -DCMAKE_EXE_LINKER_FLAGS=--coverage \
   -DCMAKE_SHARED_LINKER_FLAGS=--coverage -DEDGELAND_CHECKED=ON >/dev/null
-cmake --build "$build" -j "$jobs"
+if [ -n "${EDGELAND_COVERAGE_TARGETS:-}" ]; then
+  # shellcheck disable=SC2086 # a list of target names
+  cmake --build "$build" -j "$jobs" --target ${EDGELAND_COVERAGE_TARGETS}
+else
+  cmake --build "$build" -j "$jobs"
+fi
 find "$build" -name '*.gcda' -delete  # counts of this run only
 # install.consumer is left out: it builds a separate project against the installed static
 # libraries, which carry gcov references that project does not link (--coverage is ours only).

@@ -15,13 +15,13 @@ void require_valid_box(const Box64& box) {
 
 ClipResult clip_valid_to_box(const PolygonSet& set, const Box64& box, const ClipOptions& options,
                              bool collinear_free) {
-  if (box.min.x == box.max.x || box.min.y == box.max.y) return {};
+  if (!box.has_interior()) return {};  // a valid box: min <= max
   // Members that cannot reach the box take no part; the rest go through the full pipeline,
   // so the result stays closed under repetition exactly like clip().
   std::vector<std::uint32_t> near;
   for (std::uint32_t i = 0; i < set.size(); ++i)
     if (bounding_box(set[i])->overlaps(box)) near.push_back(i);
-  const PolygonSet cell{{box.min, {box.max.x, box.min.y}, box.max, {box.min.x, box.max.y}}};
+  const PolygonSet cell{box_ring(box)};
   // gcov ascribes the unwinding of the builder below, run only when the pipeline throws (an
   // internal error), to the `[&] {` line: not reached by tests.
   return guarded(

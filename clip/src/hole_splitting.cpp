@@ -100,12 +100,9 @@ std::optional<Point64> ray_candidate(Point64 o, const std::vector<Segment>& obst
 // misses the bridge's box are passed over by comparisons alone.
 bool visible(Point64 o, Point64 t, const std::vector<Segment>& obstacles) {
   const Segment bridge{o, t};
-  const std::int64_t x0 = std::min(o.x, t.x), x1 = std::max(o.x, t.x);
-  const std::int64_t y0 = std::min(o.y, t.y), y1 = std::max(o.y, t.y);
+  const Box64 reach = segment_box(bridge);
   for (const Segment& e : obstacles) {
-    if (std::max(e.a.x, e.b.x) < x0 || std::min(e.a.x, e.b.x) > x1 || std::max(e.a.y, e.b.y) < y0 ||
-        std::min(e.a.y, e.b.y) > y1)
-      continue;
+    if (!segment_box(e).overlaps(reach)) continue;
     const SegmentIntersection r = intersect(bridge, e);
     if (r.relation == SegmentRelation::kDisjoint) continue;
     if (r.relation != SegmentRelation::kTouching) return false;

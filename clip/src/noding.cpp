@@ -58,9 +58,7 @@ Meeting perpendicular_axis_contact(const Segment& s, std::uint32_t i, const Segm
   const Segment& h = s_flat ? s : t;
   const Segment& v = s_flat ? t : s;
   const Point64 p{v.a.x, h.a.y};
-  if (p.x < std::min(h.a.x, h.b.x) || p.x > std::max(h.a.x, h.b.x) ||
-      p.y < std::min(v.a.y, v.b.y) || p.y > std::max(v.a.y, v.b.y))
-    return Meeting::kNone;
+  if (!segment_box(h).contains(p) || !segment_box(v).contains(p)) return Meeting::kNone;
   ++c.intersections;
   split_if_interior(c, i, s, p);
   split_if_interior(c, j, t, p);
@@ -130,12 +128,6 @@ Meeting classify_pair(const Segment& s, std::uint32_t i, const Segment& t, std::
     return collinear_axis_contact(s, i, t, j, s_flat, c);
   }
   return general_contact(s, i, t, j, c);
-}
-
-Box64 segment_box(const Segment& s) {
-  Box64 b{s.a, s.a};
-  b.expand(s.b);
-  return b;
 }
 
 namespace {

@@ -70,7 +70,4 @@ enum class Meeting : std::uint8_t {
 Meeting classify_pair(const Segment& s, std::uint32_t i, const Segment& t, std::uint32_t j,
                       Contacts& c);
 
-// Box of a segment.
-Box64 segment_box(const Segment& s);
-
 }  // namespace edgeland::detail

@@ -11,12 +11,6 @@
 namespace edgeland {
 namespace {
 
-Ring box_ring(const Box64& b) { return {b.min, {b.max.x, b.min.y}, b.max, {b.min.x, b.max.y}}; }
-
-bool inside(const Box64& inner, const Box64& outer) {
-  return outer.contains(inner.min) && outer.contains(inner.max);
-}
-
 void require_labels(const ValidSet& regions, std::span<const RegionLabel> labels) {
   if (labels.size() != regions.polygons().size())
     throw InvalidOverlay(InvalidOverlay::Reason::kLabelCount, labels.size());
@@ -25,7 +19,7 @@ void require_labels(const ValidSet& regions, std::span<const RegionLabel> labels
 }
 
 void require_window(const Box64& w, std::size_t index) {
-  if (!in_range(w.min) || !in_range(w.max) || w.min.x >= w.max.x || w.min.y >= w.max.y)
+  if (!in_range(w.min) || !in_range(w.max) || !w.has_interior())
     throw InvalidOverlay(InvalidOverlay::Reason::kBadWindow, index);
 }
 
@@ -49,7 +43,7 @@ std::size_t high_half(detail::FaceLabel l) { return static_cast<std::size_t>(l >
 void check_inside(const PolygonSet& set, const Box64& window, const std::string& what,
                   const std::function<std::string()>& inputs) {
   for (const Polygon& p : set)
-    if (!inside(*bounding_box(p), window))  // Not reached by tests: an internal error.
+    if (!window.contains(*bounding_box(p)))  // Not reached by tests: an internal error.
       throw InternalError(what + ": output polygon outside its window", inputs(),
                           to_wkt(PolygonSet{box_ring(window)}));
 }
@@ -63,7 +57,7 @@ LabeledClipResult relabel(const ValidSet& regions, std::span<const RegionLabel> 
   require_window(window, 0);
   const PolygonSet& members = regions.polygons();
   for (std::size_t i = 0; i < members.size(); ++i)
-    if (!inside(*bounding_box(members[i]), window))
+    if (!window.contains(*bounding_box(members[i])))
       throw InvalidOverlay(InvalidOverlay::Reason::kOutsideWindow, i);
   // Shape members that cannot reach the window take no part. When all that do lie in the
   // window, being inside one of them is being inside shape ∩ window and the window's own ring
@@ -74,7 +68,7 @@ LabeledClipResult relabel(const ValidSet& regions, std::span<const RegionLabel> 
     const Box64 b = *bounding_box(shape.polygons()[i]);
     if (!b.overlaps(window)) continue;
     near.push_back(i);
-    all_inside = all_inside && inside(b, window);
+    all_inside = all_inside && window.contains(b);
   }
   const PolygonSet window_rings{box_ring(window)};
   detail::RelabelTable rt{labels.data(), table.data(), table.size(), all_inside ? 1 : 2};

@@ -31,10 +31,7 @@ namespace edgeland::detail {
 
 // Whether the closed boxes of s and t overlap: the cheap test before an exact one.
 inline bool boxes_overlap(const Segment& s, const Segment& t) {
-  return std::max(std::min(s.a.x, s.b.x), std::min(t.a.x, t.b.x)) <=
-             std::min(std::max(s.a.x, s.b.x), std::max(t.a.x, t.b.x)) &&
-         std::max(std::min(s.a.y, s.b.y), std::min(t.a.y, t.b.y)) <=
-             std::min(std::max(s.a.y, s.b.y), std::max(t.a.y, t.b.y));
+  return segment_box(s).overlaps(segment_box(t));
 }
 
 class SegmentGrid {

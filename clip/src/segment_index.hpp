@@ -56,11 +56,7 @@ class SegmentIndex {
   // needs a rough figure). Counts the runs without building them.
   std::size_t run_length_x16() const;
 
-  Box64 box(std::uint32_t s) const {
-    const Segment& g = (*segments_)[s];
-    return {{std::min(g.a.x, g.b.x), std::min(g.a.y, g.b.y)},
-            {std::max(g.a.x, g.b.x), std::max(g.a.y, g.b.y)}};
-  }
+  Box64 box(std::uint32_t s) const { return segment_box((*segments_)[s]); }
 
  private:
   struct Run {

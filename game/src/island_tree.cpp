@@ -38,15 +38,6 @@ struct IslandTree::Registry {
   }
 };
 
-namespace {
-
-bool holds(const Box64& outer, const Box64& inner) {
-  return outer.min.x <= inner.min.x && outer.min.y <= inner.min.y && inner.max.x <= outer.max.x &&
-         inner.max.y <= outer.max.y;
-}
-
-}  // namespace
-
 IslandTree::IslandTree(const Landscape& world, const PhysicsMaterials& materials)
     : materials_(materials),
       root_(std::make_unique<Node>()),
@@ -73,7 +64,7 @@ void IslandTree::replace_cell(Node& root, const Box64& cell, const LandscapeConf
       }
     }
     const auto next = std::find_if(n->children.begin(), n->children.end(),
-                                   [&](const auto& c) { return holds(c->box, cell); });
+                                   [&](const auto& c) { return c->box.contains(cell); });
     if (next == n->children.end()) return;  // not a cell of this landscape's tree
     n = next->get();
   }

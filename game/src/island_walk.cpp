@@ -16,7 +16,7 @@ struct BoxLess {
 // The segment of side `s` of `box` from lo to hi along it, as a (flat) box.
 Box64 side_box(const Box64& box, Side s, std::int64_t lo, std::int64_t hi) {
   const Point64 a = point_on(box, s, lo), b = point_on(box, s, hi);
-  return {{std::min(a.x, b.x), std::min(a.y, b.y)}, {std::max(a.x, b.x), std::max(a.y, b.y)}};
+  return segment_box(a, b);
 }
 
 class Walk {

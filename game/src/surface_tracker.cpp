@@ -16,10 +16,6 @@ namespace {
 
 using game_detail::CellSurface;
 
-bool interiors_meet(const Box64& a, const Box64& b) {
-  return a.min.x < b.max.x && b.min.x < a.max.x && a.min.y < b.max.y && b.min.y < a.max.y;
-}
-
 // The cells of `world` whose closed box meets one of `boxes` and is not one of `except`.
 template <class Set>
 Set touching(const Landscape& world, const Set& boxes, const Set& except) {
@@ -84,7 +80,7 @@ ChainUpdate SurfaceTracker::update(const Landscape& world, const ChangeSet& chan
   std::vector<Box64> gone;
   for (const Box64& box : changes.cells)
     seen_.cells_in(box, [&](const CellView& c) {
-      if (interiors_meet(c.box, box)) gone.push_back(c.box);
+      if (c.box.overlaps_open(box)) gone.push_back(c.box);
       return true;
     });
   return replace_cells(world, gone, changes.cells);

@@ -72,7 +72,7 @@ WorldCommand parse_world(std::string_view rest, std::size_t line) {
     throw bad_argument(
         line, "world: unexpected '" + printable_excerpt(rest) + "' after X0 Y0 X1 Y1 [MATERIAL]");
   }
-  if (world.box.min.x >= world.box.max.x || world.box.min.y >= world.box.max.y) {
+  if (!world.box.has_interior()) {
     throw bad_argument(line, "world: the box needs X0 < X1 and Y0 < Y1");
   }
   return world;

@@ -49,13 +49,11 @@ std::optional<ParameterRange> clip_parameters(const Segment& s, const Box64& box
 }
 
 bool segment_meets_open_box(const Segment& s, const Box64& box) noexcept {
-  if (box.min.x >= box.max.x || box.min.y >= box.max.y) return false;  // no interior
-  if (std::max(s.a.x, s.b.x) <= box.min.x || std::min(s.a.x, s.b.x) >= box.max.x) return false;
-  if (std::max(s.a.y, s.b.y) <= box.min.y || std::min(s.a.y, s.b.y) >= box.max.y) return false;
-  if (s.a == s.b) return true;  // inside both open ranges
-  const Point64 corners[4] = {box.min, {box.max.x, box.min.y}, box.max, {box.min.x, box.max.y}};
+  if (!box.has_interior()) return false;
+  if (!segment_box(s).overlaps_open(box)) return false;  // apart along x or y
+  if (s.a == s.b) return true;                           // inside both open ranges
   bool left = false, right = false;
-  for (Point64 c : corners) {
+  for (Point64 c : box_corners(box)) {
     const Orientation o = orientation(s.a, s.b, c);
     left = left || o == Orientation::kCounterClockwise;
     right = right || o == Orientation::kClockwise;
@@ -64,7 +62,7 @@ bool segment_meets_open_box(const Segment& s, const Box64& box) noexcept {
 }
 
 bool interiors_overlap(const Box64& box, const Ring& ring) noexcept {
-  if (box.min.x >= box.max.x || box.min.y >= box.max.y || ring.size() < 3) return false;
+  if (!box.has_interior() || ring.size() < 3) return false;
   for (std::size_t i = 0, n = ring.size(); i < n; ++i)
     if (segment_meets_open_box({ring[i], ring[i + 1 == n ? 0 : i + 1]}, box)) return true;
   // The boundary misses the open box, which is therefore wholly inside or wholly outside;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "edgeland/kernel/bbox.hpp"
 #include "edgeland/kernel/checked.hpp"
 #include "edgeland/kernel/formulas.hpp"
 
@@ -31,9 +32,7 @@ Int128 normal_slack(const Segment& s, Point64 c) noexcept {
 bool segment_meets_closed_pixel(const Segment& s, Point64 c) noexcept {
   // Along x the closed pixel is [c.x - 1/2, c.x + 1/2], which holds one integer: an integer
   // segment's x-range meets it exactly when it contains c.x. Likewise along y.
-  if (std::min(s.a.x, s.b.x) > c.x || std::max(s.a.x, s.b.x) < c.x ||
-      std::min(s.a.y, s.b.y) > c.y || std::max(s.a.y, s.b.y) < c.y)
-    return false;
+  if (!segment_box(s).contains(c)) return false;
   return normal_slack(s, c) >= 0;
 }
 

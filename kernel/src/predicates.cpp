@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <utility>
 
+#include "edgeland/kernel/bbox.hpp"
 #include "edgeland/kernel/checked.hpp"
 #include "edgeland/kernel/formulas.hpp"
 
@@ -24,8 +25,7 @@ int dot_sign(Point64 a, Point64 b, Point64 c) noexcept { return sign(along(a, b,
 
 bool on_segment(Point64 p, const Segment& s) noexcept {
   if (orient_det(s.a, s.b, p) != 0) return false;
-  return std::min(s.a.x, s.b.x) <= p.x && p.x <= std::max(s.a.x, s.b.x) &&
-         std::min(s.a.y, s.b.y) <= p.y && p.y <= std::max(s.a.y, s.b.y);
+  return segment_box(s).contains(p);
 }
 
 bool on_segment_interior(Point64 p, const Segment& s) noexcept {

@@ -32,6 +32,7 @@
 #include <span>
 #include <vector>
 
+#include "edgeland/kernel/bbox.hpp"
 #include "edgeland/kernel/checked.hpp"
 #include "edgeland/kernel/scratch.hpp"
 #include "validate_checks.hpp"
@@ -158,7 +159,7 @@ class OneSweep {
     events_.reserve(total);
     rings_.reserve(ring_count());
     std::uint32_t id = 0;
-    Point64 low{kCoordBound, kCoordBound}, high{-kCoordBound, -kCoordBound};
+    Box64 box{{kCoordBound, kCoordBound}, {-kCoordBound, -kCoordBound}};  // empty until expanded
     for (std::size_t r = 0; r < ring_count(); ++r) {
       const Polygon& p = ring(r);
       rings_.push_back({id, static_cast<std::uint32_t>(p.size())});
@@ -168,16 +169,15 @@ class OneSweep {
         const Point64 left = forward ? a : b, right = forward ? b : a;
         edges_.push_back({left, right, coord_diff(right.x, left.x), coord_diff(right.y, left.y),
                           static_cast<std::uint32_t>(r), forward});
-        low = {std::min(low.x, a.x), std::min(low.y, a.y)};
-        high = {std::max(high.x, a.x), std::max(high.y, a.y)};
+        box.expand(a);
       }
     }
     // Each vertex as one key in as few bits as the box needs.
-    narrow_ = narrow_box(low, high);
-    const unsigned y_bits = sweep_key_bits(high.y - low.y);
-    key_bits_ = y_bits + sweep_key_bits(high.x - low.x);
+    narrow_ = narrow_box(box.min, box.max);
+    const unsigned y_bits = sweep_key_bits(box.max.y - box.min.y);
+    key_bits_ = y_bits + sweep_key_bits(box.max.x - box.min.x);
     for (std::uint32_t v = 0; v < total; ++v) {
-      events_.push_back({sweep_key(edge_start(v), low, y_bits), v});
+      events_.push_back({sweep_key(edge_start(v), box.min, y_bits), v});
     }
     if (multi_) cover_.assign(total, 0);
     seen_.assign(ring_count(), 0);

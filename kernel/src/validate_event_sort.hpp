@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "edgeland/kernel/bbox.hpp"
 #include "edgeland/kernel/point.hpp"
 
 namespace edgeland::detail {
@@ -47,17 +48,13 @@ template <class PointOf>
 std::vector<KeyedVertex> sorted_by_point(std::size_t n, PointOf point_of) {
   std::vector<KeyedVertex> events(n), scratch;
   if (n == 0) return events;
-  Point64 low = point_of(0), high = low;
-  for (std::size_t i = 1; i < n; ++i) {
-    const Point64 p = point_of(i);
-    low = {std::min(low.x, p.x), std::min(low.y, p.y)};
-    high = {std::max(high.x, p.x), std::max(high.y, p.y)};
-  }
-  const unsigned y_bits = sweep_key_bits(high.y - low.y);
+  Box64 box{point_of(0), point_of(0)};
+  for (std::size_t i = 1; i < n; ++i) box.expand(point_of(i));
+  const unsigned y_bits = sweep_key_bits(box.max.y - box.min.y);
   for (std::size_t i = 0; i < n; ++i) {
-    events[i] = {sweep_key(point_of(i), low, y_bits), static_cast<std::uint32_t>(i)};
+    events[i] = {sweep_key(point_of(i), box.min, y_bits), static_cast<std::uint32_t>(i)};
   }
-  sort_by_key(events, scratch, y_bits + sweep_key_bits(high.x - low.x));
+  sort_by_key(events, scratch, y_bits + sweep_key_bits(box.max.x - box.min.x));
   return events;
 }
 

@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "edgeland/kernel/bbox.hpp"
 #include "edgeland/kernel/checked.hpp"
 #include "edgeland/kernel/point_in_polygon.hpp"
 #include "edgeland/kernel/scratch.hpp"
@@ -30,23 +31,10 @@
 namespace edgeland::detail {
 namespace {
 
-struct Box {
-  Point64 low, high;
-};
-
-bool boxes_meet(const Box& a, const Box& b) noexcept {
-  return a.low.x <= b.high.x && b.low.x <= a.high.x && a.low.y <= b.high.y && b.low.y <= a.high.y;
-}
-
-bool box_inside(const Box& inner, const Box& outer) noexcept {
-  return outer.low.x <= inner.low.x && inner.high.x <= outer.high.x && outer.low.y <= inner.low.y &&
-         inner.high.y <= outer.high.y;
-}
-
 // Edges first .. first + count - 1 of one ring, monotone: x never moves against sx (+1 or -1)
 // nor y against sy.
 struct Run {
-  Box box;  // of its two end vertices
+  Box64 box;  // of its two end vertices
   std::uint32_t ring;
   std::uint32_t first;
   std::uint32_t count;
@@ -57,7 +45,7 @@ struct Run {
 struct RingView {
   const Point64* vertex;
   std::uint32_t size;
-  Box box;
+  Box64 box;
 };
 
 // Whether two closed segments share a point, and whether they cross at a point interior to
@@ -193,13 +181,9 @@ class RunSweep {
         add_run(static_cast<std::uint32_t>(r), starts[k], end - starts[k]);
       }
       // The ring's box: that of its runs' boxes.
-      Box& box = rings_[r].box;
+      Box64& box = rings_[r].box;
       box = runs_[first_run[r]].box;
-      for (std::size_t k = first_run[r] + 1; k < first_run[r + 1]; ++k) {
-        const Box& b = runs_[k].box;
-        box = {{std::min(box.low.x, b.low.x), std::min(box.low.y, b.low.y)},
-               {std::max(box.high.x, b.high.x), std::max(box.high.y, b.high.y)}};
-      }
+      for (std::size_t k = first_run[r] + 1; k < first_run[r + 1]; ++k) box.expand(runs_[k].box);
     }
     budget_ = std::size_t{options_.work_per_edge} * edges + 64;
     if (const RunVerdict v = sweep_runs(); v != RunVerdict::kValid) return v;
@@ -211,7 +195,7 @@ class RunSweep {
   void add_run(std::uint32_t r, std::uint32_t first, std::uint32_t count) {
     Run run{{}, r, first, count, 0, 0};
     const Point64 a = vertex(run, 0), b = vertex(run, count);
-    run.box = {{std::min(a.x, b.x), std::min(a.y, b.y)}, {std::max(a.x, b.x), std::max(a.y, b.y)}};
+    run.box = segment_box(a, b);
     // Along the run each coordinate only grows or only shrinks (or stays): its ends tell how.
     run.sx = a.x <= b.x ? 1 : -1;
     run.sy = a.y <= b.y ? 1 : -1;
@@ -223,9 +207,9 @@ class RunSweep {
     const std::vector<Run> runs = sorted_by_left(runs_, [](const Run& r) { return r.box; });
     for (std::size_t i = 0; i < runs.size(); ++i) {
       const Run& a = runs[i];
-      for (std::size_t j = i + 1; j < runs.size() && runs[j].box.low.x <= a.box.high.x; ++j) {
+      for (std::size_t j = i + 1; j < runs.size() && runs[j].box.min.x <= a.box.max.x; ++j) {
         if (++work_ > budget_) return RunVerdict::kUndecided;
-        if (!boxes_meet(a.box, runs[j].box)) continue;
+        if (!a.box.overlaps(runs[j].box)) continue;
         if (const RunVerdict v = check_pair(a, runs[j]); v != RunVerdict::kValid) return v;
       }
     }
@@ -239,16 +223,16 @@ class RunSweep {
     for (std::uint32_t r = 0; r < ids.size(); ++r) ids[r] = r;
     ids = sorted_by_left(ids, [&](std::uint32_t r) { return rings_[r].box; });
     const auto nested = [&](std::uint32_t inner, std::uint32_t outer) {
-      if (!box_inside(rings_[inner].box, rings_[outer].box)) return false;
+      if (!rings_[outer].box.contains(rings_[inner].box)) return false;
       work_ += rings_[outer].size;
       // No edges meet, so the vertex is off the other boundary: inside or outside.
       return locate(rings_[inner].vertex[0], ring(outer)) != PointLocation::kOutside;
     };
     for (std::size_t i = 0; i < ids.size(); ++i) {
-      const Box& a = rings_[ids[i]].box;
-      for (std::size_t j = i + 1; j < ids.size() && rings_[ids[j]].box.low.x <= a.high.x; ++j) {
+      const Box64& a = rings_[ids[i]].box;
+      for (std::size_t j = i + 1; j < ids.size() && rings_[ids[j]].box.min.x <= a.max.x; ++j) {
         if (++work_ > budget_) return RunVerdict::kUndecided;
-        if (!boxes_meet(a, rings_[ids[j]].box)) continue;
+        if (!a.overlaps(rings_[ids[j]].box)) continue;
         if (nested(ids[j], ids[i]) || nested(ids[i], ids[j])) return RunVerdict::kInvalid;
         if (work_ > budget_) return RunVerdict::kUndecided;
       }
@@ -262,14 +246,14 @@ class RunSweep {
     std::vector<T> out;
     out.reserve(items.size());
     if (items.empty()) return out;
-    std::int64_t low = box_of(items[0]).low.x, high = low;
+    std::int64_t low = box_of(items[0]).min.x, high = low;
     for (const T& item : items) {
-      low = std::min(low, box_of(item).low.x);
-      high = std::max(high, box_of(item).low.x);
+      low = std::min(low, box_of(item).min.x);
+      high = std::max(high, box_of(item).min.x);
     }
     std::vector<KeyedVertex> keys(items.size()), scratch;
     for (std::size_t k = 0; k < items.size(); ++k) {
-      keys[k] = {static_cast<std::uint64_t>(box_of(items[k]).low.x - low),
+      keys[k] = {static_cast<std::uint64_t>(box_of(items[k]).min.x - low),
                  static_cast<std::uint32_t>(k)};
     }
     sort_by_key(keys, scratch, sweep_key_bits(high - low));
@@ -289,16 +273,16 @@ class RunSweep {
   struct Stretch {
     std::uint32_t lo, hi;
   };
-  Stretch edges_near(const Run& r, const Box& in) const noexcept {
+  Stretch edges_near(const Run& r, const Box64& in) const noexcept {
     const auto ends_short = [&](std::uint32_t k) {
       const Point64 p = vertex(r, k + 1);
-      return (r.sx >= 0 ? p.x < in.low.x : p.x > in.high.x) ||
-             (r.sy >= 0 ? p.y < in.low.y : p.y > in.high.y);
+      return (r.sx >= 0 ? p.x < in.min.x : p.x > in.max.x) ||
+             (r.sy >= 0 ? p.y < in.min.y : p.y > in.max.y);
     };
     const auto starts_past = [&](std::uint32_t k) {
       const Point64 p = vertex(r, k);
-      return (r.sx >= 0 ? p.x > in.high.x : p.x < in.low.x) ||
-             (r.sy >= 0 ? p.y > in.high.y : p.y < in.low.y);
+      return (r.sx >= 0 ? p.x > in.max.x : p.x < in.min.x) ||
+             (r.sy >= 0 ? p.y > in.max.y : p.y < in.min.y);
     };
     std::uint32_t lo = 0, hi = r.count;
     while (lo < hi) {
@@ -325,8 +309,8 @@ class RunSweep {
     const bool same_ring = a.ring == b.ring;
     const std::uint32_t n = rings_[a.ring].size;
     if (same_ring && n <= 3) return RunVerdict::kValid;  // every two edges are neighbours
-    const Box in{{std::max(a.box.low.x, b.box.low.x), std::max(a.box.low.y, b.box.low.y)},
-                 {std::min(a.box.high.x, b.box.high.x), std::min(a.box.high.y, b.box.high.y)}};
+    const Box64 in{{std::max(a.box.min.x, b.box.min.x), std::max(a.box.min.y, b.box.min.y)},
+                   {std::min(a.box.max.x, b.box.max.x), std::min(a.box.max.y, b.box.max.y)}};
     const Stretch sa = edges_near(a, in), sb = edges_near(b, in);
     work_ += std::size_t{sa.hi - sa.lo} * (sb.hi - sb.lo);
     if (work_ > budget_) return RunVerdict::kUndecided;

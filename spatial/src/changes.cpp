@@ -19,6 +19,9 @@ void collect(const NodePtr& node, std::vector<NodePtr>& cells, std::vector<NodeP
 
 void walk(const NodePtr& o, const NodePtr& n, Changes& out) {
   if (o == n) return;
+  // Two inner nodes of one box always have the same children's boxes (split_boxes), so the
+  // child counts differ in no test; compared anyway, so a tree of another shape would be told
+  // apart by its cells rather than walked child by child.
   if (!o->is_cell() && !n->is_cell() && o->child_count == n->child_count) {
     out.new_inner.push_back(n);
     for (std::uint32_t i = 0; i < o->child_count; ++i) walk(o->children[i], n->children[i], out);

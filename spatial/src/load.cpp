@@ -39,6 +39,9 @@ class Loader {
     try {
       return read_landscape();
     } catch (const std::bad_alloc&) {
+      // Not reached by tests: every count is bounded by the file's bytes and the limits before
+      // anything is allocated for it, so only a world as large as the memory gets here (the
+      // peak memory of a load is measured instead: tests/spatial/memory).
       fail("out of memory: the file describes a world larger than the memory available");
     }
   }
@@ -93,6 +96,8 @@ class Loader {
       v |= (b & 0x7f) << shift;
       if (!(b & 0x80)) return v;
     }
+    // Not reached by tests: a tenth byte with its continuation bit is above 1 and refused
+    // above, so the loop never runs out; kept so the function visibly ends.
     fail("varint longer than 10 bytes");
   }
   std::int64_t zigzag() {
@@ -140,6 +145,8 @@ class Loader {
 
   // --- the tree ------------------------------------------------------------------------------
   NodePtr read_node(const Box64& box, std::uint32_t depth) {
+    // Not reached by tests: a node at depth 64 has no side longer than 1, so read_inner refuses
+    // its split first; the bound stands should the split rule ever change.
     if (depth > kMaxDepth) fail("tree too deep");
     const auto tag = fixed(1);
     if (tag == format::kInnerTag) return read_inner(box, depth);
@@ -229,6 +236,8 @@ class Loader {
     std::sort(ids_.begin(), ids_.end());
     const auto twice = std::adjacent_find(ids_.begin(), ids_.end());
     if (twice != ids_.end()) fail("polygon id " + std::to_string(*twice) + " twice");
+    // Not reached by tests: read_id refuses an id not below the next id as it reads it; this
+    // states I6 whole, as check() does.
     if (!ids_.empty() && ids_.back() >= next_id) fail("an id is not below the next id");
   }
 
@@ -283,6 +292,8 @@ std::string read_bytes(std::istream& in, const LandscapeLimits& limits) {
     if (in.bad()) throw LoadError("the stream failed", total);
     return bytes;
   } catch (const std::bad_alloc&) {
+    // Not reached by tests: the bytes read are bounded by the limits (max_file_bytes); only a
+    // file that large for the memory gets here.
     throw LoadError("out of memory reading the file", total);
   }
 }

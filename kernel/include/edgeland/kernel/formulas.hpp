@@ -154,6 +154,21 @@ constexpr W pixel_line_slack(D ax, D ay, D bx, D by, D cx, D cy) {
   return W(taxicab_length<D>(ax, ay, bx, by)) - W(2) * magnitude(det);
 }
 
+// --- Edge normals (edge_normal.hpp) ---
+
+// The outward normal of edge a -> b of a counter-clockwise ring (its interior on the left): the
+// direction b - a turned clockwise, (by - ay, -(bx - ax)); not normalised. In the differences'
+// type D (theorem outward_normal_int64: both components fit int64 for in-range points).
+template <class D>
+struct Normal {
+  D x, y;
+};
+
+template <class D>
+constexpr Normal<D> outward_normal(D ax, D ay, D bx, D by) {
+  return {by - ay, -(bx - ax)};
+}
+
 // --- Centroids (centroid.hpp) ---
 
 // What edge a -> b of a ring adds to six times the ring's first moment along one axis: with c
