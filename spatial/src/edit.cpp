@@ -6,6 +6,7 @@
 
 #include <algorithm>
 
+#include "cell_overlay.hpp"
 #include "cell_split.hpp"
 #include "changes.hpp"
 #include "check.hpp"
@@ -22,10 +23,6 @@ using detail::NodePtr;
 // Interiors of two closed boxes meet.
 bool open_overlap(const Box64& a, const Box64& b) {
   return a.min.x < b.max.x && b.min.x < a.max.x && a.min.y < b.max.y && b.min.y < a.max.y;
-}
-
-bool same_content(const LabeledSet& a, const LabeledSet& b) {
-  return a.labels == b.labels && a.set.polygons() == b.set.polygons();
 }
 
 std::size_t vertices_of(const LabeledSet& s) {
@@ -81,10 +78,10 @@ LandscapeEditor::Draft LandscapeEditor::Draft::inner(const Box64& box, std::uint
 }
 
 LandscapeEditor::Draft LandscapeEditor::edit_cell(const NodePtr& cell) {
-  LabeledClipResult r = relabel(cell->content.set, cell->content.labels, shape_, cell->box,
-                                table_.table, clip_options());
-  if (same_content(r.regions, cell->content)) return Draft::keep(cell);
-  Draft edited = Draft::cell(cell->box, cell->depth, std::move(r.regions));
+  std::optional<LabeledSet> content =
+      detail::overlay_cell(*cell, shape_, table_.table, clip_options());
+  if (!content) return Draft::keep(cell);
+  Draft edited = Draft::cell(cell->box, cell->depth, std::move(*content));
   grow(cell->vertices, edited.vertices);
   return split_if_needed(std::move(edited));
 }

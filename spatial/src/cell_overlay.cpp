@@ -1,0 +1,225 @@
+// The overlay of one cell (cell_overlay.hpp). The quick cases are those where relabel()'s
+// arrangement would meet no crossing at a non-integer point, so snap rounding moves nothing and
+// relabel() returns the canonical decomposition of the relabeled regions (relabel.hpp); when
+// those regions are the cell's own, that is the cell's content (I3), and when the shape covers
+// the cell they are one region or none.
+#include "cell_overlay.hpp"
+
+#include <algorithm>
+#include <vector>
+
+#include "edgeland/kernel/area.hpp"
+#include "edgeland/kernel/box_queries.hpp"
+#include "edgeland/kernel/point_in_polygon.hpp"
+#include "edgeland/kernel/predicates.hpp"
+
+namespace edgeland::detail {
+namespace {
+
+bool inside(const Box64& inner, const Box64& outer) {
+  return outer.contains(inner.min) && outer.contains(inner.max);
+}
+
+Ring box_ring(const Box64& b) { return {b.min, {b.max.x, b.min.y}, b.max, {b.min.x, b.max.y}}; }
+
+// The shape's members whose boxes meet the closed cell box: those relabel() takes part.
+struct NearMembers {
+  std::vector<std::size_t> members;
+  std::vector<Box64> boxes;
+  bool all_inside = true;  // every one lies in the closed cell box (no window ring needed)
+};
+
+NearMembers near_members(const ValidSet& shape, const Box64& cell) {
+  NearMembers near;
+  const PolygonSet& members = shape.polygons();
+  for (std::size_t i = 0; i < members.size(); ++i) {
+    const Box64 b = *bounding_box(members[i]);
+    if (!b.overlaps(cell)) continue;
+    near.members.push_back(i);
+    near.boxes.push_back(b);
+    near.all_inside = near.all_inside && inside(b, cell);
+  }
+  return near;
+}
+
+// The member contains the whole cell: no edge of it meets the cell's open interior, and a point
+// of that interior (the corner min, by the half-open rule) is inside it. Its edges then touch
+// the cell box at integer points only (a segment that meets a closed box but not its interior
+// touches it at a corner, along a side, or at one of its own ends).
+bool covers(const Polygon& member, const Box64& cell) {
+  for (std::size_t i = 0; i < member.size(); ++i)
+    if (segment_meets_open_box(ring_edge(member, i), cell)) return false;
+  return inside_half_open(cell.min, member);
+}
+
+// Whether the cell's polygons leave some of its box uncovered (material 0 present).
+bool has_empty_space(const Node& cell) {
+  return twice_signed_area(cell.polygon_set()) < twice_signed_area(box_ring(cell.box));
+}
+
+// The shape covers the cell: each label present (0 where the polygons leave space) becomes its
+// relabeled value. kUnchanged: every one stays; kUniform: all become `to` (the content is then
+// the cell box of `to`, or nothing); kMixed: anything else (left to relabel()).
+enum class Covered { kUnchanged, kUniform, kMixed };
+Covered relabel_covered(const Node& cell, std::span<const RegionLabel> table, RegionLabel& to) {
+  std::vector<RegionLabel> present = cell.content.labels;
+  if (present.empty() || has_empty_space(cell)) present.push_back(kNoRegion);
+  to = relabeled(table, present.front());
+  bool all_stay = true, uniform = true;
+  for (RegionLabel l : present) {
+    all_stay = all_stay && relabeled(table, l) == l;
+    uniform = uniform && relabeled(table, l) == to;
+  }
+  if (all_stay) return Covered::kUnchanged;
+  return uniform ? Covered::kUniform : Covered::kMixed;
+}
+
+LabeledSet uniform_content(const Box64& box, RegionLabel to) {
+  if (to == kNoRegion) return {};
+  return {ValidSet(PolygonSet{box_ring(box)}), {to}};
+}
+
+Box64 grown(const Box64& b, std::int64_t by) {
+  return {{b.min.x - by, b.min.y - by}, {b.max.x + by, b.max.y + by}};
+}
+
+Box64 edge_box(const Segment& e) {
+  return {{std::min(e.a.x, e.b.x), std::min(e.a.y, e.b.y)},
+          {std::max(e.a.x, e.b.x), std::max(e.a.y, e.b.y)}};
+}
+
+// Whether some edge of `member` has a point in common with some edge of the cell's polygons.
+bool meets_a_boundary(const Node& cell, const Polygon& member, const Box64& member_box) {
+  const PolygonSet& polys = cell.polygon_set();
+  for (std::size_t q = 0; q < polys.size(); ++q) {
+    if (!cell.boxes[q].overlaps(member_box)) continue;
+    const Polygon& poly = polys[q];
+    for (std::size_t j = 0; j < poly.size(); ++j) {
+      const Segment f = ring_edge(poly, j);
+      const Box64 fb = edge_box(f);
+      if (!fb.overlaps(member_box)) continue;
+      for (std::size_t i = 0; i < member.size(); ++i) {
+        const Segment e = ring_edge(member, i);
+        if (edge_box(e).overlaps(fb) && intersect(e, f).relation != SegmentRelation::kDisjoint)
+          return true;
+      }
+    }
+  }
+  return false;
+}
+
+// A member that meets no boundary of the cell lies in one face of its polygons and may hold
+// whole polygons: the relabel leaves it all as it is when each of those keeps its label.
+bool leaves_all_as_is(const Node& cell, const Polygon& member, const Box64& member_box,
+                      std::span<const RegionLabel> table) {
+  const PolygonSet& polys = cell.polygon_set();
+  RegionLabel around = kNoRegion;  // the label of the face the member lies in
+  for (std::size_t q = 0; q < polys.size(); ++q) {
+    if (!cell.boxes[q].overlaps(member_box)) continue;
+    if (locate(member.front(), polys[q]) == PointLocation::kInside) around = cell.content.labels[q];
+    if (locate(polys[q].front(), member) == PointLocation::kInside &&
+        relabeled(table, cell.content.labels[q]) != cell.content.labels[q])
+      return false;
+  }
+  return relabeled(table, around) == around;
+}
+
+// Every polygon of the cell lies at least two units (L-infinity, from its box) from every edge
+// of the shape: no crossing, no hot pixel and no moved segment of relabel()'s arrangement comes
+// near them (snap rounding moves segments by less than a unit, and only those meeting a hot
+// pixel; the window's edges, on integer lines, pass through the centre of every hot pixel they
+// meet). Each polygon is then wholly inside or wholly outside each member.
+bool clear_of_the_shape(const Node& cell, const ValidSet& shape, const NearMembers& near) {
+  const Box64 reach = grown(cell.box, 2);
+  for (std::size_t k = 0; k < near.members.size(); ++k) {
+    const Polygon& member = shape.polygons()[near.members[k]];
+    for (std::size_t i = 0; i < member.size(); ++i) {
+      const Segment edge = ring_edge(member, i);
+      const Box64 e = grown(edge_box(edge), 2);
+      if (!e.overlaps(reach)) continue;
+      for (const Box64& b : cell.boxes)
+        if (b.overlaps(e) && segment_meets_open_box(edge, grown(b, 2))) return false;
+    }
+  }
+  return true;
+}
+
+// With every polygon clear of the shape: no polygon inside a member changes its label, and the
+// uncovered space keeps its own (0).
+bool clear_and_kept(const Node& cell, const ValidSet& shape, const NearMembers& near,
+                    std::span<const RegionLabel> table) {
+  if (relabeled(table, kNoRegion) != kNoRegion) return false;
+  const PolygonSet& polys = cell.polygon_set();
+  for (std::size_t q = 0; q < polys.size(); ++q) {
+    const RegionLabel l = cell.content.labels[q];
+    if (relabeled(table, l) == l) continue;
+    for (std::size_t k = 0; k < near.members.size(); ++k)
+      if (inside(cell.boxes[q], near.boxes[k]) &&
+          locate(polys[q].front(), shape.polygons()[near.members[k]]) == PointLocation::kInside)
+        return false;
+  }
+  return true;
+}
+
+// Quick rejection: the shape changes nothing in the cell, and relabel() would round nothing
+// that is kept (the cell's own regions come back). Either every polygon is clear of the shape
+// and keeps its label, or every member reaching the cell lies in its closed box (no window
+// ring), meets no boundary there (no contact at all) and changes nothing.
+bool changes_nothing(const Node& cell, const ValidSet& shape, const NearMembers& near,
+                     std::span<const RegionLabel> table) {
+  if (clear_of_the_shape(cell, shape, near)) return clear_and_kept(cell, shape, near, table);
+  if (!near.all_inside) return false;
+  for (std::size_t k = 0; k < near.members.size(); ++k) {
+    const Polygon& member = shape.polygons()[near.members[k]];
+    if (meets_a_boundary(cell, member, near.boxes[k])) return false;
+    if (!leaves_all_as_is(cell, member, near.boxes[k], table)) return false;
+  }
+  return true;
+}
+
+bool same_content(const LabeledSet& a, const LabeledSet& b) {
+  return a.labels == b.labels && a.set.polygons() == b.set.polygons();
+}
+
+// The shape covers the cell (some member contains it): the answer when it is known.
+std::optional<QuickAnswer> covered_answer(const Node& cell, const ValidSet& shape,
+                                          const NearMembers& near,
+                                          std::span<const RegionLabel> table) {
+  for (std::size_t k = 0; k < near.members.size(); ++k) {
+    if (!covers(shape.polygons()[near.members[k]], cell.box)) continue;
+    RegionLabel to = kNoRegion;
+    switch (relabel_covered(cell, table, to)) {
+      case Covered::kUnchanged:
+        return QuickAnswer{};
+      case Covered::kUniform:
+        return QuickAnswer{uniform_content(cell.box, to)};
+      case Covered::kMixed:
+        return std::nullopt;
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<QuickAnswer> quick_overlay(const Node& cell, const ValidSet& shape,
+                                         std::span<const RegionLabel> table) {
+  const NearMembers near = near_members(shape, cell.box);
+  if (near.members.empty()) return QuickAnswer{};
+  if (cell.content.labels.empty() && relabeled(table, kNoRegion) == kNoRegion) return QuickAnswer{};
+  if (auto covered = covered_answer(cell, shape, near, table)) return covered;
+  if (changes_nothing(cell, shape, near, table)) return QuickAnswer{};
+  return std::nullopt;
+}
+
+std::optional<LabeledSet> overlay_cell(const Node& cell, const ValidSet& shape,
+                                       std::span<const RegionLabel> table,
+                                       const ClipOptions& options) {
+  if (auto quick = quick_overlay(cell, shape, table)) return std::move(quick->content);
+  LabeledClipResult r =
+      relabel(cell.content.set, cell.content.labels, shape, cell.box, table, options);
+  if (same_content(r.regions, cell.content)) return std::nullopt;
+  return std::move(r.regions);
+}
+
+}  // namespace edgeland::detail

@@ -1,0 +1,39 @@
+#pragma once
+// Step 3 of an edit (spatial/README.md, "An edit"): one cell's labeled polygons relabeled
+// inside the shape, rounded once. Most cells an edit reaches need no arrangement: an empty cell
+// that stays empty, a cell the shape covers whole, a shape that meets no boundary in the cell
+// and lies in one region it does not change. Those are answered by box tests and exact point and
+// segment tests (kernel/) with the result relabel() would give, bit for bit; the rest go through
+// relabel().
+#include <optional>
+#include <span>
+
+#include "edgeland/clip/relabel.hpp"
+#include "node.hpp"
+
+namespace edgeland::detail {
+
+// What the table makes of label l inside the shape (relabel.hpp: labels past its end are kept).
+inline RegionLabel relabeled(std::span<const RegionLabel> table, RegionLabel l) {
+  return l < table.size() ? table[l] : l;
+}
+
+// The answer of a quick case: the cell stays as it is (no content), or becomes `content`.
+struct QuickAnswer {
+  std::optional<LabeledSet> content;
+};
+
+// The quick cases, in order: no member reaches the cell; the cell is empty and stays so; a member
+// covers the cell, and every material there stays or all become one; the shape changes nothing
+// (every polygon at least two units from its edges and keeping its material, or every member
+// inside the cell box meeting no polygon edge and lying in a face that keeps its material, with
+// what it encloses). nullopt when none applies. Each answer is relabel()'s, bit for bit.
+std::optional<QuickAnswer> quick_overlay(const Node& cell, const ValidSet& shape,
+                                         std::span<const RegionLabel> table);
+
+// The cell's content after the edit, or nullopt when it stays exactly as it is.
+std::optional<LabeledSet> overlay_cell(const Node& cell, const ValidSet& shape,
+                                       std::span<const RegionLabel> table,
+                                       const ClipOptions& options);
+
+}  // namespace edgeland::detail

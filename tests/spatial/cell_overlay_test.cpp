@@ -1,0 +1,168 @@
+// Stage test of an edit's overlay of one cell (spatial/src/cell_overlay.hpp): each quick case
+// fires where it should, and whenever one answers, the answer is relabel()'s, bit for bit
+// (spatial/README.md, "An edit", step 3).
+#include "cell_overlay.hpp"
+
+#include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
+
+#include <vector>
+
+#include "edgeland/clip/relabel.hpp"
+#include "generators.hpp"
+
+namespace edgeland {
+namespace {
+
+using detail::NodePtr;
+
+Polygon square(std::int64_t x0, std::int64_t y0, std::int64_t x1, std::int64_t y1) {
+  return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+}
+
+std::vector<RegionLabel> fill_table(RegionLabel m) { return std::vector<RegionLabel>(256, m); }
+std::vector<RegionLabel> carve_table() { return fill_table(0); }
+
+// A cell holding the canonical decomposition of `polygons` (labels given) in `box`.
+NodePtr cell_of(const Box64& box, const PolygonSet& polygons,
+                const std::vector<RegionLabel>& labels) {
+  LabeledClipResult r = relabel(ValidSet(polygons), labels, ValidSet(), box, {});
+  std::vector<PolygonId> ids(r.regions.labels.size());
+  for (std::size_t i = 0; i < ids.size(); ++i) ids[i] = i + 1;
+  return detail::make_cell(box, 0, std::move(r.regions), std::move(ids));
+}
+
+bool same(const LabeledSet& a, const LabeledSet& b) {
+  return a.labels == b.labels && a.set.polygons() == b.set.polygons();
+}
+
+// What relabel() gives for the cell: nullopt when that is the cell's own content.
+std::optional<LabeledSet> by_relabel(const detail::Node& cell, const ValidSet& shape,
+                                     const std::vector<RegionLabel>& table) {
+  LabeledClipResult r = relabel(cell.content.set, cell.content.labels, shape, cell.box, table);
+  if (same(r.regions, cell.content)) return std::nullopt;
+  return std::move(r.regions);
+}
+
+// The quick answer exists and is relabel()'s.
+void expect_quick_and_exact(const detail::Node& cell, const ValidSet& shape,
+                            const std::vector<RegionLabel>& table) {
+  const auto quick = detail::quick_overlay(cell, shape, table);
+  ASSERT_TRUE(quick.has_value());
+  const auto exact = by_relabel(cell, shape, table);
+  ASSERT_EQ(quick->content.has_value(), exact.has_value());
+  if (exact) {
+    EXPECT_TRUE(same(*quick->content, *exact));
+  }
+}
+
+const Box64 kBox{{0, 0}, {64, 64}};
+
+TEST(CellOverlayQuick, AnEmptyCellCarvedStaysEmpty) {
+  const NodePtr cell = cell_of(kBox, {}, {});
+  const ValidSet shape(PolygonSet{square(10, 10, 90, 30)});
+  expect_quick_and_exact(*cell, shape, carve_table());
+  EXPECT_FALSE(detail::quick_overlay(*cell, shape, carve_table())->content.has_value());
+}
+
+TEST(CellOverlayQuick, ACoveredCellCarvedBecomesEmpty) {
+  const NodePtr cell = cell_of(kBox, {square(0, 0, 64, 20), square(5, 30, 40, 50)}, {1, 2});
+  const ValidSet shape(PolygonSet{square(-10, -10, 70, 80)});
+  expect_quick_and_exact(*cell, shape, carve_table());
+}
+
+TEST(CellOverlayQuick, ACoveredCellFilledBecomesTheCellBox) {
+  const NodePtr cell = cell_of(kBox, {square(0, 0, 64, 20), square(5, 30, 40, 50)}, {1, 2});
+  const ValidSet shape(PolygonSet{{{-20, -100}, {200, 32}, {-20, 200}}});  // a triangle around it
+  expect_quick_and_exact(*cell, shape, fill_table(3));
+  const auto quick = detail::quick_overlay(*cell, shape, fill_table(3));
+  ASSERT_TRUE(quick->content.has_value());
+  EXPECT_EQ(quick->content->set.polygons(), PolygonSet{square(0, 0, 64, 64)});
+  EXPECT_EQ(quick->content->labels, std::vector<RegionLabel>{3});
+}
+
+TEST(CellOverlayQuick, ACoveredCellWhoseMaterialsAllStayIsKept) {
+  const NodePtr cell = cell_of(kBox, {square(0, 0, 64, 20)}, {1});
+  const ValidSet shape(PolygonSet{square(-1, -1, 65, 65)});
+  std::vector<RegionLabel> replace_2_by_3(256);
+  for (RegionLabel l = 0; l < 256; ++l) replace_2_by_3[l] = l == 2 ? 3 : l;
+  expect_quick_and_exact(*cell, shape, replace_2_by_3);
+}
+
+TEST(CellOverlayQuick, ACoveredCellOfMixedOutcomeGoesToTheOverlay) {
+  const NodePtr cell = cell_of(kBox, {square(0, 0, 64, 20), square(5, 30, 40, 50)}, {1, 2});
+  const ValidSet shape(PolygonSet{square(-1, -1, 65, 65)});
+  std::vector<RegionLabel> replace_1_by_2(256);
+  for (RegionLabel l = 0; l < 256; ++l) replace_1_by_2[l] = l == 1 ? 2 : l;
+  EXPECT_FALSE(detail::quick_overlay(*cell, shape, replace_1_by_2).has_value());
+}
+
+TEST(CellOverlayQuick, ACarveIntoAirChangesNothing) {
+  const NodePtr cell = cell_of(kBox, {square(0, 0, 64, 20)}, {1});
+  // Crossing the cell's top line, at least two units above the rock.
+  expect_quick_and_exact(*cell, ValidSet(PolygonSet{{{10, 23}, {50, 40}, {30, 90}}}),
+                         carve_table());
+}
+
+TEST(CellOverlayQuick, AFillOfRockIntoRockChangesNothing) {
+  const NodePtr cell = cell_of(kBox, {square(0, 0, 64, 40), square(10, 50, 20, 60)}, {1, 2});
+  expect_quick_and_exact(*cell, ValidSet(PolygonSet{{{10, 10}, {50, 17}, {30, 35}}}),
+                         fill_table(1));
+}
+
+TEST(CellOverlayQuick, AFillAroundAnIslandOfAnotherMaterialGoesToTheOverlay) {
+  const NodePtr cell = cell_of(kBox, {square(0, 0, 64, 40), square(10, 50, 20, 60)}, {1, 2});
+  // Inside the cell, meeting no edge, but holding the island of material 2.
+  EXPECT_FALSE(
+      detail::quick_overlay(*cell, ValidSet(PolygonSet{square(5, 45, 30, 62)}), fill_table(1))
+          .has_value());
+}
+
+TEST(CellOverlayQuick, AShapeAUnitFromABoundaryGoesToTheOverlay) {
+  const NodePtr cell = cell_of(kBox, {square(0, 0, 64, 20)}, {1});
+  // Crossing the cell's top line one unit above the rock: rounding may reach the rock.
+  EXPECT_FALSE(detail::quick_overlay(*cell, ValidSet(PolygonSet{{{10, 21}, {50, 40}, {30, 90}}}),
+                                     carve_table())
+                   .has_value());
+}
+
+// Random cells (up to three fills of random shapes into a box) and a random edit: whenever a
+// quick case answers, the answer is relabel()'s.
+RC_GTEST_PROP(CellOverlayProperty, EveryQuickAnswerIsTheOverlays, ()) {
+  const std::int64_t size = *rc::gen::element<std::int64_t>(16, 64, 256);
+  const Box64 box{{0, 0}, {size, size}};
+  PolygonSet polygons;
+  std::vector<RegionLabel> labels;
+  LabeledSet content;
+  const int fills = *rc::gen::inRange(1, 5);
+  for (int i = 0; i < fills; ++i) {
+    const std::int64_t r = *rc::gen::element<std::int64_t>(3, size / 4, size / 2, size);
+    const Polygon p = *test::gen::shape(*test::gen::point_in({0, 0}, {size, size}), r);
+    const RegionLabel m = *rc::gen::inRange<RegionLabel>(1, 4);
+    content =
+        relabel(content.set, content.labels, ValidSet(PolygonSet{p}), box, fill_table(m)).regions;
+  }
+  std::vector<PolygonId> ids(content.labels.size(), 1);
+  const NodePtr cell = detail::make_cell(box, 0, std::move(content), std::move(ids));
+  const std::int64_t r = *rc::gen::element<std::int64_t>(2, 5, size / 4, size, 3 * size);
+  const Point64 c =
+      *test::gen::point_in({-size / 4, -size / 4}, {size + size / 4, size + size / 4});
+  const ValidSet shape(*test::gen::polygon_set(c, r));
+  std::vector<RegionLabel> table(256);
+  const RegionLabel to = *rc::gen::inRange<RegionLabel>(0, 4);
+  const int kind = *rc::gen::inRange(0, 3);  // fill (carve when to is 0), fill_empty, replace
+  for (RegionLabel l = 0; l < 256; ++l)
+    table[l] = kind == 0 ? to : kind == 1 ? (l == 0 ? to : l) : (l == 1 ? to : l);
+  const auto quick = detail::quick_overlay(*cell, shape, table);
+  RC_TAG(cell->content.labels.empty() ? "empty cell" : "cell with polygons",
+         !quick           ? "overlay"
+         : quick->content ? "quick: new content"
+                          : "quick: unchanged");
+  if (!quick) return;
+  const auto exact = by_relabel(*cell, shape, table);
+  RC_ASSERT(quick->content.has_value() == exact.has_value());
+  if (exact) RC_ASSERT(same(*quick->content, *exact));
+}
+
+}  // namespace
+}  // namespace edgeland
