@@ -186,7 +186,8 @@ std::optional<QuickAnswer> covered_answer(const Node& cell, const ValidSet& shap
                                           const NearMembers& near,
                                           std::span<const RegionLabel> table) {
   for (std::size_t k = 0; k < near.members.size(); ++k) {
-    if (!covers(shape.polygons()[near.members[k]], cell.box)) continue;
+    if (!inside(cell.box, near.boxes[k]) || !covers(shape.polygons()[near.members[k]], cell.box))
+      continue;
     RegionLabel to = kNoRegion;
     switch (relabel_covered(cell, table, to)) {
       case Covered::kUnchanged:
