@@ -58,6 +58,13 @@ class BitmapWorld {
 
   const Box64& world() const noexcept { return world_; }
   std::size_t bytes() const noexcept { return cells_.size(); }
+  std::int64_t width() const noexcept { return width_; }
+  std::int64_t height() const noexcept { return height_; }
+  // The material numbers of row `y` (local: 0 <= y < height()), width() bytes: what a game's
+  // contour tracer reads (bench/pixel_terrain.hpp).
+  const std::uint8_t* row(std::int64_t y) const noexcept {
+    return cells_.data() + static_cast<std::size_t>(y * width_);
+  }
 
  private:
   // One non-horizontal edge as it crosses the scanlines y = row + 1/2 of the rows it spans:

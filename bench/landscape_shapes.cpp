@@ -120,4 +120,17 @@ std::vector<ValidSet> as_shapes(const std::vector<Polygon>& polygons) {
   return out;
 }
 
+std::vector<ValidSet> explosions(std::uint64_t seed, std::size_t count, const Box64& world) {
+  std::vector<Polygon> polygons;
+  for (const Point64& c : random_points(seed, count, world)) polygons.push_back(ngon(c, 40, 32));
+  return as_shapes(polygons);
+}
+
+std::vector<ValidSet> digger_strokes(std::uint64_t seed, std::size_t count, const Box64& world) {
+  const std::vector<Point64> walk = random_walk(seed, count, 10.0, inset(world, 64));
+  std::vector<Polygon> polygons;
+  for (std::size_t i = 0; i < count; ++i) polygons.push_back(capsule(walk[i], walk[i + 1], 20, 32));
+  return as_shapes(polygons);
+}
+
 }  // namespace edgeland::bench

@@ -45,4 +45,15 @@ std::vector<Polygon> caves(std::uint64_t seed, std::size_t count, const Box64& b
 // Each polygon as a one-member ValidSet (validated here, before any clock starts).
 std::vector<ValidSet> as_shapes(const std::vector<Polygon>& polygons);
 
+// The edit workloads of the landscape and game benchmarks (landscape_edits.cpp,
+// game_edits.cpp), so both measure the same edits:
+//   explosions: `count` 32-gons of radius 40 at random centres in the world box;
+//   digger strokes: `count` capsules of radius 20 (32-gon caps) along a random walk, 10 units per
+//   step, inside the world box less a 64-unit margin.
+inline constexpr std::uint64_t kCarveSeed = 0xCA4'F1A6;  // the carved explosions
+inline constexpr std::uint64_t kFillSeed = 0xF111'0002;  // the filled ones (other centres)
+inline constexpr std::uint64_t kDigSeed = 0xD16'6E2;
+std::vector<ValidSet> explosions(std::uint64_t seed, std::size_t count, const Box64& world);
+std::vector<ValidSet> digger_strokes(std::uint64_t seed, std::size_t count, const Box64& world);
+
 }  // namespace edgeland::bench

@@ -6,26 +6,6 @@
 namespace edgeland::bench {
 namespace {
 
-std::vector<Edit> edits_of(const std::vector<Polygon>& polygons, EditKind kind, Material m) {
-  std::vector<Edit> out;
-  out.reserve(polygons.size());
-  for (ValidSet& shape : as_shapes(polygons)) out.push_back({std::move(shape), kind, m});
-  return out;
-}
-
-std::vector<Edit> circles(std::uint64_t seed, std::size_t n, EditKind kind, Material m) {
-  std::vector<Polygon> polygons;
-  for (const Point64& c : random_points(seed, n, kEditWorld)) polygons.push_back(ngon(c, 40, 32));
-  return edits_of(polygons, kind, m);
-}
-
-std::vector<Edit> strokes(std::size_t n) {
-  const std::vector<Point64> walk = random_walk(0xD16'6E2, n, 10.0, inset(kEditWorld, 64));
-  std::vector<Polygon> polygons;
-  for (std::size_t i = 0; i < n; ++i) polygons.push_back(capsule(walk[i], walk[i + 1], 20, 32));
-  return edits_of(polygons, EditKind::kCarve, kEmpty);
-}
-
 std::vector<Edit> spot(std::size_t n) {
   SplitMix64 random(0x5907);
   const Point64 centre{kEditWorldSide / 2, kEditWorldSide / 2};
@@ -68,11 +48,11 @@ std::optional<Workload> workload_named(const std::string& name) {
 std::vector<Edit> workload_edits(Workload w, std::size_t n) {
   switch (w) {
     case Workload::kCarve:
-      return circles(0xCA4'F1A6, n, EditKind::kCarve, kEmpty);
+      return edits_of(EditKind::kCarve, explosions(kCarveSeed, n, kEditWorld), kEmpty);
     case Workload::kDig:
-      return strokes(n);
+      return edits_of(EditKind::kCarve, digger_strokes(kDigSeed, n, kEditWorld), kEmpty);
     case Workload::kFill:
-      return circles(0xF111'0002, n, EditKind::kFill, 2);
+      return edits_of(EditKind::kFill, explosions(kFillSeed, n, kEditWorld), 2);
     case Workload::kSpot:
       return spot(n);
   }

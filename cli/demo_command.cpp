@@ -4,6 +4,8 @@
 // (demo_actions.hpp) in checked mode, runs Landscape::check(), prints a summary as readable
 // lines and draws DIR/landscape.png. --save writes the landscape's save file, --log its recorded
 // edit log (which `edgeland replay` turns back into the same state hash).
+// `edgeland demo --physics [--out DIR] [--frames N] [--frame-every K] [--seed S]`: the physics
+// demo instead (physics_demo.hpp), when built with Box2D.
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -19,6 +21,9 @@
 #include "demo_world.hpp"
 #include "edgeland/io/landscape_replay.hpp"
 #include "landscape_png.hpp"
+#ifdef EDGELAND_HAVE_BOX2D
+#include "physics_demo.hpp"
+#endif
 #include "splitmix64.hpp"
 
 namespace edgeland::cli {
@@ -34,6 +39,8 @@ struct DemoOptions {
   bool unchecked = false;
   std::string save;
   std::string log;
+  bool physics = false;
+  int frames = 600, frame_every = 30;
 };
 
 struct DemoRun {
@@ -133,6 +140,15 @@ int write_outputs(const Landscape& landscape, const DemoOptions& options) {
 }
 
 int run_demo(const DemoOptions& options) {
+  if (options.physics) {
+#ifdef EDGELAND_HAVE_BOX2D
+    return run_physics_demo({options.out, options.frames, options.frame_every, options.seed});
+#else
+    std::cerr << "edgeland demo: --physics needs Box2D: this edgeland was built without it "
+                 "(apt-get install -y libbox2d-dev)\n";
+    return kExitUnreadable;
+#endif
+  }
   std::error_code error;
   std::filesystem::create_directories(options.out, error);
   if (error) {
@@ -177,6 +193,15 @@ Command add_demo_command(CLI::App& parent) {
   app->add_option("--log", options->log,
                   "Also record the edit log and write it here (`edgeland replay` reads it)");
   app->add_flag("--unchecked", options->unchecked, "Edit without checked mode (faster)");
+  app->add_flag("--physics", options->physics,
+                "The physics demo instead: 200 balls and boxes on a 4096 x 4096 world under "
+                "blasts and fills, debris falling (Box2D); PNG frames DIR/physics_NNNN.png");
+  app->add_option("--frames", options->frames, "--physics: frames after the bodies land")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 1000000));
+  app->add_option("--frame-every", options->frame_every, "--physics: draw every K-th frame")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 1000000));
   app->footer(
       "Deterministic: the same seed and edit count give the same state hash. Exit status: 0; 2 "
       "when an output cannot be written; 3 when an edit hits an internal error (its state and "

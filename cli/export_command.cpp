@@ -20,11 +20,11 @@
 #include "edgeland/clip/clip.hpp"
 #include "edgeland/game/islands.hpp"
 #include "edgeland/game/surface_chains.hpp"
+#include "edgeland/io/landscape_replay.hpp"
 #include "edgeland/kernel/convex_pieces.hpp"
 #include "edgeland/kernel/triangulate.hpp"
 #include "edgeland/kernel/wkt_writer.hpp"
 #include "input_text.hpp"
-#include "edgeland/io/landscape_replay.hpp"
 
 namespace edgeland::cli {
 namespace {

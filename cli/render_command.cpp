@@ -1,6 +1,6 @@
 // `edgeland render INPUT (--png FILE | --svg FILE) [--cells] [--chains] [--pieces] [--islands]
-// [--no-legend] [--size PIXELS]`: a picture of a landscape, from its edit log (replayed;
-// landscape_log.hpp) or its save file (Landscape::load), with a legend of the materials
+// [--no-legend] [--size PIXELS]`: a picture of a landscape, from its edit log (replayed by
+// edgeland::io) or its save file (Landscape::load), with a legend of the materials
 // (landscape_picture.hpp) and optionally the game layer's surface chains, convex pieces and
 // debris islands drawn over it.
 #include <iostream>
@@ -12,9 +12,10 @@
 #include "commands.hpp"
 #include "edgeland/game/islands.hpp"
 #include "edgeland/game/surface_chains.hpp"
+#include "edgeland/io/landscape_log.hpp"
+#include "edgeland/io/landscape_replay.hpp"
 #include "edgeland/kernel/convex_pieces.hpp"
 #include "input_text.hpp"
-#include "edgeland/io/landscape_log.hpp"
 #include "landscape_picture.hpp"
 
 namespace edgeland::cli {
@@ -35,25 +36,14 @@ struct Refusal {
   int status = kExitUnreadable;
 };
 
-// The world of a landscape log: every edit applied, or the first one that fails.
+// The world of a landscape log (io's replay): every edit applied, or the first one that fails.
 std::optional<Refusal> replay_log(std::string_view text, std::optional<Landscape>& out) {
-  const log::ParsedLandscapeLog parsed = log::parse_landscape_log(text);
-  if (!parsed.world) return Refusal{parsed.error->what()};
-  Landscape landscape = log::make_landscape(*parsed.world);
-  for (const log::LandscapeEdit& edit : parsed.edits) {
-    const std::string where = "line " + std::to_string(edit.line) + ": ";
-    try {
-      log::apply_edit(landscape, edit);
-    } catch (const LandscapeInternalError& error) {
-      return Refusal{where + "internal error: " + error.what(), kExitInternal};
-    } catch (const InternalError& error) {
-      return Refusal{where + "internal error: " + error.what(), kExitInternal};
-    } catch (const Error& error) {
-      return Refusal{where + error.what()};
-    }
+  log::LandscapeReplay replay = log::replay_landscape_log(text);
+  if (replay.failure) {
+    const bool internal = replay.failure->kind == log::ReplayFailure::Kind::kInternal;
+    return Refusal{replay.failure->message, internal ? kExitInternal : kExitUnreadable};
   }
-  if (parsed.error) return Refusal{parsed.error->what()};
-  out.emplace(std::move(landscape));
+  out = std::move(replay.landscape);
   return std::nullopt;
 }
 

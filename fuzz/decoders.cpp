@@ -792,6 +792,8 @@ Runner runner_for(std::string_view target) {
   if (target == "parse") return run_parse;
   if (target == "edit_sequence") return run_edit_sequence;
   if (target == "load") return run_load;
+  if (target == "polygon_pieces") return run_polygon_pieces;
+  if (target == "game_sequence") return run_game_sequence;
   return nullptr;
 }
 

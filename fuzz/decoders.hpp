@@ -55,6 +55,30 @@ std::optional<Finding> run_edit_sequence(const std::uint8_t* data, std::size_t s
 // check() and survives save -> load with its state hash. landscape_decoders.cpp.
 std::optional<Finding> run_load(const std::uint8_t* data, std::size_t size);
 
+// Valid polygons decoded from bytes (normalized rings on small grids, polyominoes keeping every
+// lattice point of their boundary, combs, spirals, zigzags, boxes with vertices on their sides;
+// moved by unimodular maps and scales anywhere in range, up to the bound) and raw rings that
+// may be invalid, with a piece size N from 3 to 12 or unbounded. For each valid polygon:
+// triangulate() (n - 2 counter-clockwise triangles of positive area, exact area sum, disjoint
+// interiors, every side an edge or an inside diagonal by brute force or the union equal to the
+// polygon by the clipper's xor), convex_pieces() (strictly convex, 3..N vertices of the
+// polygon's, exact area, disjoint, union equal to the polygon) and centroid() (the same exact
+// point for the polygon, its triangles and its pieces). For an invalid one: both algorithms
+// throw InvalidInput with validate()'s first violation. polygon_decoders.cpp.
+std::optional<Finding> run_polygon_pieces(const std::uint8_t* data, std::size_t size);
+
+// The game layer (game/, issue 26) over an edit sequence decoded as run_edit_sequence decodes it,
+// with a material table (solid and anchored flags of materials 1..4) and the border as a wall or
+// not. After every edit: the SurfaceTracker's mirror (its updates applied) equals
+// surface_chains(), whose chains keep the chain rules and describe the brute-force surface; the
+// meshes of the change set's added polygons are exact triangulations; their convex pieces (at
+// most 8 vertices) are strictly convex and exactly the polygon; the IslandTracker's islands equal
+// a brute-force union-find over every solid polygon and the update reports exactly the new ones;
+// each new island detached from a copy leaves check() ok and its area in the regions. Now and
+// then the new islands are detached from the landscape itself and those change sets are checked
+// the same way. game_decoders.cpp.
+std::optional<Finding> run_game_sequence(const std::uint8_t* data, std::size_t size);
+
 // The landscape edit log an edit_sequence input decodes to (recorded by the landscape itself).
 std::string edit_sequence_log(const std::uint8_t* data, std::size_t size);
 

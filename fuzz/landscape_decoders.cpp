@@ -1,7 +1,6 @@
 // The landscape's fuzz targets (issue 15, "Verification"): edit sequences in checked mode, and
-// arbitrary bytes as save files. Declared in decoders.hpp beside the clipper's targets.
-#include <fuzzer/FuzzedDataProvider.h>
-
+// arbitrary bytes as save files. Declared in decoders.hpp beside the clipper's targets; the
+// decoding of worlds and edits (landscape_decoding.hpp) is shared with game_sequence.
 #include <algorithm>
 #include <exception>
 #include <sstream>
@@ -13,23 +12,14 @@
 #include "edgeland/kernel/point_in_polygon.hpp"
 #include "edgeland/kernel/wkt_writer.hpp"
 #include "edgeland/spatial/landscape.hpp"
+#include "landscape_decoding.hpp"
 
 namespace edgeland::fuzz {
 namespace {
 
-using Provider = FuzzedDataProvider;
-
-constexpr int kMaxEdits = 24;
-constexpr std::size_t kMaxShapePoints = 24;
-// Small enough that a run stays fast; an edit that would pass it is a typed LimitExceeded.
-constexpr LandscapeLimits kLimits{.max_vertices = 6000, .max_shape_vertices = 200};
-
 std::int64_t clamp_coord(std::int64_t v) { return std::clamp(v, -kCoordBound, kCoordBound); }
 
 // ---- decoding ---------------------------------------------------------------------------------
-// The world, its configuration, and shapes whose points come from the places that matter: the
-// cell lines of the world's first levels, the vertices already in the landscape, one-unit
-// offsets from those, and (rarely) coordinates past the bound.
 // The points as a fan around the lowest one, by angle: counter-clockwise and simple unless
 // points repeat or line up with the pivot.
 Polygon fan(Polygon pts) {
@@ -43,127 +33,108 @@ Polygon fan(Polygon pts) {
   return pts;
 }
 
-class EditDecoder {
- public:
-  explicit EditDecoder(Provider& in) : in_(in) {}
+}  // namespace
 
-  Box64 world() {
-    const int bits = in_.PickValueInArray({4, 6, 8, 10, 14, 31});
-    const std::int64_t span = bits == 31 ? kCoordBound : std::int64_t{1} << bits;
-    const std::int64_t x0 = in_.ConsumeIntegralInRange<std::int64_t>(-span, span - 1);
-    const std::int64_t y0 = in_.ConsumeIntegralInRange<std::int64_t>(-span, span - 1);
-    const std::int64_t x1 = in_.ConsumeIntegralInRange<std::int64_t>(x0 + 1, span);
-    const std::int64_t y1 = in_.ConsumeIntegralInRange<std::int64_t>(y0 + 1, span);
-    world_ = {{x0, y0}, {x1, y1}};
-    return world_;
-  }
+Box64 EditDecoder::world() {
+  const int bits = in_.PickValueInArray({4, 6, 8, 10, 14, 31});
+  const std::int64_t span = bits == 31 ? kCoordBound : std::int64_t{1} << bits;
+  const std::int64_t x0 = in_.ConsumeIntegralInRange<std::int64_t>(-span, span - 1);
+  const std::int64_t y0 = in_.ConsumeIntegralInRange<std::int64_t>(-span, span - 1);
+  const std::int64_t x1 = in_.ConsumeIntegralInRange<std::int64_t>(x0 + 1, span);
+  const std::int64_t y1 = in_.ConsumeIntegralInRange<std::int64_t>(y0 + 1, span);
+  world_ = {{x0, y0}, {x1, y1}};
+  return world_;
+}
 
-  LandscapeConfig config() {
-    LandscapeConfig c;
-    c.tree = in_.ConsumeBool() ? TreeKind::kQuadtree : TreeKind::kKdTree;
-    c.edge_cap = in_.PickValueInArray<std::uint32_t>({32, 40, 64, 256});
-    c.merge_below = c.edge_cap / 3;
-    c.min_cell_size = in_.PickValueInArray<std::int64_t>({1, 2, 16});
-    if (in_.ConsumeIntegralInRange(0, 6) == 0) c.grid_depth = in_.ConsumeIntegralInRange(0, 3);
-    return c;
-  }
+LandscapeConfig EditDecoder::config() {
+  LandscapeConfig c;
+  c.tree = in_.ConsumeBool() ? TreeKind::kQuadtree : TreeKind::kKdTree;
+  c.edge_cap = in_.PickValueInArray<std::uint32_t>({32, 40, 64, 256});
+  c.merge_below = c.edge_cap / 3;
+  c.min_cell_size = in_.PickValueInArray<std::int64_t>({1, 2, 16});
+  if (in_.ConsumeIntegralInRange(0, 6) == 0) c.grid_depth = in_.ConsumeIntegralInRange(0, 3);
+  return c;
+}
 
-  // A point near the world: a cell line, a landscape vertex, or anywhere, nudged by a unit.
-  Point64 point(const Landscape& l) {
-    Point64 p;
-    switch (in_.ConsumeIntegralInRange(0, 5)) {
-      case 0:
-        p = cell_line_point();
-        break;
-      case 1:
-        p = landscape_vertex(l);
-        break;
-      case 2:
-        p = {world_.min.x, in_.ConsumeIntegralInRange(world_.min.y, world_.max.y)};
-        break;
-      default:
-        p = anywhere();
-        break;
-    }
-    const std::int64_t dx = in_.ConsumeIntegralInRange(-1, 1),
-                       dy = in_.ConsumeIntegralInRange(-1, 1);
-    return {clamp_coord(p.x + dx), clamp_coord(p.y + dy)};
+Point64 EditDecoder::point(const Landscape& l) {
+  Point64 p;
+  switch (in_.ConsumeIntegralInRange(0, 5)) {
+    case 0:
+      p = cell_line_point();
+      break;
+    case 1:
+      p = landscape_vertex(l);
+      break;
+    case 2:
+      p = {world_.min.x, in_.ConsumeIntegralInRange(world_.min.y, world_.max.y)};
+      break;
+    default:
+      p = anywhere();
+      break;
   }
+  const std::int64_t dx = in_.ConsumeIntegralInRange(-1, 1), dy = in_.ConsumeIntegralInRange(-1, 1);
+  return {clamp_coord(p.x + dx), clamp_coord(p.y + dy)};
+}
 
-  // A shape: a rectangle, a triangle, or a ring of up to kMaxShapePoints points (which may
-  // cross itself: then the edit must fail with InvalidInput and change nothing), sometimes with
-  // a coordinate past the bound (CoordinateOutOfRange).
-  PolygonSet shape(const Landscape& l) {
-    const int kind = in_.ConsumeIntegralInRange(0, 9);
-    Polygon ring;
-    if (kind <= 3) {
-      const Point64 a = point(l), b = point(l);
-      ring = {{std::min(a.x, b.x), std::min(a.y, b.y)},
-              {std::max(a.x, b.x), std::min(a.y, b.y)},
-              {std::max(a.x, b.x), std::max(a.y, b.y)},
-              {std::min(a.x, b.x), std::max(a.y, b.y)}};
-    } else {
-      const std::size_t n =
-          kind <= 5 ? 3 : in_.ConsumeIntegralInRange<std::size_t>(3, kMaxShapePoints);
-      for (std::size_t i = 0; i < n; ++i) ring.push_back(point(l));
-      // Mostly valid shapes (a fan around the lowest point, counter-clockwise); kind 8 keeps
-      // the points as drawn (often crossing itself), kind 9 also leaves the coordinate range.
-      if (kind < 8) ring = fan(std::move(ring));
-      if (kind == 9 && !ring.empty())
-        ring.back().x = kCoordBound + 1 + in_.ConsumeIntegralInRange(0, 5);
-    }
-    PolygonSet set{ring};
-    if (in_.ConsumeIntegralInRange(0, 4) == 0) set.push_back(shape_rectangle(l));
-    return set;
+PolygonSet EditDecoder::shape(const Landscape& l) {
+  const int kind = in_.ConsumeIntegralInRange(0, 9);
+  Polygon ring;
+  if (kind <= 3) {
+    const Point64 a = point(l), b = point(l);
+    ring = {{std::min(a.x, b.x), std::min(a.y, b.y)},
+            {std::max(a.x, b.x), std::min(a.y, b.y)},
+            {std::max(a.x, b.x), std::max(a.y, b.y)},
+            {std::min(a.x, b.x), std::max(a.y, b.y)}};
+  } else {
+    const std::size_t n =
+        kind <= 5 ? 3 : in_.ConsumeIntegralInRange<std::size_t>(3, kMaxShapePoints);
+    for (std::size_t i = 0; i < n; ++i) ring.push_back(point(l));
+    // Mostly valid shapes (a fan around the lowest point, counter-clockwise); kind 8 keeps
+    // the points as drawn (often crossing itself), kind 9 also leaves the coordinate range.
+    if (kind < 8) ring = fan(std::move(ring));
+    if (kind == 9 && !ring.empty())
+      ring.back().x = kCoordBound + 1 + in_.ConsumeIntegralInRange(0, 5);
   }
+  PolygonSet set{ring};
+  if (in_.ConsumeIntegralInRange(0, 4) == 0) set.push_back(shape_rectangle(l));
+  return set;
+}
 
- private:
-  Polygon shape_rectangle(const Landscape& l) {
-    const Point64 a = point(l);
-    const std::int64_t w = in_.ConsumeIntegralInRange(1, 40), h = in_.ConsumeIntegralInRange(1, 40);
-    return {a,
-            {clamp_coord(a.x + w), a.y},
-            {clamp_coord(a.x + w), clamp_coord(a.y + h)},
-            {a.x, clamp_coord(a.y + h)}};
-  }
-  Point64 anywhere() {
-    const std::int64_t mx = (world_.max.x - world_.min.x) / 4 + 2,
-                       my = (world_.max.y - world_.min.y) / 4 + 2;
-    return {clamp_coord(in_.ConsumeIntegralInRange(world_.min.x - mx, world_.max.x + mx)),
-            clamp_coord(in_.ConsumeIntegralInRange(world_.min.y - my, world_.max.y + my))};
-  }
-  Point64 cell_line_point() {
-    // The midpoint lines of the first three levels of a quadtree over the world.
-    const int level = in_.ConsumeIntegralInRange(1, 3);
-    const int k = in_.ConsumeIntegralInRange(0, (1 << level) - 1);
-    const std::int64_t x =
-        world_.min.x + (world_.max.x - world_.min.x) * (2 * k + 1) / (2 << level);
-    return in_.ConsumeBool() ? Point64{x, in_.ConsumeIntegralInRange(world_.min.y, world_.max.y)}
-                             : Point64{in_.ConsumeIntegralInRange(world_.min.x, world_.max.x),
-                                       world_.min.y + (world_.max.y - world_.min.y) / 2};
-  }
-  Point64 landscape_vertex(const Landscape& l) {
-    std::vector<Point64> seen;
-    l.polygons_in(l.world(), [&](const PolygonView& v) {
-      seen.insert(seen.end(), v.polygon->begin(), v.polygon->end());
-      return seen.size() < 256;
-    });
-    if (seen.empty()) return anywhere();
-    return seen[in_.ConsumeIntegralInRange<std::size_t>(0, seen.size() - 1)];
-  }
+Polygon EditDecoder::shape_rectangle(const Landscape& l) {
+  const Point64 a = point(l);
+  const std::int64_t w = in_.ConsumeIntegralInRange(1, 40), h = in_.ConsumeIntegralInRange(1, 40);
+  return {a,
+          {clamp_coord(a.x + w), a.y},
+          {clamp_coord(a.x + w), clamp_coord(a.y + h)},
+          {a.x, clamp_coord(a.y + h)}};
+}
 
-  Provider& in_;
-  Box64 world_;
-};
+Point64 EditDecoder::anywhere() {
+  const std::int64_t mx = (world_.max.x - world_.min.x) / 4 + 2,
+                     my = (world_.max.y - world_.min.y) / 4 + 2;
+  return {clamp_coord(in_.ConsumeIntegralInRange(world_.min.x - mx, world_.max.x + mx)),
+          clamp_coord(in_.ConsumeIntegralInRange(world_.min.y - my, world_.max.y + my))};
+}
 
-// One edit as decoded: what to do, with which materials and shape, and whether to take a
-// snapshot of the landscape before it.
-struct DecodedEdit {
-  int kind;  // 0 carve, 1 fill, 2 fill_empty, 3 replace
-  Material a, b;
-  PolygonSet shape;
-  bool snapshot;
-};
+// The midpoint lines of the first three levels of a quadtree over the world.
+Point64 EditDecoder::cell_line_point() {
+  const int level = in_.ConsumeIntegralInRange(1, 3);
+  const int k = in_.ConsumeIntegralInRange(0, (1 << level) - 1);
+  const std::int64_t x = world_.min.x + (world_.max.x - world_.min.x) * (2 * k + 1) / (2 << level);
+  return in_.ConsumeBool() ? Point64{x, in_.ConsumeIntegralInRange(world_.min.y, world_.max.y)}
+                           : Point64{in_.ConsumeIntegralInRange(world_.min.x, world_.max.x),
+                                     world_.min.y + (world_.max.y - world_.min.y) / 2};
+}
+
+Point64 EditDecoder::landscape_vertex(const Landscape& l) {
+  std::vector<Point64> seen;
+  l.polygons_in(l.world(), [&](const PolygonView& v) {
+    seen.insert(seen.end(), v.polygon->begin(), v.polygon->end());
+    return seen.size() < 256;
+  });
+  if (seen.empty()) return anywhere();
+  return seen[in_.ConsumeIntegralInRange<std::size_t>(0, seen.size() - 1)];
+}
 
 DecodedEdit next_edit(Provider& in, EditDecoder& decode, const Landscape& l) {
   DecodedEdit e;
@@ -175,14 +146,11 @@ DecodedEdit next_edit(Provider& in, EditDecoder& decode, const Landscape& l) {
   return e;
 }
 
-// The world and configuration an input starts with.
 Landscape decode_world(Provider& in, EditDecoder& decode) {
   const Box64 world = decode.world();
   const Material fill = in.ConsumeIntegralInRange<std::uint8_t>(0, 3);
   return Landscape(world, fill, decode.config(), kLimits);
 }
-
-// ---- checks -----------------------------------------------------------------------------------
 
 std::string edit_text(const DecodedEdit& d) {
   const std::string wkt = to_wkt(d.shape);
@@ -199,22 +167,21 @@ std::string edit_text(const DecodedEdit& d) {
   }
 }
 
-void apply(Landscape& l, const DecodedEdit& d) {
+ChangeSet apply(Landscape& l, const DecodedEdit& d) {
   switch (d.kind) {
     case 0:
-      l.carve(d.shape);
-      break;
+      return l.carve(d.shape);
     case 1:
-      l.fill(d.shape, d.a);
-      break;
+      return l.fill(d.shape, d.a);
     case 2:
-      l.fill_empty(d.shape, d.a);
-      break;
+      return l.fill_empty(d.shape, d.a);
     default:
-      l.replace(d.shape, d.a, d.b);
-      break;
+      return l.replace(d.shape, d.a, d.b);
   }
 }
+
+// ---- checks -----------------------------------------------------------------------------------
+namespace {
 
 Finding finding(const std::string& what, const Landscape& l) {
   return {what + "\n  world after the last good edit: state hash " + std::to_string(l.state_hash()),

@@ -3,7 +3,8 @@
 # examples/ (printing `file: verdict`), then the clipping demo: a terrain carved and filled
 # again and again, every result fed back in and validated; then the landscape demo (`edgeland
 # demo`): a layered 8192 x 8192 world hit by thousands of explosions, tunnels and floods in
-# checked mode, its summary printed and its picture drawn into $build/demo/landscape.png.
+# checked mode, its summary printed and its picture drawn into $build/demo/landscape.png; then
+# the physics demo (`edgeland demo --physics`), frames in $build/demo/physics_*.png.
 # Run from anywhere; builds in build/release.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -19,3 +20,7 @@ echo
 examples/run_clip_demo.sh "$build/cli/edgeland"
 echo
 "$build/cli/edgeland" demo --out "$build/demo"
+echo
+# The physics demo (issue 26): Box2D bodies on the landscape's surface chains while blasts and
+# fills change the ground under them; debris islands fall. PNG frames in $build/demo/.
+"$build/cli/edgeland" demo --physics --out "$build/demo"

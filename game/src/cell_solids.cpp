@@ -59,7 +59,8 @@ void collect_ports(CellSolids& s, const Box64& world) {
 
 }  // namespace
 
-CellSolids cell_solids(const Landscape& world, const Box64& cell, const PhysicsMaterials& materials) {
+CellSolids cell_solids(const Landscape& world, const Box64& cell,
+                       const PhysicsMaterials& materials) {
   CellSolids s;
   s.polygons = read_cell(world, cell);
   s.boundary = solid_boundary(cell, s.polygons.own, materials);

@@ -29,7 +29,8 @@ struct CellSolids {
   std::array<std::vector<Port>, 4> ports;
 };
 
-CellSolids cell_solids(const Landscape& world, const Box64& cell, const PhysicsMaterials& materials);
+CellSolids cell_solids(const Landscape& world, const Box64& cell,
+                       const PhysicsMaterials& materials);
 
 // A union-find over 0..n-1 (path halving, union by index: deterministic).
 class UnionFind {

@@ -8,12 +8,26 @@ namespace edgeland::game_detail {
 
 CellSurface cell_surface(const Landscape& world, const Box64& cell, const SurfaceOptions& options) {
   const CellPolygons polygons = read_cell(world, cell);
+  return cell_surface(polygons, side_covers(polygons, options.materials), world.world(), options);
+}
+
+std::vector<PolygonId> own_ids(const CellPolygons& polygons) {
+  std::vector<PolygonId> out;
+  out.reserve(polygons.own.size());
+  for (const CellPolygon& p : polygons.own) out.push_back(p.id);
+  return out;
+}
+
+CellSurface cell_surface(const CellPolygons& polygons, SideSpans covers, const Box64& world,
+                         const SurfaceOptions& options) {
+  const Box64& cell = polygons.box;
   const SolidBoundary solid = solid_boundary(cell, polygons.own, options.materials);
-  std::vector<TracedChain> traced =
-      trace_chains(surface_segments(polygons, solid, world.world(), options), cell, world.world(),
-                   options.border_wall);
+  std::vector<TracedChain> traced = trace_chains(
+      surface_segments(polygons, solid, covers, world, options), cell, world, options.border_wall);
   CellSurface out;
-  for (const CellPolygon& p : polygons.own) out.ids.push_back(p.id);
+  out.ids = own_ids(polygons);
+  out.covers = std::move(covers);
+  out.ports = port_spans(solid);
   out.chains.reserve(traced.size());
   for (TracedChain& t : traced) {
     SurfaceChain c;

@@ -31,8 +31,7 @@ std::vector<DetachedIsland::Region> regions_of(const Island& island) {
 }  // namespace
 
 StaleIsland::StaleIsland(PolygonId p)
-    : Error("island polygon " + std::to_string(p) + " is no longer in the landscape"),
-      polygon(p) {}
+    : Error("island polygon " + std::to_string(p) + " is no longer in the landscape"), polygon(p) {}
 
 DetachedIsland detach(Landscape& world, const Island& island) {
   PolygonSet pieces;

@@ -64,8 +64,8 @@ void set_ghosts(SurfaceChain& chain, const ChainsAround& around, const Box64& wo
   const SurfaceChain* next = following(chain, around, world, border_wall);
   chain.ghost_next = next ? next->points[1] : straight_on(chain.points[n - 1], chain.points[n - 2]);
   const SurfaceChain* prev = preceding(chain, around, world, border_wall);
-  chain.ghost_prev = prev ? prev->points[prev->points.size() - 2]
-                          : straight_on(chain.points[0], chain.points[1]);
+  chain.ghost_prev =
+      prev ? prev->points[prev->points.size() - 2] : straight_on(chain.points[0], chain.points[1]);
 }
 
 void ChainEndIndex::add(const SurfaceChain& chain) {

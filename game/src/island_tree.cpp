@@ -48,7 +48,9 @@ bool holds(const Box64& outer, const Box64& inner) {
 }  // namespace
 
 IslandTree::IslandTree(const Landscape& world, const PhysicsMaterials& materials)
-    : materials_(materials), root_(std::make_unique<Node>()), registry_(std::make_unique<Registry>()) {
+    : materials_(materials),
+      root_(std::make_unique<Node>()),
+      registry_(std::make_unique<Registry>()) {
   root_->box = world.world();
   update(world, all_cells(world));
 }

@@ -96,8 +96,7 @@ class Walk {
   const PhysicsMaterials& materials_;
   std::map<Box64, CellSolids, BoxLess> cells_;
   std::set<std::pair<Box64, std::uint32_t>, decltype([](const auto& l, const auto& r) {
-             return BoxLess{}(l.first, r.first) ||
-                    (l.first == r.first && l.second < r.second);
+             return BoxLess{}(l.first, r.first) || (l.first == r.first && l.second < r.second);
            })>
       seen_;
   std::vector<std::pair<Box64, std::uint32_t>> queue_;
@@ -110,7 +109,8 @@ std::vector<WalkedPolygon> walk_piece(const Landscape& world, PolygonId start, c
   Walk walk(world, materials);
   const CellSolids& s = walk.solids(cell);
   for (std::size_t i = 0; i < s.polygons.own.size(); ++i)
-    if (s.polygons.own[i].id == start && s.group_of[i] != kNotSolid) walk.visit(cell, s.group_of[i]);
+    if (s.polygons.own[i].id == start && s.group_of[i] != kNotSolid)
+      walk.visit(cell, s.group_of[i]);
   walk.run();
   return walk.polygons();
 }

@@ -13,8 +13,8 @@ namespace {
 Island island_of(const Landscape& world, const game_detail::ClosedIsland& closed,
                  const PhysicsMaterials& materials) {
   Island out;
-  for (const game_detail::WalkedPolygon& p :
-       game_detail::walk_piece(world, closed.representative, closed.representative_cell, materials)) {
+  for (const game_detail::WalkedPolygon& p : game_detail::walk_piece(
+           world, closed.representative, closed.representative_cell, materials)) {
     out.pieces.push_back({p.id, p.material, *p.ring, p.cell});
     const Box64 b = *bounding_box(*p.ring);
     if (out.pieces.size() == 1)

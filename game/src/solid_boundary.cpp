@@ -11,7 +11,7 @@ namespace {
 // An edge not on a side of the box, as an interval of its supporting line.
 struct LineEdge {
   SupportingLine line;
-  bool forward = true;       // runs in the line's direction
+  bool forward = true;          // runs in the line's direction
   std::int64_t lo = 0, hi = 0;  // positions along the line, lo < hi
   Point64 lo_point, hi_point;
   std::uint32_t polygon = 0;
@@ -67,8 +67,8 @@ void subtract(std::span<const LineEdge> edges, std::span<const LineEdge> opposit
 
 // One supporting line: its forward and backward edges cut each other.
 void cut_line_group(std::span<const LineEdge> group, SolidBoundary& out) {
-  const auto split = std::find_if(group.begin(), group.end(),
-                                  [](const LineEdge& e) { return !e.forward; });
+  const auto split =
+      std::find_if(group.begin(), group.end(), [](const LineEdge& e) { return !e.forward; });
   const std::span<const LineEdge> forward(group.begin(), split), backward(split, group.end());
   subtract(forward, backward, true, out);
   subtract(backward, forward, false, out);

@@ -28,7 +28,7 @@ inline constexpr std::array<Side, 4> kSides{Side::kBottom, Side::kRight, Side::k
 
 struct SolidBoundary {
   std::vector<BoundaryPiece> free;
-  std::array<std::vector<BoundaryPiece>, 4> ports;  // per Side, in counter-clockwise order
+  std::array<std::vector<BoundaryPiece>, 4> ports;     // per Side, in counter-clockwise order
   std::vector<std::array<std::uint32_t, 2>> contacts;  // polygon pairs, lower index first, unique
 };
 

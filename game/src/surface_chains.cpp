@@ -59,8 +59,10 @@ SurfaceChain join_from(const SurfaceChain* first, const ChainsAround& around, co
   out.closed = loop.closed;
   out.cell = world;
   const std::size_t n = out.points.size();
-  out.ghost_prev = out.closed ? out.points.back() : game_detail::straight_on(out.points[0], out.points[1]);
-  out.ghost_next = out.closed ? out.points.front() : game_detail::straight_on(out.points[n - 1], out.points[n - 2]);
+  out.ghost_prev =
+      out.closed ? out.points.back() : game_detail::straight_on(out.points[0], out.points[1]);
+  out.ghost_next = out.closed ? out.points.front()
+                              : game_detail::straight_on(out.points[n - 1], out.points[n - 2]);
   return out;
 }
 

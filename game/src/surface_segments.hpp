@@ -11,13 +11,36 @@
 namespace edgeland::game_detail {
 
 struct SurfaceSegment {
-  Point64 a, b;               // solid on the left
+  Point64 a, b;                // solid on the left
   Material material = kEmpty;  // that solid's material (0 for a wall)
 };
 
-// O(n log n) in the cell's and its neighbours' edges along its sides.
+// A closed interval of positions along a side.
+struct Span {
+  std::int64_t lo = 0, hi = 0;
+  friend bool operator==(const Span&, const Span&) = default;
+};
+
+// Intervals along each side of a cell, per Side: merged, ascending, disjoint.
+struct SideSpans {
+  std::array<std::vector<Span>, 4> sides;
+  friend bool operator==(const SideSpans&, const SideSpans&) = default;
+};
+
+// The cell's COVERS: where solid of the neighbours lies across each side (their solid edges on
+// the side's line run against the cell's ports), cut to the side's extent. With the cell's own
+// polygons this is all stage 2 reads, so a cell whose polygons and covers did not change keeps
+// its chains (surface_tracker.cpp). O(n log n) in the neighbours' edges.
+SideSpans side_covers(const CellPolygons& cell, const PhysicsMaterials& materials);
+
+// Where the cell's own solid lies on each side (its ports): what its neighbours' covers read
+// of it. O(n log n) in the ports.
+SideSpans port_spans(const SolidBoundary& solid);
+
+// O(n log n) in the cell's edges along its sides.
 std::vector<SurfaceSegment> surface_segments(const CellPolygons& cell, const SolidBoundary& solid,
-                                             const Box64& world, const SurfaceOptions& options);
+                                             const SideSpans& covers, const Box64& world,
+                                             const SurfaceOptions& options);
 
 // Whether the box's side lies on the world box's border.
 bool on_world_border(const Box64& box, Side side, const Box64& world);

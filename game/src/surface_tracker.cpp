@@ -35,6 +35,20 @@ bool holds_an_end(const SurfaceChain& c, const Box64& box) {
   return box.contains(c.points.front()) || box.contains(c.points.back());
 }
 
+// A cell's covers or ports as one list (per side: the count, then each span's ends), for its
+// record.
+std::vector<std::int64_t> flat(const game_detail::SideSpans& spans_per_side) {
+  std::vector<std::int64_t> out;
+  for (const auto& spans : spans_per_side.sides) {
+    out.push_back(static_cast<std::int64_t>(spans.size()));
+    for (const game_detail::Span& s : spans) {
+      out.push_back(s.lo);
+      out.push_back(s.hi);
+    }
+  }
+  return out;
+}
+
 }  // namespace
 
 bool SurfaceTracker::BoxLess::operator()(const Box64& l, const Box64& r) const noexcept {
@@ -88,21 +102,45 @@ ChainUpdate SurfaceTracker::replace_cells(const Landscape& world, const std::vec
                                           const std::vector<Box64>& fresh) {
   using BoxSet = std::set<Box64, BoxLess>;
   ChainUpdate update;
+  // The old cells under the edit: their chains wait for the commit, where a new cell with the
+  // same box keeps those it has unchanged (most chains of a cell lie away from the edit), so an
+  // engine replaces only what changed.
+  std::map<Box64, std::vector<ChainId>, BoxLess> orphans;
+  std::map<Box64, std::vector<std::int64_t>, BoxLess> old_ports;
   for (const Box64& box : gone) {
     const auto it = cells_.find(box);
     if (it == cells_.end()) continue;
-    for (ChainId id : it->second.chains) {
-      update.removed.push_back(id);
-      chains_.erase(id);
-    }
+    orphans[box] = std::move(it->second.chains);
+    old_ports[box] = std::move(it->second.ports);
     cells_.erase(it);
   }
   const BoxSet changed(fresh.begin(), fresh.end());
-  const BoxSet near = touching(world, changed, BoxSet{});
-  // Stages 1-3 for the changed cells and their neighbours.
+  const Box64& w = world.world();
+  // Stages 1-3 for the changed cells, and for the neighbours whose covers changed: a neighbour's
+  // own polygons are as they were (the edit did not touch it), so with the same covers from
+  // across its sides its chains are the same points (a ghost may still move: below).
   std::map<Box64, CellSurface, BoxLess> computed;
-  for (const BoxSet* set : {&changed, &near})
-    for (const Box64& box : *set) computed.emplace(box, game_detail::cell_surface(world, box, options_));
+  for (const Box64& box : changed)
+    computed.emplace(box, game_detail::cell_surface(world, box, options_));
+  // A neighbour's covers are the ports of the cells across its sides: when the edit re-cut its
+  // cells in place (the same boxes) and left their ports as they were, no neighbour can see it.
+  const bool seen_from_outside = [&] {
+    if (old_ports.size() != changed.size()) return true;
+    for (const Box64& box : changed) {
+      const auto it = old_ports.find(box);
+      if (it == old_ports.end() || it->second != flat(computed.at(box).ports)) return true;
+    }
+    return false;
+  }();
+  for (const Box64& box : seen_from_outside ? touching(world, changed, BoxSet{}) : BoxSet{}) {
+    const game_detail::CellPolygons polygons = game_detail::read_cell(world, box);
+    game_detail::SideSpans covers = game_detail::side_covers(polygons, options_.materials);
+    const auto it = cells_.find(box);
+    if (it != cells_.end() && it->second.covers == flat(covers) &&
+        it->second.ids == game_detail::own_ids(polygons))
+      continue;
+    computed.emplace(box, game_detail::cell_surface(polygons, std::move(covers), w, options_));
+  }
   // Chains around a point: the new ones where computed, the kept ones elsewhere.
   const game_detail::ChainsAround around = [&](Point64 p, std::vector<const SurfaceChain*>& out) {
     for (const Box64& box : game_detail::cells_at(world, p)) {
@@ -113,30 +151,37 @@ ChainUpdate SurfaceTracker::replace_cells(const Landscape& world, const std::vec
       }
     }
   };
-  const Box64& w = world.world();
   for (auto& [box, surface] : computed)
-    for (SurfaceChain& c : surface.chains) game_detail::set_ghosts(c, around, w, options_.border_wall);
-  // Chains of the cells beyond: the same points, but a ghost may point into a changed cell.
-  BoxSet inner = changed;
-  inner.insert(near.begin(), near.end());
+    for (SurfaceChain& c : surface.chains)
+      game_detail::set_ghosts(c, around, w, options_.border_wall);
+  // Chains kept around the computed cells: the same points, but a ghost taken at an end in a
+  // computed cell's closed box may have moved.
+  BoxSet inner;
+  for (const auto& [box, surface] : computed) inner.insert(box);
   std::vector<std::pair<ChainId, SurfaceChain>> reghosted;
-  for (const Box64& box : touching(world, near, changed)) {
+  for (const Box64& box : touching(world, inner, inner)) {
     const auto it = cells_.find(box);
     if (it == cells_.end()) continue;
     for (ChainId id : it->second.chains) {
-      SurfaceChain c = chains_.at(id);
-      if (c.closed || std::none_of(inner.begin(), inner.end(),
-                                   [&](const Box64& b) { return holds_an_end(c, b); }))
+      const SurfaceChain& kept = chains_.at(id);
+      if (kept.closed || std::none_of(inner.begin(), inner.end(),
+                                      [&](const Box64& b) { return holds_an_end(kept, b); }))
         continue;
+      SurfaceChain c = kept;
       game_detail::set_ghosts(c, around, w, options_.border_wall);
-      if (!(c == chains_.at(id))) reghosted.emplace_back(id, std::move(c));
+      if (!(c == kept)) reghosted.emplace_back(id, std::move(c));
     }
   }
-  // Commit: the changed cells' chains are all new; a neighbour keeps every chain it had.
+  // Commit: every computed cell keeps the chains it had (a neighbour) or its old cell of the same
+  // box had (a changed cell) where they are equal, ghosts included; the others are new.
   for (auto& [box, surface] : computed) {
     CellRecord& record = cells_[box];
     std::vector<ChainId> before = std::move(record.chains);
-    record = {surface.ids, {}};
+    if (const auto o = orphans.find(box); o != orphans.end()) {
+      before.insert(before.end(), o->second.begin(), o->second.end());
+      orphans.erase(o);
+    }
+    record = {surface.ids, {}, flat(surface.covers), flat(surface.ports)};
     for (const SurfaceChain& c : surface.chains) {
       const auto same = std::find_if(before.begin(), before.end(),
                                      [&](ChainId id) { return chains_.at(id) == c; });
@@ -152,6 +197,11 @@ ChainUpdate SurfaceTracker::replace_cells(const Landscape& world, const std::vec
       chains_.erase(id);
     }
   }
+  for (const auto& [box, ids] : orphans)  // cells split or merged away
+    for (ChainId id : ids) {
+      update.removed.push_back(id);
+      chains_.erase(id);
+    }
   for (auto& [id, chain] : reghosted) {
     update.removed.push_back(id);
     std::vector<ChainId>& ids = cells_.at(chain.cell).chains;

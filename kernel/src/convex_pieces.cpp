@@ -29,6 +29,20 @@ Polygon corners_of_piece(const detail::PieceMesh& mesh, std::uint32_t first,
   return piece;
 }
 
+// The polygon without its straight vertices: the same region, still valid (strictly simple,
+// counter-clockwise, at least 3 corners as its area is positive). Pieces never have straight
+// vertices, and a triangulation through them would only add diagonals to merge away.
+Polygon corners_of(const Polygon& polygon) {
+  Polygon corners;
+  const std::size_t n = polygon.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Point64 before = polygon[(i + n - 1) % n], after = polygon[(i + 1) % n];
+    if (orientation(before, polygon[i], after) != Orientation::kCollinear)
+      corners.push_back(polygon[i]);
+  }
+  return corners;
+}
+
 std::vector<Polygon> pieces_of(const detail::PieceMesh& mesh) {
   std::vector<Polygon> pieces;
   std::vector<char> taken(mesh.half_edge_count(), 0);
@@ -42,7 +56,8 @@ std::vector<Polygon> pieces_of(const detail::PieceMesh& mesh) {
 std::vector<Polygon> convex_pieces(const Polygon& polygon, std::size_t max_vertices) {
   if (max_vertices < 3) throw InvalidArgument("max_vertices", max_vertices, 3);
   detail::require_valid_polygon(polygon);
-  detail::PieceMesh mesh(polygon, detail::triangulate_valid(polygon));
+  const Polygon corners = corners_of(polygon);
+  detail::PieceMesh mesh(corners, detail::triangulate_valid(corners));
   detail::merge_convex_pieces(mesh, max_vertices);
   std::vector<Polygon> pieces = pieces_of(mesh);
   if constexpr (EDGELAND_ASSERTS_ENABLED)

@@ -27,6 +27,7 @@ class PieceMesh {
   std::uint32_t origin(std::uint32_t h) const { return origin_[h]; }
   std::uint32_t prev(std::uint32_t h) const { return prev_[h]; }
   Point64 point(std::uint32_t h) const { return polygon_[origin_[h]]; }
+  const Polygon& polygon() const { return polygon_; }
 
   // The number of corners of the piece holding half-edge h.
   std::uint32_t corners(std::uint32_t h) { return corners_[root(h / 3)]; }

@@ -2,9 +2,6 @@
 // triangulated (stage 3). kernel/README.md states what each stage hands the next.
 #include "edgeland/kernel/triangulate.hpp"
 
-#include <cstdint>
-#include <limits>
-
 #include "edgeland/kernel/assert.hpp"
 #include "edgeland/kernel/errors.hpp"
 #include "edgeland/kernel/validate.hpp"
@@ -18,8 +15,8 @@ namespace edgeland {
 namespace detail {
 
 void require_valid_polygon(const Polygon& polygon) {
-  constexpr std::size_t kMaxVertices = std::numeric_limits<std::uint32_t>::max();
-  if (polygon.size() > kMaxVertices) throw TooManyVertices(kMaxVertices, polygon.size());
+  if (polygon.size() > kMaxPolygonAlgorithmVertices)
+    throw TooManyVertices(kMaxPolygonAlgorithmVertices, polygon.size());
   const ValidationReport report = validate(polygon, 1);
   if (!report.ok()) throw_invalid_input(Operand::kPolygon, report.violations.front());
 }

@@ -2,12 +2,11 @@
 // against the brute-force reference (island_oracle.hpp), incrementally after every edit.
 #include "edgeland/game/islands.hpp"
 
-#include "edgeland/kernel/area.hpp"
-#include "edgeland/kernel/centroid.hpp"
-
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
+#include "edgeland/kernel/area.hpp"
+#include "edgeland/kernel/centroid.hpp"
 #include "game_worlds.hpp"
 #include "island_oracle.hpp"
 #include "landscape_cases.hpp"
@@ -35,9 +34,9 @@ TEST(Islands, CarvingARingAroundABlockCutsItOff) {
   IslandTracker tracker(world);
   EXPECT_EQ(tracker.island_count(), 0u);
   // A square ring 10 wide around [300, 500] x [150, 350], across cell lines.
-  const ChangeSet changes = world.carve(
-      PolygonSet{rect(290, 140, 510, 150), rect(500, 150, 510, 360), rect(290, 350, 500, 360),
-                 rect(290, 150, 300, 350)});
+  const ChangeSet changes =
+      world.carve(PolygonSet{rect(290, 140, 510, 150), rect(500, 150, 510, 360),
+                             rect(290, 350, 500, 360), rect(290, 150, 300, 350)});
   const std::vector<Island> fresh = tracker.update(world, changes);
   ASSERT_EQ(fresh.size(), 1u);
   EXPECT_EQ(fresh[0].twice_area, Int128{2} * 200 * 200);
@@ -50,10 +49,10 @@ TEST(Islands, CarvingARingAroundABlockCutsItOff) {
 TEST(Islands, PointContactHoldsNothingButAnchoredMaterialDoes) {
   Landscape world({{0, 0}, {100, 100}});
   world.fill(PolygonSet{rect(0, 0, 100, 20)}, 1);
-  world.fill(PolygonSet{rect(20, 20, 40, 40)}, 1);   // on the floor: held
-  world.fill(PolygonSet{rect(40, 40, 60, 60)}, 2);   // touches the first at (40, 40) only
-  world.fill(PolygonSet{rect(70, 50, 90, 70)}, 3);   // bedrock in mid air
-  world.fill(PolygonSet{rect(70, 70, 90, 80)}, 2);   // on the bedrock
+  world.fill(PolygonSet{rect(20, 20, 40, 40)}, 1);  // on the floor: held
+  world.fill(PolygonSet{rect(40, 40, 60, 60)}, 2);  // touches the first at (40, 40) only
+  world.fill(PolygonSet{rect(70, 50, 90, 70)}, 3);  // bedrock in mid air
+  world.fill(PolygonSet{rect(70, 70, 90, 80)}, 2);  // on the bedrock
   PhysicsMaterials materials;
   materials.anchored[3] = true;
   const std::vector<Island> islands = find_islands(world, materials);

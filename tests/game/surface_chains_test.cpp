@@ -67,9 +67,9 @@ TEST(SurfaceChains, NonSolidMaterialsHaveNoSurface) {
   world.fill(PolygonSet{rect(0, 40, 100, 60)}, 7);
   SurfaceOptions options;
   options.materials.solid[7] = false;
-  EXPECT_EQ(surface_difference(surface_brute(world, options),
-                               surface_of(surface_chains(world, options))),
-            "");
+  EXPECT_EQ(
+      surface_difference(surface_brute(world, options), surface_of(surface_chains(world, options))),
+      "");
   const std::vector<SurfaceChain> loops = surface_loops(world, options);
   ASSERT_EQ(loops.size(), 1u);
   EXPECT_EQ(loops[0].points, (std::vector<Point64>{{100, 40}, {0, 40}}));

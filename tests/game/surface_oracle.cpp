@@ -105,8 +105,7 @@ SurfaceMap surface_brute(const Landscape& world, const SurfaceOptions& options) 
       add(wall, e.a, e.b, kEmpty);
       for (auto& [line, runs] : wall) {
         const auto solid = border_solid.find(line);
-        std::vector<Run> left =
-            solid == border_solid.end() ? runs : minus(runs, solid->second);
+        std::vector<Run> left = solid == border_solid.end() ? runs : minus(runs, solid->second);
         auto& target = out[line];
         target.insert(target.end(), left.begin(), left.end());
         target = normalized(target);
@@ -133,8 +132,8 @@ std::string surface_difference(const SurfaceMap& expected, const SurfaceMap& act
   auto describe = [&](const OracleLine& l, const std::vector<Run>& runs) {
     os << "line d=(" << l.dx << ' ' << l.dy << ") offset " << to_string(l.offset) << ':';
     for (const Run& r : runs)
-      os << " [" << r.lo << ',' << r.hi << (r.forward ? " +" : " -") << " m" << int(r.material.value())
-         << ']';
+      os << " [" << r.lo << ',' << r.hi << (r.forward ? " +" : " -") << " m"
+         << int(r.material.value()) << ']';
   };
   for (const auto& [line, runs] : expected) {
     const auto it = actual.find(line);

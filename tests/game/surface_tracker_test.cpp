@@ -99,7 +99,8 @@ TEST(SurfaceTracker, AnEditReplacesOnlyChainsNearIt) {
   SurfaceTracker tracker(world);
   const std::size_t before = tracker.chains().size();
   EXPECT_EQ(before, 32u);  // the floor, cut at 32 cells
-  const ChangeSet changes = world.carve(PolygonSet{{{500, 990}, {520, 990}, {520, 1010}, {500, 1010}}});
+  const ChangeSet changes =
+      world.carve(PolygonSet{{{500, 990}, {520, 990}, {520, 1010}, {500, 1010}}});
   const ChainUpdate u = tracker.update(world, changes);
   // The notch's cell gets a new chain; the cells beside it keep their points but their ghosts
   // at the shared corners now point down the notch... only where the notch reaches the line.
@@ -107,6 +108,27 @@ TEST(SurfaceTracker, AnEditReplacesOnlyChainsNearIt) {
   EXPECT_LE(u.added.size(), 4u);
   EXPECT_EQ(u.removed.size(), u.added.size());
   EXPECT_EQ(tracker.chains().size(), before);
+}
+
+// An edit replaces only the chains that changed, even in the cell it re-cuts: two holes carved
+// into one cell keep their chains (ids and all) when a third hole is carved beside them.
+TEST(SurfaceTracker, AnEditKeepsTheUnchangedChainsOfItsCell) {
+  LandscapeConfig grid;
+  grid.grid_depth = 2;  // 4 x 4 cells of 64 units
+  Landscape world({{0, 0}, {256, 256}}, 1, grid);
+  world.carve(PolygonSet{{{70, 70}, {76, 70}, {76, 76}, {70, 76}},
+                         {{100, 70}, {106, 70}, {106, 76}, {100, 76}}});
+  SurfaceTracker tracker(world);
+  ASSERT_EQ(tracker.chains().size(), 2u);  // two closed loops in the cell (64 64 128 128)
+  const auto kept = tracker.chains();
+  const ChangeSet changes = world.carve(PolygonSet{{{80, 100}, {86, 100}, {86, 106}, {80, 106}}});
+  ASSERT_EQ(changes.cells, (std::vector<Box64>{{{64, 64}, {128, 128}}}));
+  const ChainUpdate u = tracker.update(world, changes);
+  EXPECT_TRUE(u.removed.empty());
+  ASSERT_EQ(u.added.size(), 1u);
+  EXPECT_TRUE(u.added.front().second.closed);
+  EXPECT_EQ(u.added.front().second.points.size(), 4u);
+  for (const auto& [id, chain] : kept) EXPECT_EQ(tracker.chains().at(id), chain);
 }
 
 // A long game: hundreds of edits in a layered world whose cells split and merge all the time,
@@ -128,7 +150,8 @@ TEST(SurfaceTracker, MirrorHoldsOverALongGame) {
       for (ChainId id : u.removed) ASSERT_EQ(mirror.erase(id), 1u);
       for (const auto& [id, chain] : u.added) ASSERT_TRUE(mirror.emplace(id, chain).second);
       if (++edit % 50 == 0) {
-        ASSERT_EQ(sorted(values(mirror)), sorted(surface_chains(world, options))) << "edit " << edit;
+        ASSERT_EQ(sorted(values(mirror)), sorted(surface_chains(world, options)))
+            << "edit " << edit;
       }
     });
     EXPECT_GT(world.stats().cells, 100u);

@@ -72,7 +72,7 @@ inline rc::Gen<LandscapeCase> landscape_case(int max_edits = 8) {
 
 // The landscape of a case after its edits, checked; fails the property on any exception.
 inline Landscape run_case(const LandscapeCase& c, const LandscapeConfig& config,
-                   std::uint32_t* deepest = nullptr) {
+                          std::uint32_t* deepest = nullptr) {
   Landscape l(c.world, c.fill, config);
   l.set_checked(true);
   for (const LandscapeEdit& e : c.edits) {

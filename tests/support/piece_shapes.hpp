@@ -37,8 +37,9 @@ Polygon unit_comb(std::int64_t teeth, std::int64_t height);
 // sweep meets a split and a merge vertex per notch.
 Polygon zigzag_band(std::int64_t teeth);
 
-// The box [0, w] x [0, h] with `per_side` extra vertices on each side, at distinct random
-// positions (a landscape cell's piece whose sides carry its neighbours' vertices).
+// The box [0, w] x [0, h] (w, h >= 2) with up to `per_side` extra vertices on each side, at
+// distinct random positions (a landscape cell's piece whose sides carry its neighbours'
+// vertices).
 template <class Draw>
 Polygon box_with_side_vertices(Draw& draw, std::int64_t w, std::int64_t h, std::size_t per_side);
 
@@ -52,9 +53,11 @@ std::optional<Polygon> random_polyomino(Draw& draw, std::size_t count, std::int6
 
 template <class Draw>
 Polygon box_with_side_vertices(Draw& draw, std::int64_t w, std::int64_t h, std::size_t per_side) {
+  // Up to per_side distinct positions: a bounded number of draws, so a constant draw (a fuzz
+  // input that ran out of bytes) still ends.
   auto positions = [&](std::int64_t length) {
     std::set<std::int64_t> at;
-    while (at.size() < per_side && at.size() + 1 < static_cast<std::size_t>(length))
+    for (std::size_t k = 0; k < 4 * per_side && at.size() < per_side; ++k)
       at.insert(draw(1, length));
     return at;
   };

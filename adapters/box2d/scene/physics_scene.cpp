@@ -84,7 +84,8 @@ void PhysicsScene::drop_bodies(int count) {
     b2BodyDef def;
     def.type = b2_dynamicBody;
     const std::int64_t s = options_.size;
-    def.position = to_b2(terrain_.units(), {random_.in(s / 20, s - s / 20), s * 3 / 4 + random_.in(0, s / 8)});
+    def.position =
+        to_b2(terrain_.units(), {random_.in(s / 20, s - s / 20), s * 3 / 4 + random_.in(0, s / 8)});
     b2Body* body = world_.CreateBody(&def);
     b2CircleShape circle;
     circle.m_radius = 0.5f;
@@ -128,8 +129,8 @@ void PhysicsScene::edit_near_a_body() {
   const SceneBody& target = bodies_[static_cast<std::size_t>(random_.in(0, bodies_.size() - 1))];
   const Point64 c = centre(target.body);
   if (random_.in(0, 3) == 0) {
-    const PolygonSet shape{blast({c.x + random_.in(-120, 120), c.y - random_.in(40, 120)},
-                                 random_.in(8, 32))};
+    const PolygonSet shape{
+        blast({c.x + random_.in(-120, 120), c.y - random_.in(40, 120)}, random_.in(8, 32))};
     bury_bodies_under(shape);
     const auto start = Clock::now();
     const ChangeSet changes = land_.fill(shape, static_cast<Material>(random_.in(2, 3)));
@@ -173,7 +174,8 @@ void PhysicsScene::detach_islands(std::vector<Island> pending) {
       continue;
     }
     terrain_.update(land_, detached.changes);
-    for (Island& again : islands_.update(land_, detached.changes)) pending.push_back(std::move(again));
+    for (Island& again : islands_.update(land_, detached.changes))
+      pending.push_back(std::move(again));
     b2Body* debris = make_debris_body(world_, detached, terrain_.units());
     bodies_.push_back({debris, true, debris->GetPosition().y});
     ++stats_.detached;

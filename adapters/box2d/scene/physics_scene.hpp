@@ -15,9 +15,9 @@ namespace edgeland::box2d {
 
 struct PhysicsSceneOptions {
   std::uint64_t seed = 2026;
-  std::int64_t size = 4096;          // the world is size x size units
-  double units_per_metre = 32;       // 4096 units = 128 m
-  int bodies = 200;                  // balls and boxes in play (buried ones are replaced)
+  std::int64_t size = 4096;     // the world is size x size units
+  double units_per_metre = 32;  // 4096 units = 128 m
+  int bodies = 200;             // balls and boxes in play (buried ones are replaced)
   int edits_per_frame = 3;
 };
 

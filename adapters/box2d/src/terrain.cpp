@@ -2,6 +2,7 @@
 // material, with the run's neighbours (or the chain's ghosts) as ghost vertices.
 #include "edgeland/box2d/terrain.hpp"
 
+#include <algorithm>
 #include <vector>
 
 #include "edgeland/kernel/convex_pieces.hpp"
@@ -46,24 +47,59 @@ Terrain::Terrain(b2World& world, const Landscape& land, const TerrainOptions& op
     : world_(world),
       units_(options.units),
       friction_(options.friction),
-      tracker_(land, options.surface) {
+      tracker_(land, options.surface),
+      world_box_(land.world()),
+      grid_(std::max<std::int64_t>(1, options.body_grid)),
+      bodies_(static_cast<std::size_t>(grid_ * grid_), nullptr) {
   if (units_.origin == Point64{}) units_.origin = land.world().min;
-  b2BodyDef def;
-  def.type = b2_staticBody;
-  body_ = world_.CreateBody(&def);
   for (const auto& [id, chain] : tracker_.chains()) add(id, chain);
 }
 
-Terrain::~Terrain() { world_.DestroyBody(body_); }
+Terrain::~Terrain() {
+  for (b2Body* body : bodies_)
+    if (body != nullptr) world_.DestroyBody(body);
+}
+
+std::vector<b2Body*> Terrain::bodies() const {
+  std::vector<b2Body*> out;
+  for (b2Body* body : bodies_)
+    if (body != nullptr) out.push_back(body);
+  return out;
+}
 
 std::size_t Terrain::fixture_count() const {
   std::size_t n = 0;
-  for (const auto& [id, list] : fixtures_) n += list.size();
+  for (const auto& [id, chain] : fixtures_) n += chain.fixtures.size();
   return n;
 }
 
+// The region holding the cell's lower-left corner (Int128: the world may span 2^32 units).
+std::size_t Terrain::region_of(const Box64& cell) const {
+  const auto index = [&](std::int64_t at, std::int64_t lo, std::int64_t hi) {
+    const Int128 k = Int128(at - lo) * grid_ / Int128(hi - lo);
+    return std::clamp<std::int64_t>(static_cast<std::int64_t>(k), 0, grid_ - 1);
+  };
+  const std::int64_t x = index(cell.min.x, world_box_.min.x, world_box_.max.x);
+  const std::int64_t y = index(cell.min.y, world_box_.min.y, world_box_.max.y);
+  return static_cast<std::size_t>(y * grid_ + x);
+}
+
+b2Body* Terrain::body_of(std::size_t region) {
+  b2Body*& body = bodies_[region];
+  if (body == nullptr) {
+    b2BodyDef def;
+    def.type = b2_staticBody;
+    body = world_.CreateBody(&def);
+  }
+  return body;
+}
+
 void Terrain::add(ChainId id, const SurfaceChain& c) {
-  std::vector<b2Fixture*>& list = fixtures_[id];
+  const std::size_t region = region_of(c.cell);
+  b2Body* body = body_of(region);
+  ChainFixtures& record = fixtures_[id];
+  record.region = region;
+  std::vector<b2Fixture*>& list = record.fixtures;
   const std::size_t n = c.points.size();
   for (const Run& run : runs_of(c)) {
     b2ChainShape shape;
@@ -75,8 +111,8 @@ void Terrain::add(ChainId id, const SurfaceChain& c) {
       for (std::size_t k = 0; k <= run.segments; ++k)
         v.push_back(to_b2(units_, c.points[(run.first + k) % n]));
       const std::size_t last = run.first + run.segments;  // not reduced: n - 1 ends an open chain
-      const Point64 prev = !c.closed && run.first == 0 ? c.ghost_prev
-                                                       : c.points[(run.first + n - 1) % n];
+      const Point64 prev =
+          !c.closed && run.first == 0 ? c.ghost_prev : c.points[(run.first + n - 1) % n];
       const Point64 next = !c.closed && last == n - 1 ? c.ghost_next : c.points[(last + 1) % n];
       shape.CreateChain(v.data(), static_cast<int32>(v.size()), to_b2(units_, prev),
                         to_b2(units_, next));
@@ -85,20 +121,31 @@ void Terrain::add(ChainId id, const SurfaceChain& c) {
     def.shape = &shape;
     def.friction = friction_[run.material.value()];
     def.userData.pointer = run.material.value();
-    list.push_back(body_->CreateFixture(&def));
+    list.push_back(body->CreateFixture(&def));
   }
 }
 
-void Terrain::remove(ChainId id) {
+// The chain's fixtures destroyed; its region is noted in `emptied` (its body may be left empty).
+void Terrain::remove(ChainId id, std::vector<std::size_t>& emptied) {
   const auto it = fixtures_.find(id);
   if (it == fixtures_.end()) return;
-  for (b2Fixture* f : it->second) body_->DestroyFixture(f);
+  for (b2Fixture* f : it->second.fixtures) f->GetBody()->DestroyFixture(f);
+  emptied.push_back(it->second.region);
   fixtures_.erase(it);
 }
 
+// Removals first, then additions (a region keeps its body across the update); bodies left
+// without fixtures are destroyed last.
 void Terrain::apply(const ChainUpdate& update) {
-  for (ChainId id : update.removed) remove(id);
+  std::vector<std::size_t> emptied;
+  for (ChainId id : update.removed) remove(id, emptied);
   for (const auto& [id, chain] : update.added) add(id, chain);
+  for (std::size_t region : emptied) {
+    b2Body*& body = bodies_[region];
+    if (body == nullptr || body->GetFixtureList() != nullptr) continue;
+    world_.DestroyBody(body);
+    body = nullptr;
+  }
 }
 
 ChainUpdate Terrain::update(const Landscape& land, const ChangeSet& changes) {

@@ -118,7 +118,8 @@ void App::draw_overlay() {
                   s.cells, mesh_.triangles(), physics_.bodies().size(),
                   static_cast<unsigned long long>(report_.edits));
     std::snprintf(line3.data(), line3.size(), "tool %s  radius %lld  material %d  replace %d",
-                  tool_.c_str(), static_cast<long long>(radius_), material_, from_);
+                  tool_.c_str(), static_cast<long long>(radius_), int{material_.value()},
+                  int{from_.value()});
     if (overlay_ != nullptr) SDL_DestroyTexture(overlay_);
     overlay_ = text_texture(renderer_, {line1.data(), line2.data(), line3.data()});
   }

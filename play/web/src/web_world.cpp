@@ -15,7 +15,7 @@ constexpr Material kWater = 5;
 // Water is no obstacle; the world's border is a wall, so that nothing rolls out of the world.
 SurfaceOptions surface_options() {
   SurfaceOptions options;
-  options.materials.solid[kWater] = false;
+  options.materials.set_solid(kWater, false);
   options.border_wall = true;
   return options;
 }
@@ -40,7 +40,7 @@ void add_point(std::vector<std::int32_t>& out, Point64 p) {
 
 void add_polygon(WebUpdate& update, PolygonId id, Material material, const Polygon& polygon) {
   update.ids.push_back(static_cast<double>(id));
-  update.materials.push_back(material);
+  update.materials.push_back(material.value());
   for (const Point64& p : polygon) add_point(update.xy, p);
   update.offsets.push_back(static_cast<std::uint32_t>(update.xy.size() / 2));
 }
@@ -65,7 +65,7 @@ void add_debris(WebUpdate& update, const DetachedIsland& island) {
   for (const DetachedIsland::Region& region : island.regions) {
     for (const Polygon& polygon : region.polygons) {
       for (const Polygon& piece : convex_pieces(polygon)) {
-        update.piece_materials.push_back(region.material);
+        update.piece_materials.push_back(region.material.value());
         for (const Point64& p : piece) {
           update.piece_xy.push_back(static_cast<double>(p.x) - cx);
           update.piece_xy.push_back(static_cast<double>(p.y) - cy);

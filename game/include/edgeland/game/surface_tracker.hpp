@@ -49,8 +49,10 @@ class EDGELAND_EXPORT SurfaceTracker {
     bool operator()(const Box64& l, const Box64& r) const noexcept;
   };
   struct CellRecord {
-    std::vector<PolygonId> ids;   // the cell's polygons when last seen
-    std::vector<ChainId> chains;  // its chains
+    std::vector<PolygonId> ids;        // the cell's polygons when last seen
+    std::vector<ChainId> chains;       // its chains
+    std::vector<std::int64_t> covers;  // what its chains read from its neighbours (flattened)
+    std::vector<std::int64_t> ports;   // what its neighbours read of it (flattened)
   };
   using CellMap = std::map<Box64, CellRecord, BoxLess>;
 

@@ -47,7 +47,7 @@ inline constexpr std::size_t kDefaultMaxPieceVertices = 8;
 //
 // O(n log n). Throws InvalidArgument when max_vertices < 3, InvalidInput (operand kPolygon;
 // CoordinateOutOfRange for a coordinate beyond kCoordBound) for an invalid polygon, and
-// TooManyVertices beyond 2^32 - 1 vertices.
+// TooManyVertices beyond kMaxPolygonAlgorithmVertices (2^30) vertices (triangulate.hpp).
 EDGELAND_EXPORT std::vector<Polygon> convex_pieces(
     const Polygon& polygon, std::size_t max_vertices = kDefaultMaxPieceVertices);
 

@@ -1,6 +1,7 @@
 #pragma once
 // Exact triangulation of a valid polygon: the render mesh of the game layer and the first step of
 // convex_pieces (convex_pieces.hpp).
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -8,6 +9,10 @@
 #include "edgeland/kernel/polygon.hpp"
 
 namespace edgeland {
+
+// The most vertices triangulate() and convex_pieces() accept: their vertex, side and half-edge
+// numbers (up to 3n) are 32-bit.
+inline constexpr std::size_t kMaxPolygonAlgorithmVertices = std::size_t{1} << 30;
 
 // Indices into the polygon's vertices, counter-clockwise.
 struct Triangle {
@@ -38,7 +43,7 @@ struct Triangle {
 //
 // O(n log n) time, O(n) memory. Throws InvalidInput (operand kPolygon; CoordinateOutOfRange for a
 // coordinate beyond kCoordBound) when validate(polygon) reports a violation, and TooManyVertices
-// for more than 2^32 - 1 vertices (a Triangle holds 32-bit indices).
+// beyond kMaxPolygonAlgorithmVertices (2^30) vertices.
 EDGELAND_EXPORT std::vector<Triangle> triangulate(const Polygon& polygon);
 
 }  // namespace edgeland

@@ -1,6 +1,6 @@
 #pragma once
 // A Box2D 2.4 world kept in step with a landscape (adapters/box2d/README.md): the static terrain
-// as one body whose fixtures are the landscape's surface chains, replaced per change set only
+// as bodies whose fixtures are the landscape's surface chains, replaced per change set only
 // where the chains changed; and detached debris islands as dynamic bodies of convex pieces.
 // Everything geometric comes from the game layer (game/); this adapter only converts units.
 #include <box2d/box2d.h>
@@ -8,6 +8,7 @@
 #include <array>
 #include <cstdint>
 #include <unordered_map>
+#include <vector>
 
 #include "edgeland/engine/units.hpp"
 #include "edgeland/game/islands.hpp"
@@ -21,12 +22,21 @@ struct TerrainOptions {
   SurfaceOptions surface;  // what is solid; the border as a wall or not
   EngineUnits units;       // the origin defaults to the world box's corner (see Terrain)
   std::array<float, kMaterialCount> friction;  // by Material::value() (0: the wall); default 0.6
+  // The world box cut into body_grid x body_grid regions, a static body per region with chains
+  // (see Terrain). At least 1.
+  std::int64_t body_grid = 16;
   TerrainOptions() { friction.fill(0.6f); }
 };
 
-// The terrain's body: one static body; one b2ChainShape fixture per run of one material of a
-// surface chain (the chain cut where its material changes, each run keeping the ghosts of its
-// neighbours, so the joints stay smooth). Fixture user data holds the material.
+// The terrain: one b2ChainShape fixture per run of one material of a surface chain (the chain
+// cut where its material changes, each run keeping the ghosts of its neighbours, so the joints
+// stay smooth), on static bodies: the world box is cut into a grid of regions (16 x 16 by
+// default) and a chain's fixtures go on the body of the region holding its cell's lower-left
+// corner. Not one body for the world, because Box2D's DestroyFixture searches its body's whole
+// fixture list (on one body, replacing a cell's chains cost 0.8 ms per explosion at 14,000
+// fixtures, bench/README.md "Game layer"); not one per cell either, because every b2World::Step
+// walks every body, static ones too (0.5-0.9 ms a frame at 16,000 bodies). Fixture user data
+// holds the material.
 class Terrain {
  public:
   // Builds the fixtures of every chain. With the default origin (0, 0) the world box's corner is
@@ -43,22 +53,31 @@ class Terrain {
   // After any other change (a restored snapshot, a load).
   ChainUpdate resync(const Landscape& land);
 
-  b2Body* body() const { return body_; }
+  // The static bodies of the terrain, one per region with chains, in no particular order.
+  std::vector<b2Body*> bodies() const;
   std::size_t fixture_count() const;
   const EngineUnits& units() const { return units_; }
   const SurfaceTracker& tracker() const { return tracker_; }
 
  private:
+  std::size_t region_of(const Box64& cell) const;
+  b2Body* body_of(std::size_t region);
   void add(ChainId id, const SurfaceChain& chain);
-  void remove(ChainId id);
+  void remove(ChainId id, std::vector<std::size_t>& emptied);
   void apply(const ChainUpdate& update);
 
   b2World& world_;
-  b2Body* body_ = nullptr;
   EngineUnits units_;
   std::array<float, kMaterialCount> friction_;
   SurfaceTracker tracker_;
-  std::unordered_map<ChainId, std::vector<b2Fixture*>> fixtures_;
+  Box64 world_box_;
+  std::int64_t grid_;
+  std::vector<b2Body*> bodies_;  // per region, row by row; null where it has no chains
+  struct ChainFixtures {
+    std::size_t region = 0;
+    std::vector<b2Fixture*> fixtures;
+  };
+  std::unordered_map<ChainId, ChainFixtures> fixtures_;
 };
 
 struct DebrisOptions {

@@ -45,7 +45,7 @@ inline EngineVec unit_vector(Point64 d) {
 
 // World <-> engine: engine = (world - origin) / units_per_engine_unit.
 struct EngineUnits {
-  Point64 origin;                     // the landscape point at the engine's (0, 0)
+  Point64 origin;                    // the landscape point at the engine's (0, 0)
   double units_per_engine_unit = 1;  // landscape units in one engine unit (metre): > 0
 
   EngineVec to_engine(Point64 p) const {

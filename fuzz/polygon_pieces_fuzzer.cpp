@@ -1,0 +1,12 @@
+// libFuzzer target `polygon_pieces`: see run_polygon_pieces in decoders.hpp for what is decoded
+// and checked.
+#include <cstddef>
+#include <cstdint>
+
+#include "decoders.hpp"
+#include "report.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  edgeland::fuzz::abort_on(edgeland::fuzz::run_polygon_pieces(data, size));
+  return 0;
+}
