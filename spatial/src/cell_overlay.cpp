@@ -161,20 +161,138 @@ bool clear_and_kept(const Node& cell, const ValidSet& shape, const NearMembers& 
   return true;
 }
 
-// Quick rejection: the shape changes nothing in the cell, and relabel() would round nothing
-// that is kept (the cell's own regions come back). Either every polygon is clear of the shape
-// and keeps its label, or every member reaching the cell lies in its closed box (no window
-// ring), meets no boundary there (no contact at all) and changes nothing.
-bool changes_nothing(const Node& cell, const ValidSet& shape, const NearMembers& near,
-                     std::span<const RegionLabel> table) {
-  if (clear_of_the_shape(cell, shape, near)) return clear_and_kept(cell, shape, near, table);
-  if (!near.all_inside) return false;
-  for (std::size_t k = 0; k < near.members.size(); ++k) {
-    const Polygon& member = shape.polygons()[near.members[k]];
-    if (meets_a_boundary(cell, member, near.boxes[k])) return false;
-    if (!leaves_all_as_is(cell, member, near.boxes[k], table)) return false;
+// Whether the polygon edge f lies on a side line of the cell box (cell polygons lie in the
+// closed box, so both ends on one side line put the whole edge on it).
+bool on_cell_side(const Segment& f, const Box64& box) {
+  return (f.a.x == f.b.x && (f.a.x == box.min.x || f.a.x == box.max.x)) ||
+         (f.a.y == f.b.y && (f.a.y == box.min.y || f.a.y == box.max.y));
+}
+
+bool in_open_box(Point64 p, const Box64& b) {
+  return b.min.x < p.x && p.x < b.max.x && b.min.y < p.y && p.y < b.max.y;
+}
+
+// Every edge of the cell's polygons off the cell's side lines (an "inner" edge) lies at least two
+// units (L-infinity, from its box) from every edge of the shape. Snap rounding then never moves
+// a polygon edge: every hot pixel of relabel()'s arrangement is centred within half a unit of a
+// shape edge (a rounded crossing of a shape edge with a side line, a side edge or the window's
+// ring, or a vertex a moved shape edge's route jumps over), so inner edges meet none, and an
+// edge on a side line meets an integer-centred pixel only through its centre.
+bool inner_edges_clear(const Node& cell, const ValidSet& shape, const NearMembers& near) {
+  const PolygonSet& polys = cell.polygon_set();
+  for (std::size_t member : near.members) {
+    const Polygon& m = shape.polygons()[member];
+    for (std::size_t i = 0; i < m.size(); ++i) {
+      const Segment e = ring_edge(m, i);
+      const Box64 eb = edge_box(e);
+      if (!grown(eb, 2).overlaps(cell.box)) continue;
+      for (std::size_t q = 0; q < polys.size(); ++q) {
+        if (!grown(cell.boxes[q], 2).overlaps(eb)) continue;
+        for (std::size_t j = 0; j < polys[q].size(); ++j) {
+          const Segment f = ring_edge(polys[q], j);
+          const Box64 reach = grown(edge_box(f), 2);
+          if (reach.overlaps(eb) && !on_cell_side(f, cell.box) && segment_meets_open_box(e, reach))
+            return false;
+        }
+      }
+    }
   }
   return true;
+}
+
+// The label of the region holding p, a point of the open cell box two units or more from every
+// inner edge: the polygon p is inside, or 0 (empty space); nullopt if p is on a boundary.
+std::optional<RegionLabel> region_at(const Node& cell, Point64 p) {
+  const PolygonSet& polys = cell.polygon_set();
+  for (std::size_t q = 0; q < polys.size(); ++q) {
+    if (!cell.boxes[q].contains(p)) continue;
+    switch (locate(p, polys[q])) {
+      case PointLocation::kInside:
+        return cell.content.labels[q];
+      case PointLocation::kOnBoundary:
+        return std::nullopt;  // Not reached when the inner edges are clear: kept for safety.
+      case PointLocation::kOutside:
+        break;
+    }
+  }
+  return kNoRegion;
+}
+
+// A vertex of polygon q at an end of one of its inner edges, if it has one.
+std::optional<Point64> inner_vertex(const Node& cell, std::size_t q) {
+  const Polygon& poly = cell.polygon_set()[q];
+  for (std::size_t j = 0; j < poly.size(); ++j)
+    if (!on_cell_side(ring_edge(poly, j), cell.box)) return poly[j];
+  return std::nullopt;
+}
+
+// With the inner edges clear (inner_edges_clear, tested after this), every region (polygon
+// interior or empty space) of the open cell that the member meets keeps its label. The member's
+// boundary crosses no inner edge, so each piece of it in the open cell lies in one region, which
+// holds a vertex of it as no edge of the member crosses the cell without one (else: false); a
+// region holding no such piece is wholly inside the member or outside it, which a vertex of an
+// inner edge of it tells (two units from the member's boundary). Empty space inside the member is
+// not found that way: a table that changes 0 requires a cell without empty space.
+bool member_keeps_what_it_meets(const Node& cell, const Polygon& m,
+                                std::span<const RegionLabel> table) {
+  for (Point64 v : m) {
+    if (!in_open_box(v, cell.box)) continue;
+    const std::optional<RegionLabel> l = region_at(cell, v);
+    if (!l || relabeled(table, *l) != *l) return false;
+  }
+  bool enters = false;
+  for (std::size_t i = 0; i < m.size(); ++i) {
+    const Segment e = ring_edge(m, i);
+    if (!segment_meets_open_box(e, cell.box)) continue;
+    enters = true;
+    if (!in_open_box(e.a, cell.box) && !in_open_box(e.b, cell.box)) return false;
+  }
+  if (!enters) return !covers(m, cell.box);  // outside, or covering (left to covered_answer)
+  const Box64 mb = *bounding_box(m);
+  for (std::size_t q = 0; q < cell.content.labels.size(); ++q) {
+    const RegionLabel l = cell.content.labels[q];
+    if (relabeled(table, l) == l || !cell.boxes[q].overlaps(mb)) continue;
+    const std::optional<Point64> w = inner_vertex(cell, q);
+    if (w && locate(*w, m) != PointLocation::kOutside) return false;
+  }
+  return true;
+}
+
+// Quick rejection of a shape that passes through the cell only in regions it leaves as they
+// are, crossing the cell's side lines anywhere (a fill of rock into rock reaching over a cell
+// line): the inner edges are clear of the shape, so relabel() moves no polygon edge, and every
+// face inside the shape keeps its label, so the regions and their canonical decomposition (I3)
+// come back unchanged.
+bool passes_only_through_kept_regions(const Node& cell, const ValidSet& shape,
+                                      const NearMembers& near, std::span<const RegionLabel> table) {
+  if (relabeled(table, kNoRegion) != kNoRegion && has_empty_space(cell)) return false;
+  // The labels first: they reject most edits that do change the cell after a few point tests.
+  for (std::size_t member : near.members)
+    if (!member_keeps_what_it_meets(cell, shape.polygons()[member], table)) return false;
+  return inner_edges_clear(cell, shape, near);
+}
+
+// Quick rejection: the shape changes nothing in the cell, and relabel() would round nothing
+// that is kept (the cell's own regions come back). Either every polygon is clear of the shape
+// and keeps its label, or the shape passes only through regions it keeps with the inner edges
+// clear of it, or every member reaching the cell lies in its closed box (no window ring), meets
+// no boundary there (no contact at all) and changes nothing. The case that applies, if any.
+std::optional<QuickCase> changes_nothing(const Node& cell, const ValidSet& shape,
+                                         const NearMembers& near,
+                                         std::span<const RegionLabel> table) {
+  if (clear_of_the_shape(cell, shape, near)) {
+    if (clear_and_kept(cell, shape, near, table)) return QuickCase::kClearOfTheShape;
+    return std::nullopt;
+  }
+  if (passes_only_through_kept_regions(cell, shape, near, table))
+    return QuickCase::kThroughKeptRegions;
+  if (!near.all_inside) return std::nullopt;
+  for (std::size_t k = 0; k < near.members.size(); ++k) {
+    const Polygon& member = shape.polygons()[near.members[k]];
+    if (meets_a_boundary(cell, member, near.boxes[k])) return std::nullopt;
+    if (!leaves_all_as_is(cell, member, near.boxes[k], table)) return std::nullopt;
+  }
+  return QuickCase::kInsideOneFace;
 }
 
 bool same_content(const LabeledSet& a, const LabeledSet& b) {
@@ -191,9 +309,9 @@ std::optional<QuickAnswer> covered_answer(const Node& cell, const ValidSet& shap
     RegionLabel to = kNoRegion;
     switch (relabel_covered(cell, table, to)) {
       case Covered::kUnchanged:
-        return QuickAnswer{};
+        return QuickAnswer{QuickCase::kCoveredUnchanged, std::nullopt};
       case Covered::kUniform:
-        return QuickAnswer{uniform_content(cell.box, to)};
+        return QuickAnswer{QuickCase::kCoveredUniform, uniform_content(cell.box, to)};
       case Covered::kMixed:
         return std::nullopt;
     }
@@ -206,10 +324,12 @@ std::optional<QuickAnswer> covered_answer(const Node& cell, const ValidSet& shap
 std::optional<QuickAnswer> quick_overlay(const Node& cell, const ValidSet& shape,
                                          std::span<const RegionLabel> table) {
   const NearMembers near = near_members(shape, cell.box);
-  if (near.members.empty()) return QuickAnswer{};
-  if (cell.content.labels.empty() && relabeled(table, kNoRegion) == kNoRegion) return QuickAnswer{};
+  if (near.members.empty()) return QuickAnswer{QuickCase::kNoMemberNear, std::nullopt};
+  if (cell.content.labels.empty() && relabeled(table, kNoRegion) == kNoRegion)
+    return QuickAnswer{QuickCase::kEmptyStaysEmpty, std::nullopt};
   if (auto covered = covered_answer(cell, shape, near, table)) return covered;
-  if (changes_nothing(cell, shape, near, table)) return QuickAnswer{};
+  if (const auto unchanged = changes_nothing(cell, shape, near, table))
+    return QuickAnswer{*unchanged, std::nullopt};
   return std::nullopt;
 }
 

@@ -5,6 +5,7 @@
 // and lies in one region it does not change. Those are answered by box tests and exact point and
 // segment tests (kernel/) with the result relabel() would give, bit for bit; the rest go through
 // relabel().
+#include <cstdint>
 #include <optional>
 #include <span>
 
@@ -18,16 +19,28 @@ inline RegionLabel relabeled(std::span<const RegionLabel> table, RegionLabel l) 
   return l < table.size() ? table[l] : l;
 }
 
+// The quick cases, in the order they are tried.
+enum class QuickCase : std::uint8_t {
+  kNoMemberNear,      // no member's box meets the cell box
+  kEmptyStaysEmpty,   // an empty cell, and the table keeps 0
+  kCoveredUnchanged,  // a member covers the cell, and every material there stays
+  kCoveredUniform,    // a member covers the cell, and every material there becomes one
+  kClearOfTheShape,   // every polygon two units from the shape's edges, none inside changing
+  // The shape's edges two units from every polygon edge off the cell's side lines, and every
+  // region of the cell the shape meets keeps its material (the shape may cross the side lines).
+  kThroughKeptRegions,
+  // Every member inside the cell box, meeting no polygon edge, in a face that keeps its
+  // material, with what it encloses.
+  kInsideOneFace,
+};
+
 // The answer of a quick case: the cell stays as it is (no content), or becomes `content`.
 struct QuickAnswer {
+  QuickCase which;
   std::optional<LabeledSet> content;
 };
 
-// The quick cases, in order: no member reaches the cell; the cell is empty and stays so; a member
-// covers the cell, and every material there stays or all become one; the shape changes nothing
-// (every polygon at least two units from its edges and keeping its material, or every member
-// inside the cell box meeting no polygon edge and lying in a face that keeps its material, with
-// what it encloses). nullopt when none applies. Each answer is relabel()'s, bit for bit.
+// The first quick case that applies, or nullopt. Each answer is relabel()'s, bit for bit.
 std::optional<QuickAnswer> quick_overlay(const Node& cell, const ValidSet& shape,
                                          std::span<const RegionLabel> table);
 
