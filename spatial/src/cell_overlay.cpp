@@ -218,21 +218,30 @@ std::optional<RegionLabel> region_at(const Node& cell, Point64 p) {
   return kNoRegion;
 }
 
-// A vertex of polygon q at an end of one of its inner edges, if it has one.
-std::optional<Point64> inner_vertex(const Node& cell, std::size_t q) {
+// The first vertex of every chain of inner edges of polygon q (a maximal run of consecutive
+// inner edges along its ring; the whole ring when no edge lies on a side line).
+void inner_chain_starts(const Node& cell, std::size_t q, std::vector<Point64>& out) {
   const Polygon& poly = cell.polygon_set()[q];
-  for (std::size_t j = 0; j < poly.size(); ++j)
-    if (!on_cell_side(ring_edge(poly, j), cell.box)) return poly[j];
-  return std::nullopt;
+  const std::size_t n = poly.size();
+  bool previous = !on_cell_side(ring_edge(poly, n - 1), cell.box), any_side = !previous;
+  const std::size_t before = out.size();
+  for (std::size_t j = 0; j < n; ++j) {
+    const bool inner = !on_cell_side(ring_edge(poly, j), cell.box);
+    if (inner && !previous) out.push_back(poly[j]);
+    any_side = any_side || !inner;
+    previous = inner;
+  }
+  if (!any_side && out.size() == before) out.push_back(poly.front());
 }
 
 // With the inner edges clear (inner_edges_clear, tested after this), every region (polygon
 // interior or empty space) of the open cell that the member meets keeps its label. The member's
-// boundary crosses no inner edge, so each piece of it in the open cell lies in one region, which
-// holds a vertex of it as no edge of the member crosses the cell without one (else: false); a
-// region holding no such piece is wholly inside the member or outside it, which a vertex of an
-// inner edge of it tells (two units from the member's boundary). Empty space inside the member is
-// not found that way: a table that changes 0 requires a cell without empty space.
+// boundary crosses no inner edge, so each piece of it in the open cell lies in one region,
+// which holds a vertex of it as no edge of the member crosses the cell without one (else:
+// false). A region holding no such piece is wholly inside the member or outside it: a polygon
+// as a vertex of its inner edges says (two units from the member's boundary, and its interior
+// beside it on the same side), and empty space only if one of the inner edges around it is
+// inside the member, each chain of inner edges lying wholly on one side.
 bool member_keeps_what_it_meets(const Node& cell, const Polygon& m,
                                 std::span<const RegionLabel> table) {
   for (Point64 v : m) {
@@ -249,11 +258,18 @@ bool member_keeps_what_it_meets(const Node& cell, const Polygon& m,
   }
   if (!enters) return !covers(m, cell.box);  // outside, or covering (left to covered_answer)
   const Box64 mb = *bounding_box(m);
+  const bool fills_space = relabeled(table, kNoRegion) != kNoRegion;
+  std::vector<Point64> starts;
   for (std::size_t q = 0; q < cell.content.labels.size(); ++q) {
     const RegionLabel l = cell.content.labels[q];
-    if (relabeled(table, l) == l || !cell.boxes[q].overlaps(mb)) continue;
-    const std::optional<Point64> w = inner_vertex(cell, q);
-    if (w && locate(*w, m) != PointLocation::kOutside) return false;
+    const bool changes = relabeled(table, l) != l;
+    if ((!changes && !fills_space) || !cell.boxes[q].overlaps(mb)) continue;
+    starts.clear();
+    inner_chain_starts(cell, q, starts);
+    // One chain tells for a polygon holding no piece of the member; empty space may border any.
+    if (!fills_space && starts.size() > 1) starts.resize(1);
+    for (Point64 w : starts)
+      if (locate(w, m) != PointLocation::kOutside) return false;
   }
   return true;
 }
@@ -265,7 +281,6 @@ bool member_keeps_what_it_meets(const Node& cell, const Polygon& m,
 // come back unchanged.
 bool passes_only_through_kept_regions(const Node& cell, const ValidSet& shape,
                                       const NearMembers& near, std::span<const RegionLabel> table) {
-  if (relabeled(table, kNoRegion) != kNoRegion && has_empty_space(cell)) return false;
   // The labels first: they reject most edits that do change the cell after a few point tests.
   for (std::size_t member : near.members)
     if (!member_keeps_what_it_meets(cell, shape.polygons()[member], table)) return false;

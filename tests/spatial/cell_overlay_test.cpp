@@ -108,6 +108,14 @@ TEST(CellOverlayQuick, ACarveIntoAirChangesNothing) {
 TEST(CellOverlayQuick, AFillOfRockIntoRockChangesNothing) {
   const NodePtr cell = cell_of(kBox, {square(0, 0, 64, 40), square(10, 50, 20, 60)}, {1, 2});
   expect_quick_and_exact(*cell, ValidSet(PolygonSet{{{10, 10}, {50, 17}, {30, 35}}}), fill_table(1),
+                         detail::QuickCase::kThroughKeptRegions);
+}
+
+TEST(CellOverlayQuick, AFillOfRockIntoRockAUnitFromAirChangesNothing) {
+  // A unit below the rock's top edge: too near for kThroughKeptRegions, but inside the cell box
+  // and meeting no edge at all, so nothing is rounded.
+  const NodePtr cell = cell_of(kBox, {square(0, 0, 64, 40), square(10, 50, 20, 60)}, {1, 2});
+  expect_quick_and_exact(*cell, ValidSet(PolygonSet{{{10, 10}, {50, 17}, {30, 39}}}), fill_table(1),
                          detail::QuickCase::kInsideOneFace);
 }
 
@@ -142,6 +150,26 @@ TEST(CellOverlayQuick, ACarveIntoAirOverACellLineBesideRockChangesNothing) {
       kBox, {{{0, 0}, {64, 0}, {64, 20}, {30, 20}, {30, 44}, {64, 44}, {64, 64}, {0, 64}}}, {1});
   const ValidSet shape(PolygonSet{{{33, 23}, {90, 22}, {80, 41}, {40, 41}}});
   expect_quick_and_exact(*cell, shape, carve_table(), detail::QuickCase::kThroughKeptRegions);
+}
+
+TEST(CellOverlayQuick, AFillOfRockIntoRockOverACellLineBesideAirChangesNothing) {
+  // Rock over the upper part of the cell, air below it; the fill reaches in over the top line
+  // and stays in the rock, two units from the air.
+  const NodePtr cell = cell_of(kBox, {square(0, 30, 64, 64)}, {1});
+  const ValidSet shape(PolygonSet{{{10, 50}, {37, 61}, {51, 90}, {3, 77}}});
+  expect_quick_and_exact(*cell, shape, fill_table(1), detail::QuickCase::kThroughKeptRegions);
+}
+
+TEST(CellOverlayQuick, AFillOverACellLineAroundAnAirPocketGoesToTheOverlay) {
+  // The rock holds a pocket of air inside the fill, away from its edges.
+  const NodePtr cell = cell_of(kBox, {square(0, 30, 64, 64)}, {1});
+  const LabeledClipResult pocket =
+      relabel(cell->content.set, cell->content.labels, ValidSet(PolygonSet{square(20, 48, 30, 56)}),
+              kBox, carve_table());
+  const NodePtr holed = detail::make_cell(kBox, 0, pocket.regions,
+                                          std::vector<PolygonId>(pocket.regions.labels.size(), 1));
+  const ValidSet shape(PolygonSet{{{10, 44}, {40, 44}, {40, 90}, {10, 90}}});
+  EXPECT_FALSE(detail::quick_overlay(*holed, shape, fill_table(1)).has_value());
 }
 
 TEST(CellOverlayQuick, AFillOverACellLineIntoAnotherMaterialGoesToTheOverlay) {
