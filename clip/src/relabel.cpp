@@ -50,9 +50,13 @@ void require_window(const Box64& w, std::size_t index) {
 LabeledSet labeled(detail::PipelineResult& r, std::size_t begin, std::size_t end,
                    RegionLabel (*label_of)(detail::FaceLabel)) {
   ClipResult part;
-  part.polygons.assign(
-      std::make_move_iterator(r.clipped.polygons.begin() + static_cast<std::ptrdiff_t>(begin)),
-      std::make_move_iterator(r.clipped.polygons.begin() + static_cast<std::ptrdiff_t>(end)));
+  if (begin == 0 && end == r.clipped.polygons.size()) {
+    part.polygons = std::move(r.clipped.polygons);  // all of it: no copy of the vector
+  } else {
+    part.polygons.assign(
+        std::make_move_iterator(r.clipped.polygons.begin() + static_cast<std::ptrdiff_t>(begin)),
+        std::make_move_iterator(r.clipped.polygons.begin() + static_cast<std::ptrdiff_t>(end)));
+  }
   LabeledSet out{ValidSetFactory::from(std::move(part)).set, {}};
   out.labels.reserve(end - begin);
   for (std::size_t i = begin; i < end; ++i) out.labels.push_back(label_of(r.labels[i]));
@@ -91,7 +95,7 @@ LabeledClipResult relabel(const ValidSet& regions, std::span<const RegionLabel> 
   // Shape members that cannot reach the window take no part. When all that do lie in the
   // window, being inside one of them is being inside shape ∩ window and the window's own ring
   // is not needed; otherwise it joins them and "inside both" is a count of two.
-  std::vector<std::uint32_t> near;
+  detail::ScratchVector<std::uint32_t> near;
   bool all_inside = true;
   for (std::uint32_t i = 0; i < shape.polygons().size(); ++i) {
     const Box64 b = *bounding_box(shape.polygons()[i]);
@@ -99,20 +103,20 @@ LabeledClipResult relabel(const ValidSet& regions, std::span<const RegionLabel> 
     near.push_back(i);
     all_inside = all_inside && inside(b, window);
   }
-  const PolygonSet window_rings{box_ring(window)};
   detail::RelabelTable rt{labels.data(), table.data(), table.size(), all_inside ? 1 : 2};
   // The two lambdas are called, and the unwinding of `p` below runs, only for an internal
   // error: not reached by tests.
   auto inputs = [&] { return to_wkt(members); };
-  auto shape_wkt = [&] { return to_wkt(shape.polygons()) + " within " + to_wkt(window_rings); };
+  auto shape_wkt = [&] {
+    return to_wkt(shape.polygons()) + " within " + to_wkt(PolygonSet{box_ring(window)});
+  };
   detail::PipelineResult r = detail::guarded(
       [&] {
         detail::Pipeline p;
         p.check_stages = options.checked;
         detail::append_ring_edges(members, detail::kSubjectChannel, true, p.edges);
         detail::append_ring_edges(shape.polygons(), detail::kClipChannel, true, p.edges, &near);
-        if (!all_inside)
-          detail::append_ring_edges(window_rings, detail::kClipChannel, true, p.edges);
+        if (!all_inside) detail::append_box_edges(window, detail::kClipChannel, p.edges);
         p.mode = detail::LabelMode::kOwnerAndCount;
         p.label_of = detail::LabelOf::relabel(rt);
         p.collinear_free_operands =
