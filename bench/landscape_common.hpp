@@ -138,5 +138,6 @@ void register_query_benchmarks();
 void register_scaling_benchmarks();
 void register_crossover_benchmarks();
 void register_snapshot_benchmarks();
+void register_save_load_benchmarks();
 
 }  // namespace edgeland::bench

@@ -11,6 +11,7 @@ int main(int argc, char** argv) {
   edgeland::bench::register_scaling_benchmarks();
   edgeland::bench::register_crossover_benchmarks();
   edgeland::bench::register_snapshot_benchmarks();
+  edgeland::bench::register_save_load_benchmarks();
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   benchmark::RunSpecifiedBenchmarks();

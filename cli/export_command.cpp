@@ -25,6 +25,7 @@
 #include "edgeland/kernel/triangulate.hpp"
 #include "edgeland/kernel/wkt_writer.hpp"
 #include "input_text.hpp"
+#include "landscape_replay.hpp"
 
 namespace edgeland::cli {
 namespace {
@@ -152,8 +153,7 @@ int run_export(const ExportOptions& o) {
     std::cout << out.dump() << '\n';
     if (replayed.failure) {
       std::cerr << "edgeland export: " << o.path << ": " << replayed.failure->message << '\n';
-      return replayed.failure->kind == log::ReplayFailure::Kind::kInternal ? kExitInternal
-                                                                           : kExitUnreadable;
+      return exit_status(*replayed.failure);
     }
     return kExitOk;
   } catch (const InputError& e) {

@@ -5,7 +5,6 @@
 #include <string>
 
 #include "command.hpp"
-#include "edgeland/io/landscape_replay.hpp"
 #include "landscape_dump.hpp"
 #include "landscape_png.hpp"
 
@@ -41,10 +40,14 @@ std::string log_name(const ReplayOptions& options) {
 
 int report_failure(const ReplayOptions& options, const log::ReplayFailure& failure) {
   std::cerr << "edgeland replay: " << log_name(options) << ": " << failure.message << '\n';
-  return failure.kind == log::ReplayFailure::Kind::kInternal ? kExitInternal : kExitUnreadable;
+  return exit_status(failure);
 }
 
 }  // namespace
+
+int exit_status(const log::ReplayFailure& failure) {
+  return failure.kind == log::ReplayFailure::Kind::kInternal ? kExitInternal : kExitUnreadable;
+}
 
 int replay_landscape_log(std::string_view text, const ReplayOptions& options) {
   const log::LandscapeReplay replay =

@@ -3,13 +3,17 @@
 // whose header describes the JSON) printed on one line, then --dump and --png.
 #include <string_view>
 
+#include "edgeland/io/landscape_replay.hpp"
 #include "replay_options.hpp"
 
 namespace edgeland::cli {
 
-// Returns the exit status (command.hpp): 0; 2 for a bad line or a shape the kernel refuses (a
-// one-line message naming the line on stderr); 3 for an internal error of the landscape or of
-// the OGC import, or a failed final check() with --check.
+// The exit status (command.hpp) of a replay that stopped: 2 for a bad line or a shape the kernel
+// refuses, 3 for an internal error of the landscape or of the OGC import, or a failed check().
+int exit_status(const log::ReplayFailure& failure);
+
+// Returns the exit status (command.hpp): 0, or exit_status of the failure (a one-line message
+// naming the line on stderr).
 int replay_landscape_log(std::string_view text, const ReplayOptions& options);
 
 }  // namespace edgeland::cli

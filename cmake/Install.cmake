@@ -1,8 +1,8 @@
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
-install(TARGETS edgeland_kernel edgeland_clip edgeland_spatial edgeland_io edgeland_game edgeland_engine
-  edgeland
+install(TARGETS edgeland_kernel edgeland_clip edgeland_spatial edgeland_io edgeland_game
+  edgeland_engine edgeland
   EXPORT edgelandTargets
   ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
   LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}

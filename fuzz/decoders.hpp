@@ -51,8 +51,12 @@ std::optional<Finding> run_parse(const std::uint8_t* data, std::size_t size);
 std::optional<Finding> run_edit_sequence(const std::uint8_t* data, std::size_t size);
 
 // Arbitrary bytes into Landscape::load (after the first byte: odd asks for the checksum to be
-// made right first, so mutations reach the parser): a LoadError, or a world that passes
-// check() and survives save -> load with its state hash. landscape_decoders.cpp.
+// made right first, so mutations reach the parser; load_fuzzer.cpp also mutates decoded saves
+// field by field, save_mutator.hpp): a LoadError or LimitExceeded, or a world that passes
+// check() and survives save -> load with its state hash; and the heap the load needed at its
+// peak (allocation_meter.hpp) within a small multiple of the file plus twice the world it
+// returns (a refused file: 256 bytes per byte of it, what the nodes read before the refusal can
+// take). landscape_decoders.cpp.
 std::optional<Finding> run_load(const std::uint8_t* data, std::size_t size);
 
 // Valid polygons decoded from bytes (normalized rings on small grids, polyominoes keeping every

@@ -6,6 +6,7 @@
 #include <sstream>
 #include <vector>
 
+#include "allocation_meter.hpp"
 #include "decoders.hpp"
 #include "edgeland/kernel/angle.hpp"
 #include "edgeland/kernel/box_queries.hpp"
@@ -279,9 +280,16 @@ std::optional<Finding> run_edit_sequence(const std::uint8_t* data, std::size_t s
   return std::nullopt;
 }
 
+// The memory a load may take (issue 27, point 1): a small multiple of the file, plus the world
+// it returns; a refused file, the world it had read by then, which costs at most about 165
+// bytes per byte of the file (an empty cell: 2 bytes in the file, a node in memory).
+constexpr std::size_t kFileCopies = 4, kWorldCopies = 2, kRefusedBytesPerByte = 256;
+constexpr std::size_t kLoadSlack = std::size_t{1} << 20;
+
 std::optional<Finding> run_load(const std::uint8_t* data, std::size_t size) {
   // An odd first byte asks for the rest to be read with a correct checksum, so that mutations
-  // reach the parser and the checks behind it instead of stopping at the checksum.
+  // reach the parser and the checks behind it instead of stopping at the checksum (the custom
+  // mutator of load_fuzzer.cpp writes files with it set).
   std::string bytes(reinterpret_cast<const char*>(data), size);
   if (!bytes.empty()) {
     const bool fix = (bytes[0] & 1) != 0;
@@ -293,19 +301,43 @@ std::optional<Finding> run_load(const std::uint8_t* data, std::size_t size) {
     }
   }
   std::istringstream file(bytes);
-  try {
-    const Landscape l = Landscape::load(file, kLimits);
-    const LandscapeReport report = l.check();
-    if (!report.ok())
-      return Finding{"load accepted a world that fails check(): " + report.problems.front(), ""};
-    std::stringstream again;
-    l.save(again);
-    if (Landscape::load(again, kLimits).state_hash() != l.state_hash())
-      return Finding{"a loaded world saved and loaded again has another state hash", ""};
-  } catch (const LoadError&) {
-  } catch (const std::exception& e) {
-    return Finding{std::string("load threw something other than LoadError: ") + e.what(), ""};
+  std::optional<Landscape> loaded;
+  bool refused = false;
+  std::string other_error;
+  const std::size_t peak = peak_heap_during([&] {
+    try {
+      loaded.emplace(Landscape::load(file, kLimits));
+    } catch (const LoadError&) {
+      refused = true;
+    } catch (const LimitExceeded&) {
+      refused = true;
+    } catch (const std::exception& e) {
+      other_error = e.what();
+    }
+  });
+  if (!other_error.empty())
+    return Finding{"load threw something other than LoadError or LimitExceeded: " + other_error,
+                   ""};
+  if (refused) {
+    if (peak > kRefusedBytesPerByte * bytes.size() + kLoadSlack)
+      return Finding{"a refused load took " + std::to_string(peak) + " bytes for a file of " +
+                         std::to_string(bytes.size()),
+                     ""};
+    return std::nullopt;
   }
+  const Landscape& l = *loaded;
+  if (peak > kFileCopies * bytes.size() + kWorldCopies * l.stats().bytes + kLoadSlack)
+    return Finding{"load took " + std::to_string(peak) + " bytes for a file of " +
+                       std::to_string(bytes.size()) + " and a world of " +
+                       std::to_string(l.stats().bytes),
+                   ""};
+  const LandscapeReport report = l.check();
+  if (!report.ok())
+    return Finding{"load accepted a world that fails check(): " + report.problems.front(), ""};
+  std::stringstream again;
+  l.save(again);
+  if (Landscape::load(again, kLimits).state_hash() != l.state_hash())
+    return Finding{"a loaded world saved and loaded again has another state hash", ""};
   return std::nullopt;
 }
 

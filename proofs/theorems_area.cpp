@@ -65,8 +65,8 @@ std::vector<Theorem> area_theorems() {
                       kMaxVertices.str() + " vertices in all",
                   128, area_sum),
           Theorem("line_offset_int128",
-                  "supporting_line's offset cross(d, p) fits Int128 for |d| <= 2 kCoordBound",
-                  128, line_offset)};
+                  "supporting_line's offset cross(d, p) fits Int128 for |d| <= 2 kCoordBound", 128,
+                  line_offset)};
 }
 
 }  // namespace edgeland::proofs

@@ -4,6 +4,7 @@
 #include <set>
 #include <sstream>
 
+#include "canonical_cell.hpp"
 #include "cell_split.hpp"
 #include "edgeland/kernel/area.hpp"
 #include "landscape_access.hpp"
@@ -29,26 +30,37 @@ void check_parallel_arrays(const Node& c, std::vector<std::string>& problems) {
     problems.push_back(name(c) + ": labels, ids or boxes do not match the polygons");
 }
 
-void check_polygons(const Node& c, std::vector<std::string>& problems) {
+// I1 and the stored boxes.
+void check_validity(const Node& c, std::vector<std::string>& problems) {
   const PolygonSet& polys = c.polygon_set();
   const ValidationReport v = validate(polys, 1);
   if (!v.ok()) problems.push_back(name(c) + ": invalid: " + v.violations.front().describe());
   for (std::size_t i = 0; i < polys.size(); ++i) {
     const auto b = bounding_box(polys[i]);
-    if (!b || !inside(*b, c.box))
-      problems.push_back(name(c) + ": polygon " + std::to_string(i) + " outside the cell");
-    else if (*b != c.boxes[i])
+    if (b && *b != c.boxes[i])
       problems.push_back(name(c) + ": polygon " + std::to_string(i) + " has a wrong box");
+  }
+}
+
+// I2 and the materials.
+void check_placement(const Node& c, std::vector<std::string>& problems) {
+  for (std::size_t i = 0; i < c.polygons; ++i) {
+    if (!inside(c.boxes[i], c.box))
+      problems.push_back(name(c) + ": polygon " + std::to_string(i) + " outside the cell");
     if (c.content.labels[i] == 0 || c.content.labels[i] >= kMaterialCount)
       problems.push_back(name(c) + ": polygon " + std::to_string(i) + " has material " +
                          std::to_string(c.content.labels[i]));
   }
 }
 
-void check_canonical(const Node& c, std::vector<std::string>& problems) {
-  const LabeledClipResult again = relabel(c.content.set, c.content.labels, ValidSet(), c.box, {});
-  if (again.regions.labels != c.content.labels || again.regions.set.polygons() != c.polygon_set())
-    problems.push_back(name(c) + ": content is not the canonical decomposition of its regions");
+// I5, and the grid's shape: in grid mode every cell that can split lies at the grid depth.
+void check_shape(const Node& c, const LandscapeConfig& config, std::vector<std::string>& problems) {
+  const bool grid = config.grid_depth >= 0;
+  if (!grid && c.vertices > config.edge_cap && can_split(c.box, config))
+    problems.push_back(name(c) + ": " + std::to_string(c.vertices) + " edges, over the cap");
+  if (grid && static_cast<int>(c.depth) < config.grid_depth && can_split(c.box, config))
+    problems.push_back(name(c) + ": a grid cell above the grid depth " +
+                       std::to_string(config.grid_depth));
 }
 
 void check_sums(const Node& n, const NodePtr& rebuilt, std::vector<std::string>& problems) {
@@ -61,15 +73,23 @@ void check_sums(const Node& n, const NodePtr& rebuilt, std::vector<std::string>&
 
 }  // namespace
 
+void check_cell_content(const Node& c, const LandscapeConfig& config,
+                        std::vector<std::string>& problems) {
+  const std::size_t before = problems.size();
+  check_placement(c, problems);
+  if (problems.size() != before) return;
+  check_shape(c, config, problems);
+  if (!cell_is_canonical(c))
+    problems.push_back(name(c) + ": content is not the canonical decomposition of its regions");
+}
+
 void check_cell(const Node& c, const LandscapeConfig& config, std::vector<std::string>& problems) {
   const std::size_t before = problems.size();
   check_parallel_arrays(c, problems);
   if (problems.size() != before) return;
-  check_polygons(c, problems);
+  check_validity(c, problems);
   if (problems.size() != before) return;
-  check_canonical(c, problems);
-  if (config.grid_depth < 0 && c.vertices > config.edge_cap && can_split(c.box, config))
-    problems.push_back(name(c) + ": " + std::to_string(c.vertices) + " edges, over the cap");
+  check_cell_content(c, config, problems);
   check_sums(c, make_cell(c.box, c.depth, c.content, c.ids), problems);
 }
 

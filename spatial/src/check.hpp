@@ -10,10 +10,15 @@
 
 namespace edgeland::detail {
 
-// Problems of one cell (I1, I2, I3, I5 and its own sums), each a line naming the cell.
+// Problems of one cell (I1, I2, I3, I5, the grid's shape and its own sums), each a line naming
+// the cell.
 void check_cell(const Node& cell, const LandscapeConfig& config,
                 std::vector<std::string>& problems);
-// Problems of one inner node (I4, I7, I8) with respect to its children.
+// The same but for what holds by construction for a cell just made by make_cell from a
+// validated set: I2, I3, I5, the grid's shape and its materials (load() runs this per cell).
+void check_cell_content(const Node& cell, const LandscapeConfig& config,
+                        std::vector<std::string>& problems);
+// Problems of one inner node (I4, I7, I8, the grid's shape) with respect to its children.
 void check_inner(const Node& node, const LandscapeConfig& config,
                  std::vector<std::string>& problems);
 

@@ -50,6 +50,13 @@ void LandscapeEditor::grow(std::size_t before, std::size_t after) {
     throw LimitExceeded(LimitExceeded::Limit::kVertices, s_.limits.max_vertices, could_be);
 }
 
+void LandscapeEditor::grow_cells(std::size_t added) {
+  cell_growth_ += added;
+  const std::size_t could_be = s_.root->cells + cell_growth_;
+  if (could_be > s_.limits.max_cells)
+    throw LimitExceeded(LimitExceeded::Limit::kCells, s_.limits.max_cells, could_be);
+}
+
 LandscapeEditor::Draft LandscapeEditor::Draft::keep(const NodePtr& node) {
   Draft d;
   d.kept = node;
@@ -92,6 +99,7 @@ LandscapeEditor::Draft LandscapeEditor::split_if_needed(Draft cell) {
       !detail::can_split(cell.box, config))
     return cell;
   const std::vector<Box64> boxes = detail::split_boxes(cell.box, config);
+  grow_cells(boxes.size() - 1);
   std::vector<LabeledSet> parts =
       cut_to_windows(cell.content.set, cell.content.labels, boxes, clip_options());
   std::vector<Draft> children;
@@ -185,6 +193,8 @@ ChangeSet LandscapeEditor::run(Landscape& target, const std::function<std::strin
   }
   if (root->vertices > s_.limits.max_vertices)
     throw LimitExceeded(LimitExceeded::Limit::kVertices, s_.limits.max_vertices, root->vertices);
+  if (root->cells > s_.limits.max_cells)
+    throw LimitExceeded(LimitExceeded::Limit::kCells, s_.limits.max_cells, root->cells);
   detail::Changes changes = detail::diff(s_.root, root);
   if (s_.checked) {
     const std::string problem = detail::check_edit(l_, root, changes, s_.next_id);

@@ -63,9 +63,11 @@ class LandscapeEditor {
   detail::NodePtr finish(Draft& draft, const detail::NodePtr& old);
   detail::NodePtr finish_within(Draft& draft, const detail::IdSource& previous);
   ClipOptions clip_options() const { return ClipOptions{.checked = s_.checked}; }
-  // Counts the vertices a new cell adds over what it replaces, and throws LimitExceeded as
-  // soon as the landscape could pass its vertex limit (a runaway split stops early).
+  // Counts the vertices a new cell adds over what it replaces (and the cells a split adds), and
+  // throws LimitExceeded as soon as the landscape could pass its vertex (cell) limit: a runaway
+  // split stops early.
   void grow(std::size_t before, std::size_t after);
+  void grow_cells(std::size_t added);
 
   const Landscape& l_;
   const detail::LandscapeState& s_;  // l_'s state
@@ -74,6 +76,7 @@ class LandscapeEditor {
   Box64 shape_box_;
   PolygonId next_id_;
   std::size_t growth_ = 0;
+  std::size_t cell_growth_ = 0;
 };
 
 }  // namespace edgeland

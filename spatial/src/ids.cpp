@@ -1,6 +1,9 @@
 #include "ids.hpp"
 
 #include <algorithm>
+#include <limits>
+
+#include "edgeland/spatial/errors.hpp"
 
 namespace edgeland::detail {
 
@@ -28,7 +31,15 @@ std::vector<PolygonId> match_ids(const IdSource& previous, const LabeledSet& con
   std::vector<PolygonId> ids(polys.size());
   for (std::size_t i = 0; i < polys.size(); ++i) {
     const PolygonId kept = previous.find(polys[i], content.labels[i]);
-    ids[i] = kept != 0 ? kept : next_id++;
+    if (kept != 0) {
+      ids[i] = kept;
+      continue;
+    }
+    // Only a crafted save file can bring the counter here; a wrapped id would repeat id 0.
+    if (next_id == std::numeric_limits<PolygonId>::max())
+      throw LimitExceeded(LimitExceeded::Limit::kPolygonIds, std::numeric_limits<PolygonId>::max(),
+                          std::numeric_limits<PolygonId>::max());
+    ids[i] = next_id++;
   }
   return ids;
 }

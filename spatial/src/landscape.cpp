@@ -22,9 +22,13 @@ ValidSet shape_of(const PolygonSet& shape) {
 }
 
 // The grid of thesis 4.4: the world cut to `depth` levels at once (one arrangement per level).
+// `cells` counts the cells made, against the limit.
 detail::NodePtr grid(const Box64& box, std::uint32_t depth, int grid_depth, LabeledSet content,
-                     const LandscapeConfig& config, PolygonId& next_id) {
+                     const LandscapeConfig& config, const LandscapeLimits& limits,
+                     PolygonId& next_id, std::size_t& cells) {
   if (static_cast<int>(depth) >= grid_depth || !detail::can_split(box, config)) {
+    if (++cells > limits.max_cells)
+      throw LimitExceeded(LimitExceeded::Limit::kCells, limits.max_cells, cells);
     std::vector<PolygonId> ids(content.labels.size());
     for (PolygonId& id : ids) id = next_id++;
     return detail::make_cell(box, depth, std::move(content), std::move(ids));
@@ -33,7 +37,8 @@ detail::NodePtr grid(const Box64& box, std::uint32_t depth, int grid_depth, Labe
   std::vector<LabeledSet> parts = cut_to_windows(content.set, content.labels, boxes);
   std::vector<detail::NodePtr> children;
   for (std::size_t i = 0; i < boxes.size(); ++i)
-    children.push_back(grid(boxes[i], depth + 1, grid_depth, std::move(parts[i]), config, next_id));
+    children.push_back(
+        grid(boxes[i], depth + 1, grid_depth, std::move(parts[i]), config, limits, next_id, cells));
   return detail::make_inner(box, depth, children);
 }
 
@@ -67,9 +72,27 @@ std::string config_problem(InvalidConfig::Setting setting, const Box64& w,
 InvalidConfig::InvalidConfig(Setting s, const Box64& w, const LandscapeConfig& c)
     : LandscapeError(config_problem(s, w, c)), setting(s), world(w), config(c) {}
 
+namespace {
+
+const char* limit_name(LimitExceeded::Limit limit) {
+  switch (limit) {
+    case LimitExceeded::Limit::kVertices:
+      return "landscape vertex";
+    case LimitExceeded::Limit::kShapeVertices:
+      return "shape vertex";
+    case LimitExceeded::Limit::kCells:
+      return "cell";
+    case LimitExceeded::Limit::kPolygonIds:
+      return "polygon id";
+  }
+  return "unknown";  // not reached: every limit is named above
+}
+
+}  // namespace
+
 LimitExceeded::LimitExceeded(Limit l, std::size_t max, std::size_t req)
-    : LandscapeError(std::string(l == Limit::kVertices ? "landscape vertex" : "shape vertex") +
-                     " limit exceeded: " + std::to_string(req) + " > " + std::to_string(max)),
+    : LandscapeError(std::string(limit_name(l)) + " limit exceeded: " + std::to_string(req) +
+                     " > " + std::to_string(max)),
       limit(l),
       maximum(max),
       requested(req) {}
@@ -105,7 +128,9 @@ Landscape::Landscape(const Box64& world, Material fill, const LandscapeConfig& c
   s_.limits = limits;
   s_.initial_fill = fill;
   s_.areas = std::move(areas);
-  s_.root = grid(world, 0, std::max(config.grid_depth, 0), std::move(content), config, s_.next_id);
+  std::size_t cells = 0;
+  s_.root = grid(world, 0, std::max(config.grid_depth, 0), std::move(content), config, limits,
+                 s_.next_id, cells);
 }
 
 ChangeSet Landscape::carve(const ValidSet& shape) {

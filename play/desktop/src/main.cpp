@@ -16,8 +16,8 @@
 #include <sstream>
 
 #include "app.hpp"
-#include "input_text.hpp"
 #include "edgeland/io/landscape_replay.hpp"
+#include "input_text.hpp"
 #include "picture.hpp"
 
 namespace edgeland::play {

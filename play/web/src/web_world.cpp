@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <chrono>
 
-#include "edgeland/kernel/convex_pieces.hpp"
 #include "edgeland/io/landscape_log.hpp"
 #include "edgeland/io/landscape_replay.hpp"
+#include "edgeland/kernel/convex_pieces.hpp"
 
 namespace edgeland::play {
 namespace {

@@ -49,9 +49,12 @@ class EDGELAND_EXPORT InvalidMaterial : public LandscapeError {
   std::int64_t number;
 };
 
+// A LandscapeLimits limit would be passed (`requested` > `maximum`), or the polygon ids are
+// used up (kPolygonIds: the next id would pass 2^64 - 1, which only a crafted save file can
+// bring about).
 class EDGELAND_EXPORT LimitExceeded : public LandscapeError {
  public:
-  enum class Limit : std::uint8_t { kVertices, kShapeVertices };
+  enum class Limit : std::uint8_t { kVertices, kShapeVertices, kCells, kPolygonIds };
   LimitExceeded(Limit limit, std::size_t maximum, std::size_t requested);
   Limit limit;
   std::size_t maximum;
@@ -69,8 +72,9 @@ class EDGELAND_EXPORT LandscapeInternalError : public LandscapeError {
   std::string log;
 };
 
-// A save file could not be read: truncated, corrupt, of another version, or describing a
-// world that breaks an invariant. `offset` is where reading stopped (bytes from the start).
+// A save file could not be read: truncated, corrupt, of another version, describing a world
+// that breaks an invariant, or too large for the memory available. `offset` is where reading
+// stopped (bytes from the start).
 class EDGELAND_EXPORT LoadError : public LandscapeError {
  public:
   LoadError(const std::string& what, std::size_t offset);

@@ -163,8 +163,13 @@ class EDGELAND_EXPORT Landscape {
   // The recorded lines, each ending in '\n'. O(length).
   std::string log() const;
 
-  // Versioned binary, little-endian, with a checksum (spatial/README.md). load() validates
-  // everything (a save file is untrusted) and throws LoadError; it gives the same state_hash.
+  // Versioned binary, little-endian, with a checksum (spatial/README.md). load() gives the same
+  // state_hash. A save file is untrusted, and anyone can recompute its checksum: load() checks
+  // every invariant of spatial/README.md on each node as it reads it, so a bad file is refused
+  // before the work it asks for is done; its peak memory is about twice the file (a refused
+  // file) plus the world it returns. Throws LoadError (what and at which byte; memory running out
+  // during a load is one too), or LimitExceeded when the world would pass `limits` (the file's
+  // own bytes are bounded by them first). O(n log n) for n vertices: each cell is validated once.
   void save(std::ostream& out) const;
   static Landscape load(std::istream& in, const LandscapeLimits& limits = {});
 

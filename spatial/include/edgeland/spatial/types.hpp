@@ -39,11 +39,15 @@ struct LandscapeConfig {
   int grid_depth = -1;
 };
 
-// Limits on what one landscape may hold; an edit that would pass one throws LimitExceeded and
-// changes nothing.
+// Limits on what one landscape may hold; an edit, a constructor or a load that would pass one
+// throws LimitExceeded and changes nothing. A load also reads at most the bytes a world within
+// the limits can take (Landscape::load).
 struct LandscapeLimits {
   std::size_t max_vertices = std::size_t{1} << 28;        // all polygons together
   std::size_t max_shape_vertices = std::size_t{1} << 24;  // one edit's shape
+  // Cells of the tree (inner nodes are fewer: each has at least two children). Above the 4^10
+  // cells of the deepest grid; about 250 bytes each when empty.
+  std::size_t max_cells = std::size_t{1} << 22;
 };
 
 // One polygon of the landscape as a query or a change set shows it.

@@ -6,9 +6,9 @@
 // to the same world anywhere.
 #include <cstdint>
 
+#include "edgeland/io/landscape_log.hpp"
 #include "edgeland/kernel/polygon.hpp"
 #include "edgeland/spatial/landscape.hpp"
-#include "edgeland/io/landscape_log.hpp"
 
 namespace edgeland::play {
 
