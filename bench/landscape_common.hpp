@@ -139,5 +139,6 @@ void register_scaling_benchmarks();
 void register_crossover_benchmarks();
 void register_snapshot_benchmarks();
 void register_save_load_benchmarks();
+void register_big_shape_benchmarks();
 
 }  // namespace edgeland::bench

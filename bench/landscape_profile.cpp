@@ -9,6 +9,10 @@
 // Instructions per touched cell = callgrind's total / the touched cells printed here. The fill
 // workload runs the carve workload first, uncounted (its start world). Options: --tree
 // quadtree|kdtree|grid, --edits N (default 2000), --skip N (edits applied uncounted first).
+//
+// Big shapes (landscape_big_shapes.hpp): `combs-fill` fills the comb set of --vertices N
+// (default 10000) into an empty 4096 x 4096 world, `combs-back` carves it back out of the
+// filled world (the fill uncounted): one edit each.
 #include <valgrind/callgrind.h>
 
 #include <atomic>
@@ -17,6 +21,7 @@
 #include <new>
 #include <string>
 
+#include "landscape_big_shapes.hpp"
 #include "landscape_workloads.hpp"
 
 namespace {
@@ -40,22 +45,29 @@ struct Options {
   Workload workload = Workload::kCarve;
   Rival rival = Rival::kQuadtree;
   std::size_t edits = 2000, skip = 0;
+  // Big shapes: 0 none, 1 the comb set's fill, 2 its carve back.
+  int combs = 0;
+  std::size_t vertices = 10000;
 };
 
 [[noreturn]] void usage(const std::string& why) {
-  std::fprintf(stderr,
-               "edgeland_landscape_profile: %s\nusage: edgeland_landscape_profile "
-               "carve|dig|fill|spot [--tree quadtree|kdtree|grid] [--edits N] [--skip N]\n",
-               why.c_str());
+  std::fprintf(
+      stderr,
+      "edgeland_landscape_profile: %s\nusage: edgeland_landscape_profile "
+      "carve|dig|fill|spot|combs-fill|combs-back [--tree quadtree|kdtree|grid] [--edits N] "
+      "[--skip N] [--vertices N]\n",
+      why.c_str());
   std::exit(2);
 }
 
 Options parse(int argc, char** argv) {
   Options o;
   if (argc < 2) usage("no workload");
-  const auto w = workload_named(argv[1]);
-  if (!w) usage(std::string("unknown workload ") + argv[1]);
-  o.workload = *w;
+  const std::string name = argv[1];
+  o.combs = name == "combs-fill" ? 1 : name == "combs-back" ? 2 : 0;
+  const auto w = workload_named(name);
+  if (!w && o.combs == 0) usage("unknown workload " + name);
+  if (w) o.workload = *w;
   for (int i = 2; i + 1 < argc; i += 2) {
     const std::string flag = argv[i], value = argv[i + 1];
     if (flag == "--tree") {
@@ -66,6 +78,8 @@ Options parse(int argc, char** argv) {
       o.edits = std::stoul(value);
     } else if (flag == "--skip") {
       o.skip = std::stoul(value);
+    } else if (flag == "--vertices") {
+      o.vertices = std::stoul(value);
     } else {
       usage("unknown option " + flag);
     }
@@ -88,7 +102,31 @@ std::size_t touched_cells(const Landscape& l, const ValidSet& shape) {
   return n;
 }
 
+// One edit of the comb set (landscape_big_shapes.hpp): its fill, or its carve back.
+int run_combs(const Options& o) {
+  const ValidSet shape = comb_set(o.vertices);
+  World world = make_world(o.rival, kBigShapeWorld, kEmpty);
+  if (o.combs == 2) apply(world, EditKind::kFill, shape, 1);
+  const std::size_t cells = touched_cells(std::get<Landscape>(world), shape);
+  const std::size_t before = allocations.load();
+  CALLGRIND_TOGGLE_COLLECT;
+  const double seconds = seconds_of([&] {
+    apply(world, o.combs == 1 ? EditKind::kFill : EditKind::kCarve, shape, o.combs == 1 ? 1 : 0);
+  });
+  CALLGRIND_TOGGLE_COLLECT;
+  const auto& l = std::get<Landscape>(world);
+  const LandscapeStats s = l.stats();
+  std::printf("comb set of %zu vertices, %s, %s\n", o.vertices,
+              o.combs == 1 ? "fill" : "carve back", rival_name(o.rival));
+  std::printf("touched cells %zu, allocations %zu, time %.1f ms (not under valgrind)\n", cells,
+              allocations.load() - before, seconds * 1e3);
+  std::printf("end: %zu polygons, %zu vertices, %zu cells, check %s\n", s.polygons, s.vertices,
+              s.cells, l.check().ok() ? "ok" : "FAILED");
+  return 0;
+}
+
 int run(const Options& o) {
+  if (o.combs != 0) return run_combs(o);
   World world = make_world(o.rival, kEditWorld, 1);
   if (o.workload == Workload::kFill)
     for (const Edit& e : workload_edits(Workload::kCarve, 10000)) apply_edit(world, e);

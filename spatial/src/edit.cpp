@@ -14,6 +14,7 @@
 #include "ids.hpp"
 #include "landscape_access.hpp"
 #include "log_line.hpp"
+#include "shape_cut.hpp"
 
 namespace edgeland {
 namespace {
@@ -84,9 +85,14 @@ LandscapeEditor::Draft LandscapeEditor::Draft::inner(const Box64& box, std::uint
   return d;
 }
 
+const ValidSet& LandscapeEditor::shape_in(const detail::Node& cell) const {
+  const ValidSet* pieces = cut_ ? cut_->of(cell) : nullptr;
+  return pieces ? *pieces : shape_;
+}
+
 LandscapeEditor::Draft LandscapeEditor::edit_cell(const NodePtr& cell) {
   std::optional<LabeledSet> content =
-      detail::overlay_cell(*cell, shape_, table_.table, clip_options());
+      detail::overlay_cell(*cell, shape_in(*cell), table_.table, clip_options());
   if (!content) return Draft::keep(cell);
   Draft edited = Draft::cell(cell->box, cell->depth, std::move(*content));
   grow(cell->vertices, edited.vertices);
@@ -181,6 +187,7 @@ ChangeSet LandscapeEditor::run(Landscape& target, const std::function<std::strin
   NodePtr root = s_.root;
   try {
     if (!shape_.polygons().empty() && open_overlap(s_.world, shape_box_)) {
+      cut_ = detail::cut_shape_to_cells(s_.root, shape_, shape_box_, clip_options());
       Draft draft = rebuild(s_.root);
       root = finish(draft, s_.root);
     }
