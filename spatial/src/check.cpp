@@ -8,7 +8,7 @@
 #include "cell_split.hpp"
 #include "edgeland/kernel/area.hpp"
 #include "landscape_access.hpp"
-#include "log_line.hpp"
+#include "edit_log.hpp"
 
 namespace edgeland::detail {
 namespace {

@@ -13,7 +13,7 @@
 #include "edgeland/kernel/wkt_writer.hpp"
 #include "ids.hpp"
 #include "landscape_access.hpp"
-#include "log_line.hpp"
+#include "edit_log.hpp"
 #include "shape_cut.hpp"
 
 namespace edgeland {

@@ -6,7 +6,7 @@
 #include "edgeland/kernel/area.hpp"
 #include "edit.hpp"
 #include "landscape_access.hpp"
-#include "log_line.hpp"
+#include "edit_log.hpp"
 #include "state_hash.hpp"
 
 namespace edgeland {
