@@ -70,6 +70,68 @@ SideSpans port_spans(const SolidBoundary& solid) {
 
 namespace {
 
+Side opposite(Side side) { return static_cast<Side>((static_cast<int>(side) + 2) % 4); }
+
+// Whether `other` lies across `side` of `box`: its opposite side on the same line.
+bool across(const Box64& box, Side side, const Box64& other) {
+  switch (side) {
+    case Side::kBottom:
+      return other.max.y == box.min.y;
+    case Side::kRight:
+      return other.min.x == box.max.x;
+    case Side::kTop:
+      return other.min.y == box.max.y;
+    case Side::kLeft:
+      return other.max.x == box.min.x;
+  }
+  return false;
+}
+
+// One side's span ends in a flattened list.
+std::span<const std::int64_t> flat_side(std::span<const std::int64_t> flat, Side side) {
+  std::size_t at = 0;
+  for (Side s : kSides) {
+    const auto count = static_cast<std::size_t>(flat[at]);
+    if (s == side) return flat.subspan(at + 1, 2 * count);
+    at += 1 + 2 * count;
+  }
+  return {};
+}
+
+}  // namespace
+
+std::vector<std::int64_t> flatten(const SideSpans& spans_per_side) {
+  std::vector<std::int64_t> out;
+  for (const std::vector<Span>& spans : spans_per_side.sides) {
+    out.push_back(static_cast<std::int64_t>(spans.size()));
+    for (const Span& s : spans) {
+      out.push_back(s.lo);
+      out.push_back(s.hi);
+    }
+  }
+  return out;
+}
+
+SideSpans covers_from_ports(const Box64& box, std::span<const NeighbourPorts> neighbours) {
+  SideSpans out;
+  for (Side side : kSides) {
+    const Span extent = side_extent(box, side);
+    std::vector<Span>& spans = out.sides[static_cast<std::size_t>(side)];
+    for (const NeighbourPorts& n : neighbours) {
+      if (!across(box, side, n.box)) continue;
+      const std::span<const std::int64_t> ports = flat_side(n.ports, opposite(side));
+      for (std::size_t k = 0; k + 1 < ports.size(); k += 2) {
+        const Span cut{std::max(ports[k], extent.lo), std::min(ports[k + 1], extent.hi)};
+        if (cut.lo < cut.hi) spans.push_back(cut);
+      }
+    }
+    merge_spans(spans);
+  }
+  return out;
+}
+
+namespace {
+
 // The parts of `piece` (along `side`) outside every span of `cover` (ascending, disjoint),
 // directed as the piece.
 void add_uncovered(const Box64& box, Side side, Point64 a, Point64 b, Material material,

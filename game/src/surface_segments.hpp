@@ -3,6 +3,7 @@
 // of its ports that no solid of a neighbour covers from across the side (a port on the world
 // border is never surface), and, with a border wall, the parts of its world-border sides that
 // its own solid does not cover (solid, the outside, on their left).
+#include <span>
 #include <vector>
 
 #include "edgeland/game/surface_chains.hpp"
@@ -36,6 +37,23 @@ SideSpans side_covers(const CellPolygons& cell, const PhysicsMaterials& material
 // Where the cell's own solid lies on each side (its ports): what its neighbours' covers read
 // of it. O(n log n) in the ports.
 SideSpans port_spans(const SolidBoundary& solid);
+
+// Spans as one list (per side: the count, then each span's ends), as a tracker keeps a cell's
+// covers and ports.
+std::vector<std::int64_t> flatten(const SideSpans& spans);
+
+// A cell next to another, with its ports flattened.
+struct NeighbourPorts {
+  Box64 box;
+  std::span<const std::int64_t> ports;
+};
+
+// The same covers as side_covers, from the neighbours' ports instead of their polygons: a
+// neighbour's solid edges on a shared line are its ports there (every polygon lies in its cell),
+// so the cover of a side is the union of the ports of the cells across it on their opposite
+// side, cut to the side's extent. `neighbours` may hold any cells; those not across a side of
+// `box` by a positive length add nothing. O(n log n) in the ports.
+SideSpans covers_from_ports(const Box64& box, std::span<const NeighbourPorts> neighbours);
 
 // O(n log n) in the cell's edges along its sides.
 std::vector<SurfaceSegment> surface_segments(const CellPolygons& cell, const SolidBoundary& solid,

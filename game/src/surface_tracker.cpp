@@ -4,6 +4,7 @@
 #include "edgeland/game/surface_tracker.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <set>
 
 #include "cell_polygons.hpp"
@@ -35,18 +36,29 @@ bool holds_an_end(const SurfaceChain& c, const Box64& box) {
   return box.contains(c.points.front()) || box.contains(c.points.back());
 }
 
-// A cell's covers or ports as one list (per side: the count, then each span's ends), for its
-// record.
-std::vector<std::int64_t> flat(const game_detail::SideSpans& spans_per_side) {
-  std::vector<std::int64_t> out;
-  for (const auto& spans : spans_per_side.sides) {
-    out.push_back(static_cast<std::int64_t>(spans.size()));
-    for (const game_detail::Span& s : spans) {
-      out.push_back(s.lo);
-      out.push_back(s.hi);
-    }
-  }
-  return out;
+// A cell's covers from the ports of the cells across its sides: a changed cell's new ones
+// (`new_ports`), the others' kept in their records; nothing when such a cell has neither (never
+// after an update that saw every change: the caller then reads the polygons).
+template <class NewPorts, class Records>
+std::optional<game_detail::SideSpans> covers_around(const Landscape& world, const Box64& box,
+                                                    const NewPorts& new_ports,
+                                                    const Records& records) {
+  std::vector<game_detail::NeighbourPorts> neighbours;
+  bool complete = true;
+  world.cells_in(box, [&](const CellView& c) {
+    const bool overlaps_x = c.box.max.x > box.min.x && c.box.min.x < box.max.x;
+    const bool overlaps_y = c.box.max.y > box.min.y && c.box.min.y < box.max.y;
+    if (c.box == box || !(overlaps_x || overlaps_y)) return true;  // itself, or at a corner
+    if (const auto it = new_ports.find(c.box); it != new_ports.end())
+      neighbours.push_back({c.box, it->second});
+    else if (const auto rec = records.find(c.box); rec != records.end())
+      neighbours.push_back({c.box, rec->second.ports});
+    else
+      complete = false;
+    return complete;
+  });
+  if (!complete) return std::nullopt;
+  return game_detail::covers_from_ports(box, neighbours);
 }
 
 }  // namespace
@@ -124,22 +136,22 @@ ChainUpdate SurfaceTracker::replace_cells(const Landscape& world, const std::vec
     computed.emplace(box, game_detail::cell_surface(world, box, options_));
   // A neighbour's covers are the ports of the cells across its sides: when the edit re-cut its
   // cells in place (the same boxes) and left their ports as they were, no neighbour can see it.
-  const bool seen_from_outside = [&] {
-    if (old_ports.size() != changed.size()) return true;
-    for (const Box64& box : changed) {
-      const auto it = old_ports.find(box);
-      if (it == old_ports.end() || it->second != flat(computed.at(box).ports)) return true;
-    }
-    return false;
-  }();
+  std::map<Box64, std::vector<std::int64_t>, BoxLess> new_ports;
+  for (const auto& [box, surface] : computed)
+    new_ports.emplace(box, game_detail::flatten(surface.ports));
+  const bool seen_from_outside = old_ports.size() != changed.size() ||
+                                 !std::equal(new_ports.begin(), new_ports.end(), old_ports.begin());
+  // A neighbour's covers come from the ports of the cells around it (the changed ones' new
+  // ports, the others' kept ones), so one whose covers stayed is never read; its own polygons
+  // are those it had (the change set names every cell the edit replaced).
   for (const Box64& box : seen_from_outside ? touching(world, changed, BoxSet{}) : BoxSet{}) {
-    const game_detail::CellPolygons polygons = game_detail::read_cell(world, box);
-    game_detail::SideSpans covers = game_detail::side_covers(polygons, options_.materials);
+    std::optional<game_detail::SideSpans> covers = covers_around(world, box, new_ports, cells_);
     const auto it = cells_.find(box);
-    if (it != cells_.end() && it->second.covers == flat(covers) &&
-        it->second.ids == game_detail::own_ids(polygons))
+    if (covers && it != cells_.end() && it->second.covers == game_detail::flatten(*covers))
       continue;
-    computed.emplace(box, game_detail::cell_surface(polygons, std::move(covers), w, options_));
+    game_detail::CellPolygons polygons = game_detail::read_cell(world, box);
+    if (!covers) covers = game_detail::side_covers(polygons, options_.materials);
+    computed.emplace(box, game_detail::cell_surface(polygons, std::move(*covers), w, options_));
   }
   // Chains around a point: the new ones where computed, the kept ones elsewhere.
   const game_detail::ChainsAround around = [&](Point64 p, std::vector<const SurfaceChain*>& out) {
@@ -181,7 +193,8 @@ ChainUpdate SurfaceTracker::replace_cells(const Landscape& world, const std::vec
       before.insert(before.end(), o->second.begin(), o->second.end());
       orphans.erase(o);
     }
-    record = {surface.ids, {}, flat(surface.covers), flat(surface.ports)};
+    record = {
+        surface.ids, {}, game_detail::flatten(surface.covers), game_detail::flatten(surface.ports)};
     for (const SurfaceChain& c : surface.chains) {
       const auto same = std::find_if(before.begin(), before.end(),
                                      [&](ChainId id) { return chains_.at(id) == c; });
