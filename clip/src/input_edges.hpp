@@ -46,7 +46,7 @@ void append_ring_edges(const std::vector<Ring>& rings, std::uint8_t channel, boo
                        EdgeList& out, const std::vector<std::uint32_t>* which = nullptr);
 
 // Appends the counter-clockwise ring of a box of positive area (min, then (max.x, min.y), max,
-// (min.x, max.y)) tagged polygon 0: a window, without a ring allocated for it.
-void append_box_edges(const Box64& box, std::uint8_t channel, EdgeList& out);
+// (min.x, max.y)) tagged polygon `tag`: a window, without a ring allocated for it.
+void append_box_edges(const Box64& box, std::uint8_t channel, std::int32_t tag, EdgeList& out);
 
 }  // namespace edgeland::detail
