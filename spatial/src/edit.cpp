@@ -11,9 +11,9 @@
 #include "changes.hpp"
 #include "check.hpp"
 #include "edgeland/kernel/wkt_writer.hpp"
+#include "edit_log.hpp"
 #include "ids.hpp"
 #include "landscape_access.hpp"
-#include "edit_log.hpp"
 #include "shape_cut.hpp"
 
 namespace edgeland {

@@ -5,8 +5,8 @@
 #include "check.hpp"
 #include "edgeland/kernel/area.hpp"
 #include "edit.hpp"
-#include "landscape_access.hpp"
 #include "edit_log.hpp"
+#include "landscape_access.hpp"
 #include "state_hash.hpp"
 
 namespace edgeland {

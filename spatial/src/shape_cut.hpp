@@ -11,8 +11,8 @@
 // (as the uncut overlay rounds it there) and then again where a piece crosses the cell's own
 // boundaries: two roundings of the shape's edges near cell lines instead of one, the landscape's
 // own boundaries still rounded once. Small shapes are never cut (their results are unchanged, bit
-// for bit): only a shape of kCutFromVertices vertices or more (a game's explosion has 16-64) whose members reach the touched
-// cells kCutFactor times over or more.
+// for bit): only a shape of kCutFromVertices vertices or more (a game's explosion has 16-64) whose
+// members reach the touched cells kCutFactor times over or more.
 #include <cstddef>
 #include <optional>
 #include <unordered_map>
