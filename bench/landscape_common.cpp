@@ -71,12 +71,17 @@ Material material_at(const World& world, Point64 p) {
 
 bool is_landscape(const World& world) { return std::holds_alternative<Landscape>(world); }
 
-std::vector<double> time_edits(World& world, EditKind kind, const std::vector<ValidSet>& shapes,
-                               Material material) {
+std::vector<Edit> edits_of(EditKind kind, const std::vector<ValidSet>& shapes, Material material) {
+  std::vector<Edit> out;
+  out.reserve(shapes.size());
+  for (const ValidSet& shape : shapes) out.push_back({shape, kind, material});
+  return out;
+}
+
+std::vector<double> time_edits(World& world, const std::vector<Edit>& edits) {
   std::vector<double> seconds;
-  seconds.reserve(shapes.size());
-  for (const ValidSet& shape : shapes)
-    seconds.push_back(seconds_of([&] { apply(world, kind, shape, material); }));
+  seconds.reserve(edits.size());
+  for (const Edit& e : edits) seconds.push_back(seconds_of([&] { apply_edit(world, e); }));
   return seconds;
 }
 
@@ -84,13 +89,12 @@ std::size_t repeats() {
   return std::max<std::size_t>(1, env_count("EDGELAND_LANDSCAPE_REPEATS", 5));
 }
 
-std::vector<double> fastest_edits(const World& start, EditKind kind,
-                                  const std::vector<ValidSet>& shapes, Material material,
+std::vector<double> fastest_edits(const World& start, const std::vector<Edit>& edits,
                                   std::optional<World>& end) {
   std::vector<double> fastest;
   for (std::size_t r = 0; r < repeats(); ++r) {
     end.emplace(start);
-    const std::vector<double> seconds = time_edits(*end, kind, shapes, material);
+    const std::vector<double> seconds = time_edits(*end, edits);
     if (r == 0) fastest = seconds;
     for (std::size_t i = 0; i < seconds.size(); ++i) fastest[i] = std::min(fastest[i], seconds[i]);
   }

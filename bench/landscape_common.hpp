@@ -37,6 +37,15 @@ World make_world(Rival rival, const Box64& box, Material fill);
 
 enum class EditKind : std::uint8_t { kCarve, kFill };
 void apply(World& world, EditKind kind, const ValidSet& shape, Material material);
+// One edit of a workload: carve the shape, or fill it with the material.
+struct Edit {
+  ValidSet shape;
+  EditKind kind = EditKind::kCarve;
+  Material material = kEmpty;
+};
+inline void apply_edit(World& world, const Edit& e) { apply(world, e.kind, e.shape, e.material); }
+// The shapes as edits of one kind.
+std::vector<Edit> edits_of(EditKind kind, const std::vector<ValidSet>& shapes, Material material);
 Material material_at(const World& world, Point64 p);
 bool is_landscape(const World& world);
 
@@ -49,9 +58,8 @@ double seconds_of(F&& f) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-// Applies every shape in turn, timing each edit.
-std::vector<double> time_edits(World& world, EditKind kind, const std::vector<ValidSet>& shapes,
-                               Material material);
+// Applies every edit in turn, timing each one.
+std::vector<double> time_edits(World& world, const std::vector<Edit>& edits);
 
 // EDGELAND_LANDSCAPE_REPEATS (default 5): how often a timed run is repeated from the same start,
 // keeping each edit's (or batch's) fastest time. The edits are deterministic, so every repeat
@@ -60,8 +68,7 @@ std::size_t repeats();
 
 // time_edits from `start`, repeats() times; each edit's fastest time. `end` receives the world
 // after the edits.
-std::vector<double> fastest_edits(const World& start, EditKind kind,
-                                  const std::vector<ValidSet>& shapes, Material material,
+std::vector<double> fastest_edits(const World& start, const std::vector<Edit>& edits,
                                   std::optional<World>& end);
 
 // Query timing: per-query seconds of each batch of kQueryBatch queries (one steady_clock read
@@ -132,5 +139,6 @@ void register_scaling_benchmarks();
 void register_crossover_benchmarks();
 void register_snapshot_benchmarks();
 void register_save_load_benchmarks();
+void register_big_shape_benchmarks();
 
 }  // namespace edgeland::bench

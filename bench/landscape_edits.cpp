@@ -1,13 +1,8 @@
 // Edits on an 8192 x 8192 world (thesis chapter 5: "small but continuous modifications", where
 // the pixel landscape is expected to be unbeatable): per-edit median, p99 and the median of
 // every block of edits (flat blocks = the cost does not grow as the world is worn down), for
-// the landscape as quadtree, kd-tree and uniform grid, and for the bitmap.
-//
-//   carve: EDITS 32-gons of radius 40 at seeded random centres, into a world of material 1.
-//   dig:   a tunnel digger: EDITS capsule strokes of radius 20 (32-gon caps) along a random
-//          walk, 10 units per step, carved into a world of material 1.
-//   fill:  EDITS 32-gons of radius 40 of material 2 at other centres, filled into the world the
-//          carve workload left (about half of it carved: 10,000 such holes leave 47% solid).
+// the landscape as quadtree, kd-tree and uniform grid, and for the bitmap. The workloads
+// (carve, dig, fill, spot) are landscape_workloads.hpp's.
 //
 // Names landscape_edit/WORKLOAD/RIVAL/EDITS, EDITS from EDGELAND_LANDSCAPE_EDITS (default
 // 10000), blocks of EDGELAND_LANDSCAPE_BLOCK (1000); each edit's time is its fastest of
@@ -21,36 +16,19 @@
 #include <string>
 
 #include "landscape_common.hpp"
-#include "landscape_shapes.hpp"
+#include "landscape_workloads.hpp"
 
 namespace edgeland::bench {
 namespace {
 
-constexpr std::int64_t kSide = 8192;
-constexpr Box64 kWorld{{0, 0}, {kSide, kSide}};
-
-enum class Workload : std::uint8_t { kCarve, kDig, kFill };
-const char* workload_name(Workload w) {
-  return w == Workload::kCarve ? "carve" : w == Workload::kDig ? "dig" : "fill";
-}
-
 std::size_t edit_count() { return env_count("EDGELAND_LANDSCAPE_EDITS", 10000); }
 
-const std::vector<ValidSet>& shapes(Workload w) {
-  static std::map<Workload, std::vector<ValidSet>> cache;
+const std::vector<Edit>& edits(Workload w) {
+  static std::map<Workload, std::vector<Edit>> cache;
   auto it = cache.find(w);
-  if (it == cache.end()) {
-    const std::size_t n = edit_count();
-    it = cache
-             .emplace(w, w == Workload::kCarve ? explosions(kCarveSeed, n, kWorld)
-                         : w == Workload::kDig ? digger_strokes(kDigSeed, n, kWorld)
-                                               : explosions(kFillSeed, n, kWorld))
-             .first;
-  }
+  if (it == cache.end()) it = cache.emplace(w, workload_edits(w, edit_count())).first;
   return it->second;
 }
-
-EditKind kind_of(Workload w) { return w == Workload::kFill ? EditKind::kFill : EditKind::kCarve; }
 
 // The world each rival ends the carve workload with: the fill workload's start. Kept from the
 // carve benchmark's own run (a landscape copy is O(1)), made here when that was filtered out.
@@ -60,12 +38,12 @@ std::map<Rival, World>& carved_worlds() {
 }
 
 World start_world(Workload w, Rival rival) {
-  if (w != Workload::kFill) return make_world(rival, kWorld, 1);
+  if (w != Workload::kFill) return make_world(rival, kEditWorld, 1);
   auto& cache = carved_worlds();
   auto it = cache.find(rival);
   if (it == cache.end()) {
-    World world = make_world(rival, kWorld, 1);
-    time_edits(world, EditKind::kCarve, shapes(Workload::kCarve), kEmpty);
+    World world = make_world(rival, kEditWorld, 1);
+    time_edits(world, edits(Workload::kCarve));
     it = cache.emplace(rival, std::move(world)).first;
   }
   return it->second;
@@ -78,7 +56,7 @@ struct RunResult {
 
 RunResult run_once(Workload w, Rival rival) {
   RunResult r;
-  r.seconds = fastest_edits(start_world(w, rival), kind_of(w), shapes(w), 2, r.world);
+  r.seconds = fastest_edits(start_world(w, rival), edits(w), r.world);
   return r;
 }
 
@@ -129,7 +107,7 @@ World carve_workload_end(Rival rival) { return start_world(Workload::kFill, riva
 
 void register_edit_benchmarks() {
   const std::string edits = std::to_string(edit_count());
-  for (Workload w : {Workload::kCarve, Workload::kDig, Workload::kFill}) {
+  for (Workload w : kWorkloads) {
     for (Rival rival : {Rival::kBitmap, Rival::kQuadtree, Rival::kKdTree, Rival::kGrid}) {
       const std::string name =
           std::string("landscape_edit/") + workload_name(w) + "/" + rival_name(rival) + "/" + edits;

@@ -12,6 +12,7 @@ int main(int argc, char** argv) {
   edgeland::bench::register_crossover_benchmarks();
   edgeland::bench::register_snapshot_benchmarks();
   edgeland::bench::register_save_load_benchmarks();
+  edgeland::bench::register_big_shape_benchmarks();
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   benchmark::RunSpecifiedBenchmarks();

@@ -98,7 +98,7 @@ Scaled run_scaled(Rival rival, std::int64_t side) {
     apply(start, EditKind::kCarve, all[i], kEmpty);
   const std::vector<ValidSet> last(all.end() - static_cast<std::ptrdiff_t>(timed), all.end());
   Scaled s;
-  s.edit_seconds = fastest_edits(start, EditKind::kCarve, last, kEmpty, s.world);
+  s.edit_seconds = fastest_edits(start, edits_of(EditKind::kCarve, last, kEmpty), s.world);
   if (rival == Rival::kQuadtree) quadtree_worlds().insert_or_assign(side, *s.world);
   auto it = quadtree_worlds().find(side);
   if (it == quadtree_worlds().end())

@@ -50,6 +50,7 @@ def error_or(b, key):
 
 
 RIVALS = ["bitmap", "quadtree", "kdtree", "grid"]
+WORKLOADS = ["carve", "dig", "fill", "spot"]
 
 
 def edit_tables(r):
@@ -60,7 +61,7 @@ def edit_tables(r):
         if parts[0] != "landscape_edit":
             continue
         workload, rival = parts[1], parts[2]
-        rows.append((["carve", "dig", "fill"].index(workload), RIVALS.index(rival), [
+        rows.append((WORKLOADS.index(workload), RIVALS.index(rival), [
             workload, rival, error_or(b, "median_us"), b.get("p99_us"), b.get("mean_us"),
             b.get("median_vs_bitmap"), b.get("p99_vs_bitmap"), b.get("flatness"),
             b.get("vertices"), b.get("cells"), b.get("bytes")]))
@@ -71,7 +72,7 @@ def edit_tables(r):
     out.append(table(["workload", "rival", "median us", "p99 us", "mean us", "median / bitmap",
                       "p99 / bitmap", "flatness (last block / first)", "vertices", "cells", "bytes"],
                      [t[2] for t in rows]))
-    for workload in ["carve", "dig", "fill"]:
+    for workload in WORKLOADS:
         if workload not in blocks:
             continue
         per = blocks[workload]

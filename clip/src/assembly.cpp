@@ -33,12 +33,18 @@ std::vector<std::vector<std::uint32_t>> split_at_repeated_vertices(
 }
 
 Ring ring_along(const PlaneGraph& g, const std::uint32_t* first, const std::uint32_t* last) {
+  Ring ring;
+  ring_along_into(g, first, last, ring);
+  return ring;
+}
+
+void ring_along_into(const PlaneGraph& g, const std::uint32_t* first, const std::uint32_t* last,
+                     std::vector<Point64>& ring) {
   std::size_t points = 0;
   for (const std::uint32_t* h = first; h != last; ++h) points += 1 + g.interior_count(*h >> 1);
-  Ring ring;
+  ring.clear();
   ring.reserve(points);
   for (const std::uint32_t* h = first; h != last; ++h) g.append_points(*h, ring);
-  return ring;
 }
 
 namespace {
@@ -98,12 +104,12 @@ BoundaryWalks trace_boundaries(const PlaneGraph& g, const std::vector<FaceLabel>
 namespace {
 
 // The points where two rings of one region touch, sorted (a point appears in several rings).
-std::vector<Point64> shared_points(const RegionRings& region) {
-  std::vector<Point64> all;
+ScratchVector<Point64> shared_points(const RegionRings& region) {
+  ScratchVector<Point64> all;
   for (const auto* rings : {&region.outers, &region.holes})
     for (const Ring& r : *rings) all.insert(all.end(), r.begin(), r.end());
   std::sort(all.begin(), all.end());
-  std::vector<Point64> shared;
+  ScratchVector<Point64> shared;
   for (std::size_t i = 1; i < all.size(); ++i)
     if (all[i] == all[i - 1] && (shared.empty() || shared.back() != all[i]))
       shared.push_back(all[i]);
@@ -112,9 +118,9 @@ std::vector<Point64> shared_points(const RegionRings& region) {
 
 // A region's rings reduced to its corners and shared points (Assembled, corner_bridges).
 void keep_corners_and_shared_points(RegionRings& region) {
-  const std::vector<Point64> shared = shared_points(region);
+  const ScratchVector<Point64> shared = shared_points(region);
   for (auto* rings : {&region.outers, &region.holes})
-    for (Ring& r : *rings) r = drop_collinear_except(r, shared);
+    for (Ring& r : *rings) drop_collinear_except(r, shared);
 }
 
 }  // namespace
@@ -148,17 +154,23 @@ struct LoopSpan {
 // vertices, or chain points when an operand ring had collinear consecutive vertices.
 class RingWriter {
  public:
-  RingWriter(const PlaneGraph& g, bool collinear_free_operands, std::size_t walks, Assembled& out)
-      : g_(g), check_chains_(collinear_free_operands ? 0 : 1), out_(out) {
-    out.rings.reserve(walks);
+  RingWriter(const PlaneGraph& g, bool collinear_free_operands, std::size_t walks)
+      : g_(g), check_chains_(collinear_free_operands ? 0 : 1) {
+    ring_begin_.reserve(walks + 1);
+    ring_begin_.push_back(0);
     ring_label.reserve(walks);
     outer.reserve(walks);
   }
   // Adds the loop [first, last) of half-edges; false when it encloses no area.
   bool add_loop(FaceLabel label, const std::uint32_t* first, const std::uint32_t* last);
+  std::size_t size() const { return ring_label.size(); }
+  // Ring i as an output polygon (allocated once, at its size).
+  Ring ring(std::size_t i) const {
+    return Ring(ring_points_.begin() + ring_begin_[i], ring_points_.begin() + ring_begin_[i + 1]);
+  }
 
-  std::vector<FaceLabel> ring_label;  // of out.rings[i]
-  std::vector<bool> outer;            // out.rings[i] turns counter-clockwise
+  ScratchVector<FaceLabel> ring_label;  // of ring i
+  ScratchVector<std::uint8_t> outer;    // ring i turns counter-clockwise
   std::size_t holes = 0;
 
  private:
@@ -166,9 +178,12 @@ class RingWriter {
 
   const PlaneGraph& g_;
   const std::uint8_t check_chains_;
-  Assembled& out_;
   ScratchVector<Point64> points_;
   ScratchVector<std::uint8_t> check_;  // which points may be dropped
+  // The canonical rings written, flat: ring i is ring_points_[ring_begin_[i] .. [i + 1]). Only
+  // the rings of labels without holes become output polygons; the rest are traced again.
+  ScratchVector<Point64> ring_, ring_points_;
+  ScratchVector<std::uint32_t> ring_begin_;
 };
 
 // The loop's points into points_, with check_ marking those canonical_ring_from tests for
@@ -202,16 +217,18 @@ bool RingWriter::add_loop(FaceLabel label, const std::uint32_t* first, const std
   const std::size_t least = gather_points(first, last, chains);
   int turn = 0;
   // Without chain points every point is a graph vertex, each one tested.
-  Ring ring = canonical_ring_from(points_, chains ? check_.data() : nullptr, least, turn);
+  canonical_ring_into(points_, chains ? check_.data() : nullptr, least, turn, ring_);
   if (turn == 0) {
     // Not expected of a face boundary (simple, so nonzero area means a convex smallest
     // vertex); decided by the area as before, should it happen. Not reached by tests.
     const Int128 area = points_.size() < 3 ? 0 : twice_signed_area(points_);
     if (area == 0) return false;
-    ring = canonical_ring(Ring(points_.begin(), points_.end()));
+    const Ring r = canonical_ring(Ring(points_.begin(), points_.end()));
+    ring_.assign(r.begin(), r.end());
     turn = area > 0 ? 1 : -1;
   }
-  out_.rings.push_back(std::move(ring));
+  ring_points_.insert(ring_points_.end(), ring_.begin(), ring_.end());
+  ring_begin_.push_back(static_cast<std::uint32_t>(ring_points_.size()));
   ring_label.push_back(label);
   outer.push_back(turn > 0);
   if (turn < 0) ++holes;
@@ -253,10 +270,10 @@ class RegionSorter {
   void run(bool corner_bridges, Assembled& out) const;
 
  private:
-  Ring traced(std::uint32_t r) const {
+  void trace(std::uint32_t r, std::vector<Point64>& ring) const {
     const LoopSpan& l = loops_[r];
     const std::uint32_t* base = l.split ? split_loops_.data() : walks_.half_edges.data();
-    return ring_along(g_, base + l.begin, base + l.end);
+    ring_along_into(g_, base + l.begin, base + l.end, ring);
   }
 
   const PlaneGraph& g_;
@@ -268,18 +285,22 @@ class RegionSorter {
 
 void RegionSorter::run(bool corner_bridges, Assembled& out) const {
   const auto& label = writer_.ring_label;
-  std::vector<std::uint32_t> order(out.rings.size());
+  ScratchVector<std::uint32_t> order;
+  order.resize(writer_.size());
+  out.rings.reserve(writer_.size());
   for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::stable_sort(order.begin(), order.end(),
-                   [&](std::uint32_t x, std::uint32_t y) { return label[x] < label[y]; });
-  std::vector<Ring> kept;
+  // By label, in their order within one (std::sort with the index as tie-break: what a stable
+  // sort gives, without its buffer).
+  std::sort(order.begin(), order.end(), [&](std::uint32_t x, std::uint32_t y) {
+    return label[x] != label[y] ? label[x] < label[y] : x < y;
+  });
   for (std::size_t i = 0, j; i < order.size(); i = j) {
     bool with_holes = false;
     for (j = i; j < order.size() && label[order[j]] == label[order[i]]; ++j)
       with_holes = with_holes || !writer_.outer[order[j]];
     if (!with_holes) {
       for (std::size_t k = i; k < j; ++k) {
-        kept.push_back(std::move(out.rings[order[k]]));
+        out.rings.push_back(writer_.ring(order[k]));
         out.labels.push_back(label[order[k]]);
       }
       continue;
@@ -287,10 +308,9 @@ void RegionSorter::run(bool corner_bridges, Assembled& out) const {
     RegionRings& region = out.holed.emplace_back();
     region.label = label[order[i]];
     for (std::size_t k = i; k < j; ++k)
-      (writer_.outer[order[k]] ? region.outers : region.holes).push_back(traced(order[k]));
+      trace(order[k], (writer_.outer[order[k]] ? region.outers : region.holes).emplace_back());
     if (corner_bridges) keep_corners_and_shared_points(region);
   }
-  out.rings = std::move(kept);
 }
 
 }  // namespace
@@ -304,12 +324,14 @@ Assembled assemble(const PlaneGraph& g, const std::vector<SideState>& left, cons
   label_boundary_half_edges(g, left, label_of, emitted);
   const BoundaryWalks walks = trace_boundaries(g, emitted);
   Assembled out;
-  RingWriter writer(g, collinear_free_operands, walks.size(), out);
-  ScratchVector<LoopSpan> loops;  // one per ring of out.rings
+  RingWriter writer(g, collinear_free_operands, walks.size());
+  ScratchVector<LoopSpan> loops;  // one per ring written
   ScratchVector<std::uint32_t> split_loops;
   write_loops(g, walks, writer, loops, split_loops);
   if (writer.holes == 0) {
-    out.labels = std::move(writer.ring_label);
+    out.rings.reserve(writer.size());
+    for (std::size_t i = 0; i < writer.size(); ++i) out.rings.push_back(writer.ring(i));
+    out.labels.swap(writer.ring_label);
     return out;
   }
   RegionSorter(g, walks, loops, split_loops, writer).run(corner_bridges, out);

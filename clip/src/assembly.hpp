@@ -13,11 +13,15 @@
 
 namespace edgeland::detail {
 
+// A ring in scratch storage (scratch.hpp): the rings of a region with holes are read by hole
+// splitting and then dropped (its pieces are new rings).
+using ScratchRing = ScratchVector<Point64>;
+
 // The boundary of one labeled region, split into simple loops.
 struct RegionRings {
   FaceLabel label = -1;
-  std::vector<Ring> outers;  // counter-clockwise
-  std::vector<Ring> holes;   // clockwise
+  ScratchVector<ScratchRing> outers;  // counter-clockwise
+  ScratchVector<ScratchRing> holes;   // clockwise
 };
 
 // The assembled result: the rings of regions without holes, each a counter-clockwise output
@@ -31,8 +35,8 @@ struct RegionRings {
 // vertices the graph has depends on the operands, not only on the region).
 struct Assembled {
   std::vector<Ring> rings;
-  std::vector<FaceLabel> labels;
-  std::vector<RegionRings> holed;
+  ScratchVector<FaceLabel> labels;
+  ScratchVector<RegionRings> holed;
 };
 Assembled assemble(const PlaneGraph& g, const std::vector<SideState>& left, const LabelOf& label_of,
                    bool collinear_free_operands, bool corner_bridges = false);
@@ -60,5 +64,8 @@ std::vector<std::vector<std::uint32_t>> split_at_repeated_vertices(
 
 // The ring of points along the half-edges [first, last), allocated once at its final size.
 Ring ring_along(const PlaneGraph& g, const std::uint32_t* first, const std::uint32_t* last);
+// The same, into `ring` (cleared first).
+void ring_along_into(const PlaneGraph& g, const std::uint32_t* first, const std::uint32_t* last,
+                     std::vector<Point64>& ring);
 
 }  // namespace edgeland::detail

@@ -95,7 +95,8 @@ void for_each_overlapping_pair_in_grid(const std::vector<Box64>& boxes, F&& visi
     for_each_overlapping_pair(sorted_for_sweep(boxes), visit);
     return;
   }
-  std::vector<std::uint32_t> begin(g.cells + 1, 0);
+  ScratchVector<std::uint32_t> begin;
+  begin.assign(g.cells + 1, 0);
   for (const Box64& b : boxes) g.for_cells(b, [&](std::size_t k) { ++begin[k + 1]; });
   // Cells sized for the typical box's longer side can hold thousands of thin ones (the teeth of
   // a comb 10^8 long and 40 wide: one cell, all pairs). When the cells' pairs are many, count
@@ -104,15 +105,16 @@ void for_each_overlapping_pair_in_grid(const std::vector<Box64>& boxes, F&& visi
   for (std::size_t k = 1; k <= g.cells; ++k)
     cell_pairs += std::size_t{begin[k]} * (begin[k] - 1) / 2;
   if (cell_pairs > 8 * n + 1024) {
-    const std::vector<SweepBox> sorted = sorted_for_sweep(boxes);
+    const ScratchVector<SweepBox> sorted = sorted_for_sweep(boxes);
     if (x_overlapping_pairs(sorted, cell_pairs) < cell_pairs) {
       for_each_overlapping_pair(sorted, visit);
       return;
     }
   }
   add_up_counts(begin);
-  std::vector<std::uint32_t> items(begin[g.cells]);
-  std::vector<std::uint32_t> fill(begin.begin(), begin.end() - 1);
+  ScratchVector<std::uint32_t> items, fill;
+  items.resize(begin[g.cells]);
+  fill.assign(begin.begin(), begin.end() - 1);
   for (std::uint32_t i = 0; i < n; ++i)
     g.for_cells(boxes[i], [&](std::size_t k) { items[fill[k]++] = i; });
   visit_pairs_by_cell(boxes, g, begin, items, visit);

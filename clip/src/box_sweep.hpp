@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "edgeland/kernel/bbox.hpp"
+#include "edgeland/kernel/scratch.hpp"
 
 namespace edgeland::detail {
 
@@ -16,14 +17,21 @@ struct SweepBox {
   std::uint32_t id;
 };
 
-inline std::vector<SweepBox> sorted_for_sweep(const std::vector<Box64>& boxes) {
-  std::vector<SweepBox> s(boxes.size());
+// The boxes sorted by min x (then index) into `s`, in place: a caller keeping the array
+// (scratch storage) reuses it.
+inline void sort_for_sweep(const std::vector<Box64>& boxes, std::vector<SweepBox>& s) {
+  s.resize(boxes.size());
   for (std::size_t i = 0; i < boxes.size(); ++i)
     s[i] = {boxes[i].min.x, boxes[i].max.x, boxes[i].min.y, boxes[i].max.y,
             static_cast<std::uint32_t>(i)};
   std::sort(s.begin(), s.end(), [](const SweepBox& a, const SweepBox& b) {
     return a.min_x != b.min_x ? a.min_x < b.min_x : a.id < b.id;
   });
+}
+
+inline ScratchVector<SweepBox> sorted_for_sweep(const std::vector<Box64>& boxes) {
+  ScratchVector<SweepBox> s;
+  sort_for_sweep(boxes, s);
   return s;
 }
 
@@ -56,7 +64,7 @@ void sweep_against(std::vector<SweepBox>& active, const SweepBox& b, F&& visit) 
 // Calls visit(i, j) once for every i < j whose boxes overlap. Order of calls is unspecified.
 template <class F>
 void for_each_overlapping_pair(const std::vector<SweepBox>& sorted, F&& visit) {
-  std::vector<SweepBox> active;
+  ScratchVector<SweepBox> active;
   for (const SweepBox& b : sorted) {
     sweep_against(active, b, [&](std::uint32_t o) { visit(std::min(o, b.id), std::max(o, b.id)); });
     active.push_back(b);
@@ -72,7 +80,7 @@ void for_each_overlapping_pair(const std::vector<Box64>& boxes, F&& visit) {
 template <class F>
 void for_each_overlapping_pair(const std::vector<SweepBox>& a, const std::vector<SweepBox>& b,
                                F&& visit) {
-  std::vector<SweepBox> active_a, active_b;
+  ScratchVector<SweepBox> active_a, active_b;
   std::size_t ia = 0, ib = 0;
   while (ia < a.size() || ib < b.size()) {
     if (ib == b.size() || (ia < a.size() && a[ia].min_x <= b[ib].min_x)) {

@@ -14,11 +14,15 @@ namespace edgeland::detail {
 
 Ring canonical_ring(Ring ring) {
   // The one-pass builder with every point tested: in a simple ring with nonzero area a
-  // collinear vertex is a straight continuation, never a fold-back.
+  // collinear vertex is a straight continuation, never a fold-back. Built in scratch storage
+  // and copied back into the ring's own (it only loses points): no allocation.
   const auto least =
       static_cast<std::size_t>(std::min_element(ring.begin(), ring.end()) - ring.begin());
   int turn = 0;
-  return canonical_ring_from(ring, nullptr, least, turn);
+  ScratchVector<Point64> out;
+  canonical_ring_into(ring, nullptr, least, turn, out);
+  ring.assign(out.begin(), out.end());
+  return ring;
 }
 
 namespace {
@@ -55,10 +59,17 @@ void canonical_marked(const std::vector<Point64>& points, const std::uint8_t* ch
 
 Ring canonical_ring_from(const std::vector<Point64>& points, const std::uint8_t* check,
                          std::size_t least, int& turn) {
-  const std::size_t n = points.size();
   Ring out;
+  canonical_ring_into(points, check, least, turn, out);
+  return out;
+}
+
+void canonical_ring_into(const std::vector<Point64>& points, const std::uint8_t* check,
+                         std::size_t least, int& turn, Ring& out) {
+  const std::size_t n = points.size();
+  out.clear();
   turn = 0;
-  if (n < 3) return out;
+  if (n < 3) return;
   out.reserve(n);
   if (check == nullptr) {
     // Every point tested: the plain stack algorithm, nothing to remember about drops.
@@ -77,9 +88,8 @@ Ring canonical_ring_from(const std::vector<Point64>& points, const std::uint8_t*
   while (out.size() > 3 &&
          orientation(out[out.size() - 2], out.back(), out[0]) == Orientation::kCollinear)
     out.pop_back();
-  if (out.size() < 3) return out;
+  if (out.size() < 3) return;
   turn = static_cast<int>(orientation(out.back(), out[0], out[1]));
-  return out;
 }
 
 bool collinear_free(const PolygonSet& set) {
@@ -107,29 +117,33 @@ void sort_canonical(PolygonSet& set, std::vector<std::int64_t>* labels) {
     if (!in_range(p.front())) fail_stage("canonical order", "vertex out of range");
     return point_key(p.front());
   };
-  std::vector<Key> keys(set.size());
+  // Permuted through scratch arrays, so the set and the labels keep their storage.
+  ScratchVector<Key> keys;
+  keys.resize(set.size());
   for (std::uint32_t i = 0; i < keys.size(); ++i) keys[i] = {key_of(set[i]), i};
   std::sort(keys.begin(), keys.end(), [&](const Key& x, const Key& y) {
     return x.first != y.first ? x.first < y.first : set[x.index] < set[y.index];
   });
-  PolygonSet sorted;
+  ScratchVector<Polygon> sorted;
   sorted.reserve(set.size());
   for (const Key& k : keys) sorted.push_back(std::move(set[k.index]));
-  set.swap(sorted);
+  for (std::size_t i = 0; i < sorted.size(); ++i) set[i] = std::move(sorted[i]);
   if (!labels) return;
-  std::vector<std::int64_t> permuted(keys.size());
+  ScratchVector<std::int64_t> permuted;
+  permuted.resize(keys.size());
   for (std::size_t i = 0; i < keys.size(); ++i) permuted[i] = (*labels)[keys[i].index];
-  labels->swap(permuted);
+  labels->assign(permuted.begin(), permuted.end());
 }
 
-Ring drop_collinear_except(const Ring& ring, const std::vector<Point64>& keep) {
+void drop_collinear_except(Ring& ring, const std::vector<Point64>& keep) {
   // The stack algorithm of canonical_ring from a point that stays (a corner: the smallest
-  // point of a simple ring is one), testing only points not in `keep`.
+  // point of a simple ring is one), testing only points not in `keep`; built in scratch
+  // storage and copied back into the ring's own.
   const std::size_t n = ring.size();
   const auto least =
       static_cast<std::size_t>(std::min_element(ring.begin(), ring.end()) - ring.begin());
   auto droppable = [&](Point64 p) { return !std::binary_search(keep.begin(), keep.end(), p); };
-  Ring out;
+  ScratchVector<Point64> out;
   out.reserve(n);
   for (std::size_t k = 0; k <= n; ++k) {
     const Point64 p = ring[(least + k) % n];
@@ -138,7 +152,7 @@ Ring drop_collinear_except(const Ring& ring, const std::vector<Point64>& keep) {
       out.pop_back();
     if (k < n) out.push_back(p);
   }
-  return out;
+  ring.assign(out.begin(), out.end());
 }
 
 }  // namespace edgeland::detail

@@ -21,6 +21,9 @@ Ring canonical_ring(Ring ring);
 // the ring is degenerate (then the ring returned may be anything). O(n).
 Ring canonical_ring_from(const std::vector<Point64>& points, const std::uint8_t* check,
                          std::size_t least, int& turn);
+// The same, into `out` (cleared first): scratch storage reused.
+void canonical_ring_into(const std::vector<Point64>& points, const std::uint8_t* check,
+                         std::size_t least, int& turn, Ring& out);
 
 // Whether no ring of `set` has three consecutive collinear vertices (cyclically). O(n).
 bool collinear_free(const PolygonSet& set);
@@ -29,9 +32,10 @@ bool collinear_free(const PolygonSet& set);
 // ring) are permuted along.
 void sort_canonical(PolygonSet& set, std::vector<std::int64_t>* labels = nullptr);
 
-// The ring with every point that is collinear with its neighbours dropped, except points listed
-// in `keep` (sorted): for a region's rings before hole splitting, where points two rings touch
-// at must stay. `ring` must be simple with nonzero area. O(n log k).
-Ring drop_collinear_except(const Ring& ring, const std::vector<Point64>& keep);
+// Drops every point of the ring that is collinear with its neighbours, except points listed in
+// `keep` (sorted): for a region's rings before hole splitting, where points two rings touch at
+// must stay. The result starts at its smallest point. `ring` must be simple with nonzero area.
+// O(n log k).
+void drop_collinear_except(Ring& ring, const std::vector<Point64>& keep);
 
 }  // namespace edgeland::detail

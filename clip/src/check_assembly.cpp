@@ -100,7 +100,7 @@ void check_region(const RegionRings& region, std::size_t index) {
 
 void check_assembled(const Assembled& assembled) {
   check_output_rings(assembled);
-  const std::vector<RegionRings>& holed = assembled.holed;
+  const auto& holed = assembled.holed;
   for (std::size_t i = 0; i < holed.size(); ++i) {
     check_region(holed[i], i);
     if (i > 0 && holed[i - 1].label >= holed[i].label)

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <optional>
+#include <span>
 #include <stdexcept>
 
 #include "assembly.hpp"
@@ -12,6 +13,8 @@
 #include "edgeland/kernel/point_in_polygon.hpp"
 #include "edgeland/kernel/predicates.hpp"
 #include "edgeland/kernel/ray.hpp"
+#include "edgeland/kernel/scratch.hpp"
+#include "offsets.hpp"
 #include "plane_graph.hpp"
 #include "point_key.hpp"
 
@@ -138,13 +141,14 @@ std::optional<Point64> bridge_target(Point64 o, const std::vector<Segment>& obst
 
 // The loops of a closed walk of points split where it revisits a point, each visiting every
 // point once.
-void split_at_repeats(std::vector<Point64> walk, std::vector<Ring>& out) {
+void split_at_repeats(const std::vector<Point64>& walk, std::vector<ScratchRing>& out) {
   // Most walks visit every point once: one sorted copy tells, and then the walk is the loop.
-  std::vector<std::uint64_t> keys(walk.size());
+  ScratchVector<std::uint64_t> keys;
+  keys.resize(walk.size());
   for (std::size_t i = 0; i < walk.size(); ++i) keys[i] = point_key(walk[i]);
   std::sort(keys.begin(), keys.end());
   if (std::adjacent_find(keys.begin(), keys.end()) == keys.end()) {
-    out.push_back(std::move(walk));
+    out.emplace_back().assign(walk.begin(), walk.end());
     return;
   }
   // (Not reached by the kernel, clip and spatial tests: no traced walk there revisits a point.)
@@ -152,26 +156,28 @@ void split_at_repeats(std::vector<Point64> walk, std::vector<Ring>& out) {
   for (Point64 p : walk) {
     const auto it = std::find(stack.begin(), stack.end(), p);
     if (it != stack.end()) {
-      out.emplace_back(it, stack.end());
+      out.emplace_back().assign(it, stack.end());
       stack.erase(it, stack.end());
     }
     stack.push_back(p);
   }
-  if (!stack.empty()) out.push_back(std::move(stack));
+  if (!stack.empty()) out.emplace_back().assign(stack.begin(), stack.end());
 }
 
 // The faces left of directed edges that meet only at shared endpoints (ring edges with the
 // inside on their left, bridges both ways), traced by the sharpest-left-turn rule of
 // assembly: at the end of an edge, turn clockwise from its reverse to the first edge leaving
-// there. Each edge is walked once; walks revisiting a point are split there. O(n log n).
-std::vector<Ring> trace_faces(const std::vector<Segment>& edges) {
+// there. Each edge is walked once; walks revisiting a point are split there. Appends the faces
+// to `out`. O(n log n).
+void trace_faces(const std::vector<Segment>& edges, std::vector<ScratchRing>& out) {
   const std::size_t m = edges.size();
   auto direction = [&](std::uint32_t e) {
     return Point64{edges[e].b.x - edges[e].a.x, edges[e].b.y - edges[e].a.y};
   };
   // Edges grouped by origin (one packed key each), a group of several counter-clockwise by
   // angle: most points have one edge leaving them, and then there is nothing to choose.
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> by_origin(m);
+  ScratchVector<std::pair<std::uint64_t, std::uint32_t>> by_origin;
+  by_origin.resize(m);
   for (std::uint32_t i = 0; i < m; ++i) by_origin[i] = {point_key(edges[i].a), i};
   std::sort(by_origin.begin(), by_origin.end());
   for (std::size_t i = 0; i < m;) {
@@ -200,11 +206,12 @@ std::vector<Ring> trace_faces(const std::vector<Segment>& edges) {
     });
     return (it == lo ? hi - 1 : it - 1)->second;
   };
-  std::vector<std::uint8_t> used(m, 0);
-  std::vector<Ring> out;
+  ScratchVector<std::uint8_t> used;
+  used.assign(m, 0);
+  ScratchVector<Point64> walk;
   for (std::uint32_t start = 0; start < m; ++start) {
     if (used[start]) continue;
-    std::vector<Point64> walk;
+    walk.clear();
     std::uint32_t e = start;
     do {
       used[e] = 1;
@@ -212,20 +219,19 @@ std::vector<Ring> trace_faces(const std::vector<Segment>& edges) {
       e = next_of(e);
     } while (e != start && !used[e]);
     if (e != start) fail_stage("hole splitting", "a face does not close");
-    split_at_repeats(std::move(walk), out);
+    split_at_repeats(walk, out);
   }
-  return out;
 }
 
-std::vector<Ring> split_holes_at_depth(std::vector<Ring> outers, std::vector<Ring> holes,
-                                       int depth);
+void split_holes_at_depth(std::vector<ScratchRing>& outers, std::vector<ScratchRing>& holes,
+                          int depth, std::vector<Ring>& out);
 
 // Cuts one outer ring with its holes. Two bridges per hole normally leave no hole; when bridges
 // of pinched holes meet at a single vertex a face can still enclose a loop touching it there,
 // and that loop is cut again, with fresh bridges, one level down.
-std::vector<Ring> split_one(const Ring& outer, std::vector<const Ring*> holes, int depth) {
-  std::vector<Segment> obstacles;
-  std::vector<Point64> vertices;
+void split_one(const Ring& outer, std::span<const Ring*> holes, int depth, std::vector<Ring>& out) {
+  ScratchVector<Segment> obstacles;
+  ScratchVector<Point64> vertices;
   auto add_ring = [&](const Ring& r) {
     for (std::size_t i = 0; i < r.size(); ++i) {
       obstacles.push_back(ring_edge(r, i));
@@ -237,7 +243,8 @@ std::vector<Ring> split_one(const Ring& outer, std::vector<const Ring*> holes, i
   const std::size_t ring_edges = obstacles.size();
   // Vertices of more than one ring (each ring visits a vertex once): where a hole already
   // touches another ring.
-  std::vector<Point64> shared = vertices;
+  ScratchVector<Point64> shared;
+  shared.assign(vertices.begin(), vertices.end());
   std::sort(shared.begin(), shared.end());
   auto touches_another_ring = [&](Point64 o) {
     const auto range = std::equal_range(shared.begin(), shared.end(), o);
@@ -260,35 +267,50 @@ std::vector<Ring> split_one(const Ring& outer, std::vector<const Ring*> holes, i
   }
 
   // Trace the faces of rings + bridges (each bridge usable once in each direction).
-  std::vector<Segment> directed(obstacles.begin(),
-                                obstacles.begin() + static_cast<std::ptrdiff_t>(ring_edges));
+  ScratchVector<Segment> directed;
+  directed.assign(obstacles.begin(), obstacles.begin() + static_cast<std::ptrdiff_t>(ring_edges));
   for (std::size_t i = ring_edges; i < obstacles.size(); ++i) {
     directed.push_back(obstacles[i]);
     directed.push_back({obstacles[i].b, obstacles[i].a});
   }
-  std::vector<Ring> pieces, left_holes;
-  for (Ring& ring : trace_faces(directed)) {
+  ScratchVector<ScratchRing> faces, pieces, left_holes;
+  trace_faces(directed, faces);
+  for (ScratchRing& ring : faces) {
     if (ring.size() < 3) continue;
     (twice_signed_area(ring) > 0 ? pieces : left_holes).push_back(std::move(ring));
   }
-  if (left_holes.empty()) return pieces;
+  if (left_holes.empty()) {
+    for (const ScratchRing& piece : pieces) out.emplace_back(piece.begin(), piece.end());
+    return;
+  }
   constexpr int kMaxDepth = 16;
   // Not reached by tests: one round of bridges leaves no hole; the depth limit is a defensive stop.
   if (depth >= kMaxDepth) fail_stage("hole splitting", "a piece is still a hole");
-  return split_holes_at_depth(std::move(pieces), std::move(left_holes), depth + 1);
+  split_holes_at_depth(pieces, left_holes, depth + 1, out);
 }
 
-std::vector<Ring> split_holes_at_depth(std::vector<Ring> outers, std::vector<Ring> holes,
-                                       int depth) {
-  if (holes.empty()) return outers;
-  std::vector<Box64> boxes(outers.size());
-  std::vector<Int128> areas(outers.size());
+// The outer rings in `outers` with the holes in `holes` (each inside one of them), cut into
+// hole-free pieces appended to `out`; a ring without holes is moved there as it is.
+void split_holes_at_depth(std::vector<ScratchRing>& outers, std::vector<ScratchRing>& holes,
+                          int depth, std::vector<Ring>& out) {
+  if (holes.empty()) {
+    for (const ScratchRing& r : outers) out.emplace_back(r.begin(), r.end());
+    return;
+  }
+  ScratchVector<Box64> boxes;
+  ScratchVector<Int128> areas;
+  boxes.resize(outers.size());
+  areas.resize(outers.size());
   for (std::size_t i = 0; i < outers.size(); ++i) {
     boxes[i] = *bounding_box(outers[i]);
     areas[i] = twice_signed_area(outers[i]);
   }
-  std::vector<std::vector<const Ring*>> owned(outers.size());
-  for (const Ring& h : holes) {
+  // Each hole's outer ring, then the holes grouped by it in one array (in their order).
+  ScratchVector<std::uint32_t> parent_of, first;
+  parent_of.resize(holes.size());
+  first.assign(outers.size() + 1, 0);
+  for (std::size_t k = 0; k < holes.size(); ++k) {
+    const ScratchRing& h = holes[k];
     const Box64 hb = *bounding_box(h);
     std::size_t parent = outers.size();
     for (std::size_t i = 0; i < outers.size(); ++i) {
@@ -297,25 +319,31 @@ std::vector<Ring> split_holes_at_depth(std::vector<Ring> outers, std::vector<Rin
       if (hole_inside(h, outers[i])) parent = i;
     }
     if (parent == outers.size()) fail_stage("hole splitting", "hole outside every ring");
-    owned[parent].push_back(&h);
+    parent_of[k] = static_cast<std::uint32_t>(parent);
+    ++first[parent + 1];
   }
-  std::vector<Ring> out;
+  add_up_counts(first);
+  ScratchVector<const Ring*> grouped;
+  ScratchVector<std::uint32_t> at;
+  grouped.resize(holes.size());
+  at.assign(first.begin(), first.end() - 1);
+  for (std::size_t k = 0; k < holes.size(); ++k) grouped[at[parent_of[k]]++] = &holes[k];
   for (std::size_t i = 0; i < outers.size(); ++i) {
-    if (owned[i].empty()) {
-      out.push_back(std::move(outers[i]));
+    if (first[i] == first[i + 1]) {
+      out.emplace_back(outers[i].begin(), outers[i].end());
       continue;
     }
-    for (Ring& piece : split_one(outers[i], owned[i], depth)) out.push_back(std::move(piece));
+    split_one(outers[i], std::span<const Ring*>(grouped.data() + first[i], first[i + 1] - first[i]),
+              depth, out);
   }
-  return out;
 }
 
 }  // namespace
 
-std::vector<Ring> split_holes(std::vector<Ring> outers, std::vector<Ring> holes,
-                              std::size_t& holes_split) {
+void split_holes(std::vector<ScratchRing>& outers, std::vector<ScratchRing>& holes,
+                 std::size_t& holes_split, std::vector<Ring>& out) {
   holes_split += holes.size();
-  return split_holes_at_depth(std::move(outers), std::move(holes), 0);
+  split_holes_at_depth(outers, holes, 0, out);
 }
 
 }  // namespace edgeland::detail

@@ -37,4 +37,15 @@ void append_ring_edges(const std::vector<Ring>& rings, std::uint8_t channel, boo
   out.next.resize(at);
 }
 
+void append_box_edges(const Box64& box, std::uint8_t channel, std::int32_t tag, EdgeList& out) {
+  const Point64 corners[4] = {box.min, {box.max.x, box.min.y}, box.max, {box.min.x, box.max.y}};
+  const auto first = static_cast<std::uint32_t>(out.size());
+  for (std::uint32_t i = 0; i < 4; ++i) {
+    out.segments.push_back({corners[i], corners[(i + 1) % 4]});
+    out.channel.push_back(channel);
+    out.polygon.push_back(tag);
+    out.next.push_back(i + 1 < 4 ? first + i + 1 : first);
+  }
+}
+
 }  // namespace edgeland::detail

@@ -45,4 +45,8 @@ struct EdgeList {
 void append_ring_edges(const std::vector<Ring>& rings, std::uint8_t channel, bool tag_polygons,
                        EdgeList& out, const std::vector<std::uint32_t>* which = nullptr);
 
+// Appends the counter-clockwise ring of a box of positive area (min, then (max.x, min.y), max,
+// (min.x, max.y)) tagged polygon `tag`: a window, without a ring allocated for it.
+void append_box_edges(const Box64& box, std::uint8_t channel, std::int32_t tag, EdgeList& out);
+
 }  // namespace edgeland::detail

@@ -1,13 +1,14 @@
 #include "labeling.hpp"
 
 #include <algorithm>
-#include <memory>
+#include <optional>
 #include <utility>
 
 #include "edgeland/kernel/angle.hpp"
 #include "edgeland/kernel/predicates.hpp"
 #include "edgeland/kernel/ray.hpp"
 #include "edgeland/kernel/scratch.hpp"
+#include "offsets.hpp"
 
 namespace edgeland::detail {
 namespace {
@@ -119,8 +120,8 @@ struct EdgeStretch {
   bool a_is_vertex, b_is_vertex;
 };
 
-std::vector<EdgeStretch> stretches_of(const PlaneGraph& g) {
-  std::vector<EdgeStretch> out;
+void stretches_of(const PlaneGraph& g, std::vector<EdgeStretch>& out) {
+  out.clear();
   out.reserve(2 * g.edge_count());
   for (std::uint32_t e = 0; e < g.edge_count(); ++e) {
     Point64 at = g.vertices[g.from(e)];
@@ -131,10 +132,11 @@ std::vector<EdgeStretch> stretches_of(const PlaneGraph& g) {
       at = nx;
     }
   }
-  return out;
 }
 
 // Which pieces span a given x: a segment tree over the distinct x coordinates of their ends.
+// Its nodes' lists are one array (CSR, offsets.hpp), filled in two passes over the pieces: a
+// vector per node cost hundreds of allocations per call on a cell with a few islands.
 class XStabbing {
  public:
   explicit XStabbing(const std::vector<EdgeStretch>& pieces) {
@@ -146,31 +148,39 @@ class XStabbing {
     xs_.erase(std::unique(xs_.begin(), xs_.end()), xs_.end());
     size_ = 1;
     while (size_ < 2 * xs_.size()) size_ <<= 1;
-    nodes_.resize(2 * size_);
-    for (std::uint32_t k = 0; k < pieces.size(); ++k) {
-      const std::size_t sa = slot(pieces[k].a.x), sb = slot(pieces[k].b.x);
-      insert(k, 2 * std::min(sa, sb), 2 * std::max(sa, sb));
-    }
+    begin_.assign(2 * size_ + 1, 0);
+    for_each_insertion(pieces, [&](std::size_t node, std::uint32_t) { ++begin_[node + 1]; });
+    add_up_counts(begin_);
+    items_.resize(begin_.back());
+    ScratchVector<std::uint32_t> at;
+    at.assign(begin_.begin(), begin_.end() - 1);
+    for_each_insertion(pieces, [&](std::size_t node, std::uint32_t k) { items_[at[node]++] = k; });
   }
   template <class F>
   void for_each_spanning(std::int64_t x, F&& f) const {
     for (std::size_t n = size_ + 2 * slot(x); n >= 1; n >>= 1)
-      for (std::uint32_t k : nodes_[n]) f(k);
+      for (std::uint32_t i = begin_[n]; i < begin_[n + 1]; ++i) f(items_[i]);
   }
 
  private:
   std::size_t slot(std::int64_t x) const {
     return static_cast<std::size_t>(std::lower_bound(xs_.begin(), xs_.end(), x) - xs_.begin());
   }
-  void insert(std::uint32_t k, std::size_t lo, std::size_t hi) {  // inclusive slots
-    for (std::size_t l = lo + size_, r = hi + size_ + 1; l < r; l >>= 1, r >>= 1) {
-      if (l & 1) nodes_[l++].push_back(k);
-      if (r & 1) nodes_[--r].push_back(k);
+  // visit(node, k) for every node piece k is listed in, pieces in order.
+  template <class F>
+  void for_each_insertion(const std::vector<EdgeStretch>& pieces, F&& visit) const {
+    for (std::uint32_t k = 0; k < pieces.size(); ++k) {
+      const std::size_t sa = slot(pieces[k].a.x), sb = slot(pieces[k].b.x);
+      const std::size_t lo = 2 * std::min(sa, sb), hi = 2 * std::max(sa, sb);  // inclusive
+      for (std::size_t l = lo + size_, r = hi + size_ + 1; l < r; l >>= 1, r >>= 1) {
+        if (l & 1) visit(l++, k);
+        if (r & 1) visit(--r, k);
+      }
     }
   }
-  std::vector<std::int64_t> xs_;
+  ScratchVector<std::int64_t> xs_;
   std::size_t size_ = 1;
-  std::vector<std::vector<std::uint32_t>> nodes_;
+  ScratchVector<std::uint32_t> begin_, items_;
 };
 
 // The highest feature of the labeled part of the graph directly below point p, and the state
@@ -248,8 +258,8 @@ bool label_sides(const PlaneGraph& g, LabelMode mode, std::vector<SideState>& le
   left.assign(2 * g.edge_count(), empty_state(mode));
   ScratchVector<std::uint8_t> visited;  // bytes: no bit masking
   visited.assign(nv, 0);
-  std::unique_ptr<XStabbing> stab;
-  std::vector<EdgeStretch> pieces;
+  std::optional<XStabbing> stab;
+  ScratchVector<EdgeStretch> pieces;
   constexpr int kScansBeforeTree = 4;
   int located = 0;
   // (vertex, known position)
@@ -263,9 +273,10 @@ bool label_sides(const PlaneGraph& g, LabelMode mode, std::vector<SideState>& le
     if (any_labeled) {
       // A few components are located by scanning every piece; from the fifth on, a segment
       // tree pays for itself.
-      if (pieces.empty()) pieces = stretches_of(g);
-      if (!stab && ++located > kScansBeforeTree) stab = std::make_unique<XStabbing>(pieces);
-      const Below below = find_below(g, pieces, stab.get(), visited, left, g.vertices[v0]);
+      if (pieces.empty()) stretches_of(g, pieces);
+      if (!stab && ++located > kScansBeforeTree) stab.emplace(pieces);
+      const Below below =
+          find_below(g, pieces, stab ? &*stab : nullptr, visited, left, g.vertices[v0]);
       if (below.found) base = below.above;
     }
     const std::uint32_t k0 = sector_containing(g, v0, {-1, 0});

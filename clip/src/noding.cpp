@@ -206,11 +206,10 @@ class PairVisit {
 void visit_candidate_pairs(const std::vector<Segment>& segments, SegmentSearch& search, bool walk,
                            bool simple_rings, const std::vector<std::uint32_t>& ring_of,
                            const PairVisit& visit) {
-  std::unique_ptr<SegmentGrid> walked;
-  if (walk) walked = std::make_unique<SegmentGrid>(segments);
-  for_each_candidate_pair(segments, search.index, walked.get(), simple_rings, ring_of.data(),
-                          visit);
-  if (walked) search.near.grid() = std::move(walked);
+  std::optional<SegmentGrid>& walked = search.near.grid();
+  if (walk) walked.emplace(segments);
+  for_each_candidate_pair(segments, search.index, walked ? &*walked : nullptr, simple_rings,
+                          ring_of.data(), visit);
 }
 
 }  // namespace

@@ -21,7 +21,7 @@ struct Contacts {
   // touched[s]: segment s meets another one anywhere except ring neighbours (next[s]) at their
   // one shared endpoint (find_contacts only): an untouched segment shares no point with
   // anything else.
-  std::vector<std::uint8_t> touched;
+  ScratchVector<std::uint8_t> touched;
   // Pairs of segments that meet other than at a shared endpoint.
   std::size_t intersections = 0;
   // Only when screening (below): noding stopped at a contact that proves an operand invalid;

@@ -75,13 +75,18 @@ bool screen_after_noding(Screening& screen, const Noded& noded, bool& check_cove
 // canonical form with their label, and all of them in canonical order.
 void collect_polygons(Assembled&& assembled, bool with_labels, PipelineResult& out) {
   out.clipped.polygons = std::move(assembled.rings);  // canonical rings
-  out.labels = std::move(assembled.labels);
+  out.labels.swap(assembled.labels);
+  // Every region's pieces first, so the result's vector grows once.
+  ScratchVector<Ring> pieces;
+  ScratchVector<FaceLabel> piece_labels;
   for (RegionRings& region : assembled.holed) {
-    for (Ring& r : split_holes(std::move(region.outers), std::move(region.holes),
-                               out.clipped.stats.holes_split)) {
-      out.clipped.polygons.push_back(canonical_ring(std::move(r)));
-      out.labels.push_back(region.label);
-    }
+    split_holes(region.outers, region.holes, out.clipped.stats.holes_split, pieces);
+    piece_labels.resize(pieces.size(), region.label);
+  }
+  out.clipped.polygons.reserve(out.clipped.polygons.size() + pieces.size());
+  for (std::size_t i = 0; i < pieces.size(); ++i) {
+    out.clipped.polygons.push_back(canonical_ring(std::move(pieces[i])));
+    out.labels.push_back(piece_labels[i]);
   }
   sort_canonical(out.clipped.polygons, with_labels ? &out.labels : nullptr);
   if (!with_labels) out.labels.clear();
@@ -113,7 +118,8 @@ PipelineResult run(const Pipeline& p, std::vector<Box64>* moved_boxes, bool with
   out.clipped.stats.intersections = noded.contacts.intersections;
   out.clipped.stats.vertices_snapped = noded.snapped.hot_pixels;
   out.clipped.stats.zero_area_dropped = graph.cancelled_edges;
-  if (moved_boxes) *moved_boxes = std::move(noded.snapped.moved_boxes);
+  if (moved_boxes)
+    moved_boxes->assign(noded.snapped.moved_boxes.begin(), noded.snapped.moved_boxes.end());
   return out;
 }
 

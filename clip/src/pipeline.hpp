@@ -70,7 +70,7 @@ struct Pipeline {
 // label each came from (labels[i] for polygons[i]).
 struct PipelineResult {
   ClipResult clipped;
-  std::vector<FaceLabel> labels;
+  ScratchVector<FaceLabel> labels;
 };
 
 // Runs the stages on p.edges. moved_boxes (optional): the boxes of every segment snap rounding

@@ -41,6 +41,12 @@ class PipelineBuilder {
     append_ring_edges(polygons, kClipChannel, true, p_.edges, members);
     return *this;
   }
+  // A box as a clip operand ring (counter-clockwise from min), its edges tagged `tag`: no ring
+  // built for it, as a labeled overlay's window is added on every call.
+  PipelineBuilder& clip_box(const Box64& box, std::int32_t tag = 0) {
+    append_box_edges(box, kClipChannel, tag, p_.edges);
+    return *this;
+  }
   // normalize()'s rings: one untagged operand (winding numbers), rings that may cross
   // themselves.
   PipelineBuilder& winding_rings(const std::vector<Ring>& rings) {

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "edgeland/kernel/point.hpp"
+#include "edgeland/kernel/scratch.hpp"
 
 namespace edgeland::detail {
 
@@ -40,7 +41,8 @@ class PointSet {
     std::size_t want = 16;
     while (want < 2 * count) want *= 2;
     if (want <= slots_.size()) return;
-    std::vector<Point64> old(want, kEmpty);
+    ScratchVector<Point64> old;
+    old.assign(want, kEmpty);
     old.swap(slots_);
     size_ = 0;
     for (Point64 p : old)
@@ -57,7 +59,7 @@ class PointSet {
                                   std::numeric_limits<std::int64_t>::min()};
   std::size_t home(Point64 p) const { return Point64Hash{}(p) & (slots_.size() - 1); }
   void grow() { reserve(std::max<std::size_t>(8, slots_.size())); }
-  std::vector<Point64> slots_;  // a power of two in size, at most half full
+  ScratchVector<Point64> slots_;  // a power of two in size, at most half full
   std::size_t size_ = 0;
 };
 

@@ -18,6 +18,16 @@ void require_labels(const ValidSet& regions, std::span<const RegionLabel> labels
     if (labels[i] == kNoRegion) throw InvalidOverlay(InvalidOverlay::Reason::kZeroLabel, i);
 }
 
+// Whether no two of a few boxes have interiors in common (a split's children: four at most),
+// compared pairwise; many boxes (or any overlap, to name the window) go to validate().
+bool interiors_disjoint(std::span<const Box64> boxes) {
+  if (boxes.size() > 16) return false;
+  for (std::size_t i = 0; i < boxes.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (boxes[i].overlaps_open(boxes[j])) return false;
+  return true;
+}
+
 void require_window(const Box64& w, std::size_t index) {
   if (!in_range(w.min) || !in_range(w.max) || !w.has_interior())
     throw InvalidOverlay(InvalidOverlay::Reason::kBadWindow, index);
@@ -27,9 +37,13 @@ void require_window(const Box64& w, std::size_t index) {
 LabeledSet labeled(detail::PipelineResult& r, std::size_t begin, std::size_t end,
                    RegionLabel (*label_of)(detail::FaceLabel)) {
   ClipResult part;
-  part.polygons.assign(
-      std::make_move_iterator(r.clipped.polygons.begin() + static_cast<std::ptrdiff_t>(begin)),
-      std::make_move_iterator(r.clipped.polygons.begin() + static_cast<std::ptrdiff_t>(end)));
+  if (begin == 0 && end == r.clipped.polygons.size()) {
+    part.polygons = std::move(r.clipped.polygons);  // all of it: no copy of the vector
+  } else {
+    part.polygons.assign(
+        std::make_move_iterator(r.clipped.polygons.begin() + static_cast<std::ptrdiff_t>(begin)),
+        std::make_move_iterator(r.clipped.polygons.begin() + static_cast<std::ptrdiff_t>(end)));
+  }
   LabeledSet out{ValidSetFactory::from(std::move(part)).set, {}};
   out.labels.reserve(end - begin);
   for (std::size_t i = begin; i < end; ++i) out.labels.push_back(label_of(r.labels[i]));
@@ -62,7 +76,7 @@ LabeledClipResult relabel(const ValidSet& regions, std::span<const RegionLabel> 
   // Shape members that cannot reach the window take no part. When all that do lie in the
   // window, being inside one of them is being inside shape ∩ window and the window's own ring
   // is not needed; otherwise it joins them and "inside both" is a count of two.
-  std::vector<std::uint32_t> near;
+  detail::ScratchVector<std::uint32_t> near;
   bool all_inside = true;
   for (std::uint32_t i = 0; i < shape.polygons().size(); ++i) {
     const Box64 b = *bounding_box(shape.polygons()[i]);
@@ -70,18 +84,19 @@ LabeledClipResult relabel(const ValidSet& regions, std::span<const RegionLabel> 
     near.push_back(i);
     all_inside = all_inside && window.contains(b);
   }
-  const PolygonSet window_rings{box_ring(window)};
   detail::RelabelTable rt{labels.data(), table.data(), table.size(), all_inside ? 1 : 2};
   // The two lambdas are called, and the unwinding of the builder below runs, only for an
   // internal error: not reached by tests.
   auto inputs = [&] { return to_wkt(members); };
-  auto shape_wkt = [&] { return to_wkt(shape.polygons()) + " within " + to_wkt(window_rings); };
+  auto shape_wkt = [&] {
+    return to_wkt(shape.polygons()) + " within " + to_wkt(PolygonSet{box_ring(window)});
+  };
   detail::PipelineResult r = detail::guarded(
       [&] {
         detail::PipelineBuilder p(detail::LabelMode::kOwnerAndCount, detail::LabelOf::relabel(rt),
                                   options.checked);
         p.subject(members).clip(shape.polygons(), &near);
-        if (!all_inside) p.clip(window_rings);
+        if (!all_inside) p.clip_box(window);
         return p
             .collinear_free(ValidSetFactory::collinear_free(regions) &&
                             ValidSetFactory::collinear_free(shape))
@@ -100,27 +115,31 @@ LabeledClipResult relabel(const ValidSet& regions, std::span<const RegionLabel> 
 std::vector<LabeledSet> cut_to_windows(const ValidSet& regions, std::span<const RegionLabel> labels,
                                        std::span<const Box64> windows, const ClipOptions& options) {
   require_labels(regions, labels);
-  PolygonSet window_rings;
-  for (std::size_t i = 0; i < windows.size(); ++i) {
-    require_window(windows[i], i);
-    window_rings.push_back(box_ring(windows[i]));
+  for (std::size_t i = 0; i < windows.size(); ++i) require_window(windows[i], i);
+  auto window_rings = [&] {
+    PolygonSet rings;
+    for (const Box64& w : windows) rings.push_back(box_ring(w));
+    return rings;
+  };
+  if (!interiors_disjoint(windows)) {
+    const ValidationReport disjoint = validate(window_rings(), 1);  // names the window
+    if (!disjoint.ok())
+      throw InvalidOverlay(InvalidOverlay::Reason::kWindowsOverlap,
+                           disjoint.violations.front().polygon);
   }
-  const ValidationReport disjoint = validate(window_rings, 1);
-  if (!disjoint.ok())
-    throw InvalidOverlay(InvalidOverlay::Reason::kWindowsOverlap,
-                         disjoint.violations.front().polygon);
   const PolygonSet& members = regions.polygons();
   // As in relabel(): the lambdas and the unwinding of the builder below run only for an
   // internal error, not reached by tests.
   auto inputs = [&] { return to_wkt(members); };
-  auto windows_wkt = [&] { return to_wkt(window_rings); };
+  auto windows_wkt = [&] { return to_wkt(window_rings()); };
   detail::PipelineResult r = detail::guarded(
       [&] {
-        return detail::PipelineBuilder(detail::LabelMode::kOwner,
-                                       detail::LabelOf::windows(labels.data()), options.checked)
-            .subject(members)
-            .clip(window_rings)
-            .collinear_free(ValidSetFactory::collinear_free(regions))
+        detail::PipelineBuilder p(detail::LabelMode::kOwner,
+                                  detail::LabelOf::windows(labels.data()), options.checked);
+        p.subject(members);
+        for (std::size_t k = 0; k < windows.size(); ++k)
+          p.clip_box(windows[k], static_cast<std::int32_t>(k));
+        return p.collinear_free(ValidSetFactory::collinear_free(regions))
             .corner_bridges()
             .run(nullptr, true);
       },

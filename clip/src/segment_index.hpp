@@ -94,7 +94,7 @@ class SegmentIndex {
   // Run boxes, sorted_for_sweep; sorted on first use (noding through the segment grid and
   // inputs without hot pixels never need them).
   const std::vector<SweepBox>& run_sweep() const {
-    if (run_sweep_.size() != run_boxes_.size()) run_sweep_ = sorted_for_sweep(run_boxes_);
+    if (run_sweep_.size() != run_boxes_.size()) sort_for_sweep(run_boxes_, run_sweep_);
     return run_sweep_;
   }
   mutable ScratchVector<SweepBox> run_sweep_;

@@ -3,7 +3,7 @@
 // the run index (segment_index.hpp) and, when built, a segment grid answering "which segments
 // pass near this point".
 #include <cstdint>
-#include <memory>
+#include <optional>
 #include <vector>
 
 #include "edgeland/kernel/polygon.hpp"
@@ -22,13 +22,13 @@ class SegmentsNear {
  public:
   explicit SegmentsNear(const std::vector<Segment>& segs) : segs_(segs) {}
   // Where noding leaves the grid it walked, if it walked one.
-  std::unique_ptr<SegmentGrid>& grid() { return grid_; }
-  bool has_grid() const { return grid_ != nullptr; }
+  std::optional<SegmentGrid>& grid() { return grid_; }
+  bool has_grid() const { return grid_.has_value(); }
   // visit(s) once for every segment with a point within L-infinity distance 1 of p (and for
   // some farther ones: callers test exactly).
   template <class F>
   void for_each(Point64 p, F&& visit) {
-    if (!grid_) grid_ = std::make_unique<SegmentGrid>(segs_);
+    if (!grid_) grid_.emplace(segs_);
     if (stamp_.empty() || token_ == kUnstamped - 1) {
       stamp_.assign(segs_.size(), kUnstamped);
       token_ = 0;
@@ -44,8 +44,8 @@ class SegmentsNear {
  private:
   static constexpr std::uint32_t kUnstamped = 0xffffffffu;
   const std::vector<Segment>& segs_;
-  std::unique_ptr<SegmentGrid> grid_;
-  std::vector<std::uint32_t> stamp_;
+  std::optional<SegmentGrid> grid_;
+  ScratchVector<std::uint32_t> stamp_;
   std::uint32_t token_ = 0;
 };
 

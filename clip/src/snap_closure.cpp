@@ -12,7 +12,7 @@
 // segment meets, so the region between them lies within half a unit (in x and y) of the segment.
 // Each round only looks at what is new.
 #include <algorithm>
-#include <memory>
+#include <optional>
 
 #include "box_sweep.hpp"
 #include "edgeland/kernel/pixel.hpp"
@@ -23,24 +23,24 @@
 namespace edgeland::detail::snap_steps {
 namespace {
 
-std::vector<Box64> pixel_boxes(const std::vector<Point64>& pts) {
-  std::vector<Box64> boxes(pts.size());
+ScratchVector<Box64> pixel_boxes(const std::vector<Point64>& pts) {
+  ScratchVector<Box64> boxes;
+  boxes.resize(pts.size());
   for (std::size_t i = 0; i < pts.size(); ++i) boxes[i] = pixel_box(pts[i]);
   return boxes;
 }
 
-// The polyline a segment is routed along: its ends, its exact split points and the centres of
-// the hot pixels it meets, in order along it.
-Ring route_of(const Segment& seg, std::vector<Point64> stops) {
+// The polyline a segment is routed along, into r: its ends, its exact split points and the
+// centres of the hot pixels it meets (`stops`, sorted here), in order along it.
+void route_of(const Segment& seg, std::vector<Point64>& stops, Ring& r) {
   std::sort(stops.begin(), stops.end(), [&](Point64 x, Point64 y) {
     const Int128 px = projection(seg, x), py = projection(seg, y);
     return px != py ? px < py : x < y;
   });
-  Ring r{seg.a};
+  r.assign(1, seg.a);
   for (Point64 p : stops)
     if (p != r.back() && p != seg.b) r.push_back(p);
   r.push_back(seg.b);
-  return r;
 }
 
 // Whether a batch of `queries` (points or segments) against `segments` segments is large
@@ -63,7 +63,8 @@ class HotSetClosure {
       fresh.clear();
       keep_moved_once();
       if (changed_.empty()) break;
-      routes_.assign(changed_.size(), Ring{});
+      routes_.clear();
+      routes_.resize(changed_.size());
       hot_stops_.reset();
       if (large_batch(changed_.size(), segs_.size())) {
         pin_by_vertex_pass(fresh);
@@ -91,10 +92,11 @@ class HotSetClosure {
   PointSet& is_hot_;
   Closure& c_;
   ScratchVector<std::uint32_t> changed_;  // segments met this round
-  std::vector<Ring> routes_;              // of changed_[k], built when first asked for
-  std::unique_ptr<StopsOf> hot_stops_;    // every hot centre met so far, by segment
-  std::vector<SweepBox> split_sweep_;     // the split points' pixel boxes, sorted when first needed
-  std::vector<std::uint32_t> slot_;       // segment -> its place in changed_, or kNoSlot
+  // Of changed_[k], built when first asked for (empty until then).
+  ScratchVector<ScratchVector<Point64>> routes_;
+  std::optional<StopsOf> hot_stops_;     // every hot centre met so far, by segment
+  ScratchVector<SweepBox> split_sweep_;  // the split points' pixel boxes, sorted when first needed
+  ScratchVector<std::uint32_t> slot_;    // segment -> its place in changed_, or kNoSlot
 };
 
 // Adds the fresh centres to the hot set and records every segment meeting their pixels.
@@ -123,7 +125,8 @@ void HotSetClosure::meet_fresh(const std::vector<Point64>& fresh) {
 // changed_: each segment met once, in increasing order, and only the moved ones.
 void HotSetClosure::keep_moved_once() {
   if (changed_.size() > segs_.size()) {  // many meetings: mark and list in order, no sort
-    std::vector<bool> met_now(segs_.size(), false);
+    ScratchVector<std::uint8_t> met_now;
+    met_now.assign(segs_.size(), false);
     for (std::uint32_t s : changed_) met_now[s] = true;
     changed_.clear();
     for (std::uint32_t s = 0; s < segs_.size(); ++s)
@@ -143,15 +146,15 @@ void HotSetClosure::keep_moved_once() {
 const Ring& HotSetClosure::route(std::uint32_t k) {
   if (!routes_[k].empty()) return routes_[k];
   if (!hot_stops_) {
-    std::vector<SegmentPoint> met;
+    ScratchVector<SegmentPoint> met;
     met.reserve(c_.meets.size());
     for (const auto& [s, h] : c_.meets) met.emplace_back(s, c_.hot[h]);
-    hot_stops_ = std::make_unique<StopsOf>(segs_.size(), met);
+    hot_stops_.emplace(segs_.size(), met);
   }
-  std::vector<Point64> stops;
+  ScratchVector<Point64> stops;
   hot_stops_->append(changed_[k], stops);
   in_.splits_of.append(changed_[k], stops);
-  routes_[k] = route_of(segs_[changed_[k]], std::move(stops));
+  route_of(segs_[changed_[k]], stops, routes_[k]);
   return routes_[k];
 }
 
@@ -196,7 +199,8 @@ void HotSetClosure::pin_by_vertex_pass(std::vector<Point64>& fresh) {
 // A few changed segments: box queries for the segment ends near them, a sweep for the split
 // points.
 void HotSetClosure::pin_by_box_queries(std::vector<Point64>& fresh) {
-  std::vector<Box64> boxes(changed_.size());
+  ScratchVector<Box64> boxes;
+  boxes.resize(changed_.size());
   for (std::size_t k = 0; k < changed_.size(); ++k)
     boxes[k] = grown(in_.search.index.box(changed_[k]), 1);
   in_.search.index.query(boxes, [&](std::uint32_t k, std::uint32_t t) {
@@ -204,7 +208,7 @@ void HotSetClosure::pin_by_box_queries(std::vector<Point64>& fresh) {
     consider(k, segs_[t].b, fresh);
   });
   if (split_sweep_.empty() && !in_.split_points.empty())
-    split_sweep_ = sorted_for_sweep(pixel_boxes(in_.split_points));
+    sort_for_sweep(pixel_boxes(in_.split_points), split_sweep_);
   if (split_sweep_.empty()) return;
   for_each_overlapping_pair(
       sorted_for_sweep(boxes), split_sweep_,

@@ -17,7 +17,8 @@ namespace {
 class AllFragments {
  public:
   AllFragments(const std::vector<Segment>& segs, const std::vector<Fragment>& listed)
-      : segs_(segs), listed_(listed), first_(segs.size() + 1, 0) {
+      : segs_(segs), listed_(listed) {
+    first_.assign(segs.size() + 1, 0);
     for (const Fragment& f : listed) ++first_[f.parent + 1];
     add_up_counts(first_);
   }
@@ -48,7 +49,7 @@ class AllFragments {
  private:
   const std::vector<Segment>& segs_;
   const std::vector<Fragment>& listed_;
-  std::vector<std::uint32_t> first_;
+  ScratchVector<std::uint32_t> first_;
 };
 
 // Segments whose route may differ from the route classic snap rounding would give them if every
@@ -57,16 +58,16 @@ class AllFragments {
 // its own ends and split points and through every hot pixel it meets. Read from the closure's
 // record when it has a complete one (its vertices include every end and split point), found
 // through the segment grid otherwise.
-std::vector<bool> off_classic_routes(const std::vector<Segment>& segs, SegmentsNear& near,
-                                     const std::vector<SegmentPoint>& splits,
-                                     const PointSet& is_hot, const Closure& closure) {
-  std::vector<bool> off(segs.size(), false);
+void off_classic_routes(const std::vector<Segment>& segs, SegmentsNear& near,
+                        const std::vector<SegmentPoint>& splits, const PointSet& is_hot,
+                        const Closure& closure, std::vector<std::uint8_t>& off) {
+  off.assign(segs.size(), false);
   if (closure.near_vertex_complete) {
     for (const auto& [s, p] : closure.near_vertex)
       if (!is_hot.contains(p)) off[s] = true;
-    return off;
+    return;
   }
-  std::vector<Point64> loose;  // vertices that are not hot
+  ScratchVector<Point64> loose;  // vertices that are not hot
   loose.reserve(segs.size() + splits.size());
   for (const Segment& s : segs)
     if (!is_hot.contains(s.a)) loose.push_back(s.a);  // every end starts a segment
@@ -79,15 +80,15 @@ std::vector<bool> off_classic_routes(const std::vector<Segment>& segs, SegmentsN
       if (!off[s] && segment_meets_closed_pixel(segs[s], p) && !on_segment(p, segs[s]))
         off[s] = true;
     });
-  return off;
 }
 
 // The pair tests of one re-check. Split points are reported by fragment id (AllFragments).
 class PairCheck {
  public:
   PairCheck(const AllFragments& all, const std::vector<std::uint8_t>& moved,
-            std::vector<std::uint8_t>& touched)
-      : all_(all), touched_(touched), is_moved_(all.listed_count(), false) {
+            std::vector<std::uint8_t>& touched, Contacts& into)
+      : found(into), all_(all), touched_(touched) {
+    is_moved_.assign(all.listed_count(), false);
     which_.reserve(all.listed_count());
     for (std::uint32_t i = 0; i < all.listed_count(); ++i) {  // moved segments are always listed
       if (!moved[all.parent(i)]) continue;
@@ -101,28 +102,29 @@ class PairCheck {
     if (classify_pair(all_.seg(f), f, all_.seg(g), g, found) != Meeting::kNone)
       touched_[all_.parent(f)] = touched_[all_.parent(g)] = true;
   }
-  Contacts found;
+  Contacts& found;
 
  private:
   const AllFragments& all_;
   std::vector<std::uint8_t>& touched_;
-  std::vector<bool> is_moved_;
-  std::vector<std::uint32_t> which_;
+  ScratchVector<std::uint8_t> is_moved_;
+  ScratchVector<std::uint32_t> which_;
 };
 
 // Few moved fragments and few splits: query the run index. Every fragment lies within one unit
 // of its segment's box (the query boxes grow by 2 to be safe). `off` (empty: unknown) leaves
 // out pairs on their classic routes.
 void check_by_box_queries(const AllFragments& all, const SegmentIndex& index,
-                          const std::vector<bool>& off, PairCheck& check) {
+                          const std::vector<std::uint8_t>& off, PairCheck& check) {
   const auto& which = check.moved_fragments();
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+  ScratchVector<std::pair<std::uint32_t, std::uint32_t>> pairs;
   auto add = [&](std::uint32_t f, std::uint32_t g) {
     if (f == g || (check.moved(g) && g < f)) return;  // a moved pair is seen from both sides
     if (!off.empty() && !off[all.parent(f)] && !off[all.parent(g)]) return;
     pairs.emplace_back(std::min(f, g), std::max(f, g));
   };
-  std::vector<Box64> boxes(which.size());
+  ScratchVector<Box64> boxes;
+  boxes.resize(which.size());
   for (std::size_t k = 0; k < which.size(); ++k)
     boxes[k] = grown(segment_box(all.seg(which[k])), 2);
   index.query(boxes, [&](std::uint32_t k, std::uint32_t s) {
@@ -136,9 +138,10 @@ void check_by_box_queries(const AllFragments& all, const SegmentIndex& index,
 // Many moved fragments (spiky inputs: cut short at every crossing): every fragment is walked
 // through a grid (segment_grid.hpp), which proposes each pair once; only pairs with a moved
 // fragment and one off its classic route are tested.
-void check_by_grid_walk(const AllFragments& all, const std::vector<bool>& off, PairCheck& check) {
-  std::vector<std::uint32_t> ids;
-  std::vector<Segment> all_segments;
+void check_by_grid_walk(const AllFragments& all, const std::vector<std::uint8_t>& off,
+                        PairCheck& check) {
+  ScratchVector<std::uint32_t> ids;
+  ScratchVector<Segment> all_segments;
   ids.reserve(all.count());
   all_segments.reserve(all.count());
   for (std::uint32_t s = 0; s < all.segment_count(); ++s)
@@ -154,14 +157,16 @@ void check_by_grid_walk(const AllFragments& all, const std::vector<bool>& off, P
   });
 }
 
-bool any(const std::vector<bool>& v) { return std::find(v.begin(), v.end(), true) != v.end(); }
+bool any(const std::vector<std::uint8_t>& v) { return std::find(v.begin(), v.end(), 1) != v.end(); }
 
 // The listed fragments after cutting fragments (by AllFragments id) at exact split points.
 Fragments split_fragments(const AllFragments& all, const std::vector<SegmentPoint>& splits) {
-  std::vector<Segment> pieces(all.id_bound());
+  ScratchVector<Segment> pieces;
+  pieces.resize(all.id_bound());
   for (std::uint32_t id = 0; id < all.id_bound(); ++id) pieces[id] = all.seg(id);
   const Fragments cut = route(pieces, Closure{}, splits);  // by piece id
-  std::vector<std::uint32_t> first(all.id_bound() + 1, 0);
+  ScratchVector<std::uint32_t> first;
+  first.assign(all.id_bound() + 1, 0);
   for (const Fragment& f : cut) ++first[f.parent + 1];
   add_up_counts(first);
   Fragments out;
@@ -186,25 +191,28 @@ Rechecked recheck(const std::vector<Segment>& segs, Fragments fragments, const C
                   const PointSet& is_hot, std::vector<std::uint8_t>& touched) {
   Rechecked out;
   const AllFragments all(segs, fragments);
-  PairCheck check(all, closure.moved, touched);
-  auto off_classic = [&] { return off_classic_routes(segs, search.near, splits, is_hot, closure); };
+  PairCheck check(all, closure.moved, touched, out.found);
+  ScratchVector<std::uint8_t> off;  // empty: unknown
+  auto off_classic = [&] { off_classic_routes(segs, search.near, splits, is_hot, closure, off); };
   const std::size_t total = all.count();
   if (8 * check.moved_fragments().size() < total && total < 2 * segs.size()) {
-    std::vector<bool> off;
     // (Not reached by tests: no re-check with few moved fragments follows a closure that
     // recorded its near-vertex passes.)
-    if (closure.near_vertex_complete) off = off_classic();
+    if (closure.near_vertex_complete) off_classic();
     if (off.empty() || any(off)) check_by_box_queries(all, search.index, off, check);
   } else {
-    const std::vector<bool> off = off_classic();
+    off_classic();
     if (any(off)) check_by_grid_walk(all, off, check);
   }
-  out.found = std::move(check.found);
   if (!out.found.hot.empty()) return out;
   // Only exact integer splits remain, if any (snapped fragments landing on vertices or
   // overlapping collinearly): split and finish; nothing moves.
-  out.fragments =
-      out.found.splits.empty() ? std::move(fragments) : split_fragments(all, out.found.splits);
+  if (out.found.splits.empty()) {
+    out.fragments.swap(fragments);
+  } else {
+    Fragments split = split_fragments(all, out.found.splits);
+    out.fragments.swap(split);
+  }
   return out;
 }
 

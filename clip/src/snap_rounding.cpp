@@ -108,7 +108,7 @@ class SnapRounds {
           recheck(segs_, route(segs_, closure_, contacts_.splits), closure_, search_,
                   contacts_.splits, is_hot_, out.touched);
       if (again.found.hot.empty()) {
-        out.fragments = std::move(again.fragments);
+        out.fragments.swap(again.fragments);
         return;
       }
       // A crossing survived: snap rounding's guarantee was violated; make its pixel hot and
@@ -173,7 +173,7 @@ class SnapRounds {
 Snapped snap_round(const std::vector<Segment>& segs, const std::vector<std::uint32_t>& next,
                    Contacts& contacts, SegmentSearch& search) {
   Snapped out;
-  out.touched = std::move(contacts.touched);
+  out.touched.swap(contacts.touched);
   // The vertices are every segment's start and every split point; an end that starts no segment
   // (an open run's: collinear_merge.hpp) joins them as a split point at the end, which routing
   // skips.
@@ -181,7 +181,8 @@ Snapped snap_round(const std::vector<Segment>& segs, const std::vector<std::uint
     if (segs[next[s]].a != segs[s].b) contacts.splits.emplace_back(s, segs[s].b);
   // No crossing at a non-integer point: every contact is an exact split and nothing moves.
   if (contacts.hot.empty()) {
-    out.fragments = snap_steps::route(segs, snap_steps::Closure{}, contacts.splits);
+    Fragments routed = snap_steps::route(segs, snap_steps::Closure{}, contacts.splits);
+    out.fragments.swap(routed);
     return out;
   }
   snap_steps::SnapRounds(segs, contacts, search).run(out);

@@ -30,10 +30,10 @@ struct Snapped {
   // touched[s] is false only for input segments that yield themselves as their one fragment and
   // share no point with any other fragment except their ring neighbours' at their common
   // endpoints. The plane graph chains such segments (plane_graph.hpp).
-  std::vector<std::uint8_t> touched;
+  ScratchVector<std::uint8_t> touched;
   // Bounding boxes of the input segments that snap rounding moved: nothing farther than one
   // unit from these boxes can be affected by the rounding.
-  std::vector<Box64> moved_boxes;
+  ScratchVector<Box64> moved_boxes;
   std::size_t hot_pixels = 0;
 };
 

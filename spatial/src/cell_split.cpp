@@ -49,17 +49,6 @@ std::vector<Box64> split_boxes(const Box64& box, const LandscapeConfig& config) 
   return out;
 }
 
-std::uint32_t child_holding(const Box64& parent, const std::vector<Box64>& children,
-                            Point64 p) noexcept {
-  for (std::uint32_t i = 0; i < children.size(); ++i) {
-    const Box64& c = children[i];
-    const bool x = c.min.x <= p.x && (p.x < c.max.x || c.max.x == parent.max.x);
-    const bool y = c.min.y <= p.y && (p.y < c.max.y || c.max.y == parent.max.y);
-    if (x && y) return i;
-  }
-  return static_cast<std::uint32_t>(children.size() - 1);
-}
-
 }  // namespace edgeland::detail
 
 namespace edgeland {

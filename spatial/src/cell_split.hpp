@@ -30,9 +30,4 @@ bool can_split(const Box64& box, const LandscapeConfig& config) noexcept;
 // The children's boxes, in a fixed order (x before y, low before high). Requires can_split.
 std::vector<Box64> split_boxes(const Box64& box, const LandscapeConfig& config);
 
-// Which child's half-open box [min, max) holds p, a child on the parent's max side also
-// holding that side: the cell of the half-open rule. p must lie in the parent's closed box.
-std::uint32_t child_holding(const Box64& parent, const std::vector<Box64>& children,
-                            Point64 p) noexcept;
-
 }  // namespace edgeland::detail

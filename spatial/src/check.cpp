@@ -7,8 +7,8 @@
 #include "canonical_cell.hpp"
 #include "cell_split.hpp"
 #include "edgeland/kernel/area.hpp"
+#include "edit_log.hpp"
 #include "landscape_access.hpp"
-#include "log_line.hpp"
 
 namespace edgeland::detail {
 namespace {

@@ -6,13 +6,15 @@
 
 #include <algorithm>
 
+#include "cell_overlay.hpp"
 #include "cell_split.hpp"
 #include "changes.hpp"
 #include "check.hpp"
 #include "edgeland/kernel/wkt_writer.hpp"
+#include "edit_log.hpp"
 #include "ids.hpp"
 #include "landscape_access.hpp"
-#include "log_line.hpp"
+#include "shape_cut.hpp"
 
 namespace edgeland {
 namespace {
@@ -22,10 +24,6 @@ using detail::NodePtr;
 // Interiors of two closed boxes meet.
 bool open_overlap(const Box64& a, const Box64& b) {
   return a.min.x < b.max.x && b.min.x < a.max.x && a.min.y < b.max.y && b.min.y < a.max.y;
-}
-
-bool same_content(const LabeledSet& a, const LabeledSet& b) {
-  return a.labels == b.labels && a.set.polygons() == b.set.polygons();
 }
 
 std::size_t vertices_of(const LabeledSet& s) {
@@ -87,11 +85,16 @@ LandscapeEditor::Draft LandscapeEditor::Draft::inner(const Box64& box, std::uint
   return d;
 }
 
+const ValidSet& LandscapeEditor::shape_in(const detail::Node& cell) const {
+  const ValidSet* pieces = cut_ ? cut_->of(cell) : nullptr;
+  return pieces ? *pieces : shape_;
+}
+
 LandscapeEditor::Draft LandscapeEditor::edit_cell(const NodePtr& cell) {
-  LabeledClipResult r = relabel(cell->content.set, cell->content.labels, shape_, cell->box,
-                                table_.table, clip_options());
-  if (same_content(r.regions, cell->content)) return Draft::keep(cell);
-  Draft edited = Draft::cell(cell->box, cell->depth, std::move(r.regions));
+  std::optional<LabeledSet> content =
+      detail::overlay_cell(*cell, shape_in(*cell), table_.table, clip_options());
+  if (!content) return Draft::keep(cell);
+  Draft edited = Draft::cell(cell->box, cell->depth, std::move(*content));
   grow(cell->vertices, edited.vertices);
   return split_if_needed(std::move(edited));
 }
@@ -184,6 +187,7 @@ ChangeSet LandscapeEditor::run(Landscape& target, const std::function<std::strin
   NodePtr root = s_.root;
   try {
     if (!shape_.polygons().empty() && open_overlap(s_.world, shape_box_)) {
+      cut_ = detail::cut_shape_to_cells(s_.root, shape_, shape_box_, clip_options());
       Draft draft = rebuild(s_.root);
       root = finish(draft, s_.root);
     }

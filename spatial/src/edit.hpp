@@ -8,6 +8,7 @@
 #include "edgeland/spatial/landscape.hpp"
 #include "ids.hpp"
 #include "node.hpp"
+#include "shape_cut.hpp"
 
 namespace edgeland {
 
@@ -63,6 +64,9 @@ class LandscapeEditor {
 
   Draft rebuild(const detail::NodePtr& node);
   Draft edit_cell(const detail::NodePtr& cell);
+  // What of the shape a cell's overlay takes: its pieces when the shape was cut to the cells
+  // (shape_cut.hpp), else the whole shape.
+  const ValidSet& shape_in(const detail::Node& cell) const;
   Draft split_if_needed(Draft cell);
   Draft merge_if_small(const detail::NodePtr& old, std::vector<Draft> children);
   detail::NodePtr finish(Draft& draft, const detail::NodePtr& old);
@@ -82,6 +86,7 @@ class LandscapeEditor {
   PolygonId next_id_;
   std::size_t growth_ = 0;
   std::size_t cell_growth_ = 0;
+  std::optional<detail::ShapeCut> cut_;
 };
 
 }  // namespace edgeland

@@ -6,8 +6,8 @@
 #include "edgeland/kernel/area.hpp"
 #include "edgeland/spatial/tree_boxes.hpp"
 #include "edit.hpp"
+#include "edit_log.hpp"
 #include "landscape_access.hpp"
-#include "log_line.hpp"
 #include "state_hash.hpp"
 
 namespace edgeland {

@@ -92,7 +92,9 @@ RC_GTEST_PROP(HoleSplitting, PiecesTileTheRegionWithHoleFreePolygons, ()) {
   for (const detail::RegionRings& region : out.holed) holes += region.holes.size();
   RC_CLASSIFY(holes > 1, "several holes");
   for (const detail::RegionRings& region : out.holed)
-    RC_ASSERT(split_problems(region.outers, region.holes) == std::string());
+    RC_ASSERT(split_problems(std::vector<Ring>(region.outers.begin(), region.outers.end()),
+                             std::vector<Ring>(region.holes.begin(), region.holes.end())) ==
+              std::string());
 }
 
 // ---- hand-made regions ---------------------------------------------------------------------

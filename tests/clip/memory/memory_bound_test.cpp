@@ -1,47 +1,13 @@
 // The working memory clip.hpp promises (MEMORY): the peak of heap bytes allocated during one
 // operation, beyond what was allocated before it, stays within a bound per input edge plus a
-// bound per crossing. Measured by replacing the global allocation functions, so this is its
-// own executable (tests/CMakeLists.txt).
+// bound per crossing. Measured by the counting allocation functions (counting_allocator.hpp).
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstdlib>
-#include <new>
 #include <numbers>
 
+#include "counting_allocator.hpp"
 #include "edgeland/clip/clip.hpp"
-
-namespace {
-
-// Heap bytes in use and their peak; malloc_usable_size would be glibc's, so each block carries
-// its size in a header of max_align_t.
-std::size_t g_in_use = 0, g_peak = 0;
-constexpr std::size_t kHeader = alignof(std::max_align_t);
-
-void* counted_alloc(std::size_t n) {
-  auto* p = static_cast<unsigned char*>(std::malloc(n + kHeader));
-  if (!p) throw std::bad_alloc();
-  *reinterpret_cast<std::size_t*>(p) = n;
-  g_in_use += n;
-  if (g_in_use > g_peak) g_peak = g_in_use;
-  return p + kHeader;
-}
-
-void counted_free(void* q) noexcept {
-  if (!q) return;
-  auto* p = static_cast<unsigned char*>(q) - kHeader;
-  g_in_use -= *reinterpret_cast<std::size_t*>(p);
-  std::free(p);
-}
-
-}  // namespace
-
-void* operator new(std::size_t n) { return counted_alloc(n); }
-void* operator new[](std::size_t n) { return counted_alloc(n); }
-void operator delete(void* p) noexcept { counted_free(p); }
-void operator delete[](void* p) noexcept { counted_free(p); }
-void operator delete(void* p, std::size_t) noexcept { counted_free(p); }
-void operator delete[](void* p, std::size_t) noexcept { counted_free(p); }
 
 namespace edgeland {
 namespace {
@@ -49,10 +15,11 @@ namespace {
 // Bytes the operation needed on top of its inputs (the result included).
 template <class F>
 std::size_t peak_during(F&& operation) {
-  const std::size_t before = g_in_use;
-  g_peak = g_in_use;
+  test::HeapCounters& c = test::heap_counters();
+  const std::size_t before = c.in_use;
+  c.peak = c.in_use;
   operation();
-  return g_peak - before;
+  return c.peak - before;
 }
 
 // n vertices round (cx, cy), radii alternating r and inner * r (a circle when inner is 1, a

@@ -2,7 +2,7 @@
 // Landscape edit logs: a plain-text record of the edits applied to one Landscape
 // (spatial/include/edgeland/spatial/landscape.hpp), so that any world seen in a game can be
 // rebuilt and replayed (`edgeland replay`). Landscape::start_log() / log() write exactly this
-// format (spatial/src/log_line.cpp); this is its reader.
+// format (spatial/src/edit_log.cpp); this is its reader.
 //
 // FORMAT (one command per line; README.md "Landscape edit logs"):
 //   world X0 Y0 X1 Y1 [MATERIAL]   the world box [X0, X1] x [Y0, Y1], empty or filled with

@@ -22,7 +22,9 @@
 // own.
 //
 // What a thread keeps is bounded: arrays over kMaxKeptBytes are freed when they die, and at
-// most kSpareSlots spares are kept per element type (a full stack drops its smallest).
+// most kSpareSlots spares are kept per element type (a full stack drops its smallest). 32: a
+// landscape cell's overlay has more than 16 arrays of points alive at once (the rings of a
+// region with holes among them), and with 16 it freed and allocated some on every call.
 #include <algorithm>
 #include <array>
 #include <cstddef>
@@ -32,7 +34,7 @@
 namespace edgeland::detail {
 
 inline constexpr std::size_t kMaxKeptBytes = std::size_t{8} << 20;
-inline constexpr std::size_t kSpareSlots = 16;
+inline constexpr std::size_t kSpareSlots = 32;
 
 // The thread's spare arrays of element type T.
 template <class T>
@@ -78,8 +80,12 @@ class ScratchVector : public std::vector<T> {
     return *this;
   }
   ScratchVector(ScratchVector&& other) noexcept : std::vector<T>(std::move(other)) {}
+  // A move trades storage instead of freeing this one's: the moved-from vector is left empty
+  // holding it and gives it back when it dies, so the thread keeps every array (a struct of
+  // scratch arrays assigned from a function's result would otherwise drop its own each time).
   ScratchVector& operator=(ScratchVector&& other) noexcept {
-    std::vector<T>::operator=(std::move(other));
+    this->swap(other);
+    other.clear();
     return *this;
   }
   using std::vector<T>::operator=;  // assigning a plain vector's contents

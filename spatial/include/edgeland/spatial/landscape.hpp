@@ -65,7 +65,7 @@ namespace edgeland {
 namespace detail {
 
 struct Node;     // the tree (spatial/src/node.hpp)
-struct LogLine;  // the recorded log, a persistent list shared by copies (spatial/src/log_line.hpp)
+struct LogLine;  // the recorded log, a persistent list shared by copies (spatial/src/edit_log.hpp)
 using AreaTable = std::array<Int128, kMaterialCount>;
 
 // A landscape's whole state (private: spatial/src reaches it through landscape_access.hpp). An

@@ -1,6 +1,6 @@
 #pragma once
-// The landscape edit log (README.md "Landscape edit logs"): one text line per edit, kept as a
-// persistent list so that copies of a recording landscape share it.
+// The edit-log recorder (README.md "Landscape edit logs"): the line each edit writes, and the
+// log kept as a persistent list of lines so that copies of a recording landscape share it.
 #include <memory>
 #include <string>
 

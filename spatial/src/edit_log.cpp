@@ -1,4 +1,4 @@
-#include "log_line.hpp"
+#include "edit_log.hpp"
 
 #include <map>
 #include <vector>

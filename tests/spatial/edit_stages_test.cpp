@@ -1,0 +1,151 @@
+// Stage tests of an edit's steps that had none (spatial/README.md, "An edit"): where a cell
+// splits (split_boxes), which ids new cells take (IdSource, match_ids), and what differs between
+// the old and the new tree (diff, change_set).
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "cell_split.hpp"
+#include "changes.hpp"
+#include "ids.hpp"
+#include "node.hpp"
+
+namespace edgeland {
+namespace {
+
+using detail::NodePtr;
+
+Polygon square(std::int64_t x0, std::int64_t y0, std::int64_t x1, std::int64_t y1) {
+  return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+}
+
+NodePtr cell(const Box64& box, const PolygonSet& polygons, const std::vector<RegionLabel>& labels,
+             const std::vector<PolygonId>& ids) {
+  return detail::make_cell(box, 1, {ValidSet(polygons), labels}, ids);
+}
+
+// ---- split_boxes -----------------------------------------------------------------------------
+
+TEST(SplitBoxes, AQuadtreeCutsBothSidesAtTheirIntegerMidpoints) {
+  const std::vector<Box64> c = detail::split_boxes({{0, 0}, {101, 64}}, LandscapeConfig{});
+  ASSERT_EQ(c.size(), 4u);  // x before y, low before high
+  EXPECT_EQ(c[0], (Box64{{0, 0}, {50, 32}}));
+  EXPECT_EQ(c[1], (Box64{{50, 0}, {101, 32}}));
+  EXPECT_EQ(c[2], (Box64{{0, 32}, {50, 64}}));
+  EXPECT_EQ(c[3], (Box64{{50, 32}, {101, 64}}));
+}
+
+TEST(SplitBoxes, AKdTreeCutsTheLongerSideXOnTies) {
+  LandscapeConfig kd;
+  kd.tree = TreeKind::kKdTree;
+  EXPECT_EQ(detail::split_boxes({{0, 0}, {64, 200}}, kd),
+            (std::vector<Box64>{{{0, 0}, {64, 100}}, {{0, 100}, {64, 200}}}));
+  EXPECT_EQ(detail::split_boxes({{0, 0}, {64, 64}}, kd),
+            (std::vector<Box64>{{{0, 0}, {32, 64}}, {{32, 0}, {64, 64}}}));
+}
+
+TEST(SplitBoxes, ASideAtTheMinimumSizeIsNotCut) {
+  LandscapeConfig config;
+  config.min_cell_size = 16;
+  EXPECT_EQ(detail::split_boxes({{0, 0}, {16, 64}}, config),
+            (std::vector<Box64>{{{0, 0}, {16, 32}}, {{0, 32}, {16, 64}}}));
+  EXPECT_FALSE(detail::can_split({{0, 0}, {16, 16}}, config));
+  EXPECT_TRUE(detail::can_split({{0, 0}, {16, 17}}, config));
+}
+
+TEST(SplitBoxes, ChildrenPartitionTheParentAtTheWholeRange) {
+  // I4 at the coordinate bound: the children's areas add up to the parent's, their interiors
+  // are disjoint, and none is flat.
+  const Box64 world{{-kCoordBound, -kCoordBound}, {kCoordBound, kCoordBound}};
+  for (TreeKind kind : {TreeKind::kQuadtree, TreeKind::kKdTree}) {
+    LandscapeConfig config;
+    config.tree = kind;
+    const std::vector<Box64> c = detail::split_boxes(world, config);
+    Int128 area = 0;
+    for (std::size_t i = 0; i < c.size(); ++i) {
+      EXPECT_LT(c[i].min.x, c[i].max.x);
+      EXPECT_LT(c[i].min.y, c[i].max.y);
+      area += Int128(c[i].max.x - c[i].min.x) * (c[i].max.y - c[i].min.y);
+      for (std::size_t j = 0; j < i; ++j)
+        EXPECT_FALSE(c[i].min.x < c[j].max.x && c[j].min.x < c[i].max.x &&
+                     c[i].min.y < c[j].max.y && c[j].min.y < c[i].max.y);
+    }
+    EXPECT_TRUE(area == Int128(world.max.x - world.min.x) * (world.max.y - world.min.y));
+  }
+}
+
+// ---- ids -------------------------------------------------------------------------------------
+
+TEST(IdSource, FindsEqualPolygonsInEveryCellBelowANode) {
+  const NodePtr a = cell({{0, 0}, {10, 10}}, {square(0, 0, 5, 5)}, {1}, {7});
+  const NodePtr b =
+      cell({{10, 0}, {20, 10}}, {square(10, 0, 12, 3), square(14, 4, 16, 6)}, {2, 1}, {8, 9});
+  const NodePtr c = cell({{0, 10}, {10, 20}}, {}, {}, {});
+  const NodePtr d = cell({{10, 10}, {20, 20}}, {}, {}, {});
+  const NodePtr inner = detail::make_inner({{0, 0}, {20, 20}}, 0, {a, b, c, d});
+  const detail::IdSource ids(inner);
+  EXPECT_EQ(ids.find(square(14, 4, 16, 6), 1), 9u);
+  EXPECT_EQ(ids.find(square(0, 0, 5, 5), 1), 7u);
+  EXPECT_EQ(ids.find(square(0, 0, 5, 5), 2), 0u);  // same ring, another material: a new polygon
+  EXPECT_EQ(ids.find(square(0, 0, 5, 6), 1), 0u);
+  EXPECT_EQ(detail::IdSource(b).find(square(0, 0, 5, 5), 1), 0u);  // not below b
+}
+
+TEST(IdSource, MatchIdsKeepsEqualPolygonsAndNumbersTheRestInOrder) {
+  const NodePtr old =
+      cell({{0, 0}, {10, 10}}, {square(0, 0, 5, 5), square(6, 6, 8, 8)}, {1, 2}, {3, 4});
+  const LabeledSet now{
+      ValidSet(PolygonSet{square(0, 0, 5, 5), square(6, 0, 9, 2), square(6, 6, 8, 8)}), {1, 1, 3}};
+  PolygonId next = 20;
+  EXPECT_EQ(detail::match_ids(detail::IdSource(old), now, next),
+            (std::vector<PolygonId>{3, 20, 21}));
+  EXPECT_EQ(next, 22u);
+}
+
+// ---- diff and change_set ---------------------------------------------------------------------
+
+TEST(Diff, VisitsOnlyWhatChangedAndReportsItsPolygons) {
+  const NodePtr a = cell({{0, 0}, {10, 10}}, {square(0, 0, 5, 5)}, {1}, {1});
+  const NodePtr b = cell({{10, 0}, {20, 10}}, {square(10, 0, 20, 10)}, {1}, {2});
+  const NodePtr c = cell({{0, 10}, {10, 20}}, {}, {}, {});
+  const NodePtr d = cell({{10, 10}, {20, 20}}, {}, {}, {});
+  const NodePtr old_root = detail::make_inner({{0, 0}, {20, 20}}, 0, {a, b, c, d});
+  EXPECT_TRUE(detail::diff(old_root, old_root).old_cells.empty());
+  // b carved to a smaller square (a new polygon), the rest shared.
+  const NodePtr b2 = cell({{10, 0}, {20, 10}}, {square(10, 0, 15, 10)}, {1}, {3});
+  const NodePtr new_root = detail::make_inner({{0, 0}, {20, 20}}, 0, {a, b2, c, d});
+  const detail::Changes changes = detail::diff(old_root, new_root);
+  EXPECT_EQ(changes.old_cells, std::vector<NodePtr>{b});
+  EXPECT_EQ(changes.new_cells, std::vector<NodePtr>{b2});
+  EXPECT_EQ(changes.new_inner, std::vector<NodePtr>{new_root});
+  const ChangeSet cs = detail::change_set(changes);
+  EXPECT_EQ(cs.removed, std::vector<PolygonId>{2});
+  ASSERT_EQ(cs.added.size(), 1u);
+  EXPECT_EQ(cs.added[0].id, 3u);
+  EXPECT_EQ(cs.added[0].polygon, square(10, 0, 15, 10));
+  // Twice the area: rock loses 5 x 10, empty space gains it (the deltas sum to 0).
+  ASSERT_EQ(cs.twice_area_delta.size(), 2u);
+  for (const auto& [m, delta] : cs.twice_area_delta) {
+    EXPECT_TRUE(m == kEmpty || m == Material(1));
+    EXPECT_TRUE(delta == (m == kEmpty ? 100 : -100));
+  }
+}
+
+TEST(Diff, ASplitCellIsReplacedByAllItsChildren) {
+  const NodePtr whole = cell({{0, 0}, {20, 20}}, {square(0, 0, 20, 10)}, {1}, {5});
+  const NodePtr low = cell({{0, 0}, {20, 10}}, {square(0, 0, 20, 10)}, {1}, {5});
+  const NodePtr high = cell({{0, 10}, {20, 20}}, {}, {}, {});
+  LandscapeConfig kd;
+  kd.tree = TreeKind::kKdTree;
+  ASSERT_EQ(detail::split_boxes({{0, 0}, {20, 20}}, kd).size(), 2u);
+  const NodePtr split = detail::make_inner({{0, 0}, {20, 20}}, 0, {low, high});
+  const detail::Changes changes = detail::diff(whole, split);
+  EXPECT_EQ(changes.old_cells, std::vector<NodePtr>{whole});
+  EXPECT_EQ(changes.new_cells, (std::vector<NodePtr>{low, high}));
+  const ChangeSet cs = detail::change_set(changes);
+  EXPECT_TRUE(cs.removed.empty());  // the polygon kept its id across the split
+  EXPECT_TRUE(cs.added.empty());
+}
+
+}  // namespace
+}  // namespace edgeland
