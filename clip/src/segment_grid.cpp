@@ -1,5 +1,9 @@
 #include "segment_grid.hpp"
 
+#include <algorithm>
+#include <cstdlib>
+#include <limits>
+
 #include "edgeland/kernel/grid_cells.hpp"
 #include "offsets.hpp"
 
@@ -62,6 +66,9 @@ SegmentGrid::SegmentGrid(const std::vector<Segment>& segments) {
   while (registrations(segments, side) > kRegistrationsPerSegment * n + 1024) side *= 2;
 
   set_side(side);
+  // Offsets n . (p - corner) stay within 3 * 2^10 * side (p within a side of the cell): 2^18
+  // steps per side keep them within 2^31.
+  offset_shift_ = std::max(0, shift_ - 18);
   // One walk records every (cell, segment) registration in segment order; a counting sort by
   // cell then lists each cell's segments in increasing id order.
   ScratchVector<std::uint32_t> entry_cells;
@@ -82,9 +89,10 @@ SegmentGrid::SegmentGrid(const std::vector<Segment>& segments) {
   for (std::uint32_t i = 0; i < n; ++i)
     for (std::uint32_t e = slot_begin_[i]; e < slot_begin_[i + 1]; ++e) {
       const std::uint32_t k = entry_cells[e];
-      slots_[e] = {fill[k], cell_begin_[k + 1]};
+      slots_[e] = {fill[k], k};
       items_[fill[k]++] = i;
     }
+  order_crowded_cells(segments, entry_cells);
 }
 
 }  // namespace edgeland::detail
@@ -94,10 +102,124 @@ namespace edgeland::detail {
 std::size_t SegmentGrid::cell_pairs() const {
   std::size_t pairs = 0;
   for (std::size_t k = 0; k + 1 < cell_begin_.size(); ++k) {
-    const std::size_t in_cell = cell_begin_[k + 1] - cell_begin_[k];
-    pairs += in_cell * (in_cell - 1) / 2;
+    const std::uint32_t begin = cell_begin_[k], end = cell_begin_[k + 1];
+    if (!crowded(k)) {
+      pairs += std::size_t{end - begin} * (end - begin - 1) / 2;  // 0 for an empty cell
+      continue;
+    }
+    // Sorted by lo: item x overlaps the later items starting at most at its hi.
+    for (std::uint32_t x = begin; x < end; ++x)
+      pairs += static_cast<std::size_t>(
+          std::upper_bound(lo_.begin() + x + 1, lo_.begin() + end, hi_[x]) -
+          (lo_.begin() + x + 1));
   }
   return pairs;
+}
+
+namespace {
+
+constexpr std::int64_t kNormalLimit = 1023;  // 11-bit normals: offsets fit 64 bits unscaled
+
+// (lo, hi) scaled down by 2^shift, rounded outward.
+IntegerRange scaled_out(std::int64_t lo, std::int64_t hi, int shift) {
+  return {lo >> shift, -((-hi) >> shift)};
+}
+
+}  // namespace
+
+IntegerRange SegmentGrid::box_offsets(std::size_t k, const Box64& b) const {
+  const Point64 o = corner(k);
+  const Box64 part{{std::max(b.min.x, o.x), std::max(b.min.y, o.y)},
+                   {std::min(b.max.x, o.x + side_), std::min(b.max.y, o.y + side_)}};
+  // Linear in p: its bounds over the box are at opposite corners, picked by n's signs.
+  const Normal n = normal_[k];
+  const std::int64_t x_lo = n.x >= 0 ? part.min.x : part.max.x, x_hi = n.x >= 0 ? part.max.x : part.min.x;
+  const std::int64_t y_lo = n.y >= 0 ? part.min.y : part.max.y, y_hi = n.y >= 0 ? part.max.y : part.min.y;
+  return scaled_out(n.x * (x_lo - o.x) + n.y * (y_lo - o.y),
+                    n.x * (x_hi - o.x) + n.y * (y_hi - o.y), offset_shift_);
+}
+
+IntegerRange SegmentGrid::part_offsets(std::size_t k, const Segment& s) const {
+  const Point64 o = corner(k);
+  const Normal n = normal_[k];
+  std::int64_t lo = std::numeric_limits<std::int64_t>::max(), hi = -lo;
+  auto add = [&](std::int64_t x, std::int64_t y) {
+    const std::int64_t u = n.x * (x - o.x) + n.y * (y - o.y);
+    lo = std::min(lo, u);
+    hi = std::max(hi, u);
+  };
+  // The part's points lie on the line over the part box's range of the segment's longer
+  // coordinate; the offset is linear along the line, so its bounds are at the two ends, each
+  // known up to rounding (both roundings taken). With |slope| <= 1 those ends stay within a
+  // side of the cell.
+  const Box64 cell{o, {o.x + side_, o.y + side_}};
+  Box64 part = segment_box(s);
+  part = {{std::max(part.min.x, cell.min.x), std::max(part.min.y, cell.min.y)},
+          {std::min(part.max.x, cell.max.x), std::min(part.max.y, cell.max.y)}};
+  const std::int64_t dx = s.b.x - s.a.x, dy = s.b.y - s.a.y;
+  if (dx == 0 && dy == 0) {
+    add(s.a.x, s.a.y);
+  } else if (std::abs(dx) >= std::abs(dy)) {
+    for (std::int64_t x : {part.min.x, part.max.x}) {
+      const IntegerRange y = line_y_at(s.a, s.b, x);
+      add(x, y.lo);
+      add(x, y.hi);
+    }
+  } else {
+    for (std::int64_t y : {part.min.y, part.max.y}) {
+      const IntegerRange x = line_x_at(s.a, s.b, y);
+      add(x.lo, y);
+      add(x.hi, y);
+    }
+  }
+  return scaled_out(lo, hi, offset_shift_);
+}
+
+void SegmentGrid::order_crowded_cells(const std::vector<Segment>& segments,
+                                      std::vector<std::uint32_t>& entry_at) {
+  const std::size_t cells = cell_begin_.size() - 1;
+  width_.assign(cells, -1);
+  normal_.assign(cells, Normal{0, 0});
+  lo_.assign(items_.size(), 0);
+  hi_.assign(items_.size(), 0);
+  entry_at.resize(items_.size());  // the slot of each item
+  for (std::uint32_t e = 0; e < slots_.size(); ++e) entry_at[slots_[e].at] = e;
+  struct Item {
+    std::int32_t lo, hi;
+    std::uint32_t id, entry;
+  };
+  ScratchVector<Item> cell_items;
+  for (std::size_t k = 0; k < cells; ++k) {
+    const std::uint32_t begin = cell_begin_[k], end = cell_begin_[k + 1];
+    if (end - begin <= kCrowded) continue;
+    // The normal of the cell's first segment, halved until it fits 11 bits.
+    const Segment& first = segments[items_[begin]];
+    std::int64_t nx = first.a.y - first.b.y, ny = first.b.x - first.a.x;
+    while (std::max(std::abs(nx), std::abs(ny)) > kNormalLimit) {
+      nx >>= 1;
+      ny >>= 1;
+    }
+    normal_[k] = {static_cast<std::int16_t>(nx), static_cast<std::int16_t>(ny)};
+    cell_items.clear();
+    std::int64_t width = 0;
+    for (std::uint32_t x = begin; x < end; ++x) {
+      const IntegerRange u = part_offsets(k, segments[items_[x]]);
+      width = std::max(width, u.hi - u.lo);
+      cell_items.push_back({static_cast<std::int32_t>(u.lo), static_cast<std::int32_t>(u.hi),
+                            items_[x], entry_at[x]});
+    }
+    std::sort(cell_items.begin(), cell_items.end(), [](const Item& a, const Item& b) {
+      return a.lo != b.lo ? a.lo < b.lo : a.id < b.id;
+    });
+    width_[k] = width;
+    for (std::uint32_t x = begin; x < end; ++x) {
+      const Item& it = cell_items[x - begin];
+      items_[x] = it.id;
+      lo_[x] = it.lo;
+      hi_[x] = it.hi;
+      slots_[it.entry].at = x;
+    }
+  }
 }
 
 }  // namespace edgeland::detail

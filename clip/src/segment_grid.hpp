@@ -17,12 +17,25 @@
 //
 // Cost: the walk is O(cells crossed) per segment, and a pair is tested in each cell it shares
 // (reported once); cells are sized for one to four per segment.
+//
+// Crowded cells: long near-parallel segments (zigzag stars: 10^7-long edges 1,500 apart) fill
+// every cell they cross with hundreds of others, and the cells cannot shrink (each segment
+// would cross thousands), so proposing every pair of a cell grew with the square of the input
+// (issue 28: 5,600 pairs per segment at 4 * 10^5 segments, for one crossing each). In a cell of
+// more than kCrowded segments each segment's part is bounded by an interval of the offset
+// n . (P - corner) across the cell (n: the normal of the cell's first segment, cut to 11 bits;
+// any n is correct, a near one makes near-parallel parts' intervals narrow) and the cell's
+// segments are sorted by it: a pair is proposed there only when its intervals overlap. Two
+// segments sharing a point P in the cell both hold P's offset, so no meeting is lost. The
+// intervals come from kernel/line_bounds.hpp (the line's y at the part's x ends, rounded
+// outward), scaled down by a power of two (rounded outward again) to fit 32 bits.
 #include <algorithm>
 #include <cstdint>
 #include <limits>
 #include <vector>
 
 #include "edgeland/kernel/bbox.hpp"
+#include "edgeland/kernel/line_bounds.hpp"
 #include "edgeland/kernel/polygon.hpp"
 #include "edgeland/kernel/predicates.hpp"
 #include "edgeland/kernel/scratch.hpp"
@@ -53,11 +66,38 @@ class SegmentGrid {
   // Number of (segment, cell) registrations: the size of the structure, for tests.
   std::size_t entries() const { return items_.size(); }
 
-  // Pairs registered in a common cell, counted once per cell: what for_each_candidate_pair
-  // walks through.
+  // Pairs proposed in a common cell (in a crowded cell, those whose offsets overlap), counted
+  // once per cell: what for_each_candidate_pair walks through.
   std::size_t cell_pairs() const;
 
+  // Cells holding more segments than this are ordered by offset (above); below it the sort and
+  // the exact bounds cost more than the pairs they save.
+  static constexpr std::uint32_t kCrowded = 32;
+
  private:
+  // Where a segment sits in a cell's list, and which cell.
+  struct Slot {
+    std::uint32_t at, cell;
+  };
+  // f(j) for every segment j listed with slot s's segment in its cell whose offsets overlap
+  // (every one in an uncrowded cell), j listed after it in an uncrowded cell.
+  template <class F>
+  void for_each_partner(const Slot& s, F&& f) const;
+  // visit(i) for the segments of cell k that may meet box b (b meets the cell).
+  template <class F>
+  void for_each_in_cell(std::size_t k, const Box64& b, F&& visit) const;
+  // The cell's lower-left corner, and the bounds of n . (p - corner) over the points p of
+  // `part` (the part of a segment or box in cell k), scaled to 32 bits.
+  Point64 corner(std::size_t k) const {
+    return {min_x_ + static_cast<std::int64_t>(k) / rows_ * side_,
+            min_y_ + static_cast<std::int64_t>(k) % rows_ * side_};
+  }
+  IntegerRange box_offsets(std::size_t k, const Box64& b) const;
+  IntegerRange part_offsets(std::size_t k, const Segment& s) const;
+  // Sorts each crowded cell's list by offset (scratch: one word per registration).
+  void order_crowded_cells(const std::vector<Segment>& segments,
+                           std::vector<std::uint32_t>& scratch);
+  bool crowded(std::size_t k) const { return width_[k] >= 0; }
   // f(cell index) for every cell the walk registers s in, each cell once.
   template <class F>
   void for_each_cell(const Segment& s, F&& f) const;
@@ -67,12 +107,16 @@ class SegmentGrid {
   std::int64_t min_x_ = 0, min_y_ = 0, max_x_ = 0, max_y_ = 0;
   std::int64_t side_ = 1, columns_ = 0, rows_ = 0;
   int shift_ = 0;  // side_ == 2^shift_: cells are found by shifts, not divisions
-  // CSR over cells: items_ of cell k, ascending ids.
+  // CSR over cells: items_ of cell k, ascending ids, or by (lo_, id) in a crowded cell.
   ScratchVector<std::uint32_t> cell_begin_;
   ScratchVector<std::uint32_t> items_;  // segment ids
-  struct Slot {
-    std::uint32_t at, cell_end;  // a segment's place in items_, and the end of its cell there
+  ScratchVector<std::int32_t> lo_, hi_;  // per item in a crowded cell: its offset bounds
+  struct Normal {
+    std::int16_t x, y;
   };
+  ScratchVector<Normal> normal_;        // per crowded cell
+  ScratchVector<std::int64_t> width_;   // per cell: largest hi_ - lo_ when crowded, else -1
+  int offset_shift_ = 0;                // offsets are divided by 2^offset_shift_
   // CSR over segments: the slots of segment i.
   ScratchVector<std::uint32_t> slot_begin_;
   ScratchVector<Slot> slots_;
@@ -137,27 +181,60 @@ void SegmentGrid::for_each_in_box(const Box64& b, F&& visit) const {
   const std::int64_t r0 = (std::max(b.min.y, min_y_) - min_y_) >> shift_;
   const std::int64_t r1 = (std::min(b.max.y, max_y_) - min_y_) >> shift_;
   for (std::int64_t c = c0; c <= c1; ++c)
-    for (std::int64_t r = r0; r <= r1; ++r) {
-      const std::size_t cell = static_cast<std::size_t>(c * rows_ + r);
-      for (std::uint32_t x = cell_begin_[cell]; x < cell_begin_[cell + 1]; ++x) visit(items_[x]);
-    }
+    for (std::int64_t r = r0; r <= r1; ++r)
+      for_each_in_cell(static_cast<std::size_t>(c * rows_ + r), b, visit);
+}
+
+template <class F>
+void SegmentGrid::for_each_in_cell(std::size_t k, const Box64& b, F&& visit) const {
+  std::uint32_t x = cell_begin_[k];
+  const std::uint32_t end = cell_begin_[k + 1];
+  if (!crowded(k)) {
+    for (; x < end; ++x) visit(items_[x]);
+    return;
+  }
+  // A segment with a point P in b holds P's offset, which lies within b's (on the cell).
+  const IntegerRange q = box_offsets(k, b);
+  const std::int64_t reach = q.lo - width_[k];  // no item starting lower reaches q.lo
+  x = static_cast<std::uint32_t>(std::lower_bound(lo_.begin() + x, lo_.begin() + end, reach,
+                                                  [](std::int32_t v, std::int64_t t) {
+                                                    return v < t;
+                                                  }) -
+                                 lo_.begin());
+  for (; x < end && lo_[x] <= q.hi; ++x)
+    if (hi_[x] >= q.lo) visit(items_[x]);
+}
+
+template <class F>
+void SegmentGrid::for_each_partner(const Slot& s, F&& f) const {
+  const std::uint32_t begin = cell_begin_[s.cell], end = cell_begin_[s.cell + 1];
+  if (!crowded(s.cell)) {  // ascending ids: the partners with larger ids follow
+    for (std::uint32_t y = s.at + 1; y < end; ++y) f(items_[y]);
+    return;
+  }
+  // Sorted by lo: later items overlap until one starts past hi; earlier ones start at most
+  // the cell's widest interval below lo if they reach it.
+  const std::int32_t lo = lo_[s.at], hi = hi_[s.at];
+  for (std::uint32_t y = s.at + 1; y < end && lo_[y] <= hi; ++y) f(items_[y]);
+  const std::int64_t reach = std::int64_t{lo} - width_[s.cell];
+  for (std::uint32_t y = s.at; y-- > begin && lo_[y] >= reach;)
+    if (hi_[y] >= lo) f(items_[y]);
 }
 
 template <class F>
 void SegmentGrid::for_each_candidate_pair(F&& visit) const {
-  // Items of a cell are in increasing id order, so the partners of i with a larger id follow
-  // its own slot; a stamp per segment drops partners already met in an earlier common cell.
+  // Each segment i asks its cells for partners with larger ids; a stamp per segment drops
+  // partners already met in an earlier common cell.
   ScratchVector<std::uint32_t> stamp;
   stamp.assign(slot_begin_.empty() ? 0 : slot_begin_.size() - 1,
                std::numeric_limits<std::uint32_t>::max());
   for (std::uint32_t i = 0; i + 1 < slot_begin_.size(); ++i) {
     for (std::uint32_t k = slot_begin_[i]; k < slot_begin_[i + 1]; ++k) {
-      for (std::uint32_t x = slots_[k].at + 1; x < slots_[k].cell_end; ++x) {
-        const std::uint32_t j = items_[x];
-        if (stamp[j] == i) continue;
+      for_each_partner(slots_[k], [&](std::uint32_t j) {
+        if (j <= i || stamp[j] == i) return;
         stamp[j] = i;
         visit(i, j);
-      }
+      });
     }
   }
 }
