@@ -201,6 +201,10 @@ void for_each_box_pair(const std::vector<Segment>& segs, const std::vector<std::
   const SegmentIndex index(segs, link);
   std::unique_ptr<SegmentGrid> grid;
   if (runs_are_short(index, segs.size())) grid = std::make_unique<SegmentGrid>(segs);
+  if (grid != nullptr) {
+    const std::string why = grid->offsets_violation(segs);
+    if (!why.empty()) fail_stage(kStage, "segment grid: " + why);
+  }
   for_each_candidate_pair(segs, index, grid.get(), false, nullptr, visit);
 }
 

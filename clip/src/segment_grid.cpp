@@ -139,7 +139,7 @@ IntegerRange SegmentGrid::box_offsets(std::size_t k, const Box64& b) const {
                     n.x * (x_hi - o.x) + n.y * (y_hi - o.y), offset_shift_);
 }
 
-IntegerRange SegmentGrid::part_offsets(std::size_t k, const Segment& s) const {
+IntegerRange SegmentGrid::part_offsets(std::size_t k, const Segment& s, LineAt& line) const {
   const Point64 o = corner(k);
   const Normal n = normal_[k];
   std::int64_t lo = std::numeric_limits<std::int64_t>::max(), hi = -lo;
@@ -150,29 +150,49 @@ IntegerRange SegmentGrid::part_offsets(std::size_t k, const Segment& s) const {
   };
   // The part's points lie on the line over the part box's range of the segment's longer
   // coordinate; the offset is linear along the line, so its bounds are at the two ends, each
-  // known up to rounding (both roundings taken). With |slope| <= 1 those ends stay within a
-  // side of the cell.
+  // known up to rounding (both bounds taken). With |slope| <= 1 those ends stay within a side
+  // of the cell.
   const Box64 cell{o, {o.x + side_, o.y + side_}};
-  Box64 part = segment_box(s);
-  part = {{std::max(part.min.x, cell.min.x), std::max(part.min.y, cell.min.y)},
-          {std::min(part.max.x, cell.max.x), std::min(part.max.y, cell.max.y)}};
-  const std::int64_t dx = s.b.x - s.a.x, dy = s.b.y - s.a.y;
-  if (dx == 0 && dy == 0) {
-    add(s.a.x, s.a.y);
-  } else if (std::abs(dx) >= std::abs(dy)) {
-    for (std::int64_t x : {part.min.x, part.max.x}) {
-      const IntegerRange y = line_y_at(s.a, s.b, x);
-      add(x, y.lo);
-      add(x, y.hi);
-    }
-  } else {
-    for (std::int64_t y : {part.min.y, part.max.y}) {
-      const IntegerRange x = line_x_at(s.a, s.b, y);
+  const Box64 seg = segment_box(s);
+  if (line.steep()) {
+    for (std::int64_t y : {std::max(seg.min.y, cell.min.y), std::min(seg.max.y, cell.max.y)}) {
+      const IntegerRange x = line.at(y);
       add(x.lo, y);
       add(x.hi, y);
     }
+  } else {
+    for (std::int64_t x : {std::max(seg.min.x, cell.min.x), std::min(seg.max.x, cell.max.x)}) {
+      const IntegerRange y = line.at(x);
+      add(x, y.lo);
+      add(x, y.hi);
+    }
   }
   return scaled_out(lo, hi, offset_shift_);
+}
+
+std::string SegmentGrid::offsets_violation(const std::vector<Segment>& segments) const {
+  for (std::uint32_t i = 0; i + 1 < slot_begin_.size(); ++i)
+    for (std::uint32_t e = slot_begin_[i]; e < slot_begin_[i + 1]; ++e)
+      if (items_[slots_[e].at] != i) return "a slot of segment " + std::to_string(i) + " is astray";
+  for (std::size_t k = 0; k + 1 < cell_begin_.size(); ++k) {
+    if (!crowded(k)) continue;
+    const Point64 o = corner(k);
+    const Box64 cell{o, {o.x + side_, o.y + side_}};
+    for (std::uint32_t x = cell_begin_[k]; x < cell_begin_[k + 1]; ++x) {
+      if (x > cell_begin_[k] && lo_[x - 1] > lo_[x]) return "cell " + std::to_string(k) + " unsorted";
+      if (hi_[x] < lo_[x] || hi_[x] - lo_[x] > width_[k])
+        return "cell " + std::to_string(k) + ": an interval is wider than the cell's width";
+      for (Point64 p : {segments[items_[x]].a, segments[items_[x]].b}) {
+        if (!cell.contains(p)) continue;
+        const std::int64_t u = normal_[k].x * (p.x - o.x) + normal_[k].y * (p.y - o.y);
+        const IntegerRange scaled = scaled_out(u, u, offset_shift_);
+        if (scaled.lo < lo_[x] || scaled.hi > hi_[x])
+          return "segment " + std::to_string(items_[x]) + ": an end's offset in cell " +
+                 std::to_string(k) + " lies outside its interval";
+      }
+    }
+  }
+  return "";
 }
 
 void SegmentGrid::order_crowded_cells(const std::vector<Segment>& segments,
@@ -180,8 +200,32 @@ void SegmentGrid::order_crowded_cells(const std::vector<Segment>& segments,
   const std::size_t cells = cell_begin_.size() - 1;
   width_.assign(cells, -1);
   normal_.assign(cells, Normal{0, 0});
+  for (std::size_t k = 0; k < cells; ++k) {
+    if (cell_begin_[k + 1] - cell_begin_[k] <= kCrowded) continue;
+    // The normal of the cell's first segment, halved until it fits 11 bits.
+    const Segment& first = segments[items_[cell_begin_[k]]];
+    std::int64_t nx = first.a.y - first.b.y, ny = first.b.x - first.a.x;
+    while (std::max(std::abs(nx), std::abs(ny)) > kNormalLimit) {
+      nx >>= 1;
+      ny >>= 1;
+    }
+    normal_[k] = {static_cast<std::int16_t>(nx), static_cast<std::int16_t>(ny)};
+    width_[k] = 0;
+  }
+  // Each segment's intervals in walk order: its cells share column (or row) boundaries.
   lo_.assign(items_.size(), 0);
   hi_.assign(items_.size(), 0);
+  for (std::uint32_t i = 0; i + 1 < slot_begin_.size(); ++i) {
+    LineAt line(segments[i]);
+    for (std::uint32_t e = slot_begin_[i]; e < slot_begin_[i + 1]; ++e) {
+      const Slot slot = slots_[e];
+      if (!crowded(slot.cell)) continue;
+      const IntegerRange u = part_offsets(slot.cell, segments[i], line);
+      lo_[slot.at] = static_cast<std::int32_t>(u.lo);
+      hi_[slot.at] = static_cast<std::int32_t>(u.hi);
+      width_[slot.cell] = std::max(width_[slot.cell], u.hi - u.lo);
+    }
+  }
   entry_at.resize(items_.size());  // the slot of each item
   for (std::uint32_t e = 0; e < slots_.size(); ++e) entry_at[slots_[e].at] = e;
   struct Item {
@@ -190,28 +234,14 @@ void SegmentGrid::order_crowded_cells(const std::vector<Segment>& segments,
   };
   ScratchVector<Item> cell_items;
   for (std::size_t k = 0; k < cells; ++k) {
+    if (!crowded(k)) continue;
     const std::uint32_t begin = cell_begin_[k], end = cell_begin_[k + 1];
-    if (end - begin <= kCrowded) continue;
-    // The normal of the cell's first segment, halved until it fits 11 bits.
-    const Segment& first = segments[items_[begin]];
-    std::int64_t nx = first.a.y - first.b.y, ny = first.b.x - first.a.x;
-    while (std::max(std::abs(nx), std::abs(ny)) > kNormalLimit) {
-      nx >>= 1;
-      ny >>= 1;
-    }
-    normal_[k] = {static_cast<std::int16_t>(nx), static_cast<std::int16_t>(ny)};
     cell_items.clear();
-    std::int64_t width = 0;
-    for (std::uint32_t x = begin; x < end; ++x) {
-      const IntegerRange u = part_offsets(k, segments[items_[x]]);
-      width = std::max(width, u.hi - u.lo);
-      cell_items.push_back({static_cast<std::int32_t>(u.lo), static_cast<std::int32_t>(u.hi),
-                            items_[x], entry_at[x]});
-    }
+    for (std::uint32_t x = begin; x < end; ++x)
+      cell_items.push_back({lo_[x], hi_[x], items_[x], entry_at[x]});
     std::sort(cell_items.begin(), cell_items.end(), [](const Item& a, const Item& b) {
       return a.lo != b.lo ? a.lo < b.lo : a.id < b.id;
     });
-    width_[k] = width;
     for (std::uint32_t x = begin; x < end; ++x) {
       const Item& it = cell_items[x - begin];
       items_[x] = it.id;

@@ -30,8 +30,10 @@
 // intervals come from kernel/line_bounds.hpp (the line's y at the part's x ends, rounded
 // outward), scaled down by a power of two (rounded outward again) to fit 32 bits.
 #include <algorithm>
+#include <cstdlib>
 #include <cstdint>
 #include <limits>
+#include <string>
 #include <vector>
 
 #include "edgeland/kernel/bbox.hpp"
@@ -70,6 +72,18 @@ class SegmentGrid {
   // once per cell: what for_each_candidate_pair walks through.
   std::size_t cell_pairs() const;
 
+  // The invariants the crowded cells' pair search relies on (checked mode, check_fragments.cpp):
+  // each segment's slots point at its own entries; a crowded cell's list is sorted by lo, every
+  // interval within the cell's width; and every segment end lying in a crowded cell has its
+  // offset inside the segment's interval there. Returns the first violation, or "" if none.
+  std::string offsets_violation(const std::vector<Segment>& segments) const;
+
+  // Cells ordered by offset: for tests.
+  std::size_t crowded_cells() const {
+    return static_cast<std::size_t>(
+        std::count_if(width_.begin(), width_.end(), [](std::int64_t w) { return w >= 0; }));
+  }
+
   // Cells holding more segments than this are ordered by offset (above); below it the sort and
   // the exact bounds cost more than the pairs they save.
   static constexpr std::uint32_t kCrowded = 32;
@@ -93,7 +107,33 @@ class SegmentGrid {
             min_y_ + static_cast<std::int64_t>(k) % rows_ * side_};
   }
   IntegerRange box_offsets(std::size_t k, const Box64& b) const;
-  IntegerRange part_offsets(std::size_t k, const Segment& s) const;
+  // The line of one segment at the ends of its parts, along x (along y when steep): the last
+  // two answers are kept, since the walk's consecutive cells share a column or row boundary.
+  class LineAt {
+   public:
+    explicit LineAt(const Segment& s)
+        : s_(s), steep_(std::abs(s.b.y - s.a.y) > std::abs(s.b.x - s.a.x)) {}
+    bool steep() const { return steep_; }
+    IntegerRange at(std::int64_t t) {
+      for (int k = 0; k < 2; ++k)
+        if (known_[k] && key_[k] == t) return value_[k];
+      if (s_.a == s_.b) return {steep_ ? s_.a.x : s_.a.y, steep_ ? s_.a.x : s_.a.y};
+      next_ ^= 1;
+      known_[next_] = true;
+      key_[next_] = t;
+      value_[next_] = steep_ ? line_x_at(s_.a, s_.b, t) : line_y_at(s_.a, s_.b, t);
+      return value_[next_];
+    }
+
+   private:
+    const Segment& s_;
+    bool steep_;
+    bool known_[2] = {false, false};
+    std::int64_t key_[2] = {0, 0};
+    IntegerRange value_[2] = {};
+    int next_ = 0;
+  };
+  IntegerRange part_offsets(std::size_t k, const Segment& s, LineAt& line) const;
   // Sorts each crowded cell's list by offset (scratch: one word per registration).
   void order_crowded_cells(const std::vector<Segment>& segments,
                            std::vector<std::uint32_t>& scratch);

@@ -241,6 +241,105 @@ RC_GTEST_PROP(SegmentGrid, BoxQueryVisitsEverySegmentMeetingTheBox, ()) {
   }
 }
 
+// Two zigzags of long, nearly parallel segments a few units apart, the second shifted across
+// the first (issue 28's zigzag stars in miniature, in any direction): vertex i of a zigzag lies
+// i steps along `across` and, for odd i, `length` times `along` further, each vertex moved by up
+// by jitter() in x and in y. Every grid cell they pass is crowded with them; their segments meet
+// their neighbours, the other zigzag's segments, or nothing by a few units.
+template <class Jitter>
+std::vector<Segment> zigzag_pair(Point64 along, std::int64_t length, std::int64_t step,
+                                 std::int64_t shift, Jitter jitter, std::size_t n) {
+  const Point64 across{-along.y, along.x};
+  std::vector<Segment> segs;
+  for (std::int64_t z = 0; z < 2; ++z) {
+    auto vertex = [&](std::int64_t i) {
+      const std::int64_t out = i % 2 == 1 ? length : 0, side = i * step + z * shift;
+      const std::int64_t jx = jitter(), jy = jitter();
+      return Point64{across.x * side + along.x * out + jx, across.y * side + along.y * out + jy};
+    };
+    Point64 from = vertex(0);
+    for (std::size_t i = 1; i <= n; ++i) {
+      const Point64 to = vertex(static_cast<std::int64_t>(i));
+      segs.push_back({from, to});
+      from = to;
+    }
+  }
+  return segs;
+}
+
+rc::Gen<std::vector<Segment>> crowded_zigzags() {
+  return rc::gen::exec([] {
+    const auto component = rc::gen::inRange<std::int64_t>(-300, 301);
+    Point64 along{*component, *component};
+    if (along == Point64{0, 0}) along = {1, 0};
+    const std::int64_t length = *rc::gen::inRange<std::int64_t>(200, 20000);
+    const std::int64_t step = *rc::gen::inRange<std::int64_t>(1, 4);
+    const std::int64_t shift = *rc::gen::inRange<std::int64_t>(0, 6);
+    const std::int64_t jitter = *rc::gen::element<std::int64_t>(0, 2, 40);
+    return zigzag_pair(
+        along, length, step, shift,
+        [jitter] { return *rc::gen::inRange<std::int64_t>(-jitter, jitter + 1); },
+        *rc::gen::inRange<std::size_t>(40, 160));
+  });
+}
+
+// Crowded cells propose only pairs whose offsets across the cell overlap: still every pair that
+// shares a point, once, and every segment with a point in a queried box.
+RC_GTEST_PROP(SegmentGrid, CrowdedCellsMissNoMeetingPair, ()) {
+  const std::vector<Segment> segs = *crowded_zigzags();
+  const SegmentGrid grid(segs);
+  std::set<std::pair<std::uint32_t, std::uint32_t>> got;
+  grid.for_each_candidate_pair([&](std::uint32_t i, std::uint32_t j) {
+    RC_ASSERT(i < j);
+    RC_ASSERT(got.insert({i, j}).second);
+  });
+  std::size_t meeting = 0;
+  for (std::uint32_t i = 0; i < segs.size(); ++i)
+    for (std::uint32_t j = i + 1; j < segs.size(); ++j)
+      if (intersect(segs[i], segs[j]).relation != SegmentRelation::kDisjoint) {
+        RC_ASSERT(got.count({i, j}) == 1u);
+        ++meeting;
+      }
+  RC_CLASSIFY(grid.crowded_cells() > 0, "crowded");
+  RC_ASSERT(grid.offsets_violation(segs).empty());
+  for (int k = 0; k < 20; ++k) {
+    // Pixels around segment ends and points near segments' middles, and boxes over the fan.
+    const Segment& s = *rc::gen::elementOf(segs);
+    const Point64 mid{(s.a.x + s.b.x) / 2 + *rc::gen::inRange(-2, 3),
+                      (s.a.y + s.b.y) / 2 + *rc::gen::inRange(-2, 3)};
+    const Point64 p = *rc::gen::element(s.a, s.b, mid);
+    const std::int64_t r = *rc::gen::element<std::int64_t>(1, 1, 30, 5000);
+    const Box64 q{{p.x - r, p.y - r}, {p.x + r, p.y + r}};
+    std::set<std::uint32_t> visited;
+    grid.for_each_in_box(q, [&](std::uint32_t t) { visited.insert(t); });
+    for (std::uint32_t t = 0; t < segs.size(); ++t)
+      if (meets_box(segs[t], q)) RC_ASSERT(visited.count(t) == 1u);
+  }
+}
+
+// A fixed case of the above that must take the crowded path, and must gain by it: the pairs
+// the cells propose stay within a few per segment, not the hundreds sharing each cell.
+TEST(SegmentGrid, CrowdedCellsProposeFewPairsAndAllMeetingOnes) {
+  std::int64_t wobble = 0;  // a fixed jitter: -1, 0, 1, -1, ...
+  const std::vector<Segment> segs =
+      zigzag_pair({7, 200}, 5000, 3, 2, [&] { return ++wobble % 3 - 1; }, 400);
+  const SegmentGrid grid(segs);
+  ASSERT_GT(grid.crowded_cells(), 0u);
+  EXPECT_EQ(grid.offsets_violation(segs), "");
+  std::set<std::pair<std::uint32_t, std::uint32_t>> got;
+  grid.for_each_candidate_pair([&](std::uint32_t i, std::uint32_t j) { got.insert({i, j}); });
+  std::size_t meeting = 0;
+  for (std::uint32_t i = 0; i < segs.size(); ++i)
+    for (std::uint32_t j = i + 1; j < segs.size(); ++j)
+      if (intersect(segs[i], segs[j]).relation != SegmentRelation::kDisjoint) {
+        EXPECT_EQ(got.count({i, j}), 1u) << i << " " << j;
+        ++meeting;
+      }
+  EXPECT_GE(meeting, segs.size() - 2);       // ring neighbours at least
+  EXPECT_LE(got.size(), 8 * segs.size());    // every pair of a cell: ~400 per segment
+  EXPECT_LE(grid.cell_pairs(), 16 * segs.size());
+}
+
 // The hot-pixel set against std::set: inserts report novelty, membership survives growth and
 // clear() empties it. Points are few distinct ones (many repeats) or spread over the range.
 RC_GTEST_PROP(PointSet, AgreesWithStdSet, ()) {
