@@ -21,7 +21,8 @@ inline bool runs_are_short(const SegmentIndex& index, std::size_t segments) {
   return segments >= kGridWalkFrom && index.run_length_x16() < kGridWalkBelowRunLengthX16;
 }
 
-// Whether the run index would propose fewer pairs than the grid's cells hold: a grid sized for
+// Whether the run index would propose fewer pairs than the grid's cells hold (before the
+// crowded cells are ordered): a grid sized for
 // spikes fails on long parallel segments side by side (comb teeth 10^8 long and 80 apart: 10^4
 // of them per cell), whose runs' x-ranges barely overlap. Only counted when the cells hold many.
 inline bool grid_walk_is_worse(const SegmentGrid& grid, const SegmentIndex& index,
@@ -34,13 +35,17 @@ inline bool grid_walk_is_worse(const SegmentGrid& grid, const SegmentIndex& inde
 // visit(i, j) once for every pair of `segs` whose closed boxes overlap, except consecutive
 // segments of one monotone run of the index (they meet only at their common end): through
 // `grid` when given (a SegmentGrid of segs) and not worse than the index, else through the
-// index. With across_rings_only, pairs of one ring are left out too (ring_of[s] numbers the
-// ring of s; read only on the grid walk).
+// index; a grid walked with many pairs per cell has its crowded cells ordered first (left so
+// for snap rounding's point queries). With across_rings_only, pairs of one ring are left out too
+// (ring_of[s] numbers the ring of s; read only on the grid walk).
 template <class F>
 void for_each_candidate_pair(const std::vector<Segment>& segs, const SegmentIndex& index,
-                             const SegmentGrid* grid, bool across_rings_only,
+                             SegmentGrid* grid, bool across_rings_only,
                              const std::uint32_t* ring_of, F&& visit) {
   if (grid != nullptr && !grid_walk_is_worse(*grid, index, segs.size())) {
+    // Many pairs in the cells, and the index has even more: long near-parallel segments
+    // crowding the cells (zigzag stars). Sorting the crowded cells by offset leaves few.
+    grid->order_if_crowded(segs);
     grid->for_each_candidate_pair([&](std::uint32_t i, std::uint32_t j) {
       if (across_rings_only && ring_of[i] == ring_of[j]) return;
       if (boxes_overlap(segs[i], segs[j])) visit(i, j);

@@ -92,7 +92,6 @@ SegmentGrid::SegmentGrid(const std::vector<Segment>& segments) {
       slots_[e] = {fill[k], k};
       items_[fill[k]++] = i;
     }
-  order_crowded_cells(segments, entry_cells);
 }
 
 }  // namespace edgeland::detail
@@ -110,8 +109,7 @@ std::size_t SegmentGrid::cell_pairs() const {
     // Sorted by lo: item x overlaps the later items starting at most at its hi.
     for (std::uint32_t x = begin; x < end; ++x)
       pairs += static_cast<std::size_t>(
-          std::upper_bound(lo_.begin() + x + 1, lo_.begin() + end, hi_[x]) -
-          (lo_.begin() + x + 1));
+          std::upper_bound(lo_.begin() + x + 1, lo_.begin() + end, hi_[x]) - (lo_.begin() + x + 1));
   }
   return pairs;
 }
@@ -133,8 +131,10 @@ IntegerRange SegmentGrid::box_offsets(std::size_t k, const Box64& b) const {
                    {std::min(b.max.x, o.x + side_), std::min(b.max.y, o.y + side_)}};
   // Linear in p: its bounds over the box are at opposite corners, picked by n's signs.
   const Normal n = normal_[k];
-  const std::int64_t x_lo = n.x >= 0 ? part.min.x : part.max.x, x_hi = n.x >= 0 ? part.max.x : part.min.x;
-  const std::int64_t y_lo = n.y >= 0 ? part.min.y : part.max.y, y_hi = n.y >= 0 ? part.max.y : part.min.y;
+  const std::int64_t x_lo = n.x >= 0 ? part.min.x : part.max.x,
+                     x_hi = n.x >= 0 ? part.max.x : part.min.x;
+  const std::int64_t y_lo = n.y >= 0 ? part.min.y : part.max.y,
+                     y_hi = n.y >= 0 ? part.max.y : part.min.y;
   return scaled_out(n.x * (x_lo - o.x) + n.y * (y_lo - o.y),
                     n.x * (x_hi - o.x) + n.y * (y_hi - o.y), offset_shift_);
 }
@@ -179,7 +179,8 @@ std::string SegmentGrid::offsets_violation(const std::vector<Segment>& segments)
     const Point64 o = corner(k);
     const Box64 cell{o, {o.x + side_, o.y + side_}};
     for (std::uint32_t x = cell_begin_[k]; x < cell_begin_[k + 1]; ++x) {
-      if (x > cell_begin_[k] && lo_[x - 1] > lo_[x]) return "cell " + std::to_string(k) + " unsorted";
+      if (x > cell_begin_[k] && lo_[x - 1] > lo_[x])
+        return "cell " + std::to_string(k) + " unsorted";
       if (hi_[x] < lo_[x] || hi_[x] - lo_[x] > width_[k])
         return "cell " + std::to_string(k) + ": an interval is wider than the cell's width";
       for (Point64 p : {segments[items_[x]].a, segments[items_[x]].b}) {
@@ -195,8 +196,8 @@ std::string SegmentGrid::offsets_violation(const std::vector<Segment>& segments)
   return "";
 }
 
-void SegmentGrid::order_crowded_cells(const std::vector<Segment>& segments,
-                                      std::vector<std::uint32_t>& entry_at) {
+void SegmentGrid::order_crowded_cells(const std::vector<Segment>& segments) {
+  if (!width_.empty() || cell_begin_.empty()) return;
   const std::size_t cells = cell_begin_.size() - 1;
   width_.assign(cells, -1);
   normal_.assign(cells, Normal{0, 0});
@@ -226,7 +227,8 @@ void SegmentGrid::order_crowded_cells(const std::vector<Segment>& segments,
       width_[slot.cell] = std::max(width_[slot.cell], u.hi - u.lo);
     }
   }
-  entry_at.resize(items_.size());  // the slot of each item
+  ScratchVector<std::uint32_t> entry_at;  // the slot of each item
+  entry_at.resize(items_.size());
   for (std::uint32_t e = 0; e < slots_.size(); ++e) entry_at[slots_[e].at] = e;
   struct Item {
     std::int32_t lo, hi;

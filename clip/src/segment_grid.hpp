@@ -30,8 +30,8 @@
 // intervals come from kernel/line_bounds.hpp (the line's y at the part's x ends, rounded
 // outward), scaled down by a power of two (rounded outward again) to fit 32 bits.
 #include <algorithm>
-#include <cstdlib>
 #include <cstdint>
+#include <cstdlib>
 #include <limits>
 #include <string>
 #include <vector>
@@ -84,6 +84,15 @@ class SegmentGrid {
         std::count_if(width_.begin(), width_.end(), [](std::int64_t w) { return w >= 0; }));
   }
 
+  // Sorts each crowded cell's list by offset (above), once; `segments` as given to the
+  // constructor. Until then every cell proposes all its pairs. Worth it only when the cells
+  // hold many pairs: order_if_crowded decides by the count (16 per segment, as
+  // candidate_pairs.hpp), so inputs whose cells are sparse pay nothing for it.
+  void order_crowded_cells(const std::vector<Segment>& segments);
+  void order_if_crowded(const std::vector<Segment>& segments) {
+    if (width_.empty() && cell_pairs() > 16 * segments.size() + 4096) order_crowded_cells(segments);
+  }
+
   // Cells holding more segments than this are ordered by offset (above); below it the sort and
   // the exact bounds cost more than the pairs they save.
   static constexpr std::uint32_t kCrowded = 32;
@@ -134,10 +143,7 @@ class SegmentGrid {
     int next_ = 0;
   };
   IntegerRange part_offsets(std::size_t k, const Segment& s, LineAt& line) const;
-  // Sorts each crowded cell's list by offset (scratch: one word per registration).
-  void order_crowded_cells(const std::vector<Segment>& segments,
-                           std::vector<std::uint32_t>& scratch);
-  bool crowded(std::size_t k) const { return width_[k] >= 0; }
+  bool crowded(std::size_t k) const { return !width_.empty() && width_[k] >= 0; }
   // f(cell index) for every cell the walk registers s in, each cell once.
   template <class F>
   void for_each_cell(const Segment& s, F&& f) const;
@@ -149,14 +155,15 @@ class SegmentGrid {
   int shift_ = 0;  // side_ == 2^shift_: cells are found by shifts, not divisions
   // CSR over cells: items_ of cell k, ascending ids, or by (lo_, id) in a crowded cell.
   ScratchVector<std::uint32_t> cell_begin_;
-  ScratchVector<std::uint32_t> items_;  // segment ids
+  ScratchVector<std::uint32_t> items_;   // segment ids
   ScratchVector<std::int32_t> lo_, hi_;  // per item in a crowded cell: its offset bounds
   struct Normal {
     std::int16_t x, y;
   };
-  ScratchVector<Normal> normal_;        // per crowded cell
-  ScratchVector<std::int64_t> width_;   // per cell: largest hi_ - lo_ when crowded, else -1
-  int offset_shift_ = 0;                // offsets are divided by 2^offset_shift_
+  ScratchVector<Normal> normal_;  // per crowded cell
+  // per cell once ordered: largest hi_ - lo_ when crowded, else -1 (empty until ordered)
+  ScratchVector<std::int64_t> width_;
+  int offset_shift_ = 0;  // offsets are divided by 2^offset_shift_
   // CSR over segments: the slots of segment i.
   ScratchVector<std::uint32_t> slot_begin_;
   ScratchVector<Slot> slots_;
@@ -236,11 +243,10 @@ void SegmentGrid::for_each_in_cell(std::size_t k, const Box64& b, F&& visit) con
   // A segment with a point P in b holds P's offset, which lies within b's (on the cell).
   const IntegerRange q = box_offsets(k, b);
   const std::int64_t reach = q.lo - width_[k];  // no item starting lower reaches q.lo
-  x = static_cast<std::uint32_t>(std::lower_bound(lo_.begin() + x, lo_.begin() + end, reach,
-                                                  [](std::int32_t v, std::int64_t t) {
-                                                    return v < t;
-                                                  }) -
-                                 lo_.begin());
+  x = static_cast<std::uint32_t>(
+      std::lower_bound(lo_.begin() + x, lo_.begin() + end, reach,
+                       [](std::int32_t v, std::int64_t t) { return v < t; }) -
+      lo_.begin());
   for (; x < end && lo_[x] <= q.hi; ++x)
     if (hi_[x] >= q.lo) visit(items_[x]);
 }

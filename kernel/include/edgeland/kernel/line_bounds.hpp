@@ -1,7 +1,7 @@
 #pragma once
 // Integer bounds on where a segment's line passes: integers lo <= y <= hi around the y it takes
-// at an integer x (or the x at an integer y), lo the floor and hi - lo <= 1. clip/'s segment grid bounds a segment's offset
-// across a cell with them, so it needs no rational arithmetic of its own.
+// at an integer x (or the x at an integer y), lo the floor and hi - lo <= 1. clip/'s segment grid
+// bounds a segment's offset across a cell with them, so it needs no rational arithmetic of its own.
 #include <cstdint>
 
 #include "edgeland/kernel/point.hpp"
