@@ -21,31 +21,33 @@ inline bool runs_are_short(const SegmentIndex& index, std::size_t segments) {
   return segments >= kGridWalkFrom && index.run_length_x16() < kGridWalkBelowRunLengthX16;
 }
 
-// Whether the run index would propose fewer pairs than the grid's cells hold (before the
-// crowded cells are ordered): a grid sized for
-// spikes fails on long parallel segments side by side (comb teeth 10^8 long and 80 apart: 10^4
-// of them per cell), whose runs' x-ranges barely overlap. Only counted when the cells hold many.
-inline bool grid_walk_is_worse(const SegmentGrid& grid, const SegmentIndex& index,
-                               std::size_t segments) {
+// Whether to walk `grid` rather than the run index, by the pairs each would propose; only
+// counted when the grid's cells hold many (more than 16 per segment). A grid sized for spikes
+// fails on long parallel segments side by side (comb teeth 10^8 long and 80 apart: 10^4 of
+// them per cell), whose runs' x-ranges barely overlap: a cheap index is taken at once. Else the
+// grid's crowded cells are ordered (segment_grid.hpp: long near-parallel segments, as in zigzag
+// stars, leave few pairs then) and the two counts compared again.
+inline bool walk_grid(SegmentGrid& grid, const SegmentIndex& index,
+                      const std::vector<Segment>& segs) {
+  const std::size_t many = 16 * segs.size() + 4096;
   const std::size_t cell_pairs = grid.cell_pairs();
-  return cell_pairs > 16 * segments + 4096 &&
-         index.x_overlapping_run_pairs(cell_pairs) < cell_pairs;
+  if (cell_pairs <= many) return true;
+  const std::size_t index_pairs = index.x_overlapping_run_pairs(cell_pairs);
+  if (index_pairs <= many) return false;
+  grid.order_crowded_cells(segs);
+  return grid.cell_pairs() <= index_pairs;
 }
 
 // visit(i, j) once for every pair of `segs` whose closed boxes overlap, except consecutive
 // segments of one monotone run of the index (they meet only at their common end): through
-// `grid` when given (a SegmentGrid of segs) and not worse than the index, else through the
-// index; a grid walked with many pairs per cell has its crowded cells ordered first (left so
-// for snap rounding's point queries). With across_rings_only, pairs of one ring are left out too
-// (ring_of[s] numbers the ring of s; read only on the grid walk).
+// `grid` when given (a SegmentGrid of segs, possibly left ordered for snap rounding's point
+// queries) and chosen by walk_grid, else through the index. With across_rings_only, pairs of
+// one ring are left out too (ring_of[s] numbers the ring of s; read only on the grid walk).
 template <class F>
 void for_each_candidate_pair(const std::vector<Segment>& segs, const SegmentIndex& index,
                              SegmentGrid* grid, bool across_rings_only,
                              const std::uint32_t* ring_of, F&& visit) {
-  if (grid != nullptr && !grid_walk_is_worse(*grid, index, segs.size())) {
-    // Many pairs in the cells, and the index has even more: long near-parallel segments
-    // crowding the cells (zigzag stars). Sorting the crowded cells by offset leaves few.
-    grid->order_if_crowded(segs);
+  if (grid != nullptr && walk_grid(*grid, index, segs)) {
     grid->for_each_candidate_pair([&](std::uint32_t i, std::uint32_t j) {
       if (across_rings_only && ring_of[i] == ring_of[j]) return;
       if (boxes_overlap(segs[i], segs[j])) visit(i, j);

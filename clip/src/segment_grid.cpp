@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <limits>
+#include <utility>
 
 #include "edgeland/kernel/grid_cells.hpp"
 #include "offsets.hpp"
@@ -196,6 +197,30 @@ std::string SegmentGrid::offsets_violation(const std::vector<Segment>& segments)
   return "";
 }
 
+namespace {
+
+// The normal of segment s, halved until it fits 11 bits (any normal is correct; a near one
+// keeps near-parallel parts' intervals narrow).
+std::pair<std::int64_t, std::int64_t> short_normal(const Segment& s) {
+  std::int64_t nx = s.a.y - s.b.y, ny = s.b.x - s.a.x;
+  while (std::max(std::abs(nx), std::abs(ny)) > kNormalLimit) {
+    nx >>= 1;
+    ny >>= 1;
+  }
+  return {nx, ny};
+}
+
+// Sort keys: lo above the item's place in its cell (the places are in id order, so the keys
+// sort by (lo, id)); 64-bit keys compare faster than records.
+std::uint64_t sort_key(std::int32_t lo, std::uint32_t place) {
+  return std::uint64_t{static_cast<std::uint32_t>(lo) ^ 0x80000000u} << 32 | place;
+}
+std::int32_t key_lo(std::uint64_t key) {
+  return static_cast<std::int32_t>(static_cast<std::uint32_t>(key >> 32) ^ 0x80000000u);
+}
+
+}  // namespace
+
 void SegmentGrid::order_crowded_cells(const std::vector<Segment>& segments) {
   if (!width_.empty() || cell_begin_.empty()) return;
   const std::size_t cells = cell_begin_.size() - 1;
@@ -203,16 +228,15 @@ void SegmentGrid::order_crowded_cells(const std::vector<Segment>& segments) {
   normal_.assign(cells, Normal{0, 0});
   for (std::size_t k = 0; k < cells; ++k) {
     if (cell_begin_[k + 1] - cell_begin_[k] <= kCrowded) continue;
-    // The normal of the cell's first segment, halved until it fits 11 bits.
-    const Segment& first = segments[items_[cell_begin_[k]]];
-    std::int64_t nx = first.a.y - first.b.y, ny = first.b.x - first.a.x;
-    while (std::max(std::abs(nx), std::abs(ny)) > kNormalLimit) {
-      nx >>= 1;
-      ny >>= 1;
-    }
+    const auto [nx, ny] = short_normal(segments[items_[cell_begin_[k]]]);  // its first segment's
     normal_[k] = {static_cast<std::int16_t>(nx), static_cast<std::int16_t>(ny)};
     width_[k] = 0;
   }
+  bound_parts(segments);
+  sort_crowded_cells();
+}
+
+void SegmentGrid::bound_parts(const std::vector<Segment>& segments) {
   // Each segment's intervals in walk order: its cells share column (or row) boundaries.
   lo_.assign(items_.size(), 0);
   hi_.assign(items_.size(), 0);
@@ -227,29 +251,29 @@ void SegmentGrid::order_crowded_cells(const std::vector<Segment>& segments) {
       width_[slot.cell] = std::max(width_[slot.cell], u.hi - u.lo);
     }
   }
+}
+
+void SegmentGrid::sort_crowded_cells() {
   ScratchVector<std::uint32_t> entry_at;  // the slot of each item
   entry_at.resize(items_.size());
   for (std::uint32_t e = 0; e < slots_.size(); ++e) entry_at[slots_[e].at] = e;
-  struct Item {
-    std::int32_t lo, hi;
-    std::uint32_t id, entry;
-  };
-  ScratchVector<Item> cell_items;
-  for (std::size_t k = 0; k < cells; ++k) {
+  ScratchVector<std::uint64_t> keys;
+  ScratchVector<std::uint32_t> ids;
+  ScratchVector<std::int32_t> his;
+  for (std::size_t k = 0; k + 1 < cell_begin_.size(); ++k) {
     if (!crowded(k)) continue;
     const std::uint32_t begin = cell_begin_[k], end = cell_begin_[k + 1];
-    cell_items.clear();
-    for (std::uint32_t x = begin; x < end; ++x)
-      cell_items.push_back({lo_[x], hi_[x], items_[x], entry_at[x]});
-    std::sort(cell_items.begin(), cell_items.end(), [](const Item& a, const Item& b) {
-      return a.lo != b.lo ? a.lo < b.lo : a.id < b.id;
-    });
+    keys.clear();
+    for (std::uint32_t x = begin; x < end; ++x) keys.push_back(sort_key(lo_[x], x - begin));
+    std::sort(keys.begin(), keys.end());
+    ids.assign(items_.begin() + begin, items_.begin() + end);
+    his.assign(hi_.begin() + begin, hi_.begin() + end);
     for (std::uint32_t x = begin; x < end; ++x) {
-      const Item& it = cell_items[x - begin];
-      items_[x] = it.id;
-      lo_[x] = it.lo;
-      hi_[x] = it.hi;
-      slots_[it.entry].at = x;
+      const auto from = static_cast<std::uint32_t>(keys[x - begin]);
+      items_[x] = ids[from];
+      lo_[x] = key_lo(keys[x - begin]);
+      hi_[x] = his[from];
+      slots_[entry_at[begin + from]].at = x;
     }
   }
 }

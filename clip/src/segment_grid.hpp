@@ -86,11 +86,12 @@ class SegmentGrid {
 
   // Sorts each crowded cell's list by offset (above), once; `segments` as given to the
   // constructor. Until then every cell proposes all its pairs. Worth it only when the cells
-  // hold many pairs: order_if_crowded decides by the count (16 per segment, as
-  // candidate_pairs.hpp), so inputs whose cells are sparse pay nothing for it.
+  // hold many pairs and the run index has even more (candidate_pairs.hpp decides).
   void order_crowded_cells(const std::vector<Segment>& segments);
+  // Orders them when the cells hold many pairs (more than 16 per segment): for a caller with
+  // no run index to compare with (snap rounding's re-check of all fragments).
   void order_if_crowded(const std::vector<Segment>& segments) {
-    if (width_.empty() && cell_pairs() > 16 * segments.size() + 4096) order_crowded_cells(segments);
+    if (cell_pairs() > 16 * segments.size() + 4096) order_crowded_cells(segments);
   }
 
   // Cells holding more segments than this are ordered by offset (above); below it the sort and
@@ -143,6 +144,10 @@ class SegmentGrid {
     int next_ = 0;
   };
   IntegerRange part_offsets(std::size_t k, const Segment& s, LineAt& line) const;
+  // The steps of order_crowded_cells: every item's interval in a crowded cell, then each
+  // crowded cell's list sorted by (lo, id), the slots following their items.
+  void bound_parts(const std::vector<Segment>& segments);
+  void sort_crowded_cells();
   bool crowded(std::size_t k) const { return !width_.empty() && width_[k] >= 0; }
   // f(cell index) for every cell the walk registers s in, each cell once.
   template <class F>

@@ -149,7 +149,9 @@ void check_by_grid_walk(const AllFragments& all, const std::vector<std::uint8_t>
       ids.push_back(id);
       all_segments.push_back(all.seg(id));
     });
-  SegmentGrid(all_segments).for_each_candidate_pair([&](std::uint32_t i, std::uint32_t j) {
+  SegmentGrid grid(all_segments);
+  grid.order_if_crowded(all_segments);  // long near-parallel fragments (zigzag stars)
+  grid.for_each_candidate_pair([&](std::uint32_t i, std::uint32_t j) {
     if ((check.moved(ids[i]) || check.moved(ids[j])) &&
         (off[all.parent(ids[i])] || off[all.parent(ids[j])]) &&
         boxes_overlap(all_segments[i], all_segments[j]))

@@ -328,7 +328,7 @@ TEST(SegmentGrid, CrowdedCellsProposeFewPairsAndAllMeetingOnes) {
       {7, 200}, 5000, 3, 2, [&] { return ++wobble % 3 - 1; }, 400);
   SegmentGrid grid(segs);
   const std::size_t unordered_pairs = grid.cell_pairs();
-  grid.order_if_crowded(segs);
+  grid.order_crowded_cells(segs);
   ASSERT_GT(grid.crowded_cells(), 0u);
   EXPECT_EQ(grid.offsets_violation(segs), "");
   std::set<std::pair<std::uint32_t, std::uint32_t>> got;
