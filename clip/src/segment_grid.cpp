@@ -228,7 +228,9 @@ void SegmentGrid::order_crowded_cells(const std::vector<Segment>& segments) {
   normal_.assign(cells, Normal{0, 0});
   for (std::size_t k = 0; k < cells; ++k) {
     if (cell_begin_[k + 1] - cell_begin_[k] <= kCrowded) continue;
-    const auto [nx, ny] = short_normal(segments[items_[cell_begin_[k]]]);  // its first segment's
+    // The normal of the cell's middle segment in id order: along a ring that is also about the
+    // middle of the cell, so the directions around it deviate least.
+    const auto [nx, ny] = short_normal(segments[items_[(cell_begin_[k] + cell_begin_[k + 1]) / 2]]);
     normal_[k] = {static_cast<std::int16_t>(nx), static_cast<std::int16_t>(ny)};
     width_[k] = 0;
   }

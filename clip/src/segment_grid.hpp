@@ -23,7 +23,7 @@
 // would cross thousands), so proposing every pair of a cell grew with the square of the input
 // (issue 28: 5,600 pairs per segment at 4 * 10^5 segments, for one crossing each). In a cell of
 // more than kCrowded segments each segment's part is bounded by an interval of the offset
-// n . (P - corner) across the cell (n: the normal of the cell's first segment, cut to 11 bits;
+// n . (P - corner) across the cell (n: the normal of the cell's middle segment, cut to 11 bits;
 // any n is correct, a near one makes near-parallel parts' intervals narrow) and the cell's
 // segments are sorted by it: a pair is proposed there only when its intervals overlap. Two
 // segments sharing a point P in the cell both hold P's offset, so no meeting is lost. The
