@@ -8,7 +8,7 @@
 #include "cell_split.hpp"
 #include "edgeland/kernel/area.hpp"
 #include "edit_log.hpp"
-#include "landscape_access.hpp"
+#include "save_load.hpp"
 
 namespace edgeland::detail {
 namespace {
@@ -117,11 +117,11 @@ void check_inner(const Node& n, const LandscapeConfig& config, std::vector<std::
   check_sums(n, make_inner(n.box, n.depth, children), problems);
 }
 
-std::string check_edit(const Landscape& l, const NodePtr& new_root, const Changes& changes,
-                       PolygonId old_next_id) {
+std::string check_edit(const LandscapeState& before, const NodePtr& new_root,
+                       const Changes& changes, PolygonId old_next_id) {
   std::vector<std::string> problems;
-  const LandscapeConfig& config = LandscapeAccess::state(l).config;
-  if (new_root->box != LandscapeAccess::state(l).world || new_root->depth != 0)
+  const LandscapeConfig& config = before.config;
+  if (new_root->box != before.world || new_root->depth != 0)
     problems.push_back("the root is not the world");
   for (const NodePtr& c : changes.new_cells) check_cell(*c, config, problems);
   for (const NodePtr& n : changes.new_inner) check_inner(*n, config, problems);
@@ -164,28 +164,28 @@ void check_subtree(const NodePtr& n, const LandscapeConfig& config,
 
 }  // namespace
 
-LandscapeReport check_all(const Landscape& l) {
+LandscapeReport check_all(const LandscapeState& s) {
   LandscapeReport report;
-  const NodePtr& root = LandscapeAccess::state(l).root;
-  if (root->box != LandscapeAccess::state(l).world || root->depth != 0)
+  const NodePtr& root = s.root;
+  if (root->box != s.world || root->depth != 0)
     report.problems.push_back("the root is not the world");
   std::set<PolygonId> ids;
   detail::AreaTable areas{};
-  check_subtree(root, LandscapeAccess::state(l).config, report.problems, ids, areas);
-  if (!ids.empty() && *ids.rbegin() >= LandscapeAccess::state(l).next_id)
+  check_subtree(root, s.config, report.problems, ids, areas);
+  if (!ids.empty() && *ids.rbegin() >= s.next_id)
     report.problems.push_back("an id is not below the next id");
   for (std::size_t m = 1; m < kMaterialCount; ++m)
-    if (areas[m] != (*LandscapeAccess::state(l).areas)[m])
+    if (areas[m] != (*s.areas)[m])
       report.problems.push_back("the area of material " + std::to_string(m) +
                                 " is not the sum of its polygons");
   return report;
 }
 
-LandscapeInternalError internal_error(const Landscape& l, const std::string& what,
+LandscapeInternalError internal_error(const LandscapeState& s, const std::string& what,
                                       const std::string& log_line) {
   std::ostringstream state;
-  l.save(state);
-  return LandscapeInternalError(what, state.str(), replay_log(l) + log_line);
+  save_state(s, state);
+  return LandscapeInternalError(what, state.str(), replay_log(s) + log_line);
 }
 
 }  // namespace edgeland::detail

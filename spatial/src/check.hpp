@@ -22,16 +22,17 @@ void check_cell_content(const Node& cell, const LandscapeConfig& config,
 void check_inner(const Node& node, const LandscapeConfig& config,
                  std::vector<std::string>& problems);
 
-// What is wrong with the tree an edit built (empty: nothing). old_next_id: the landscape's next
-// id before the edit.
-std::string check_edit(const Landscape& l, const NodePtr& new_root, const Changes& changes,
-                       PolygonId old_next_id);
+// What is wrong with the tree an edit built from `before` (empty: nothing). old_next_id: the
+// landscape's next id before the edit.
+std::string check_edit(const LandscapeState& before, const NodePtr& new_root,
+                       const Changes& changes, PolygonId old_next_id);
 
-LandscapeReport check_all(const Landscape& l);
+// Every invariant over a whole state (Landscape::check()).
+LandscapeReport check_all(const LandscapeState& s);
 
 // The error of a failed check or an internal failure during an edit: carries the landscape
 // before the edit (save file) and a log replaying it, followed by the edit's own line.
-LandscapeInternalError internal_error(const Landscape& l, const std::string& what,
+LandscapeInternalError internal_error(const LandscapeState& s, const std::string& what,
                                       const std::string& log_line);
 
 }  // namespace edgeland::detail

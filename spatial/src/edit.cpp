@@ -1,7 +1,7 @@
 // An edit (spatial/README.md, "An edit"): one relabel overlay per touched cell, splits and
 // merges as a draft, then ids (unchanged polygons keep theirs, matched against the old cells
-// each new cell covers) and the change set; the landscape changes only at the commit at the
-// very end.
+// each new cell covers) and the change set, all building the next state; Landscape::apply
+// (landscape.cpp) commits it.
 #include "edit.hpp"
 
 #include <algorithm>
@@ -10,21 +10,11 @@
 #include "cell_split.hpp"
 #include "changes.hpp"
 #include "check.hpp"
-#include "edgeland/kernel/wkt_writer.hpp"
-#include "edit_log.hpp"
 #include "ids.hpp"
-#include "landscape_access.hpp"
 #include "shape_cut.hpp"
 
-namespace edgeland {
+namespace edgeland::detail {
 namespace {
-
-using detail::NodePtr;
-
-// Interiors of two closed boxes meet.
-bool open_overlap(const Box64& a, const Box64& b) {
-  return a.min.x < b.max.x && b.min.x < a.max.x && a.min.y < b.max.y && b.min.y < a.max.y;
-}
 
 std::size_t vertices_of(const LabeledSet& s) {
   std::size_t n = 0;
@@ -32,18 +22,70 @@ std::size_t vertices_of(const LabeledSet& s) {
   return n;
 }
 
-}  // namespace
-
-LandscapeEditor::LandscapeEditor(const Landscape& l, const ValidSet& shape, EditTable table)
-    : l_(l),
-      s_(LandscapeAccess::state(l)),
-      shape_(shape),
-      table_(std::move(table)),
-      next_id_(s_.next_id) {
-  if (const auto b = bounding_box(shape.polygons())) shape_box_ = *b;
+std::size_t vertices_of(const ValidSet& s) {
+  std::size_t n = 0;
+  for (const Polygon& p : s.polygons()) n += p.size();
+  return n;
 }
 
-void LandscapeEditor::grow(std::size_t before, std::size_t after) {
+}  // namespace
+
+EditBuilder::EditBuilder(const LandscapeState& state, const EditTable& table)
+    : s_(state), table_(table), next_id_(state.next_id) {}
+
+// Steps 1 and 2-7 of the README: the shape's size against the limits, the new tree, its limits,
+// what changed (checked in checked mode), and the next state.
+EditResult EditBuilder::build(const ValidSet& shape) {
+  const std::size_t shape_vertices = vertices_of(shape);
+  if (shape_vertices > s_.limits.max_shape_vertices)
+    throw LimitExceeded(LimitExceeded::Limit::kShapeVertices, s_.limits.max_shape_vertices,
+                        shape_vertices);
+  NodePtr root = new_root(shape);
+  if (root->vertices > s_.limits.max_vertices)
+    throw LimitExceeded(LimitExceeded::Limit::kVertices, s_.limits.max_vertices, root->vertices);
+  if (root->cells > s_.limits.max_cells)
+    throw LimitExceeded(LimitExceeded::Limit::kCells, s_.limits.max_cells, root->cells);
+  const Changes changes = diff(s_.root, root);
+  if (s_.checked) {
+    const std::string problem = check_edit(s_, root, changes, s_.next_id);
+    if (!problem.empty()) throw EditFailure{problem};
+  }
+  ChangeSet out = change_set(changes);
+  return {next_state(std::move(root), out), std::move(out)};
+}
+
+// Steps 2-6: the touched cells found, the shape cut to them (big shapes), overlaid, split and
+// merged as a draft, then given ids. The clipper's internal failures become EditFailure.
+NodePtr EditBuilder::new_root(const ValidSet& shape) {
+  reach_ = Reach{&shape, bounding_box(shape.polygons()).value_or(Box64{}), std::nullopt};
+  if (shape.polygons().empty() || !s_.world.overlaps_open(reach_.box)) return s_.root;
+  try {
+    reach_.cut = cut_shape_to_cells(s_.root, shape, reach_.box, clip_options());
+    Draft draft = rebuild(s_.root);
+    return finish(draft, s_.root);
+  } catch (const InternalError& e) {
+    throw EditFailure{std::string(e.what()) + "\n  subject = " + e.subject_wkt +
+                      "\n  clip = " + e.clip_wkt};
+  } catch (const InvalidOverlay& e) {
+    throw EditFailure{e.what()};
+  }
+}
+
+// Step 7's state: the new tree, the areas moved by the change set, the ids handed out, one more
+// edit (the log line is Landscape::apply's to append).
+LandscapeState EditBuilder::next_state(NodePtr root, const ChangeSet& changes) const {
+  LandscapeState next = s_;
+  auto areas = std::make_shared<AreaTable>(*s_.areas);
+  for (const auto& [m, delta] : changes.twice_area_delta)
+    if (m != kEmpty) (*areas)[m.value()] += delta;
+  next.root = std::move(root);
+  next.areas = std::move(areas);
+  next.next_id = next_id_;
+  ++next.edits;
+  return next;
+}
+
+void EditBuilder::grow(std::size_t before, std::size_t after) {
   if (after <= before) return;
   growth_ += after - before;
   const std::size_t could_be = s_.root->vertices + growth_;
@@ -51,22 +93,22 @@ void LandscapeEditor::grow(std::size_t before, std::size_t after) {
     throw LimitExceeded(LimitExceeded::Limit::kVertices, s_.limits.max_vertices, could_be);
 }
 
-void LandscapeEditor::grow_cells(std::size_t added) {
+void EditBuilder::grow_cells(std::size_t added) {
   cell_growth_ += added;
   const std::size_t could_be = s_.root->cells + cell_growth_;
   if (could_be > s_.limits.max_cells)
     throw LimitExceeded(LimitExceeded::Limit::kCells, s_.limits.max_cells, could_be);
 }
 
-LandscapeEditor::Draft LandscapeEditor::Draft::keep(const NodePtr& node) {
+EditBuilder::Draft EditBuilder::Draft::keep(const NodePtr& node) {
   Draft d;
   d.kept = node;
   d.vertices = node->vertices;
   return d;
 }
 
-LandscapeEditor::Draft LandscapeEditor::Draft::cell(const Box64& box, std::uint32_t depth,
-                                                    LabeledSet content) {
+EditBuilder::Draft EditBuilder::Draft::cell(const Box64& box, std::uint32_t depth,
+                                            LabeledSet content) {
   Draft d;
   d.box = box;
   d.depth = depth;
@@ -75,8 +117,8 @@ LandscapeEditor::Draft LandscapeEditor::Draft::cell(const Box64& box, std::uint3
   return d;
 }
 
-LandscapeEditor::Draft LandscapeEditor::Draft::inner(const Box64& box, std::uint32_t depth,
-                                                     std::vector<Draft> children) {
+EditBuilder::Draft EditBuilder::Draft::inner(const Box64& box, std::uint32_t depth,
+                                             std::vector<Draft> children) {
   Draft d;
   d.box = box;
   d.depth = depth;
@@ -85,26 +127,25 @@ LandscapeEditor::Draft LandscapeEditor::Draft::inner(const Box64& box, std::uint
   return d;
 }
 
-const ValidSet& LandscapeEditor::shape_in(const detail::Node& cell) const {
-  const ValidSet* pieces = cut_ ? cut_->of(cell) : nullptr;
-  return pieces ? *pieces : shape_;
+const ValidSet& EditBuilder::shape_in(const Node& cell) const {
+  const ValidSet* pieces = reach_.cut ? reach_.cut->of(cell) : nullptr;
+  return pieces ? *pieces : *reach_.shape;
 }
 
-LandscapeEditor::Draft LandscapeEditor::edit_cell(const NodePtr& cell) {
+EditBuilder::Draft EditBuilder::edit_cell(const NodePtr& cell) {
   std::optional<LabeledSet> content =
-      detail::overlay_cell(*cell, shape_in(*cell), table_.table, clip_options());
+      overlay_cell(*cell, shape_in(*cell), table_.table, clip_options());
   if (!content) return Draft::keep(cell);
   Draft edited = Draft::cell(cell->box, cell->depth, std::move(*content));
   grow(cell->vertices, edited.vertices);
   return split_if_needed(std::move(edited));
 }
 
-LandscapeEditor::Draft LandscapeEditor::split_if_needed(Draft cell) {
+EditBuilder::Draft EditBuilder::split_if_needed(Draft cell) {
   const LandscapeConfig& config = s_.config;
-  if (config.grid_depth >= 0 || cell.vertices <= config.edge_cap ||
-      !detail::can_split(cell.box, config))
+  if (config.grid_depth >= 0 || cell.vertices <= config.edge_cap || !can_split(cell.box, config))
     return cell;
-  const std::vector<Box64> boxes = detail::split_boxes(cell.box, config);
+  const std::vector<Box64> boxes = split_boxes(cell.box, config);
   grow_cells(boxes.size() - 1);
   std::vector<LabeledSet> parts =
       cut_to_windows(cell.content.set, cell.content.labels, boxes, clip_options());
@@ -118,8 +159,7 @@ LandscapeEditor::Draft LandscapeEditor::split_if_needed(Draft cell) {
   return Draft::inner(cell.box, cell.depth, std::move(children));
 }
 
-LandscapeEditor::Draft LandscapeEditor::merge_if_small(const NodePtr& old,
-                                                       std::vector<Draft> children) {
+EditBuilder::Draft EditBuilder::merge_if_small(const NodePtr& old, std::vector<Draft> children) {
   Draft inner = Draft::inner(old->box, old->depth, std::move(children));
   const bool all_cells = std::all_of(inner.children.begin(), inner.children.end(),
                                      [](const Draft& c) { return c.is_cell(); });
@@ -139,8 +179,8 @@ LandscapeEditor::Draft LandscapeEditor::merge_if_small(const NodePtr& old,
   return Draft::cell(old->box, old->depth, std::move(merged.regions));
 }
 
-LandscapeEditor::Draft LandscapeEditor::rebuild(const NodePtr& node) {
-  if (!open_overlap(node->box, shape_box_)) return Draft::keep(node);
+EditBuilder::Draft EditBuilder::rebuild(const NodePtr& node) {
+  if (!node->box.overlaps_open(reach_.box)) return Draft::keep(node);
   if (node->is_cell()) return edit_cell(node);
   std::vector<Draft> children(node->child_count);
   bool changed = false;
@@ -155,71 +195,24 @@ LandscapeEditor::Draft LandscapeEditor::rebuild(const NodePtr& node) {
 // Stage "Ids": a new cell takes ids from the old cells its box covers (the old node in its
 // place, or the old cell it was split from). An unchanged polygon lies in one of those, so it
 // keeps its id however the cells around it split or merged. Fresh ids go out in tree order.
-NodePtr LandscapeEditor::finish(Draft& draft, const NodePtr& old) {
+NodePtr EditBuilder::finish(Draft& draft, const NodePtr& old) {
   if (draft.kept) return draft.kept;
-  if (old->is_cell() || draft.is_cell()) return finish_within(draft, detail::IdSource(old));
+  if (old->is_cell() || draft.is_cell()) return finish_within(draft, IdSource(old));
   std::vector<NodePtr> children;
   for (std::size_t i = 0; i < draft.children.size(); ++i)
     children.push_back(finish(draft.children[i], old->children[i]));
-  return detail::make_inner(draft.box, draft.depth, children);
+  return make_inner(draft.box, draft.depth, children);
 }
 
 // A draft lying within the old cells of `previous`, with its ids.
-NodePtr LandscapeEditor::finish_within(Draft& draft, const detail::IdSource& previous) {
+NodePtr EditBuilder::finish_within(Draft& draft, const IdSource& previous) {
   if (draft.is_cell()) {
-    std::vector<PolygonId> ids = detail::match_ids(previous, draft.content, next_id_);
-    return detail::make_cell(draft.box, draft.depth, std::move(draft.content), std::move(ids));
+    std::vector<PolygonId> ids = match_ids(previous, draft.content, next_id_);
+    return make_cell(draft.box, draft.depth, std::move(draft.content), std::move(ids));
   }
   std::vector<NodePtr> children;
   for (Draft& c : draft.children) children.push_back(finish_within(c, previous));
-  return detail::make_inner(draft.box, draft.depth, children);
+  return make_inner(draft.box, draft.depth, children);
 }
 
-ChangeSet LandscapeEditor::run(Landscape& target, const std::function<std::string()>& log_line) {
-  const std::size_t shape_vertices = [&] {
-    std::size_t n = 0;
-    for (const Polygon& p : shape_.polygons()) n += p.size();
-    return n;
-  }();
-  if (shape_vertices > s_.limits.max_shape_vertices)
-    throw LimitExceeded(LimitExceeded::Limit::kShapeVertices, s_.limits.max_shape_vertices,
-                        shape_vertices);
-  NodePtr root = s_.root;
-  try {
-    if (!shape_.polygons().empty() && open_overlap(s_.world, shape_box_)) {
-      cut_ = detail::cut_shape_to_cells(s_.root, shape_, shape_box_, clip_options());
-      Draft draft = rebuild(s_.root);
-      root = finish(draft, s_.root);
-    }
-  } catch (const InternalError& e) {
-    throw detail::internal_error(
-        l_, std::string(e.what()) + "\n  subject = " + e.subject_wkt + "\n  clip = " + e.clip_wkt,
-        log_line());
-  } catch (const InvalidOverlay& e) {
-    throw detail::internal_error(l_, e.what(), log_line());
-  }
-  if (root->vertices > s_.limits.max_vertices)
-    throw LimitExceeded(LimitExceeded::Limit::kVertices, s_.limits.max_vertices, root->vertices);
-  if (root->cells > s_.limits.max_cells)
-    throw LimitExceeded(LimitExceeded::Limit::kCells, s_.limits.max_cells, root->cells);
-  detail::Changes changes = detail::diff(s_.root, root);
-  if (s_.checked) {
-    const std::string problem = detail::check_edit(l_, root, changes, s_.next_id);
-    if (!problem.empty()) throw detail::internal_error(l_, problem, log_line());
-  }
-  ChangeSet out = detail::change_set(changes);
-  // The next state, committed by one assignment: nothing before it touches `target`.
-  detail::LandscapeState next = s_;
-  auto areas = std::make_shared<detail::AreaTable>(*s_.areas);
-  for (const auto& [m, delta] : out.twice_area_delta)
-    if (m != kEmpty) (*areas)[m.value()] += delta;
-  next.root = std::move(root);
-  next.areas = std::move(areas);
-  next.next_id = next_id_;
-  ++next.edits;
-  if (next.logging) detail::append_log(next, log_line());
-  LandscapeAccess::commit(target, std::move(next));
-  return out;
-}
-
-}  // namespace edgeland
+}  // namespace edgeland::detail

@@ -1,6 +1,6 @@
 #pragma once
 // One edit of the landscape as a rebuild of the touched part of the tree (edit.cpp).
-#include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -10,7 +10,7 @@
 #include "node.hpp"
 #include "shape_cut.hpp"
 
-namespace edgeland {
+namespace edgeland::detail {
 
 // The relabel table of an edit: inside the shape material a becomes table[a] (a >= size: kept).
 struct EditTable {
@@ -33,14 +33,26 @@ struct EditTable {
   }
 };
 
-// Builds the tree after one edit from the landscape's current one, never touching the
-// landscape; run() commits at its very end (the strong guarantee).
-class LandscapeEditor {
+// What an edit builds: the next state (its log not yet appended) and its change set.
+struct EditResult {
+  LandscapeState next;
+  ChangeSet changes;
+};
+
+// An internal failure while building an edit (the clipper's InternalError or InvalidOverlay, or
+// a broken invariant in checked mode): Landscape::apply turns it into a LandscapeInternalError
+// carrying the landscape before the edit and the edit's log line.
+struct EditFailure {
+  std::string what;
+};
+
+// Builds the state after one edit from the current one, never changing it: the steps of
+// spatial/README.md "An edit" from finding the cells to the change set. Throws LimitExceeded
+// or EditFailure.
+class EditBuilder {
  public:
-  LandscapeEditor(const Landscape& l, const ValidSet& shape, EditTable table);
-  // log_line makes the edit's line of the edit log (written only when recording, or into an
-  // internal error's log).
-  ChangeSet run(Landscape& target, const std::function<std::string()>& log_line);
+  EditBuilder(const LandscapeState& state, const EditTable& table);
+  EditResult build(const ValidSet& shape);
 
  private:
   // A part of the new tree before it has ids: an old node kept as it is (`kept`), a new cell
@@ -49,28 +61,36 @@ class LandscapeEditor {
   // within the edit never takes an id, and every new cell takes its ids from the old cells
   // it covers, not from a cell the edit made and threw away.
   struct Draft {
-    detail::NodePtr kept;
+    NodePtr kept;
     Box64 box;
     std::uint32_t depth = 0;
     LabeledSet content;
     std::vector<Draft> children;
     std::size_t vertices = 0;
-    static Draft keep(const detail::NodePtr& node);
+    static Draft keep(const NodePtr& node);
     static Draft cell(const Box64& box, std::uint32_t depth, LabeledSet content);
     static Draft inner(const Box64& box, std::uint32_t depth, std::vector<Draft> children);
     bool is_cell() const { return kept ? kept->is_cell() : children.empty(); }
     const LabeledSet& cell_content() const { return kept ? kept->content : content; }
   };
+  // The shape of the edit being built, and what of it each cell takes.
+  struct Reach {
+    const ValidSet* shape = nullptr;
+    Box64 box;
+    std::optional<ShapeCut> cut;  // the shape cut to the touched cells (big shapes only)
+  };
 
-  Draft rebuild(const detail::NodePtr& node);
-  Draft edit_cell(const detail::NodePtr& cell);
+  NodePtr new_root(const ValidSet& shape);
+  Draft rebuild(const NodePtr& node);
+  Draft edit_cell(const NodePtr& cell);
   // What of the shape a cell's overlay takes: its pieces when the shape was cut to the cells
   // (shape_cut.hpp), else the whole shape.
-  const ValidSet& shape_in(const detail::Node& cell) const;
+  const ValidSet& shape_in(const Node& cell) const;
   Draft split_if_needed(Draft cell);
-  Draft merge_if_small(const detail::NodePtr& old, std::vector<Draft> children);
-  detail::NodePtr finish(Draft& draft, const detail::NodePtr& old);
-  detail::NodePtr finish_within(Draft& draft, const detail::IdSource& previous);
+  Draft merge_if_small(const NodePtr& old, std::vector<Draft> children);
+  NodePtr finish(Draft& draft, const NodePtr& old);
+  NodePtr finish_within(Draft& draft, const IdSource& previous);
+  LandscapeState next_state(NodePtr root, const ChangeSet& changes) const;
   ClipOptions clip_options() const { return ClipOptions{.checked = s_.checked}; }
   // Counts the vertices a new cell adds over what it replaces (and the cells a split adds), and
   // throws LimitExceeded as soon as the landscape could pass its vertex (cell) limit: a runaway
@@ -78,15 +98,12 @@ class LandscapeEditor {
   void grow(std::size_t before, std::size_t after);
   void grow_cells(std::size_t added);
 
-  const Landscape& l_;
-  const detail::LandscapeState& s_;  // l_'s state
-  const ValidSet& shape_;
-  EditTable table_;
-  Box64 shape_box_;
+  const LandscapeState& s_;
+  const EditTable& table_;
+  Reach reach_;
   PolygonId next_id_;
   std::size_t growth_ = 0;
   std::size_t cell_growth_ = 0;
-  std::optional<detail::ShapeCut> cut_;
 };
 
-}  // namespace edgeland
+}  // namespace edgeland::detail

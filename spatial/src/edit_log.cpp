@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "edgeland/kernel/wkt_writer.hpp"
-#include "landscape_access.hpp"
+#include "node.hpp"
 
 namespace edgeland::detail {
 namespace {
@@ -39,22 +39,20 @@ std::string world_line(const Box64& w, Material fill) {
   return s + "\n";
 }
 
-std::string state_log(const Landscape& l) {
-  const LandscapeState& s = LandscapeAccess::state(l);
+std::string state_log(const LandscapeState& s) {
   if (s.edits == 0) return world_line(s.world, s.initial_fill);
+  // Polygons by material, in tree order and canonical order within a cell (as polygons_in).
   std::map<Material, PolygonSet> by_material;
-  l.polygons_in(s.world, [&](const PolygonView& v) {
-    by_material[v.material].push_back(*v.polygon);
-    return true;
+  for_each_cell(s.root, [&](const NodePtr& cell) {
+    for (std::size_t i = 0; i < cell->polygon_set().size(); ++i)
+      by_material[cell->material(i)].push_back(cell->polygon_set()[i]);
   });
   std::string out = world_line(s.world, kEmpty);
   for (const auto& [m, set] : by_material) out += fill_line(set, m);
   return out;
 }
 
-std::string replay_log(const Landscape& l) {
-  return l.logging() ? log_text(LandscapeAccess::state(l)) : state_log(l);
-}
+std::string replay_log(const LandscapeState& s) { return s.logging ? log_text(s) : state_log(s); }
 
 void append_log(LandscapeState& state, const std::string& line) {
   auto next = std::make_shared<LogLine>();

@@ -34,9 +34,9 @@ std::string world_line(const Box64& world, Material fill);
 
 // A log that replays to the landscape's regions: the world line when nothing was edited since
 // it was made, else the world line and one fill per material.
-std::string state_log(const Landscape& l);
+std::string state_log(const LandscapeState& s);
 // The recorded log if the landscape records one, else state_log.
-std::string replay_log(const Landscape& l);
+std::string replay_log(const LandscapeState& s);
 
 // The state with `line` appended to its log.
 void append_log(LandscapeState& state, const std::string& line);

@@ -7,7 +7,6 @@
 #include "edgeland/spatial/tree_boxes.hpp"
 #include "edit.hpp"
 #include "edit_log.hpp"
-#include "landscape_access.hpp"
 #include "state_hash.hpp"
 
 namespace edgeland {
@@ -138,29 +137,40 @@ Landscape::Landscape(const Box64& world, Material fill, const LandscapeConfig& c
 }
 
 ChangeSet Landscape::carve(const ValidSet& shape) {
-  return LandscapeEditor(*this, shape, EditTable::carve()).run(*this, [&] {
-    return detail::carve_line(shape.polygons());
-  });
+  return apply(shape, detail::EditTable::carve(),
+               [&] { return detail::carve_line(shape.polygons()); });
 }
 ChangeSet Landscape::fill(const ValidSet& shape, Material m) {
-  return LandscapeEditor(*this, shape, EditTable::fill(m)).run(*this, [&] {
-    return detail::fill_line(shape.polygons(), m);
-  });
+  return apply(shape, detail::EditTable::fill(m),
+               [&] { return detail::fill_line(shape.polygons(), m); });
 }
 ChangeSet Landscape::fill_empty(const ValidSet& shape, Material m) {
-  return LandscapeEditor(*this, shape, EditTable::fill_empty(m)).run(*this, [&] {
-    return detail::fill_empty_line(shape.polygons(), m);
-  });
+  return apply(shape, detail::EditTable::fill_empty(m),
+               [&] { return detail::fill_empty_line(shape.polygons(), m); });
 }
 ChangeSet Landscape::replace(const ValidSet& shape, Material from, Material to) {
-  return LandscapeEditor(*this, shape, EditTable::replace(from, to)).run(*this, [&] {
-    return detail::replace_line(shape.polygons(), from, to);
-  });
+  return apply(shape, detail::EditTable::replace(from, to),
+               [&] { return detail::replace_line(shape.polygons(), from, to); });
 }
 ChangeSet Landscape::relabel(const ValidSet& shape, const MaterialMap& map) {
-  return LandscapeEditor(*this, shape, EditTable::relabel(map)).run(*this, [&] {
-    return detail::relabel_line(shape.polygons(), map);
-  });
+  return apply(shape, detail::EditTable::relabel(map),
+               [&] { return detail::relabel_line(shape.polygons(), map); });
+}
+
+// Every edit: the next state built (edit.cpp; s_ untouched, so a throw leaves the landscape as
+// it was), the edit's line recorded, and the commit, one assignment.
+ChangeSet Landscape::apply(const ValidSet& shape, const detail::EditTable& table,
+                           const std::function<std::string()>& log_line) {
+  detail::EditResult edit = [&] {
+    try {
+      return detail::EditBuilder(s_, table).build(shape);
+    } catch (const detail::EditFailure& failure) {
+      throw detail::internal_error(s_, failure.what, log_line());
+    }
+  }();
+  if (edit.next.logging) detail::append_log(edit.next, log_line());
+  s_ = std::move(edit.next);
+  return std::move(edit.changes);
 }
 ChangeSet Landscape::carve(const PolygonSet& shape) { return carve(shape_of(shape)); }
 ChangeSet Landscape::fill(const PolygonSet& shape, Material m) { return fill(shape_of(shape), m); }
@@ -197,11 +207,11 @@ std::uint64_t Landscape::state_hash() const noexcept {
   return h.value();
 }
 
-LandscapeReport Landscape::check() const { return detail::check_all(*this); }
+LandscapeReport Landscape::check() const { return detail::check_all(s_); }
 
 void Landscape::start_log() {
   if (s_.logging) return;
-  const std::string first = detail::state_log(*this);
+  const std::string first = detail::state_log(s_);
   s_.logging = true;
   s_.log.reset();
   detail::append_log(s_, first);

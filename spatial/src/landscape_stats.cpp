@@ -1,6 +1,5 @@
 // Landscape::stats: the counts kept in the root, and the memory of every node and its content.
 #include "edgeland/spatial/landscape.hpp"
-#include "landscape_access.hpp"
 #include "node.hpp"
 
 namespace edgeland {

@@ -17,9 +17,9 @@
 #include "cell_split.hpp"
 #include "check.hpp"
 #include "edgeland/kernel/area.hpp"
-#include "landscape_access.hpp"
 #include "node.hpp"
 #include "save_format.hpp"
+#include "save_load.hpp"
 
 namespace edgeland {
 namespace {
@@ -35,7 +35,7 @@ class Loader {
  public:
   Loader(std::string_view bytes, const LandscapeLimits& limits) : bytes_(bytes), limits_(limits) {}
 
-  Landscape load() {
+  detail::LandscapeState load() {
     try {
       return read_landscape();
     } catch (const std::bad_alloc&) {
@@ -49,7 +49,7 @@ class Loader {
  private:
   [[noreturn]] void fail(const std::string& what) const { throw LoadError(what, at_); }
 
-  Landscape read_landscape() {
+  detail::LandscapeState read_landscape() {
     check_envelope();
     detail::LandscapeState st;
     read_header(st);
@@ -59,7 +59,7 @@ class Loader {
     check_ids(st.next_id);
     st.areas = areas_of(st.root);
     st.edits = 1;  // its log is not known: a recording starts from its state
-    return LandscapeAccess::make(std::move(st));
+    return st;
   }
 
   // --- the bytes ---------------------------------------------------------------------------
@@ -300,9 +300,13 @@ std::string read_bytes(std::istream& in, const LandscapeLimits& limits) {
 
 }  // namespace
 
-Landscape Landscape::load(std::istream& in, const LandscapeLimits& limits) {
+detail::LandscapeState detail::load_state(std::istream& in, const LandscapeLimits& limits) {
   const std::string bytes = read_bytes(in, limits);
   return Loader(bytes, limits).load();
+}
+
+Landscape Landscape::load(std::istream& in, const LandscapeLimits& limits) {
+  return Landscape(detail::load_state(in, limits));
 }
 
 }  // namespace edgeland

@@ -4,7 +4,6 @@
 
 #include "edgeland/kernel/box_queries.hpp"
 #include "edgeland/spatial/landscape.hpp"
-#include "landscape_access.hpp"
 #include "node.hpp"
 #include "query_args.hpp"
 
@@ -14,13 +13,9 @@ namespace {
 using detail::Node;
 using detail::NodePtr;
 
-bool open_overlap(const Box64& a, const Box64& b) {
-  return a.min.x < b.max.x && b.min.x < a.max.x && a.min.y < b.max.y && b.min.y < a.max.y;
-}
-
 template <class F>
 bool visit_cells_meeting(const NodePtr& n, const Box64& box, bool open, F&& f) {
-  if (open ? !open_overlap(n->box, box) : !n->box.overlaps(box)) return true;
+  if (open ? !n->box.overlaps_open(box) : !n->box.overlaps(box)) return true;
   if (n->is_cell()) return f(n);
   for (std::uint32_t i = 0; i < n->child_count; ++i)
     if (!visit_cells_meeting(n->children[i], box, open, f)) return false;
@@ -72,7 +67,7 @@ std::vector<Material> Landscape::overlaps(const Box64& box) const {
     const Node& cell = *c;
     for (std::size_t i = 0; i < cell.ids.size(); ++i) {
       const std::uint32_t m = cell.content.labels[i];
-      if (found[m] || !open_overlap(cell.boxes[i], box)) continue;
+      if (found[m] || !cell.boxes[i].overlaps_open(box)) continue;
       if (interiors_overlap(box, cell.polygon_set()[i])) found[m] = true;
     }
     return true;
@@ -88,7 +83,7 @@ std::vector<Material> Landscape::overlaps(const ValidSet& shape) const {
       const Node& cell = *c;
       for (std::size_t i = 0; i < cell.ids.size(); ++i) {
         const std::uint32_t m = cell.content.labels[i];
-        if (found[m] || !open_overlap(cell.boxes[i], sb)) continue;
+        if (found[m] || !cell.boxes[i].overlaps_open(sb)) continue;
         // Two valid polygons overlap exactly when the pair is not a valid set (validate.hpp).
         const ValidationReport r = validate(PolygonSet{cell.polygon_set()[i], s}, 1);
         if (!r.ok() && r.violations.front().rule == Rule::kOverlappingInteriors) found[m] = true;

@@ -2,7 +2,6 @@
 // point and tests its polygons by the half-open rule.
 #include "edgeland/kernel/point_in_polygon.hpp"
 #include "edgeland/spatial/landscape.hpp"
-#include "landscape_access.hpp"
 #include "node.hpp"
 #include "query_args.hpp"
 

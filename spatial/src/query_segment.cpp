@@ -7,7 +7,6 @@
 #include "edgeland/kernel/box_queries.hpp"
 #include "edgeland/kernel/segment_crossings.hpp"
 #include "edgeland/spatial/landscape.hpp"
-#include "landscape_access.hpp"
 #include "node.hpp"
 #include "query_args.hpp"
 

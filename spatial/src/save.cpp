@@ -1,10 +1,12 @@
-// Landscape::save: the tree in preorder, polygons as zigzag varint deltas (save_format.hpp).
+// Landscape::save (save_state): the tree in preorder, polygons as zigzag varint deltas
+// (save_format.hpp).
 #include <ostream>
 #include <string>
 
 #include "edgeland/spatial/landscape.hpp"
 #include "node.hpp"
 #include "save_format.hpp"
+#include "save_load.hpp"
 
 namespace edgeland {
 namespace {
@@ -75,12 +77,14 @@ void write_node(Writer& w, const detail::Node& n) {
 
 }  // namespace
 
-void Landscape::save(std::ostream& out) const {
+void detail::save_state(const LandscapeState& state, std::ostream& out) {
   Writer w;
-  write_header(w, s_);
-  write_node(w, *s_.root);
+  write_header(w, state);
+  write_node(w, *state.root);
   w.fixed(format::fnv1a64(w.bytes()), 8);
   out.write(w.bytes().data(), static_cast<std::streamsize>(w.bytes().size()));
 }
+
+void Landscape::save(std::ostream& out) const { detail::save_state(s_, out); }
 
 }  // namespace edgeland

@@ -9,8 +9,8 @@
 #include <algorithm>
 
 #include "edgeland/spatial/landscape.hpp"
-#include "landscape_access.hpp"
 #include "node.hpp"
+#include "state_of.hpp"
 
 namespace edgeland::test {
 namespace {
@@ -47,8 +47,7 @@ Landscape edited_world(std::uint64_t seed) {
 
 std::vector<detail::NodePtr> cells_of(const Landscape& l) {
   std::vector<detail::NodePtr> cells;
-  detail::for_each_cell(LandscapeAccess::state(l).root,
-                        [&](const detail::NodePtr& c) { cells.push_back(c); });
+  detail::for_each_cell(state_of(l).root, [&](const detail::NodePtr& c) { cells.push_back(c); });
   return cells;
 }
 

@@ -2,7 +2,7 @@
 // each (spatial/README.md, I1-I9): every check must name the broken one, and an intact node or
 // state must pass. A landscape built through the public API never breaks them (that is what
 // the other tests show), so the broken ones are made here by hand from the tree's own node
-// constructors (node.hpp) and the landscape's one door (landscape_access.hpp).
+// constructors (node.hpp) and states made from them (check.hpp takes a state).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -14,7 +14,6 @@
 #include "check.hpp"
 #include "edgeland/kernel/area.hpp"
 #include "edgeland/spatial/landscape.hpp"
-#include "landscape_access.hpp"
 #include "node.hpp"
 #include "valid_set_factory.hpp"  // clip/src
 
@@ -286,8 +285,8 @@ void add_areas(const NodePtr& n, detail::AreaTable& areas) {
       areas[n->content.labels[i]] += twice_signed_area(n->polygon_set()[i]);
 }
 
-// A landscape over kCell made of the given root (the state of a load, through the one door).
-Landscape landscape_of(NodePtr root, PolygonId next_id) {
+// A landscape's state over kCell made of the given root (as a load makes one).
+detail::LandscapeState landscape_of(NodePtr root, PolygonId next_id) {
   detail::LandscapeState s;
   s.world = kCell;
   s.root = std::move(root);
@@ -295,12 +294,12 @@ Landscape landscape_of(NodePtr root, PolygonId next_id) {
   add_areas(s.root, *areas);
   s.areas = std::move(areas);
   s.next_id = next_id;
-  return LandscapeAccess::make(std::move(s));
+  return s;
 }
 
 TEST(CheckEdit, ATreeWhoseRootIsNotTheWorld) {
   const NodePtr before = cell(kCell, 0, {square(0, 0, 8)}, {1});
-  const Landscape l = landscape_of(before, 2);
+  const detail::LandscapeState l = landscape_of(before, 2);
   const NodePtr elsewhere = cell({{0, 0}, {32, 32}}, 0, {square(0, 0, 8)}, {1});
   EXPECT_EQ(detail::check_edit(l, elsewhere, {{before}, {elsewhere}, {}}, 2),
             "the root is not the world");
@@ -317,7 +316,7 @@ NodePtr cell_with_ids(PolygonSet polys, std::vector<PolygonId> ids) {
 
 TEST(CheckEdit, IdsGivenTwiceOrTakenFromAPolygonThatStays) {
   const NodePtr before = cell(kCell, 0, {square(0, 0, 8), square(20, 0, 8)}, {1, 1}, 1);
-  const Landscape l = landscape_of(before, 3);
+  const detail::LandscapeState l = landscape_of(before, 3);
   // The edit's new cell gives id 1 to both its polygons.
   const NodePtr twice = cell_with_ids({square(0, 0, 8), square(40, 0, 8)}, {1, 1});
   EXPECT_EQ(detail::check_edit(l, twice, {{before}, {twice}, {}}, 3), "id 1 twice");
@@ -334,19 +333,22 @@ TEST(CheckEdit, IdsGivenTwiceOrTakenFromAPolygonThatStays) {
 }
 
 TEST(CheckAll, AnIntactLandscapePasses) {
-  EXPECT_TRUE(landscape_of(detail::make_inner(kCell, 0, quadrants(1, busy())), 3).check().ok());
+  EXPECT_TRUE(
+      detail::check_all(landscape_of(detail::make_inner(kCell, 0, quadrants(1, busy())), 3)).ok());
 }
 
 TEST(CheckAll, TheRootIsNotTheWorld) {
-  EXPECT_TRUE(
-      names(landscape_of(cell(kCell, 1, {}, {}), 1).check().problems, "the root is not the world"));
-  EXPECT_TRUE(names(landscape_of(cell({{0, 0}, {32, 64}}, 0, {}, {}), 1).check().problems,
+  EXPECT_TRUE(names(detail::check_all(landscape_of(cell(kCell, 1, {}, {}), 1)).problems,
                     "the root is not the world"));
+  EXPECT_TRUE(
+      names(detail::check_all(landscape_of(cell({{0, 0}, {32, 64}}, 0, {}, {}), 1)).problems,
+            "the root is not the world"));
 }
 
 TEST(CheckAll, AnIdNotBelowTheNextId) {
-  const Landscape l = landscape_of(cell(kCell, 0, {square(0, 0, 8), square(20, 0, 8)}, {1, 2}), 2);
-  const LandscapeReport r = l.check();
+  const detail::LandscapeState l =
+      landscape_of(cell(kCell, 0, {square(0, 0, 8), square(20, 0, 8)}, {1, 2}), 2);
+  const LandscapeReport r = detail::check_all(l);
   ASSERT_EQ(r.problems.size(), 1u);
   EXPECT_EQ(r.problems.front(), "an id is not below the next id");
 }
@@ -357,18 +359,17 @@ TEST(CheckAll, AnIdInTwoCells) {
   second->ids = {1};  // the first cell's id
   second->hash = detail::make_cell(second->box, 1, second->content, second->ids)->hash;
   children[1] = second;
-  const LandscapeReport r = landscape_of(detail::make_inner(kCell, 0, children), 3).check();
+  const LandscapeReport r =
+      detail::check_all(landscape_of(detail::make_inner(kCell, 0, children), 3));
   EXPECT_TRUE(names(r.problems, "id 1 twice"));
 }
 
 TEST(CheckAll, AnAreaThatIsNotTheSumOfItsPolygons) {
-  Landscape l = landscape_of(cell(kCell, 0, {square(0, 0, 8)}, {3}), 2);
-  detail::LandscapeState s = LandscapeAccess::state(l);
+  detail::LandscapeState s = landscape_of(cell(kCell, 0, {square(0, 0, 8)}, {3}), 2);
   auto areas = std::make_shared<detail::AreaTable>(*s.areas);
   (*areas)[3] += 2;
   s.areas = std::move(areas);
-  LandscapeAccess::commit(l, std::move(s));
-  const LandscapeReport r = l.check();
+  const LandscapeReport r = detail::check_all(s);
   ASSERT_EQ(r.problems.size(), 1u);
   EXPECT_EQ(r.problems.front(), "the area of material 3 is not the sum of its polygons");
 }
@@ -376,7 +377,8 @@ TEST(CheckAll, AnAreaThatIsNotTheSumOfItsPolygons) {
 // A broken cell is reported by check() with its box, and its material is not counted (a label
 // past 255 has no area entry).
 TEST(CheckAll, ABrokenCellIsNamed) {
-  const LandscapeReport r = landscape_of(cell(kCell, 0, {square(0, 0, 8)}, {300}), 2).check();
+  const LandscapeReport r =
+      detail::check_all(landscape_of(cell(kCell, 0, {square(0, 0, 8)}, {300}), 2));
   EXPECT_TRUE(names(r.problems, "cell (0 0 64 64): polygon 0 has material 300"));
 }
 
@@ -389,7 +391,7 @@ TEST(CheckAll, AMissingChildAndShortArraysAreReported) {
   children[0] = short_labels;
   auto root = copy(detail::make_inner(kCell, 0, children));
   root->children[3].reset();
-  const LandscapeReport r = landscape_of(root, 3).check();
+  const LandscapeReport r = detail::check_all(landscape_of(root, 3));
   EXPECT_TRUE(names(r.problems, "cell (0 0 32 32): labels, ids or boxes do not match"));
   EXPECT_TRUE(names(r.problems, "node (0 0 64 64): child 3 is not its part of the box"));
 }

@@ -70,7 +70,9 @@ TEST(LandscapeConfigRules, EachRuleIsRefusedWithItsSetting) {
   // The limits of each rule are accepted.
   EXPECT_NO_THROW(Landscape(w, kEmpty, {.edge_cap = 32, .merge_below = 31, .min_cell_size = 1}));
   EXPECT_NO_THROW(Landscape({{-kCoordBound, -kCoordBound}, {kCoordBound, kCoordBound}}));
-  EXPECT_NO_THROW(Landscape({{0, 0}, {64, 64}}, kEmpty, {.min_cell_size = 32, .grid_depth = 10}));
+  EXPECT_NO_THROW(Landscape({{0, 0}, {64, 64}}, kEmpty, {.min_cell_size = 32, .grid_depth = 1}));
+  EXPECT_EQ(refusal({{0, 0}, {64, 64}}, {.min_cell_size = 32, .grid_depth = 2}).setting,
+            Setting::kGridDepthBeyondCells);
 }
 
 // A kd-tree cuts the longer side (x on ties); a side at most min_cell_size is never cut, in a
@@ -114,10 +116,13 @@ TEST(TreeBoxes, AKdTreeLandscapeSplitsItsLongerSides) {
   EXPECT_EQ(area, 4096 * 1024);
 }
 
-// A grid stops early where min_cell_size forbids a cut: the depth asked for is a ceiling.
-TEST(GridWorlds, AGridEndsWhereCellsMayNotSplit) {
-  const Landscape l({{0, 0}, {64, 64}}, 1, {.min_cell_size = 16, .grid_depth = 5});
-  EXPECT_EQ(l.stats().cells, 16u);  // 64 / 16 = 4 cells a side: depth 2, not 5
+// A grid goes as deep as min_cell_size lets its cells split, and no deeper: a deeper grid_depth
+// is refused (InvalidConfig kGridDepthBeyondCells), not quietly cut short.
+TEST(GridWorlds, AGridGoesAsDeepAsItsCellsMaySplit) {
+  EXPECT_EQ(refusal({{0, 0}, {64, 64}}, {.min_cell_size = 16, .grid_depth = 3}).setting,
+            Setting::kGridDepthBeyondCells);
+  const Landscape l({{0, 0}, {64, 64}}, 1, {.min_cell_size = 16, .grid_depth = 2});
+  EXPECT_EQ(l.stats().cells, 16u);  // 64 / 16 = 4 cells a side: depth 2
   EXPECT_EQ(l.stats().depth, 2u);
   EXPECT_TRUE(l.check().ok());
   EXPECT_EQ(l.twice_area(1), 2 * 64 * 64);

@@ -1,14 +1,17 @@
 // Stage tests of an edit's steps that had none (spatial/README.md, "An edit"): where a cell
 // splits (split_boxes), which ids new cells take (IdSource, match_ids), and what differs between
-// the old and the new tree (diff, change_set).
+// the old and the new tree (diff, change_set), and the builder that makes the next state from the
+// current one (EditBuilder).
 #include <gtest/gtest.h>
 
 #include <vector>
 
 #include "cell_split.hpp"
 #include "changes.hpp"
+#include "edit.hpp"
 #include "ids.hpp"
 #include "node.hpp"
+#include "state_of.hpp"
 
 namespace edgeland {
 namespace {
@@ -145,6 +148,83 @@ TEST(Diff, ASplitCellIsReplacedByAllItsChildren) {
   const ChangeSet cs = detail::change_set(changes);
   EXPECT_TRUE(cs.removed.empty());  // the polygon kept its id across the split
   EXPECT_TRUE(cs.added.empty());
+}
+
+// ---- EditBuilder -----------------------------------------------------------------------------
+
+Polygon diamond(Point64 c, std::int64_t r) {
+  return {{c.x, c.y - r}, {c.x + r, c.y}, {c.x, c.y + r}, {c.x - r, c.y}};
+}
+
+// A worn world of several materials over many cells (the edits cross cell lines).
+Landscape worn() {
+  LandscapeConfig config;
+  config.edge_cap = 32;
+  config.merge_below = 16;
+  Landscape l({{0, 0}, {512, 512}}, 1, config);
+  for (std::int64_t i = 0; i < 12; ++i) {
+    l.carve(PolygonSet{diamond({40 + 37 * i, 60 + 29 * i}, 23 + i)});
+    l.fill(PolygonSet{diamond({470 - 31 * i, 90 + 33 * i}, 17 + 2 * i)}, 2 + i % 3);
+  }
+  return l;
+}
+
+// The builder only reads the state it is given, and its next state and change set are what the
+// landscape's own edit commits and returns (the same tree by hash, ids, areas, one more edit).
+TEST(EditBuilder, BuildsTheNextStateAndLeavesTheCurrentOne) {
+  Landscape l = worn();
+  const detail::LandscapeState current = test::state_of(l);
+  const NodePtr root = current.root;
+  const std::uint64_t root_hash = root->hash;
+  const PolygonSet shape{diamond({250, 250}, 140), diamond({60, 450}, 30)};
+  const detail::EditTable table = detail::EditTable::replace(1, 5);
+  const detail::EditResult built = detail::EditBuilder(current, table).build(ValidSet(shape));
+  EXPECT_EQ(current.root, root);
+  EXPECT_EQ(current.root->hash, root_hash);
+  EXPECT_EQ(current.next_id, test::state_of(l).next_id);
+
+  const ChangeSet committed = l.replace(shape, 1, 5);
+  const detail::LandscapeState after = test::state_of(l);
+  EXPECT_NE(built.next.root->hash, root_hash);
+  EXPECT_EQ(built.next.root->hash, after.root->hash);
+  EXPECT_EQ(built.next.next_id, after.next_id);
+  EXPECT_EQ(*built.next.areas, *after.areas);
+  EXPECT_EQ(built.next.edits, current.edits + 1);
+  EXPECT_EQ(built.changes.removed, committed.removed);
+  ASSERT_EQ(built.changes.added.size(), committed.added.size());
+  for (std::size_t i = 0; i < committed.added.size(); ++i) {
+    EXPECT_EQ(built.changes.added[i].id, committed.added[i].id);
+    EXPECT_EQ(built.changes.added[i].polygon, committed.added[i].polygon);
+  }
+  EXPECT_EQ(built.changes.twice_area_delta, committed.twice_area_delta);
+}
+
+// A shape outside the world, or empty, builds the same tree (shared, not copied) and an empty
+// change set; it still counts as an edit.
+TEST(EditBuilder, AShapeMissingTheWorldKeepsTheTree) {
+  const detail::LandscapeState current = test::state_of(worn());
+  const detail::EditTable table = detail::EditTable::carve();
+  const detail::EditResult outside =
+      detail::EditBuilder(current, table).build(ValidSet(PolygonSet{diamond({900, 900}, 50)}));
+  EXPECT_EQ(outside.next.root, current.root);
+  EXPECT_TRUE(outside.changes.empty());
+  EXPECT_EQ(outside.next.edits, current.edits + 1);
+  const detail::EditResult none = detail::EditBuilder(current, table).build(ValidSet());
+  EXPECT_EQ(none.next.root, current.root);
+  EXPECT_TRUE(none.changes.empty());
+}
+
+// The limits are checked before the next state exists: a throw, and the state it was given is
+// as it was.
+TEST(EditBuilder, AShapeOverTheLimitThrowsBeforeBuilding) {
+  detail::LandscapeState current = test::state_of(worn());
+  current.limits.max_shape_vertices = 3;
+  const NodePtr root = current.root;
+  const detail::EditTable table = detail::EditTable::fill(7);
+  EXPECT_THROW(
+      detail::EditBuilder(current, table).build(ValidSet(PolygonSet{diamond({100, 100}, 20)})),
+      LimitExceeded);
+  EXPECT_EQ(current.root, root);
 }
 
 }  // namespace

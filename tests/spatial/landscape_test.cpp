@@ -9,7 +9,9 @@
 
 #include "check.hpp"  // spatial/src: the error checked mode throws
 #include "edgeland/spatial/tree_boxes.hpp"
+#include "edit_log.hpp"
 #include "polygon_set_helpers.hpp"
+#include "state_of.hpp"
 
 namespace edgeland::test {
 namespace {
@@ -396,7 +398,10 @@ TEST(LandscapeInternalError, CarriesTheStateAndAReplayableLog) {
   recorded.carve(PolygonSet{ngon({300, 300}, 80, 32)});
   recorded.fill(PolygonSet{ngon({600, 600}, 120, 32)}, 2);
   const std::string edit = "carve MULTIPOLYGON (((0 0, 10 0, 10 10, 0 10, 0 0)))\n";
-  const LandscapeInternalError e = detail::internal_error(recorded, "a test", edit);
+  detail::LandscapeState recorded_state = state_of(recorded);
+  recorded_state.logging = true;
+  detail::append_log(recorded_state, recorded.log());
+  const LandscapeInternalError e = detail::internal_error(recorded_state, "a test", edit);
   std::istringstream state(e.state);
   EXPECT_EQ(Landscape::load(state).state_hash(), recorded.state_hash());
   EXPECT_EQ(e.log, recorded.log() + edit);
@@ -405,7 +410,7 @@ TEST(LandscapeInternalError, CarriesTheStateAndAReplayableLog) {
   // Not recording: the world and one fill per material, then the edit.
   Landscape quiet({{0, 0}, {1000, 1000}}, 1);
   quiet.carve(PolygonSet{ngon({300, 300}, 80, 32)});
-  const LandscapeInternalError q = detail::internal_error(quiet, "a test", edit);
+  const LandscapeInternalError q = detail::internal_error(state_of(quiet), "a test", edit);
   EXPECT_EQ(q.log.rfind("world 0 0 1000 1000\nfill 1 MULTIPOLYGON", 0), 0u);
   EXPECT_EQ(q.log.substr(q.log.size() - edit.size()), edit);
 }

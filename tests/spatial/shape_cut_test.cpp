@@ -12,7 +12,7 @@
 
 #include "cgal_reference.hpp"
 #include "edgeland/spatial/landscape.hpp"
-#include "landscape_access.hpp"
+#include "state_of.hpp"
 
 namespace edgeland {
 namespace {
@@ -55,15 +55,14 @@ Landscape worn_world() {
 Box64 box_of(const detail::Node& n) { return n.box; }
 
 TEST(ShapeCut, SmallShapesAreNotCut) {
-  const Landscape l = worn_world();
+  const detail::LandscapeState l = test::state_of(worn_world());
   const ValidSet shape(PolygonSet{star({500, 500}, 400, 380, 16, 0)});  // 32 vertices, many cells
-  EXPECT_FALSE(detail::cut_shape_to_cells(LandscapeAccess::state(l).root, shape,
-                                          *bounding_box(shape.polygons()), {})
-                   .has_value());
+  EXPECT_FALSE(
+      detail::cut_shape_to_cells(l.root, shape, *bounding_box(shape.polygons()), {}).has_value());
 }
 
 TEST(ShapeCut, ManyMembersReachingFewCellsEachAreNotCut) {
-  const Landscape l = worn_world();
+  const detail::LandscapeState l = test::state_of(worn_world());
   PolygonSet squares;  // 400 vertices, each member in one or two cells
   for (std::int64_t i = 0; i < 10; ++i)
     for (std::int64_t j = 0; j < 10; ++j)
@@ -72,17 +71,15 @@ TEST(ShapeCut, ManyMembersReachingFewCellsEachAreNotCut) {
                          {14 + 100 * i, 14 + 100 * j},
                          {10 + 100 * i, 14 + 100 * j}});
   const ValidSet shape(squares);
-  EXPECT_FALSE(detail::cut_shape_to_cells(LandscapeAccess::state(l).root, shape,
-                                          *bounding_box(shape.polygons()), {})
-                   .has_value());
+  EXPECT_FALSE(
+      detail::cut_shape_to_cells(l.root, shape, *bounding_box(shape.polygons()), {}).has_value());
 }
 
 TEST(ShapeCut, AxisParallelPiecesReuniteIntoTheShape) {
-  const Landscape l = worn_world();
+  const detail::LandscapeState l = test::state_of(worn_world());
   const Polygon c = comb(20, 300, 400, 300);  // 1,604 vertices over many cells
   const ValidSet shape(PolygonSet{c});
-  const auto cut =
-      detail::cut_shape_to_cells(LandscapeAccess::state(l).root, shape, *bounding_box(c), {});
+  const auto cut = detail::cut_shape_to_cells(l.root, shape, *bounding_box(c), {});
   ASSERT_TRUE(cut.has_value());
   EXPECT_GT(cut->pieces.size(), 8u);
   PolygonSet all;
@@ -129,8 +126,7 @@ RC_GTEST_PROP(LandscapeShapeCut, BigShapesKeepEveryInvariantAndTheExactMaterials
   const Polygon s = star(c, r, r_in, points, *rc::gen::inRange(0, 1000) / 1000.0);
   const ValidSet shape(PolygonSet{s});
   const bool cut =
-      detail::cut_shape_to_cells(LandscapeAccess::state(l).root, shape, *bounding_box(s), {})
-          .has_value();
+      detail::cut_shape_to_cells(test::state_of(l).root, shape, *bounding_box(s), {}).has_value();
   RC_TAG(cut ? "cut to the cells" : "not cut");
   const Landscape before = l;
   const int kind = *rc::gen::inRange(0, 3);

@@ -68,8 +68,11 @@ struct Node;     // the tree (spatial/src/node.hpp)
 struct LogLine;  // the recorded log, a persistent list shared by copies (spatial/src/edit_log.hpp)
 using AreaTable = std::array<Int128, kMaterialCount>;
 
-// A landscape's whole state (private: spatial/src reaches it through landscape_access.hpp). An
-// edit builds the next state and commits it by one assignment, so a throw leaves it as it was.
+struct EditTable;  // an edit's material -> material table (spatial/src/edit.hpp)
+
+// A landscape's whole state, private to Landscape: spatial/src's stages take it as an argument
+// from the Landscape's members. An edit builds the next state from it and Landscape::apply
+// commits that by one assignment, so a throw leaves it as it was.
 struct LandscapeState {
   Box64 world;
   LandscapeConfig config;
@@ -188,9 +191,11 @@ class EDGELAND_EXPORT Landscape {
   static Landscape load(std::istream& in, const LandscapeLimits& limits = {});
 
  private:
-  // The one way into the state for spatial/src (landscape_access.hpp).
-  friend struct LandscapeAccess;
   explicit Landscape(detail::LandscapeState state) : s_(std::move(state)) {}
+  // The one edit driver (spatial/README.md, "An edit"): builds the next state from s_ with the
+  // shape and the table, appends `log_line` to the log when recording, then commits.
+  ChangeSet apply(const ValidSet& shape, const detail::EditTable& table,
+                  const std::function<std::string()>& log_line);
 
   detail::LandscapeState s_;
 };
