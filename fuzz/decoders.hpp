@@ -41,9 +41,12 @@ std::optional<Finding> run_normalize(const std::uint8_t* data, std::size_t size)
 // The WKT reader and the log parser on arbitrary bytes: a result or their typed error.
 std::optional<Finding> run_parse(const std::uint8_t* data, std::size_t size);
 
-// A landscape (spatial/) built from a decoded world and configuration, then up to 24 edits whose
-// shapes lie on cell lines, reuse the landscape's own vertices, are one unit thin, cross
-// themselves (InvalidInput) or leave the coordinate range (CoordinateOutOfRange), all in checked
+// A landscape (spatial/) built from a decoded world and configuration, then up to 24 edits
+// (carve, fill, fill_empty, replace, relabel with a map of materials 0..4) whose shapes lie on
+// cell lines, reuse the landscape's own vertices, are one unit thin, cross themselves
+// (InvalidInput), leave the coordinate range (CoordinateOutOfRange) or come from
+// kernel/shapes.hpp's builders at every radius up to 2^33 (each must keep its guarantees: valid,
+// strictly convex, in range, and refuse exactly the arguments out of range), all in checked
 // mode: a rejected edit leaves the state hash unchanged; check() holds at the end;
 // material_at, raycast and overlaps(box) agree with a scan of every polygon; save -> load
 // keeps the state hash; a snapshot taken along the way is untouched by later edits.

@@ -255,6 +255,8 @@ std::optional<Finding> run_game_sequence(const std::uint8_t* data, std::size_t s
     if (auto e = game.start(l)) return finding(*e, options, l);
     for (int i = 0; i < kMaxEdits && in.remaining_bytes() > 0; ++i) {
       const DecodedEdit d = next_edit(in, decode, l);
+      if (!d.builder_problem.empty())
+        return finding("shape builder: " + d.builder_problem, options, l);
       const bool for_real = in.ConsumeBool();
       ChangeSet changes;
       try {

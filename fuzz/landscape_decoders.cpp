@@ -3,6 +3,8 @@
 // decoding of worlds and edits (landscape_decoding.hpp) is shared with game_sequence.
 #include <algorithm>
 #include <exception>
+#include <limits>
+#include <optional>
 #include <sstream>
 #include <vector>
 
@@ -11,6 +13,9 @@
 #include "edgeland/kernel/angle.hpp"
 #include "edgeland/kernel/box_queries.hpp"
 #include "edgeland/kernel/point_in_polygon.hpp"
+#include "edgeland/kernel/predicates.hpp"
+#include "edgeland/kernel/shapes.hpp"
+#include "edgeland/kernel/validate.hpp"
 #include "edgeland/kernel/wkt_writer.hpp"
 #include "edgeland/spatial/landscape.hpp"
 #include "edgeland/spatial/tree_boxes.hpp"
@@ -79,9 +84,12 @@ Point64 EditDecoder::point(const Landscape& l) {
 }
 
 PolygonSet EditDecoder::shape(const Landscape& l) {
-  const int kind = in_.ConsumeIntegralInRange(0, 9);
+  builder_problem_.clear();
+  const int kind = in_.ConsumeIntegralInRange(0, 12);
   Polygon ring;
-  if (kind <= 3) {
+  if (kind >= 10) {
+    ring = built_shape(l);
+  } else if (kind <= 3) {
     const Point64 a = point(l), b = point(l);
     ring = {{std::min(a.x, b.x), std::min(a.y, b.y)},
             {std::max(a.x, b.x), std::min(a.y, b.y)},
@@ -109,6 +117,128 @@ Polygon EditDecoder::shape_rectangle(const Landscape& l) {
           {clamp_coord(a.x + w), a.y},
           {clamp_coord(a.x + w), clamp_coord(a.y + h)},
           {a.x, clamp_coord(a.y + h)}};
+}
+
+namespace {
+
+// What is wrong with a builder's polygon (shapes.hpp GUARANTEES: valid, strictly convex,
+// counter-clockwise, in range), or nothing. Valid (simple) with a left turn at every vertex is
+// strictly convex.
+std::optional<std::string> broken_shape_contract(const Polygon& p) {
+  if (p.size() < 3) return "fewer than 3 vertices";
+  for (const Point64& v : p)
+    if (!in_range(v)) return "a vertex beyond the bound";
+  const ValidationReport report = validate(PolygonSet{p}, 1);
+  if (!report.ok()) return "not valid: " + report.violations.front().describe();
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (orientation(p[i], p[(i + 1) % p.size()], p[(i + 2) % p.size()]) !=
+        Orientation::kCounterClockwise)
+      return "not strictly convex at vertex " + std::to_string((i + 1) % p.size());
+  return std::nullopt;
+}
+
+std::string point_text(Point64 p) {
+  return "(" + std::to_string(p.x) + " " + std::to_string(p.y) + ")";
+}
+
+}  // namespace
+
+// A centre near the world (point()), or now and then one to five units past the bound.
+Point64 EditDecoder::shape_center(const Landscape& l, bool& in_range) {
+  if (in_.ConsumeIntegralInRange(0, 15) != 0) return point(l);
+  in_range = false;
+  const std::int64_t past = kCoordBound + in_.ConsumeIntegralInRange(1, 5);
+  return in_.ConsumeBool() ? Point64{past, 0} : Point64{0, -past};
+}
+
+// Radii of every scale up to kMaxShapeRadius (2^33: a shape covering the whole bound from any
+// centre), now and then one out of its range.
+std::int64_t EditDecoder::shape_radius(bool& in_range) {
+  switch (in_.ConsumeIntegralInRange(0, 15)) {
+    case 0:
+      in_range = false;
+      return in_.PickValueInArray<std::int64_t>({0, -1, kMaxShapeRadius + 1,
+                                                 std::numeric_limits<std::int64_t>::min(),
+                                                 std::numeric_limits<std::int64_t>::max()});
+    case 1:
+      return kMaxShapeRadius;
+    default: {
+      const int bits = in_.PickValueInArray({1, 2, 3, 4, 6, 8, 10, 14, 20, 33});
+      return in_.ConsumeIntegralInRange<std::int64_t>(1, std::int64_t{1} << bits);
+    }
+  }
+}
+
+// One of the builders of kernel/shapes.hpp. Its result must keep the builder's guarantees, and
+// it must refuse exactly the arguments out of their ranges (with the typed errors); whatever
+// it broke is kept in builder_problem_. A refused call gives a rectangle instead.
+Polygon EditDecoder::built_shape(const Landscape& l) {
+  bool in_range = true;
+  const Point64 c = shape_center(l, in_range);
+  const std::int64_t r = shape_radius(in_range);
+  std::string call;
+  try {
+    Polygon p;
+    switch (in_.ConsumeIntegralInRange(0, 3)) {
+      case 0:
+        call = "circle(" + point_text(c) + ", " + std::to_string(r) + ")";
+        p = circle(c, r);
+        break;
+      case 1: {
+        std::int64_t sides = in_.ConsumeBool() ? in_.ConsumeIntegralInRange(3, 12)
+                                               : in_.ConsumeIntegralInRange(3, 300);
+        if (in_.ConsumeIntegralInRange(0, 15) == 0) {
+          in_range = false;
+          sides = in_.PickValueInArray<std::int64_t>({2, 0, -5, kMaxShapeSides + 1});
+        }
+        const Turn phase{in_.ConsumeIntegral<std::int64_t>(),
+                         in_.ConsumeIntegralInRange<std::int64_t>(1, kMaxTurnDenominator)};
+        call = "regular_polygon(" + point_text(c) + ", " + std::to_string(r) + ", " +
+               std::to_string(sides) + ", {" + std::to_string(phase.num) + ", " +
+               std::to_string(phase.den) + "})";
+        p = regular_polygon(c, r, sides, phase);
+        break;
+      }
+      case 2: {
+        const Point64 b = shape_center(l, in_range);
+        call = "capsule(" + point_text(c) + ", " + point_text(b) + ", " + std::to_string(r) + ")";
+        p = capsule(c, b, r);
+        break;
+      }
+      default: {
+        const std::int64_t h = shape_radius(in_range);
+        Turn angle{in_.ConsumeIntegralInRange<std::int64_t>(-64, 64),
+                   in_.PickValueInArray<std::int64_t>({1, 3, 8, 12, 360, 65536})};
+        if (in_.ConsumeIntegralInRange(0, 15) == 0) {
+          in_range = false;
+          angle.den = in_.PickValueInArray<std::int64_t>({0, -1, kMaxTurnDenominator + 1});
+        }
+        call = "rotated_box(" + point_text(c) + ", " + std::to_string(r) + ", " +
+               std::to_string(h) + ", {" + std::to_string(angle.num) + ", " +
+               std::to_string(angle.den) + "})";
+        p = rotated_box(c, r, h, angle);
+        break;
+      }
+    }
+    if (!in_range)
+      builder_problem_ = call + " accepted an argument out of its range";
+    else if (auto why = broken_shape_contract(p))
+      builder_problem_ = call + ": " + *why;
+    return p;
+  } catch (const CoordinateOutOfRange& e) {
+    if (in_range) builder_problem_ = call + " refused arguments in range: " + e.what();
+  } catch (const ArgumentOutOfRange& e) {
+    if (in_range) builder_problem_ = call + " refused arguments in range: " + e.what();
+  } catch (const std::exception& e) {
+    builder_problem_ = call + " threw " + e.what();
+  }
+  return shape_rectangle(l);
+}
+
+MaterialMap EditDecoder::material_map() {
+  MaterialMap map;
+  for (std::uint8_t m = 0; m <= 4; ++m) map.set(m, in_.ConsumeIntegralInRange<std::uint8_t>(0, 4));
+  return map;
 }
 
 Point64 EditDecoder::anywhere() {
@@ -140,10 +270,12 @@ Point64 EditDecoder::landscape_vertex(const Landscape& l) {
 
 DecodedEdit next_edit(Provider& in, EditDecoder& decode, const Landscape& l) {
   DecodedEdit e;
-  e.kind = in.ConsumeIntegralInRange(0, 3);
+  e.kind = in.ConsumeIntegralInRange(0, 4);
   e.a = in.ConsumeIntegralInRange<std::uint8_t>(e.kind == 3 ? 0 : 1, 4);
   e.b = in.ConsumeIntegralInRange<std::uint8_t>(0, 4);
+  if (e.kind == 4) e.map = decode.material_map();
   e.shape = decode.shape(l);
+  e.builder_problem = decode.builder_problem();
   e.snapshot = in.ConsumeBool();
   return e;
 }
@@ -167,9 +299,15 @@ std::string edit_text(const DecodedEdit& d) {
       return "fill " + std::to_string(d.a.value()) + " " + wkt;
     case 2:
       return "fill_empty " + std::to_string(d.a.value()) + " " + wkt;
-    default:
+    case 3:
       return "replace " + std::to_string(d.a.value()) + " " + std::to_string(d.b.value()) + " " +
              wkt;
+    default: {
+      std::string line = "relabel ";
+      for (std::uint8_t m = 0; m <= 4; ++m)
+        if (d.map[m] != m) line += std::to_string(m) + " " + to_string(d.map[m]) + " ";
+      return line + wkt;
+    }
   }
 }
 
@@ -181,8 +319,10 @@ ChangeSet apply(Landscape& l, const DecodedEdit& d) {
       return l.fill(d.shape, d.a);
     case 2:
       return l.fill_empty(d.shape, d.a);
-    default:
+    case 3:
       return l.replace(d.shape, d.a, d.b);
+    default:
+      return l.relabel(d.shape, d.map);
   }
 }
 
@@ -261,6 +401,7 @@ std::optional<Finding> run_edit_sequence(const std::uint8_t* data, std::size_t s
   std::uint64_t snapshot_hash = l.state_hash();
   for (int i = 0; i < kMaxEdits && in.remaining_bytes() > 0; ++i) {
     const DecodedEdit d = next_edit(in, decode, l);
+    if (!d.builder_problem.empty()) return finding("shape builder: " + d.builder_problem, l);
     if (d.snapshot) {
       snapshot = l;
       snapshot_hash = l.state_hash();

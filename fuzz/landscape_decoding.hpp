@@ -31,26 +31,40 @@ class EditDecoder {
   Point64 point(const Landscape& l);
   // A shape: a rectangle, a triangle, or a ring of up to kMaxShapePoints points (which may
   // cross itself: then the edit must fail with InvalidInput and change nothing), sometimes with
-  // a coordinate past the bound (CoordinateOutOfRange).
+  // a coordinate past the bound (CoordinateOutOfRange); or one of kernel/shapes.hpp's builders
+  // (circle, regular polygon, capsule, rotated box) with radii from 1 to 2^33 around points near
+  // the world, now and then an argument out of its range.
   PolygonSet shape(const Landscape& l);
+  // What a shape builder did against its contract in the last shape() (empty: nothing): a
+  // polygon that is not valid, strictly convex and in range, a typed error for arguments in
+  // their ranges, or no error for one out of its range.
+  const std::string& builder_problem() const { return builder_problem_; }
+  // A material map over materials 0..4 (relabel edits).
+  MaterialMap material_map();
 
  private:
   Polygon shape_rectangle(const Landscape& l);
+  Polygon built_shape(const Landscape& l);
+  std::int64_t shape_radius(bool& in_range);
+  Point64 shape_center(const Landscape& l, bool& in_range);
   Point64 anywhere();
   Point64 cell_line_point();
   Point64 landscape_vertex(const Landscape& l);
 
   Provider& in_;
   Box64 world_;
+  std::string builder_problem_;
 };
 
 // One edit as decoded: what to do, with which materials and shape, and whether to take a
 // snapshot of the landscape before it.
 struct DecodedEdit {
-  int kind;  // 0 carve, 1 fill, 2 fill_empty, 3 replace
+  int kind;  // 0 carve, 1 fill, 2 fill_empty, 3 replace, 4 relabel
   Material a, b;
+  MaterialMap map;  // relabel's
   PolygonSet shape;
   bool snapshot;
+  std::string builder_problem;  // EditDecoder::builder_problem() of its shape
 };
 
 DecodedEdit next_edit(Provider& in, EditDecoder& decode, const Landscape& l);
