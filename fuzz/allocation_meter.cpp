@@ -6,7 +6,7 @@
 namespace {
 
 // Each block carries its size in a header of max_align_t (malloc_usable_size would be glibc's).
-std::size_t g_in_use = 0, g_peak = 0, g_budget = 0;
+std::size_t g_in_use = 0, g_peak = 0, g_budget = 0, g_allocations = 0;
 constexpr std::size_t kHeader = alignof(std::max_align_t);
 
 void* counted_alloc(std::size_t n) {
@@ -15,6 +15,7 @@ void* counted_alloc(std::size_t n) {
   if (!p) throw std::bad_alloc();
   *reinterpret_cast<std::size_t*>(p) = n;
   g_in_use += n;
+  ++g_allocations;
   if (g_in_use > g_peak) g_peak = g_in_use;
   return p + kHeader;
 }
@@ -53,6 +54,7 @@ void operator delete[](void* p, const std::nothrow_t&) noexcept { counted_free(p
 namespace edgeland::fuzz {
 
 std::size_t heap_in_use() noexcept { return g_in_use; }
+std::size_t allocations_made() noexcept { return g_allocations; }
 
 namespace detail {
 std::size_t start_peak() noexcept {

@@ -1,14 +1,16 @@
 #pragma once
-// The heap bytes a piece of code needs at its peak, measured by replacing the global allocation
-// functions (allocation_meter.cpp; link it into an executable to use it, as the load fuzzer, the
-// regression replay and the load memory test do). Not thread-safe: a fuzz target and a test
-// run one thing at a time.
+// The heap bytes a piece of code needs at its peak, and how many allocations it makes, measured
+// by replacing the global allocation functions (allocation_meter.cpp; link it into an executable
+// to use it, as the load fuzzer, the regression replay and the clip and load memory tests do).
+// Not thread-safe: a fuzz target and a test run one thing at a time.
 #include <cstddef>
 
 namespace edgeland::fuzz {
 
 // Heap bytes in use now (allocated with operator new and not yet freed).
 std::size_t heap_in_use() noexcept;
+// Allocations made so far (every form of operator new that returned a block).
+std::size_t allocations_made() noexcept;
 
 // The peak of heap bytes in use while `run` ran, beyond what was in use before it.
 template <class F>

@@ -1,12 +1,13 @@
 // The working memory clip.hpp promises (MEMORY): the peak of heap bytes allocated during one
 // operation, beyond what was allocated before it, stays within a bound per input edge plus a
-// bound per crossing. Measured by the counting allocation functions (counting_allocator.hpp).
+// bound per crossing. Measured by replacing the global allocation functions
+// (fuzz/allocation_meter.hpp, as the load memory test does).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
 
-#include "counting_allocator.hpp"
+#include "allocation_meter.hpp"
 #include "edgeland/clip/clip.hpp"
 
 namespace edgeland {
@@ -15,11 +16,7 @@ namespace {
 // Bytes the operation needed on top of its inputs (the result included).
 template <class F>
 std::size_t peak_during(F&& operation) {
-  test::HeapCounters& c = test::heap_counters();
-  const std::size_t before = c.in_use;
-  c.peak = c.in_use;
-  operation();
-  return c.peak - before;
+  return fuzz::peak_heap_during(operation);
 }
 
 // n vertices round (cx, cy), radii alternating r and inner * r (a circle when inner is 1, a

@@ -1,14 +1,14 @@
 // relabel() reuses its working storage (kernel/internal/.../scratch.hpp): once an overlay of a
 // size has run, the same overlay allocates nothing but its result (issue 28: a landscape edit
 // calls it for every cell it touches, many times a frame). Counted by the counting allocation
-// functions (counting_allocator.hpp).
+// functions (fuzz/allocation_meter.hpp).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
 #include <vector>
 
-#include "counting_allocator.hpp"
+#include "allocation_meter.hpp"
 #include "edgeland/clip/relabel.hpp"
 
 namespace edgeland {
@@ -51,10 +51,9 @@ LabeledSet worn_cell() {
 
 // Allocations of one overlay beyond the blocks of its result.
 std::size_t extra_allocations(const LabeledSet& cell, const ValidSet& shape, LabeledSet* out) {
-  test::HeapCounters& c = test::heap_counters();
-  const std::size_t before = c.allocations;
+  const std::size_t before = fuzz::allocations_made();
   LabeledClipResult r = relabel(cell.set, cell.labels, shape, kCell, carve_table());
-  const std::size_t made = c.allocations - before;
+  const std::size_t made = fuzz::allocations_made() - before;
   const std::size_t result = blocks_of(r.regions);
   if (out) *out = std::move(r.regions);
   return made - std::min(made, result);
