@@ -37,7 +37,9 @@ void require_window(const Box64& w, std::size_t index) {
 LabeledSet labeled(detail::PipelineResult& r, std::size_t begin, std::size_t end,
                    RegionLabel (*label_of)(detail::FaceLabel)) {
   ClipResult part;
-  if (begin == 0 && end == r.clipped.polygons.size()) {
+  if (begin == end) {
+    // Nothing: the vector is not touched (all of it may have been moved out for a window before).
+  } else if (begin == 0 && end == r.clipped.polygons.size()) {
     part.polygons = std::move(r.clipped.polygons);  // all of it: no copy of the vector
   } else {
     part.polygons.assign(
@@ -161,7 +163,7 @@ std::vector<LabeledSet> cut_to_windows(const ValidSet& regions, std::span<const 
   for (std::size_t w = 0; w < windows.size(); ++w) {
     std::size_t end = begin;
     while (end < sorted.labels.size() && high_half(sorted.labels[end]) == w) ++end;
-    if (options.checked) {
+    if (options.checked && begin < end) {
       // gcov ascribes the unwinding of `part` (an internal error) to the next line: not
       // reached by tests.
       const PolygonSet part(sorted.clipped.polygons.begin() + static_cast<std::ptrdiff_t>(begin),
