@@ -9,6 +9,7 @@
 #include "edgeland/kernel/area.hpp"
 #include "edgeland/kernel/bbox.hpp"
 #include "edgeland/kernel/edge_normal.hpp"
+#include "edgeland/kernel/int128.hpp"
 #include "edgeland/kernel/validate.hpp"
 
 namespace edgeland {
@@ -129,7 +130,8 @@ TEST(EdgeNormal, PointsOutOfACounterClockwiseRing) {
   const Point64 a{-kCoordBound, kCoordBound}, b{kCoordBound, -kCoordBound};
   const Point64 n = outward_normal(a, b);
   EXPECT_EQ(n, (Point64{-2 * kCoordBound, -2 * kCoordBound}));
-  EXPECT_EQ((b.x - a.x) * n.x + (b.y - a.y) * n.y, 0);  // perpendicular
+  // Perpendicular: the dot product (2^64 in each term, so in 128 bits).
+  EXPECT_EQ(Int128(b.x - a.x) * n.x + Int128(b.y - a.y) * n.y, 0);
 }
 
 }  // namespace
