@@ -65,24 +65,20 @@ SegmentGrid::SegmentGrid(const std::vector<Segment>& segments) {
   // registrations (1.5 GB) at the side above. Keep them within a few dozen per segment on
   // average (spiky stars of 4 * 10^5 segments ran as fast at 32 as with no bound, in two thirds
   // of the memory; 8 doubled their time).
-  std::size_t expected = registrations(segments, side);
-  while (expected > kRegistrationsPerSegment * n + 1024) {
-    side *= 2;
-    expected = registrations(segments, side);
-  }
+  while (registrations(segments, side) > kRegistrationsPerSegment * n + 1024) side *= 2;
 
   set_side(side);
   // Offsets n . (p - corner) stay within 3 * 2^10 * side (p within a side of the cell): 2^18
   // steps per side keep them within 2^31.
   offset_shift_ = std::max(0, shift_ - 18);
   // One walk records every (cell, segment) registration in segment order, straight into the
-  // slots. They are reserved at once: growing a list of 10^7 registrations by doubling copied
-  // it and held both copies (at zigzag stars of 10^6 the kernel's zeroing of fresh pages was a
-  // fifth of the time). A walk registers at most floor(|dx| / side) + floor(|dy| / side) + 3
-  // cells (its columns and rows each span one more than the floor), one more than the
-  // estimate. A counting sort by cell then lists each cell's segments in increasing id order
-  // and sets each slot's place.
-  slots_.reserve(expected + n);
+  // slots, reserved at their exact number (growing a list of 10^7 registrations by doubling
+  // copied it and held both copies: at zigzag stars of 10^6 the kernel's zeroing of fresh pages
+  // was a fifth of the time). A counting sort by cell then lists each cell's segments in
+  // increasing id order and sets each slot's place.
+  std::size_t walked = 0;
+  for (const Segment& s : segments) walked += cells_walked(s);
+  slots_.reserve(walked);
   slot_begin_.assign(n + 1, 0);
   for (std::uint32_t i = 0; i < n; ++i) {
     for_each_cell(segments[i], [&](std::size_t k) {

@@ -164,6 +164,14 @@ class SegmentGrid {
   // f(cell index) for every cell the walk registers s in, each cell once.
   template <class F>
   void for_each_cell(const Segment& s, F&& f) const;
+  // How many cells for_each_cell registers s in: its columns, plus one per row it climbs or
+  // descends (the walk is monotone, so each column adds the rows between its entry and exit).
+  std::size_t cells_walked(const Segment& s) const {
+    const std::int64_t columns =
+        std::abs(((s.b.x - min_x_) >> shift_) - ((s.a.x - min_x_) >> shift_));
+    const std::int64_t rows = std::abs(((s.b.y - min_y_) >> shift_) - ((s.a.y - min_y_) >> shift_));
+    return static_cast<std::size_t>(columns + rows + 1);
+  }
   // Lays the grid out with square cells of the given side over the segments' bounding box.
   void set_side(std::int64_t side);
 
