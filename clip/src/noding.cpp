@@ -210,6 +210,7 @@ void visit_candidate_pairs(const std::vector<Segment>& segments, SegmentSearch& 
   if (walk) walked.emplace(segments);
   for_each_candidate_pair(segments, search.index, walked ? &*walked : nullptr, simple_rings,
                           ring_of.data(), visit);
+  if (walked) walked->drop_pair_walk();  // snap rounding only asks it for boxes
 }
 
 }  // namespace

@@ -94,6 +94,16 @@ class SegmentGrid {
     if (cell_pairs() > 16 * segments.size() + 4096) order_crowded_cells(segments);
   }
 
+  // Frees the per-segment slots (a third of the grid's memory at zigzag stars) once the last
+  // pair walk is done: box queries do not read them. for_each_candidate_pair,
+  // order_crowded_cells and offsets_violation must not be called afterwards.
+  void drop_pair_walk() {
+    ScratchVector<Slot> slots;
+    ScratchVector<std::uint32_t> slot_begin;
+    slots.swap(slots_);  // the storage goes with them (back to the thread's spares)
+    slot_begin.swap(slot_begin_);
+  }
+
   // Cells holding more segments than this are ordered by offset (above); below it the sort and
   // the exact bounds cost more than the pairs they save.
   static constexpr std::uint32_t kCrowded = 32;
@@ -117,6 +127,8 @@ class SegmentGrid {
             min_y_ + static_cast<std::int64_t>(k) % rows_ * side_};
   }
   IntegerRange box_offsets(std::size_t k, const Box64& b) const;
+  // How many items in [from, end) of a crowded cell's sorted list start at most at hi.
+  std::size_t later_starts_up_to(std::uint32_t from, std::uint32_t end, std::int32_t hi) const;
   // The line of one segment at the ends of its parts, along x (along y when steep): the last
   // two answers are kept, since the walk's consecutive cells share a column or row boundary.
   class LineAt {
@@ -152,6 +164,14 @@ class SegmentGrid {
   // f(cell index) for every cell the walk registers s in, each cell once.
   template <class F>
   void for_each_cell(const Segment& s, F&& f) const;
+  // How many cells for_each_cell registers s in: its columns, plus one per row it climbs or
+  // descends (the walk is monotone, so each column adds the rows between its entry and exit).
+  std::size_t cells_walked(const Segment& s) const {
+    const std::int64_t columns =
+        std::abs(((s.b.x - min_x_) >> shift_) - ((s.a.x - min_x_) >> shift_));
+    const std::int64_t rows = std::abs(((s.b.y - min_y_) >> shift_) - ((s.a.y - min_y_) >> shift_));
+    return static_cast<std::size_t>(columns + rows + 1);
+  }
   // Lays the grid out with square cells of the given side over the segments' bounding box.
   void set_side(std::int64_t side);
 
