@@ -246,8 +246,7 @@ std::size_t run_end(const ScratchVector<std::uint64_t>& keys, std::size_t x) {
 // Sorts distinct keys. A crowded cell lists its segments by id, and a ring's ids run along
 // it, so the list is a few runs already ordered by offset (one per ring through the cell at
 // zigzag stars): those are merged pairwise, linear per round; a list of many short runs is
-// sorted. The keys are distinct, so every
-// correct sort gives the same order.
+// sorted. The keys are distinct, so every correct sort gives the same order.
 void sort_runs(ScratchVector<std::uint64_t>& keys, ScratchVector<std::uint64_t>& merged) {
   // log2(runs) merge rounds against about log2(size) rounds of a sort's partitioning. A ring
   // may run against the cell's normal (the normal of an outward zigzag edge and an inward one
