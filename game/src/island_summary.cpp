@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "solid_boundary.hpp"
+
 namespace edgeland::game_detail {
 namespace {
 
@@ -60,21 +62,6 @@ void match(std::span<const Port> a, std::uint32_t a_offset, std::span<const Port
 
 constexpr std::size_t side_index(Side s) { return static_cast<std::size_t>(s); }
 
-// Whether child c's side `s` lies on the node's side `s`.
-bool on_node_side(const Box64& node, const Box64& c, Side s) {
-  switch (s) {
-    case Side::kBottom:
-      return c.min.y == node.min.y;
-    case Side::kRight:
-      return c.max.x == node.max.x;
-    case Side::kTop:
-      return c.max.y == node.max.y;
-    case Side::kLeft:
-      return c.min.x == node.min.x;
-  }
-  return false;
-}
-
 }  // namespace
 
 IslandKey IslandKey::of(PolygonId id) { return {id, 1, id, mixed(id)}; }
@@ -126,7 +113,7 @@ Summary combine(const Box64& node, std::span<const Box64> children,
   for (Side s : kSides) {
     std::vector<Port>& out = ports[side_index(s)];
     for (std::size_t c = 0; c < children.size(); ++c) {
-      if (!on_node_side(node, children[c], s)) continue;
+      if (!on_side_of(children[c], s, node)) continue;
       for (Port p : summaries[c]->ports[side_index(s)]) {
         p.group += offset[c];
         out.push_back(p);

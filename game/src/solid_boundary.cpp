@@ -127,6 +127,20 @@ bool across(const Box64& box, Side side, const Box64& other) {
   return false;
 }
 
+bool on_side_of(const Box64& inner, Side side, const Box64& outer) {
+  switch (side) {
+    case Side::kBottom:
+      return inner.min.y == outer.min.y;
+    case Side::kRight:
+      return inner.max.x == outer.max.x;
+    case Side::kTop:
+      return inner.max.y == outer.max.y;
+    case Side::kLeft:
+      return inner.min.x == outer.min.x;
+  }
+  return false;
+}
+
 SolidBoundary solid_boundary(const Box64& box, std::span<const CellPolygon> polygons,
                              const PhysicsMaterials& materials) {
   SolidBoundary out;

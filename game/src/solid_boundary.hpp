@@ -48,5 +48,8 @@ Side opposite(Side side);
 // Whether `other` lies across `side` of `box`: its opposite side on the same line (whether they
 // share a stretch of positive length is the caller's to check).
 bool across(const Box64& box, Side side, const Box64& other);
+// Whether `side` of `inner` lies on the same side's line of `outer` (a cell on the world's border,
+// a child on its node's side).
+bool on_side_of(const Box64& inner, Side side, const Box64& outer);
 
 }  // namespace edgeland::game_detail

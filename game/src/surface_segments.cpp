@@ -156,17 +156,7 @@ void add_wall(const CellPolygons& cell, Side side, const SolidBoundary& solid,
 }  // namespace
 
 bool on_world_border(const Box64& box, Side side, const Box64& world) {
-  switch (side) {
-    case Side::kBottom:
-      return box.min.y == world.min.y;
-    case Side::kRight:
-      return box.max.x == world.max.x;
-    case Side::kTop:
-      return box.max.y == world.max.y;
-    case Side::kLeft:
-      return box.min.x == world.min.x;
-  }
-  return false;
+  return on_side_of(box, side, world);
 }
 
 std::vector<SurfaceSegment> surface_segments(const CellPolygons& cell, const SolidBoundary& solid,
