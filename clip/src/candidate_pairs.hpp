@@ -15,10 +15,12 @@ namespace edgeland::detail {
 
 // Whether a grid walk is worth building: many segments in short runs (spiky or zigzag rings)
 // leave the run index little to group, and their long diagonals make box overlap a weak filter.
+// A flat index (few segments) is never worth a grid.
 inline bool runs_are_short(const SegmentIndex& index, std::size_t segments) {
   constexpr std::size_t kGridWalkFrom = 64;                   // segments
   constexpr std::size_t kGridWalkBelowRunLengthX16 = 16 * 3;  // runs shorter than 3 segments
-  return segments >= kGridWalkFrom && index.run_length_x16() < kGridWalkBelowRunLengthX16;
+  return segments >= kGridWalkFrom && !index.flat() &&
+         index.run_length_x16() < kGridWalkBelowRunLengthX16;
 }
 
 // Whether to walk `grid` rather than the run index, by the pairs each would propose; only

@@ -8,8 +8,8 @@ int sign(std::int64_t v) { return (v > 0) - (v < 0); }
 }  // namespace
 
 SegmentIndex::SegmentIndex(const std::vector<Segment>& segments,
-                           const std::vector<std::uint32_t>& next)
-    : segments_(&segments), next_(&next) {}
+                           const std::vector<std::uint32_t>& next, std::size_t flat_up_to)
+    : segments_(&segments), next_(&next), flat_up_to_(flat_up_to) {}
 
 SegmentIndex::RunEnd SegmentIndex::run_end(std::uint32_t s) const {
   // Greedy: extend while the next segment follows along the ring and keeps the run's x and y
@@ -39,6 +39,61 @@ void SegmentIndex::find_run_ends() const {
 std::size_t SegmentIndex::run_length_x16() const {
   find_run_ends();
   return run_ends_.empty() ? 0 : 16 * segments_->size() / run_ends_.size();
+}
+
+void SegmentIndex::build_flat() const {
+  const std::vector<Segment>& segments = *segments_;
+  const std::vector<std::uint32_t>& next = *next_;
+  if (!flat_.empty() || segments.empty()) return;
+  const auto n = static_cast<std::uint32_t>(segments.size());
+  ring_.resize(n);
+  for (std::uint32_t s = 0, ring = 0; s < n; ++s) {
+    if (s > 0 && next[s - 1] != s) ring = s;  // rings occupy consecutive ids
+    ring_[s] = ring;
+  }
+  sort_flat();
+}
+
+void SegmentIndex::mark_runs() const {
+  if (!continues_run_.empty()) return;
+  find_run_ends();
+  continues_run_.assign(segments_->size(), 1);
+  std::uint32_t first = 0;
+  for (const RunEnd& end : run_ends_) {
+    continues_run_[first] = 0;
+    first = end.last + 1;
+  }
+}
+
+void SegmentIndex::sort_flat() const {
+  const auto n = static_cast<std::uint32_t>(segments_->size());
+  flat_.resize(n);
+  std::int64_t lo = box(0).min.x, hi = lo;
+  for (std::uint32_t s = 0; s < n; ++s) {
+    const Box64 b = box(s);
+    flat_[s] = {b.min.x, b.max.x, b.min.y, b.max.y, s};
+    lo = std::min(lo, b.min.x);
+    hi = std::max(hi, b.min.x);
+  }
+  auto by_min_x = [](const SweepBox& a, const SweepBox& b) {
+    return a.min_x != b.min_x ? a.min_x < b.min_x : a.id < b.id;
+  };
+  // Sorting one packed key (min x from the least, then id) per segment is a few times cheaper
+  // than sorting the boxes by a two-field comparison; coordinates within the bound
+  // (point.hpp: |c| < 2^31) always fit.
+  if (static_cast<std::uint64_t>(hi - lo) >> 32 != 0) {
+    std::sort(flat_.begin(), flat_.end(), by_min_x);  // (not reached: coordinates fit)
+    return;
+  }
+  ScratchVector<std::uint64_t> keys;
+  keys.resize(n);
+  for (std::uint32_t s = 0; s < n; ++s)
+    keys[s] = static_cast<std::uint64_t>(flat_[s].min_x - lo) << 32 | s;
+  std::sort(keys.begin(), keys.end());
+  ScratchVector<SweepBox> sorted;
+  sorted.resize(n);
+  for (std::uint32_t k = 0; k < n; ++k) sorted[k] = flat_[keys[k] & 0xffffffffu];
+  flat_.swap(sorted);
 }
 
 void SegmentIndex::build_runs() const {

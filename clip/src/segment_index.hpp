@@ -10,6 +10,12 @@
 // Between two runs whose boxes overlap, monotonicity lets a two-pointer walk visit exactly the
 // segment pairs whose x-ranges overlap. Spiky rings give runs of one or two segments and the
 // cost of a plain box sweep (box_sweep.hpp).
+//
+// A few segments (up to kFlatUpTo: the landscape's per-cell overlays have 30-130) skip all of
+// that: their boxes go into one flat array sorted by min x, pairs come from a plain sweep over
+// it and queries from a scan, and no run box, run sweep or grid is built. The flat answers are
+// the run answers exactly: the same pairs (consecutive segments of one run left out by the same
+// greedy runs) and the same (query, segment) matches, in another order.
 #include <algorithm>
 #include <cstdint>
 #include <vector>
@@ -29,10 +35,16 @@ class SegmentIndex {
   // 16 / 32 / 64 / 128; the carving workload did not notice.
   static constexpr std::uint32_t kRunLength = 64;
   static constexpr std::size_t kGridFrom = 256;  // runs
+  // Up to this many segments the search is flat (above). Measured on the landscape's edits
+  // (bench/README.md, "Per-edit figures"): the set-up of runs, sweeps and grids was most of the
+  // search's cost on 30-130 segments, and a flat scan of 256 boxes per query still costs less.
+  static constexpr std::size_t kFlatUpTo = 256;
 
   // next[s]: the segment that follows s along its ring (segments of a ring are consecutive).
   // Keeps a reference to `segments`, which must outlive the index.
-  SegmentIndex(const std::vector<Segment>& segments, const std::vector<std::uint32_t>& next);
+  // flat_up_to: the most segments searched flat (tests set 0 or more to compare the two ways).
+  SegmentIndex(const std::vector<Segment>& segments, const std::vector<std::uint32_t>& next,
+               std::size_t flat_up_to = kFlatUpTo);
 
   // visit(i, j) once per unordered pair of distinct segments whose closed boxes overlap, except
   // consecutive segments of one run (ring neighbours meeting only at their shared endpoint),
@@ -57,6 +69,13 @@ class SegmentIndex {
   std::size_t run_length_x16() const;
 
   Box64 box(std::uint32_t s) const { return segment_box((*segments_)[s]); }
+
+  // Whether the search is flat (few segments: no runs, no grid; see above).
+  bool flat() const { return segments_->size() <= flat_up_to_; }
+
+  // visit(s) for every segment s whose closed box overlaps q (flat searches only).
+  template <class F>
+  void query_flat(const Box64& q, F&& visit) const;
 
  private:
   struct Run {
@@ -84,9 +103,17 @@ class SegmentIndex {
   // pixels (checkerboards, tiles) never queries the index, and building the runs was a few
   // percent of such an operation.
   void build_runs() const;
+  // Fills flat_ (boxes by min x) and ring_ on first use.
+  void build_flat() const;
+  void sort_flat() const;
+  // Fills continues_run_ on first use.
+  void mark_runs() const;
+  template <class F>
+  void flat_pairs(F& visit, bool across_rings_only) const;
 
   const std::vector<Segment>* segments_;  // boxes are computed, not stored: less memory traffic
   const std::vector<std::uint32_t>* next_;
+  std::size_t flat_up_to_;
   mutable bool built_ = false;
   mutable ScratchVector<RunEnd> run_ends_;  // in segment order
   mutable ScratchVector<Run> runs_;
@@ -98,6 +125,11 @@ class SegmentIndex {
     return run_sweep_;
   }
   mutable ScratchVector<SweepBox> run_sweep_;
+  // Flat searches: every segment's box sorted by min x; whether segment s follows s - 1 in one
+  // run (the pair the runs leave out); the first segment of each segment's ring.
+  mutable ScratchVector<SweepBox> flat_;
+  mutable ScratchVector<std::uint8_t> continues_run_;
+  mutable ScratchVector<std::uint32_t> ring_;
 };
 
 template <class F>
@@ -141,7 +173,34 @@ void SegmentIndex::pairs_between(std::uint32_t a, std::uint32_t b, F& visit) con
 }
 
 template <class F>
+void SegmentIndex::flat_pairs(F& visit, bool across_rings_only) const {
+  if (flat_.empty()) build_flat();
+  // Consecutive segments of one run are of one ring: only needed when rings are not left out.
+  if (!across_rings_only) mark_runs();
+  for (std::size_t a = 0; a < flat_.size(); ++a) {
+    const SweepBox& x = flat_[a];
+    for (std::size_t b = a + 1; b < flat_.size() && flat_[b].min_x <= x.max_x; ++b) {
+      const SweepBox& y = flat_[b];
+      if (y.min_y > x.max_y || x.min_y > y.max_y) continue;
+      const std::uint32_t i = std::min(x.id, y.id), j = std::max(x.id, y.id);
+      if (across_rings_only ? ring_[i] == ring_[j] : j == i + 1 && continues_run_[j]) continue;
+      visit(i, j);
+    }
+  }
+}
+
+template <class F>
+void SegmentIndex::query_flat(const Box64& q, F&& visit) const {
+  if (flat_.empty()) build_flat();
+  for (const SweepBox& b : flat_) {
+    if (b.min_x > q.max.x) break;
+    if (b.max_x >= q.min.x && b.min_y <= q.max.y && q.min.y <= b.max_y) visit(b.id);
+  }
+}
+
+template <class F>
 void SegmentIndex::for_each_overlapping_pair(F&& visit, bool across_rings_only) const {
+  if (flat()) return flat_pairs(visit, across_rings_only);
   build_runs();
   auto between = [&](std::uint32_t a, std::uint32_t b) {
     if (across_rings_only && runs_[a].ring == runs_[b].ring) return;
@@ -157,6 +216,11 @@ void SegmentIndex::for_each_overlapping_pair(F&& visit, bool across_rings_only) 
 
 template <class F>
 void SegmentIndex::query(const std::vector<Box64>& boxes, F&& visit) const {
+  if (flat()) {
+    for (std::uint32_t k = 0; k < boxes.size(); ++k)
+      query_flat(boxes[k], [&](std::uint32_t s) { visit(k, s); });
+    return;
+  }
   build_runs();
   detail::for_each_overlapping_pair(sorted_for_sweep(boxes), run_sweep(),
                                     [&](std::uint32_t k, std::uint32_t r) {

@@ -20,7 +20,9 @@ namespace edgeland::detail {
 // cells.
 class SegmentsNear {
  public:
-  explicit SegmentsNear(const std::vector<Segment>& segs) : segs_(segs) {}
+  // A flat `index` (segment_index.hpp: few segments) answers by a scan of its boxes instead.
+  SegmentsNear(const std::vector<Segment>& segs, const SegmentIndex& index)
+      : segs_(segs), index_(index) {}
   // Where noding leaves the grid it walked, if it walked one.
   std::optional<SegmentGrid>& grid() { return grid_; }
   bool has_grid() const { return grid_.has_value(); }
@@ -28,6 +30,7 @@ class SegmentsNear {
   // some farther ones: callers test exactly).
   template <class F>
   void for_each(Point64 p, F&& visit) {
+    if (index_.flat()) return index_.query_flat(pixel_box(p), visit);
     if (!grid_) grid_.emplace(segs_);
     if (stamp_.empty() || token_ == kUnstamped - 1) {
       stamp_.assign(segs_.size(), kUnstamped);
@@ -44,6 +47,7 @@ class SegmentsNear {
  private:
   static constexpr std::uint32_t kUnstamped = 0xffffffffu;
   const std::vector<Segment>& segs_;
+  const SegmentIndex& index_;
   std::optional<SegmentGrid> grid_;
   ScratchVector<std::uint32_t> stamp_;
   std::uint32_t token_ = 0;
@@ -52,7 +56,7 @@ class SegmentsNear {
 // Both, over segments whose ring successors are next[s]. Keeps references to both vectors.
 struct SegmentSearch {
   SegmentSearch(const std::vector<Segment>& segments, const std::vector<std::uint32_t>& next)
-      : index(segments, next), near(segments) {}
+      : index(segments, next), near(segments, index) {}
   SegmentIndex index;
   SegmentsNear near;
 };

@@ -159,6 +159,22 @@ void check_by_grid_walk(const AllFragments& all, const std::vector<std::uint8_t>
   });
 }
 
+// Few segments (a flat search): every moved fragment against every fragment, the pairs of the
+// grid walk above exactly (a moved one, one off its classic route, boxes overlapping), each once,
+// without building the grid.
+void check_moved_against_all(const AllFragments& all, const std::vector<std::uint8_t>& off,
+                             PairCheck& check) {
+  for (std::uint32_t f : check.moved_fragments()) {
+    const Segment& a = all.seg(f);
+    for (std::uint32_t s = 0; s < all.segment_count(); ++s)
+      all.for_each_of(s, [&](std::uint32_t g) {
+        if (g == f || (check.moved(g) && g < f)) return;  // a moved pair is seen from both sides
+        if ((off[all.parent(f)] || off[all.parent(g)]) && boxes_overlap(a, all.seg(g)))
+          check(f, g);
+      });
+  }
+}
+
 bool any(const std::vector<std::uint8_t>& v) { return std::find(v.begin(), v.end(), 1) != v.end(); }
 
 // The listed fragments after cutting fragments (by AllFragments id) at exact split points.
@@ -204,7 +220,13 @@ Rechecked recheck(const std::vector<Segment>& segs, Fragments fragments, const C
     if (off.empty() || any(off)) check_by_box_queries(all, search.index, off, check);
   } else {
     off_classic();
-    if (any(off)) check_by_grid_walk(all, off, check);
+    if (!any(off)) {
+      // Every fragment is on its classic route: nothing to test.
+    } else if (search.index.flat()) {
+      check_moved_against_all(all, off, check);
+    } else {
+      check_by_grid_walk(all, off, check);
+    }
   }
   if (!out.found.hot.empty()) return out;
   // Only exact integer splits remain, if any (snapped fragments landing on vertices or

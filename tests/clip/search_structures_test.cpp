@@ -7,6 +7,7 @@
 #include <rapidcheck/gtest.h>
 
 #include <algorithm>
+#include <limits>
 #include <set>
 #include <tuple>
 #include <utility>
@@ -113,10 +114,18 @@ TEST(BoxGrid, FallsBackToTheSweepWhenBigBoxesFillEveryCell) {
   EXPECT_TRUE(got == expected);  // sorted, so a duplicate would show as an extra element
 }
 
-RC_GTEST_PROP(SegmentIndex, ProposesEveryBoxOverlappingPairButRunNeighbours, ()) {
-  const auto ring_sizes = *rc::gen::container<std::vector<int>>(rc::gen::inRange(2, 40));
+// Rings of random points (some on a small patch, so that boxes overlap often), as segments and
+// ring successors.
+struct RandomRings {
   std::vector<Segment> segs;
   std::vector<std::uint32_t> next;
+};
+
+RandomRings random_rings() {
+  const auto ring_sizes = *rc::gen::container<std::vector<int>>(rc::gen::inRange(2, 40));
+  RandomRings r;
+  std::vector<Segment>& segs = r.segs;
+  std::vector<std::uint32_t>& next = r.next;
   for (int size : ring_sizes) {
     std::vector<Point64> pts = *rc::gen::container<std::vector<Point64>>(
         static_cast<std::size_t>(size),
@@ -136,7 +145,13 @@ RC_GTEST_PROP(SegmentIndex, ProposesEveryBoxOverlappingPairButRunNeighbours, ())
     }
     next.back() = first;
   }
-  const SegmentIndex index(segs, next);
+  return r;
+}
+
+// The index's pairs and query hits against a check of every pair and every (query, segment).
+void check_pairs_and_queries(const std::vector<Segment>& segs,
+                             const std::vector<std::uint32_t>& next, std::size_t flat_up_to) {
+  const SegmentIndex index(segs, next, flat_up_to);
   std::set<std::pair<std::uint32_t, std::uint32_t>> got;
   index.for_each_overlapping_pair([&](std::uint32_t i, std::uint32_t j) {
     RC_ASSERT(i != j);
@@ -165,6 +180,36 @@ RC_GTEST_PROP(SegmentIndex, ProposesEveryBoxOverlappingPairButRunNeighbours, ())
   for (std::uint32_t k = 0; k < queries.size(); ++k)
     for (std::uint32_t s = 0; s < segs.size(); ++s)
       RC_ASSERT(hits.count({k, s}) == (queries[k].overlaps(index.box(s)) ? 1u : 0u));
+}
+
+// The flat search (few segments) and the run search, both asked: kFlatUpTo decides which one an
+// index of these segments takes.
+constexpr std::size_t kBothSearches[] = {0, std::numeric_limits<std::size_t>::max()};
+
+RC_GTEST_PROP(SegmentIndex, ProposesEveryBoxOverlappingPairButRunNeighbours, ()) {
+  const auto [segs, next] = random_rings();
+  for (std::size_t flat_up_to : kBothSearches) check_pairs_and_queries(segs, next, flat_up_to);
+}
+
+// Both searches give the same pairs (with and without the pairs of one ring) and the same
+// query hits.
+RC_GTEST_PROP(SegmentIndex, FlatAndRunSearchesAgree, ()) {
+  const auto [segs, next] = random_rings();
+  const auto queries = *rc::gen::container<std::vector<Box64>>(box());
+  auto answers = [&](std::size_t flat_up_to) {
+    const SegmentIndex index(segs, next, flat_up_to);
+    RC_ASSERT(index.flat() == (flat_up_to != 0 || segs.empty()));
+    std::set<std::tuple<int, std::uint32_t, std::uint32_t>> got;
+    for (const bool across : {false, true})
+      index.for_each_overlapping_pair(
+          [&](std::uint32_t i, std::uint32_t j) {
+            got.insert({across, std::min(i, j), std::max(i, j)});
+          },
+          across);
+    index.query(queries, [&](std::uint32_t k, std::uint32_t s) { got.insert({2, k, s}); });
+    return got;
+  };
+  RC_ASSERT(answers(kBothSearches[0]) == answers(kBothSearches[1]));
 }
 
 // Long segments in every direction on a small patch (cells of a unit or two, where a meeting on
@@ -381,6 +426,31 @@ RC_GTEST_PROP(PointSet, AgreesWithStdSet, ()) {
 }
 
 // Validated operands' rings are simple: the index can leave out every pair within one ring.
+// Pairs of one ring are exactly the pairs for_each_overlapping_pair leaves out across rings.
+void check_across_rings_only(const std::vector<Segment>& segs,
+                             const std::vector<std::uint32_t>& next,
+                             const std::vector<std::uint32_t>& ring_of, std::size_t flat_up_to) {
+  const SegmentIndex index(segs, next, flat_up_to);
+  std::set<std::pair<std::uint32_t, std::uint32_t>> all, across;
+  index.for_each_overlapping_pair([&](std::uint32_t i, std::uint32_t j) {
+    all.insert({std::min(i, j), std::max(i, j)});
+  });
+  index.for_each_overlapping_pair(
+      [&](std::uint32_t i, std::uint32_t j) {
+        across.insert({std::min(i, j), std::max(i, j)});
+      },
+      true);
+  std::size_t same_ring = 0;
+  for (const auto& pair : all) {
+    const bool same = ring_of[pair.first] == ring_of[pair.second];
+    same_ring += same;
+    EXPECT_EQ(across.count(pair), same ? 0u : 1u);
+  }
+  EXPECT_EQ(across.size() + same_ring, all.size());
+  EXPECT_GT(same_ring, 0u);
+  EXPECT_GT(across.size(), 0u);
+}
+
 TEST(SegmentIndex, AcrossRingsOnlyLeavesOutExactlyThePairsOfOneRing) {
   // Two overlapping zigzag rings (many short runs) and a square crossing both.
   std::vector<Segment> segs;
@@ -405,25 +475,10 @@ TEST(SegmentIndex, AcrossRingsOnlyLeavesOutExactlyThePairsOfOneRing) {
   add_ring(zig);
   add_ring(zag);
   add_ring({{-5, -5}, {50, -5}, {50, 3}, {-5, 3}});
-  const SegmentIndex index(segs, next);
-  std::set<std::pair<std::uint32_t, std::uint32_t>> all, across;
-  index.for_each_overlapping_pair([&](std::uint32_t i, std::uint32_t j) {
-    all.insert({std::min(i, j), std::max(i, j)});
-  });
-  index.for_each_overlapping_pair(
-      [&](std::uint32_t i, std::uint32_t j) {
-        across.insert({std::min(i, j), std::max(i, j)});
-      },
-      true);
-  std::size_t same_ring = 0;
-  for (const auto& pair : all) {
-    const bool same = ring_of[pair.first] == ring_of[pair.second];
-    same_ring += same;
-    EXPECT_EQ(across.count(pair), same ? 0u : 1u);
+  for (std::size_t flat_up_to : kBothSearches) {
+    SCOPED_TRACE(flat_up_to == 0 ? "run search" : "flat search");
+    check_across_rings_only(segs, next, ring_of, flat_up_to);
   }
-  EXPECT_EQ(across.size() + same_ring, all.size());
-  EXPECT_GT(same_ring, 0u);
-  EXPECT_GT(across.size(), 0u);
 }
 
 }  // namespace
