@@ -1,5 +1,9 @@
 #include "segment_index.hpp"
 
+#include <algorithm>
+
+#include "edgeland/kernel/assert.hpp"
+
 namespace edgeland::detail {
 namespace {
 
@@ -66,34 +70,29 @@ void SegmentIndex::mark_runs() const {
 }
 
 void SegmentIndex::sort_flat() const {
-  const auto n = static_cast<std::uint32_t>(segments_->size());
-  flat_.resize(n);
-  std::int64_t lo = box(0).min.x, hi = lo;
-  for (std::uint32_t s = 0; s < n; ++s) {
-    const Box64 b = box(s);
-    flat_[s] = {b.min.x, b.max.x, b.min.y, b.max.y, s};
-    lo = std::min(lo, b.min.x);
-    hi = std::max(hi, b.min.x);
+  const std::vector<Segment>& segments = *segments_;
+  const auto n = static_cast<std::uint32_t>(segments.size());
+  auto min_x = [&](std::uint32_t s) { return std::min(segments[s].a.x, segments[s].b.x); };
+  std::int64_t lo = min_x(0), hi = lo;
+  for (std::uint32_t s = 1; s < n; ++s) {
+    lo = std::min(lo, min_x(s));
+    hi = std::max(hi, min_x(s));
   }
-  auto by_min_x = [](const SweepBox& a, const SweepBox& b) {
-    return a.min_x != b.min_x ? a.min_x < b.min_x : a.id < b.id;
-  };
   // Sorting one packed key (min x from the least, then id) per segment is a few times cheaper
-  // than sorting the boxes by a two-field comparison; coordinates within the bound
-  // (point.hpp: |c| < 2^31) always fit.
-  if (static_cast<std::uint64_t>(hi - lo) >> 32 != 0) {
-    std::sort(flat_.begin(), flat_.end(), by_min_x);  // (not reached: coordinates fit)
-    return;
-  }
+  // than sorting the boxes by a two-field comparison.
   ScratchVector<std::uint64_t> keys;
   keys.resize(n);
+  // Not reached by tests: coordinates within the bound span less than 2^32.
+  if (static_cast<std::uint64_t>(hi - lo) >> 32 != 0) fail_stage("segment index", "span >= 2^32");
   for (std::uint32_t s = 0; s < n; ++s)
-    keys[s] = static_cast<std::uint64_t>(flat_[s].min_x - lo) << 32 | s;
+    keys[s] = static_cast<std::uint64_t>(min_x(s) - lo) << 32 | s;
   std::sort(keys.begin(), keys.end());
-  ScratchVector<SweepBox> sorted;
-  sorted.resize(n);
-  for (std::uint32_t k = 0; k < n; ++k) sorted[k] = flat_[keys[k] & 0xffffffffu];
-  flat_.swap(sorted);
+  flat_.resize(n);
+  for (std::uint32_t k = 0; k < n; ++k) {
+    const auto s = static_cast<std::uint32_t>(keys[k] & 0xffffffffu);
+    const Box64 b = box(s);
+    flat_[k] = {b.min.x, b.max.x, b.min.y, b.max.y, s};
+  }
 }
 
 void SegmentIndex::build_runs() const {

@@ -121,6 +121,8 @@ void check_by_box_queries(const AllFragments& all, const SegmentIndex& index,
   auto add = [&](std::uint32_t f, std::uint32_t g) {
     if (f == g || (check.moved(g) && g < f)) return;  // a moved pair is seen from both sides
     if (!off.empty() && !off[all.parent(f)] && !off[all.parent(g)]) return;
+    // Fragments whose boxes miss each other do not meet (the queries found their segments).
+    if (!boxes_overlap(all.seg(f), all.seg(g))) return;
     pairs.emplace_back(std::min(f, g), std::max(f, g));
   };
   ScratchVector<Box64> boxes;
