@@ -54,7 +54,7 @@ struct Options {
   std::fprintf(
       stderr,
       "edgeland_landscape_profile: %s\nusage: edgeland_landscape_profile "
-      "carve|dig|fill|spot|combs-fill|combs-back [--tree quadtree|kdtree|grid] [--edits N] "
+      "carve|dig|fill|spot|pit|combs-fill|combs-back [--tree quadtree|kdtree|grid] [--edits N] "
       "[--skip N] [--vertices N]\n",
       why.c_str());
   std::exit(2);

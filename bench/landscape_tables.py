@@ -50,7 +50,7 @@ def error_or(b, key):
 
 
 RIVALS = ["bitmap", "quadtree", "kdtree", "grid"]
-WORKLOADS = ["carve", "dig", "fill", "spot"]
+WORKLOADS = ["carve", "dig", "fill", "spot", "pit"]
 
 
 def edit_tables(r):

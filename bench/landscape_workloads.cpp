@@ -6,15 +6,17 @@
 namespace edgeland::bench {
 namespace {
 
-std::vector<Edit> spot(std::size_t n) {
+// n edits around `centre` (within 8 units) of radius min_radius .. max_radius, three in four
+// carved and one in four filled with material 2.
+std::vector<Edit> repeated_at(Point64 centre, double min_radius, double max_radius,
+                              std::size_t n) {
   SplitMix64 random(0x5907);
-  const Point64 centre{kEditWorldSide / 2, kEditWorldSide / 2};
   std::vector<Edit> out;
   out.reserve(n);
   for (std::size_t i = 0; i < n; ++i) {
     const Point64 c{centre.x - 8 + static_cast<std::int64_t>(random.next() % 17),
                     centre.y - 8 + static_cast<std::int64_t>(random.next() % 17)};
-    const double radius = 3.0 + 197.0 * random.unit();
+    const double radius = min_radius + (max_radius - min_radius) * random.unit();
     const std::size_t sides = 16 + random.next() % 33;
     const bool fill = random.next() % 4 == 0;
     out.push_back({ValidSet(PolygonSet{ngon(c, radius, sides)}, Operand::kClip),
@@ -35,6 +37,8 @@ const char* workload_name(Workload w) {
       return "fill";
     case Workload::kSpot:
       return "spot";
+    case Workload::kPit:
+      return "pit";
   }
   return "?";
 }
@@ -53,8 +57,10 @@ std::vector<Edit> workload_edits(Workload w, std::size_t n) {
       return edits_of(EditKind::kCarve, digger_strokes(kDigSeed, n, kEditWorld), kEmpty);
     case Workload::kFill:
       return edits_of(EditKind::kFill, explosions(kFillSeed, n, kEditWorld), 2);
-    case Workload::kSpot:
-      return spot(n);
+    case Workload::kSpot:  // the corner of the quadrants at every level of the tree
+      return repeated_at({kEditWorldSide / 2, kEditWorldSide / 2}, 3.0, 200.0, n);
+    case Workload::kPit:
+      return repeated_at({3001, 2717}, 3.0, 30.0, n);
   }
   return {};
 }

@@ -26,6 +26,8 @@ class SegmentsNear {
   // Where noding leaves the grid it walked, if it walked one.
   std::optional<SegmentGrid>& grid() { return grid_; }
   bool has_grid() const { return grid_.has_value(); }
+  // Whether the segments are few enough to be scanned (segment_index.hpp, flat searches).
+  bool flat() const { return index_.flat(); }
   // visit(s) once for every segment with a point within L-infinity distance 1 of p (and for
   // some farther ones: callers test exactly).
   template <class F>

@@ -52,6 +52,24 @@ class AllFragments {
   ScratchVector<std::uint32_t> first_;
 };
 
+// Few segments (a flat search): each segment looks up the vertices in its box grown by a unit in
+// `loose` (sorted, so by x first) instead of each vertex scanning all segments; the same pairs
+// meet the exact test.
+void mark_off_by_segment(const std::vector<Segment>& segs, const std::vector<Point64>& loose,
+                         std::vector<std::uint8_t>& off) {
+  for (std::uint32_t s = 0; s < segs.size(); ++s) {
+    const Box64 reach = grown(segment_box(segs[s]), 1);  // the vertices whose pixel_box it meets
+    auto it = std::lower_bound(loose.begin(), loose.end(), reach.min.x,
+                               [](Point64 p, std::int64_t x) { return p.x < x; });
+    for (; it != loose.end() && it->x <= reach.max.x; ++it)
+      if (it->y >= reach.min.y && it->y <= reach.max.y &&
+          segment_meets_closed_pixel(segs[s], *it) && !on_segment(*it, segs[s])) {
+        off[s] = true;
+        break;
+      }
+  }
+}
+
 // Segments whose route may differ from the route classic snap rounding would give them if every
 // vertex pixel were hot too: those meeting the closed pixel of a vertex that is neither hot nor
 // on them. Every other segment's route is exactly that classic route: it already passes through
@@ -75,6 +93,7 @@ void off_classic_routes(const std::vector<Segment>& segs, SegmentsNear& near,
     if (!is_hot.contains(sp.second)) loose.push_back(sp.second);
   std::sort(loose.begin(), loose.end());
   loose.erase(std::unique(loose.begin(), loose.end()), loose.end());
+  if (near.flat()) return mark_off_by_segment(segs, loose, off);
   for (Point64 p : loose)
     near.for_each(p, [&](std::uint32_t s) {
       if (!off[s] && segment_meets_closed_pixel(segs[s], p) && !on_segment(p, segs[s]))
