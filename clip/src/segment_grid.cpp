@@ -312,9 +312,6 @@ void SegmentGrid::bound_parts(const std::vector<Segment>& segments) {
 }
 
 void SegmentGrid::sort_crowded_cells() {
-  ScratchVector<std::uint32_t> entry_at;  // the slot of each item
-  entry_at.resize(items_.size());
-  for (std::uint32_t e = 0; e < slots_.size(); ++e) entry_at[slots_[e].at] = e;
   ScratchVector<std::uint64_t> keys, merged;
   ScratchVector<std::uint32_t> ids;
   ScratchVector<std::int32_t> his;
@@ -331,9 +328,19 @@ void SegmentGrid::sort_crowded_cells() {
       items_[x] = ids[from];
       lo_[x] = key_lo(keys[x - begin]);
       hi_[x] = his[from];
-      slots_[entry_at[begin + from]].at = x;
     }
   }
+  point_slots_at_items();
+}
+
+void SegmentGrid::point_slots_at_items() {
+  // A segment's slots are in walk order, which is ascending cell order (column by column, each
+  // column's rows upwards), so visiting the cells in order meets each segment's slots in their
+  // order: one cursor per segment finds them, with no map from items to slots (that was a
+  // fifth of the grid's memory while it was ordered).
+  ScratchVector<std::uint32_t> next_slot;
+  next_slot.assign(slot_begin_.begin(), slot_begin_.end() - 1);
+  for (std::uint32_t x = 0; x < items_.size(); ++x) slots_[next_slot[items_[x]]++].at = x;
 }
 
 }  // namespace edgeland::detail

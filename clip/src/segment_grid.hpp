@@ -160,8 +160,11 @@ class SegmentGrid {
   // crowded cell's list sorted by (lo, id), the slots following their items.
   void bound_parts(const std::vector<Segment>& segments);
   void sort_crowded_cells();
+  // Sets every slot's place in its cell's list (after the lists were reordered).
+  void point_slots_at_items();
   bool crowded(std::size_t k) const { return !width_.empty() && width_[k] >= 0; }
-  // f(cell index) for every cell the walk registers s in, each cell once.
+  // f(cell index) for every cell the walk registers s in, each cell once, in ascending order
+  // (columns left to right, each column's rows upwards; point_slots_at_items relies on it).
   template <class F>
   void for_each_cell(const Segment& s, F&& f) const;
   // How many cells for_each_cell registers s in: its columns, plus one per row it climbs or
