@@ -30,7 +30,11 @@ struct Noded {
 Noded node(const EdgeList& edges, const NodingOptions& options) {
   SegmentSearch search(edges.segments, edges.next);
   Noded n{find_contacts(edges.segments, edges.next, search, options), {}};
-  if (!n.contacts.stopped()) n.snapped = snap_round(edges.segments, edges.next, n.contacts, search);
+  if (n.contacts.stopped()) return n;
+  n.snapped = snap_round(edges.segments, edges.next, n.contacts, search);
+  // The fragments hold what the contacts said; only their counts and flags are read later.
+  discard(n.contacts.splits);
+  discard(n.contacts.hot);
   return n;
 }
 
@@ -104,7 +108,7 @@ PipelineResult run(const Pipeline& p, std::vector<Box64>* moved_boxes, bool with
   if (p.check_stages) check_fragments(edges, noded.snapped.fragments, noded.snapped.touched);
   PlaneGraph graph;
   ScratchVector<SideState> labels;
-  build_plane_graph(edges, noded.snapped.fragments, noded.snapped.touched, graph);
+  build_plane_graph(edges, noded.snapped, graph);  // consumes the fragments
   if (p.check_stages) check_plane_graph(graph);
   if (!label_sides(graph, p.mode, labels, check_cover)) {
     p.screening->suspect = true;

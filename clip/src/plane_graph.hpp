@@ -84,5 +84,8 @@ struct PlaneGraph {
 // into g, reusing its arrays' capacity.
 void build_plane_graph(const EdgeList& edges, const std::vector<Fragment>& fragments,
                        const std::vector<std::uint8_t>& touched, PlaneGraph& g);
+// The same from snap rounding's result, whose fragments and touched flags it consumes: they are
+// discarded (scratch.hpp) once read, before the angular sort (the pipeline, run()).
+void build_plane_graph(const EdgeList& edges, Snapped& snapped, PlaneGraph& g);
 
 }  // namespace edgeland::detail

@@ -74,30 +74,37 @@ SegmentGrid::SegmentGrid(const std::vector<Segment>& segments) {
   // One walk records every (cell, segment) registration in segment order, straight into the
   // slots, reserved at their exact number (growing a list of 10^7 registrations by doubling
   // copied it and held both copies: at zigzag stars of 10^6 the kernel's zeroing of fresh pages
-  // was a fifth of the time). A counting sort by cell then lists each cell's segments in
-  // increasing id order and sets each slot's place.
+  // was a fifth of the time); the cells' sizes follow from them.
   std::size_t walked = 0;
   for (const Segment& s : segments) walked += cells_walked(s);
-  slots_.reserve(walked);
+  slot_cell_.reserve(walked);
   slot_begin_.assign(n + 1, 0);
   for (std::uint32_t i = 0; i < n; ++i) {
-    for_each_cell(segments[i], [&](std::size_t k) {
-      slots_.push_back({0, static_cast<std::uint32_t>(k)});
-    });
-    slot_begin_[i + 1] = static_cast<std::uint32_t>(slots_.size());
+    for_each_cell(segments[i],
+                  [&](std::size_t k) { slot_cell_.push_back(static_cast<std::uint32_t>(k)); });
+    slot_begin_[i + 1] = static_cast<std::uint32_t>(slot_cell_.size());
   }
+  registrations_ = slot_cell_.size();
   cell_begin_.assign(static_cast<std::size_t>(columns_ * rows_) + 1, 0);
-  for (const Slot& s : slots_) ++cell_begin_[s.cell + 1];
+  for (std::uint32_t k : slot_cell_) ++cell_begin_[k + 1];
   add_up_counts(cell_begin_);
-  items_.resize(slots_.size());
+}
+
+void SegmentGrid::fill_lists() {
+  if (!items_.empty() || registrations_ == 0) return;
+  // A counting sort by cell: each cell lists its segments in increasing id order, and each slot
+  // learns its place (unless the pair walks are over: then only the lists are wanted).
+  items_.resize(registrations_);
+  if (!pair_walks_done_) slot_at_.resize(registrations_);
   ScratchVector<std::uint32_t> fill;
   fill.assign(cell_begin_.begin(), cell_begin_.end() - 1);
-  for (std::uint32_t i = 0; i < n; ++i)
+  for (std::uint32_t i = 0; i + 1 < slot_begin_.size(); ++i)
     for (std::uint32_t e = slot_begin_[i]; e < slot_begin_[i + 1]; ++e) {
-      Slot& s = slots_[e];
-      s.at = fill[s.cell];
-      items_[fill[s.cell]++] = i;
+      const std::uint32_t at = fill[slot_cell_[e]]++;
+      if (!pair_walks_done_) slot_at_[e] = at;
+      items_[at] = i;
     }
+  if (pair_walks_done_) drop_slots();
 }
 
 }  // namespace edgeland::detail
@@ -188,9 +195,10 @@ IntegerRange SegmentGrid::part_offsets(std::size_t k, const Segment& s, LineAt& 
 }
 
 std::string SegmentGrid::offsets_violation(const std::vector<Segment>& segments) const {
-  for (std::uint32_t i = 0; i + 1 < slot_begin_.size(); ++i)
+  if (items_.empty()) return "";  // lists not filled: nothing ordered yet
+  for (std::uint32_t i = 0; i + 1 < slot_begin_.size() && !slot_at_.empty(); ++i)
     for (std::uint32_t e = slot_begin_[i]; e < slot_begin_[i + 1]; ++e)
-      if (items_[slots_[e].at] != i) return "a slot of segment " + std::to_string(i) + " is astray";
+      if (items_[slot_at_[e]] != i) return "a slot of segment " + std::to_string(i) + " is astray";
   for (std::size_t k = 0; k + 1 < cell_begin_.size(); ++k) {
     if (!crowded(k)) continue;
     const Point64 o = corner(k);
@@ -279,6 +287,7 @@ void sort_runs(ScratchVector<std::uint64_t>& keys, ScratchVector<std::uint64_t>&
 
 void SegmentGrid::order_crowded_cells(const std::vector<Segment>& segments) {
   if (!width_.empty() || cell_begin_.empty()) return;
+  fill_lists();
   const std::size_t cells = cell_begin_.size() - 1;
   width_.assign(cells, -1);
   normal_.assign(cells, Normal{0, 0});
@@ -301,7 +310,7 @@ void SegmentGrid::bound_parts(const std::vector<Segment>& segments) {
   for (std::uint32_t i = 0; i + 1 < slot_begin_.size(); ++i) {
     LineAt line(segments[i]);
     for (std::uint32_t e = slot_begin_[i]; e < slot_begin_[i + 1]; ++e) {
-      const Slot slot = slots_[e];
+      const Slot slot{slot_at_[e], slot_cell_[e]};
       if (!crowded(slot.cell)) continue;
       const IntegerRange u = part_offsets(slot.cell, segments[i], line);
       lo_[slot.at] = static_cast<std::int32_t>(u.lo);
@@ -312,9 +321,6 @@ void SegmentGrid::bound_parts(const std::vector<Segment>& segments) {
 }
 
 void SegmentGrid::sort_crowded_cells() {
-  ScratchVector<std::uint32_t> entry_at;  // the slot of each item
-  entry_at.resize(items_.size());
-  for (std::uint32_t e = 0; e < slots_.size(); ++e) entry_at[slots_[e].at] = e;
   ScratchVector<std::uint64_t> keys, merged;
   ScratchVector<std::uint32_t> ids;
   ScratchVector<std::int32_t> his;
@@ -331,9 +337,19 @@ void SegmentGrid::sort_crowded_cells() {
       items_[x] = ids[from];
       lo_[x] = key_lo(keys[x - begin]);
       hi_[x] = his[from];
-      slots_[entry_at[begin + from]].at = x;
     }
   }
+  point_slots_at_items();
+}
+
+void SegmentGrid::point_slots_at_items() {
+  // A segment's slots are in walk order, which is ascending cell order (column by column, each
+  // column's rows upwards), so visiting the cells in order meets each segment's slots in their
+  // order: one cursor per segment finds them, with no map from items to slots (that was a
+  // fifth of the grid's memory while it was ordered).
+  ScratchVector<std::uint32_t> next_slot;
+  next_slot.assign(slot_begin_.begin(), slot_begin_.end() - 1);
+  for (std::uint32_t x = 0; x < items_.size(); ++x) slot_at_[next_slot[items_[x]]++] = x;
 }
 
 }  // namespace edgeland::detail

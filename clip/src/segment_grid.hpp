@@ -29,6 +29,12 @@
 // segments sharing a point P in the cell both hold P's offset, so no meeting is lost. The
 // intervals come from kernel/line_bounds.hpp (the line's y at the part's x ends, rounded
 // outward), scaled down by a power of two (rounded outward again) to fit 32 bits.
+//
+// Built in two steps: the constructor walks the segments and counts each cell's segments (all
+// that cell_pairs() needs to weigh the grid against the run index), and the cells' lists are
+// filled on first use. A grid the run index beats (comb teeth side by side) never fills them:
+// at combs of 10^6 vertices the lists were 200 of the 940 MB peak, kept through the index's
+// pair walk (issue 28).
 #include <algorithm>
 #include <cstdint>
 #include <cstdlib>
@@ -57,16 +63,16 @@ class SegmentGrid {
   // visit(i, j), i < j, exactly once for every pair of segments registered in a common cell;
   // this includes every pair of segments that share a point.
   template <class F>
-  void for_each_candidate_pair(F&& visit) const;
+  void for_each_candidate_pair(F&& visit);
 
   // visit(i) for every segment registered in a cell that meets the closed box b: this includes
   // every segment with a point in b. A segment registered in several such cells is visited once
   // per cell (callers dedupe).
   template <class F>
-  void for_each_in_box(const Box64& b, F&& visit) const;
+  void for_each_in_box(const Box64& b, F&& visit);
 
   // Number of (segment, cell) registrations: the size of the structure, for tests.
-  std::size_t entries() const { return items_.size(); }
+  std::size_t entries() const { return registrations_; }
 
   // Pairs proposed in a common cell (in a crowded cell, those whose offsets overlap), counted
   // once per cell: what for_each_candidate_pair walks through.
@@ -94,14 +100,13 @@ class SegmentGrid {
     if (cell_pairs() > 16 * segments.size() + 4096) order_crowded_cells(segments);
   }
 
-  // Frees the per-segment slots (a third of the grid's memory at zigzag stars) once the last
-  // pair walk is done: box queries do not read them. for_each_candidate_pair,
-  // order_crowded_cells and offsets_violation must not be called afterwards.
+  // Frees the per-segment slots (8 of the 20 bytes per registration at zigzag stars) once the last
+  // pair walk is done: box queries do not read them. (Lists not filled yet still need the
+  // slots' cells, which go once they are.) for_each_candidate_pair, order_crowded_cells and
+  // offsets_violation must not be called afterwards.
   void drop_pair_walk() {
-    ScratchVector<Slot> slots;
-    ScratchVector<std::uint32_t> slot_begin;
-    slots.swap(slots_);  // the storage goes with them (back to the thread's spares)
-    slot_begin.swap(slot_begin_);
+    pair_walks_done_ = true;
+    if (!items_.empty()) drop_slots();
   }
 
   // Cells holding more segments than this are ordered by offset (above); below it the sort and
@@ -113,6 +118,13 @@ class SegmentGrid {
   struct Slot {
     std::uint32_t at, cell;
   };
+  // Fills the cells' lists (and the slots' places in them) if they are not filled yet.
+  void fill_lists();
+  void drop_slots() {
+    discard(slot_at_);
+    discard(slot_cell_);
+    discard(slot_begin_);
+  }
   // f(j) for every segment j listed with slot s's segment in its cell whose offsets overlap
   // (every one in an uncrowded cell), j listed after it in an uncrowded cell.
   template <class F>
@@ -160,8 +172,11 @@ class SegmentGrid {
   // crowded cell's list sorted by (lo, id), the slots following their items.
   void bound_parts(const std::vector<Segment>& segments);
   void sort_crowded_cells();
+  // Sets every slot's place in its cell's list (after the lists were reordered).
+  void point_slots_at_items();
   bool crowded(std::size_t k) const { return !width_.empty() && width_[k] >= 0; }
-  // f(cell index) for every cell the walk registers s in, each cell once.
+  // f(cell index) for every cell the walk registers s in, each cell once, in ascending order
+  // (columns left to right, each column's rows upwards; point_slots_at_items relies on it).
   template <class F>
   void for_each_cell(const Segment& s, F&& f) const;
   // How many cells for_each_cell registers s in: its columns, plus one per row it climbs or
@@ -189,9 +204,12 @@ class SegmentGrid {
   // per cell once ordered: largest hi_ - lo_ when crowded, else -1 (empty until ordered)
   ScratchVector<std::int64_t> width_;
   int offset_shift_ = 0;  // offsets are divided by 2^offset_shift_
-  // CSR over segments: the slots of segment i.
+  // CSR over segments: the slots of segment i, in walk order: slot k's cell and its place in
+  // the cell's list (once the lists are filled).
   ScratchVector<std::uint32_t> slot_begin_;
-  ScratchVector<Slot> slots_;
+  ScratchVector<std::uint32_t> slot_cell_, slot_at_;
+  std::size_t registrations_ = 0;
+  bool pair_walks_done_ = false;  // drop_pair_walk was called
 };
 
 template <class F>
@@ -243,7 +261,8 @@ void SegmentGrid::for_each_cell(const Segment& s, F&& f) const {
 }
 
 template <class F>
-void SegmentGrid::for_each_in_box(const Box64& b, F&& visit) const {
+void SegmentGrid::for_each_in_box(const Box64& b, F&& visit) {
+  fill_lists();
   if (items_.empty() || b.max.x < min_x_ || b.max.y < min_y_ || b.min.x > max_x_ ||
       b.min.y > max_y_)
     return;
@@ -293,7 +312,8 @@ void SegmentGrid::for_each_partner(const Slot& s, F&& f) const {
 }
 
 template <class F>
-void SegmentGrid::for_each_candidate_pair(F&& visit) const {
+void SegmentGrid::for_each_candidate_pair(F&& visit) {
+  fill_lists();
   // Each segment i asks its cells for partners with larger ids; a stamp per segment drops
   // partners already met in an earlier common cell.
   ScratchVector<std::uint32_t> stamp;
@@ -301,7 +321,7 @@ void SegmentGrid::for_each_candidate_pair(F&& visit) const {
                std::numeric_limits<std::uint32_t>::max());
   for (std::uint32_t i = 0; i + 1 < slot_begin_.size(); ++i) {
     for (std::uint32_t k = slot_begin_[i]; k < slot_begin_[i + 1]; ++k) {
-      for_each_partner(slots_[k], [&](std::uint32_t j) {
+      for_each_partner({slot_at_[k], slot_cell_[k]}, [&](std::uint32_t j) {
         if (j <= i || stamp[j] == i) return;
         stamp[j] = i;
         visit(i, j);
