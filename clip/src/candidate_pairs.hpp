@@ -50,6 +50,7 @@ void for_each_candidate_pair(const std::vector<Segment>& segs, const SegmentInde
                              SegmentGrid* grid, bool across_rings_only,
                              const std::uint32_t* ring_of, F&& visit) {
   if (grid != nullptr && walk_grid(*grid, index, segs)) {
+    index.release_runs();  // counted only; rebuilt should snap rounding query the index
     grid->for_each_candidate_pair([&](std::uint32_t i, std::uint32_t j) {
       if (across_rings_only && ring_of[i] == ring_of[j]) return;
       if (boxes_overlap(segs[i], segs[j])) visit(i, j);

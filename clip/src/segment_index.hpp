@@ -64,6 +64,16 @@ class SegmentIndex {
     return x_overlapping_pairs(run_sweep(), limit);
   }
 
+  // Frees the runs, their boxes and their sweep (rebuilt if asked again): once noding has taken
+  // a grid instead, they were only counted, and at scale they are tens of megabytes, so they go
+  // back to the heap, not to the scratch spares.
+  void release_runs() const {
+    built_ = false;
+    std::vector<Run>().swap(runs_);
+    std::vector<Box64>().swap(run_boxes_);
+    std::vector<SweepBox>().swap(run_sweep_);
+  }
+
   // Segments per run on average, times 16 (an integer: the caller's choice of search only
   // needs a rough figure). Counts the runs without building them.
   std::size_t run_length_x16() const;
