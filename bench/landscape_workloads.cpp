@@ -8,8 +8,7 @@ namespace {
 
 // n edits around `centre` (within 8 units) of radius min_radius .. max_radius, three in four
 // carved and one in four filled with material 2.
-std::vector<Edit> repeated_at(Point64 centre, double min_radius, double max_radius,
-                              std::size_t n) {
+std::vector<Edit> repeated_at(Point64 centre, double min_radius, double max_radius, std::size_t n) {
   SplitMix64 random(0x5907);
   std::vector<Edit> out;
   out.reserve(n);

@@ -190,8 +190,7 @@ void check_moved_against_all(const AllFragments& all, const std::vector<std::uin
     for (std::uint32_t s = 0; s < all.segment_count(); ++s)
       all.for_each_of(s, [&](std::uint32_t g) {
         if (g == f || (check.moved(g) && g < f)) return;  // a moved pair is seen from both sides
-        if ((off[all.parent(f)] || off[all.parent(g)]) && boxes_overlap(a, all.seg(g)))
-          check(f, g);
+        if ((off[all.parent(f)] || off[all.parent(g)]) && boxes_overlap(a, all.seg(g))) check(f, g);
       });
   }
 }
