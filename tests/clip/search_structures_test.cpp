@@ -187,14 +187,18 @@ void check_pairs_and_queries(const std::vector<Segment>& segs,
 constexpr std::size_t kBothSearches[] = {0, std::numeric_limits<std::size_t>::max()};
 
 RC_GTEST_PROP(SegmentIndex, ProposesEveryBoxOverlappingPairButRunNeighbours, ()) {
-  const auto [segs, next] = random_rings();
+  const RandomRings rings = random_rings();  // (clang 14 cannot capture structured bindings)
+  const std::vector<Segment>& segs = rings.segs;
+  const std::vector<std::uint32_t>& next = rings.next;
   for (std::size_t flat_up_to : kBothSearches) check_pairs_and_queries(segs, next, flat_up_to);
 }
 
 // Both searches give the same pairs (with and without the pairs of one ring) and the same
 // query hits.
 RC_GTEST_PROP(SegmentIndex, FlatAndRunSearchesAgree, ()) {
-  const auto [segs, next] = random_rings();
+  const RandomRings rings = random_rings();  // (clang 14 cannot capture structured bindings)
+  const std::vector<Segment>& segs = rings.segs;
+  const std::vector<std::uint32_t>& next = rings.next;
   const auto queries = *rc::gen::container<std::vector<Box64>>(box());
   auto answers = [&](std::size_t flat_up_to) {
     const SegmentIndex index(segs, next, flat_up_to);
