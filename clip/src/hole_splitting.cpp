@@ -56,6 +56,10 @@ Hit cast_west(Point64 o, const std::vector<Segment>& obstacles, int s) {
   Segment best;
   for (const Segment& raw : obstacles) {
     const Segment e{frame(raw.a, s), frame(raw.b, s)};
+    // An edge off the ray's row, or wholly east of o, cannot be met: passed over by comparisons
+    // (most edges are; the exact test of each was a third of hole splitting).
+    if (std::min(e.a.y, e.b.y) > o.y || std::max(e.a.y, e.b.y) < o.y) continue;
+    if (std::min(e.a.x, e.b.x) > o.x) continue;
     if (nearest.offer(e) == NearestHit::Offer::kNearest) best = e;
   }
   if (!nearest.found()) return {};
