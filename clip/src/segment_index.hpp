@@ -36,8 +36,9 @@ class SegmentIndex {
   static constexpr std::uint32_t kRunLength = 64;
   static constexpr std::size_t kGridFrom = 256;  // runs
   // Up to this many segments the search is flat (above). Measured on the landscape's edits
-  // (bench/README.md, "Per-edit figures"): the set-up of runs, sweeps and grids was most of the
-  // search's cost on 30-130 segments, and a flat scan of 256 boxes per query still costs less.
+  // (bench/README.md, "Issue 28, second pass"): the set-up of runs, sweeps and grids was most
+  // of the search's cost on 30-130 segments. 256 leaves room above those without letting the
+  // scans, which grow with the square of the count, meet large inputs (not tuned further).
   static constexpr std::size_t kFlatUpTo = 256;
 
   // next[s]: the segment that follows s along its ring (segments of a ring are consecutive).
