@@ -113,32 +113,31 @@ Point64 point_on(const Box64& box, Side side, std::int64_t t) {
 
 Side opposite(Side side) { return static_cast<Side>((static_cast<int>(side) + 2) % 4); }
 
-bool across(const Box64& box, Side side, const Box64& other) {
+namespace {
+
+// The coordinate of the line `side` of the box lies on (y for bottom and top, x otherwise).
+std::int64_t side_line(const Box64& box, Side side) {
   switch (side) {
     case Side::kBottom:
-      return other.max.y == box.min.y;
+      return box.min.y;
     case Side::kRight:
-      return other.min.x == box.max.x;
+      return box.max.x;
     case Side::kTop:
-      return other.min.y == box.max.y;
+      return box.max.y;
     case Side::kLeft:
-      return other.max.x == box.min.x;
+      return box.min.x;
   }
-  return false;
+  return 0;
+}
+
+}  // namespace
+
+bool across(const Box64& box, Side side, const Box64& other) {
+  return side_line(other, opposite(side)) == side_line(box, side);
 }
 
 bool on_side_of(const Box64& inner, Side side, const Box64& outer) {
-  switch (side) {
-    case Side::kBottom:
-      return inner.min.y == outer.min.y;
-    case Side::kRight:
-      return inner.max.x == outer.max.x;
-    case Side::kTop:
-      return inner.max.y == outer.max.y;
-    case Side::kLeft:
-      return inner.min.x == outer.min.x;
-  }
-  return false;
+  return side_line(inner, side) == side_line(outer, side);
 }
 
 SolidBoundary solid_boundary(const Box64& box, std::span<const CellPolygon> polygons,
