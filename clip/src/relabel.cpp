@@ -6,6 +6,7 @@
 
 #include "edgeland/kernel/wkt_writer.hpp"
 #include "pipeline_builder.hpp"
+#include "relabel_pipeline.hpp"
 #include "valid_set_factory.hpp"
 
 namespace edgeland {
@@ -66,52 +67,78 @@ void check_inside(const PolygonSet& set, const Box64& window, const std::string&
 
 }  // namespace
 
-LabeledClipResult relabel(const ValidSet& regions, std::span<const RegionLabel> labels,
-                          const ValidSet& shape, const Box64& window,
-                          std::span<const RegionLabel> table, const ClipOptions& options) {
+namespace detail {
+
+void require_relabel_input(const ValidSet& regions, std::span<const RegionLabel> labels,
+                           const Box64& window) {
   require_labels(regions, labels);
   require_window(window, 0);
   const PolygonSet& members = regions.polygons();
   for (std::size_t i = 0; i < members.size(); ++i)
     if (!window.contains(*bounding_box(members[i])))
       throw InvalidOverlay(InvalidOverlay::Reason::kOutsideWindow, i);
-  // Shape members that cannot reach the window take no part. When all that do lie in the
-  // window, being inside one of them is being inside shape ∩ window and the window's own ring
-  // is not needed; otherwise it joins them and "inside both" is a count of two.
-  detail::ScratchVector<std::uint32_t> near;
-  bool all_inside = true;
+}
+
+ShapeNearWindow shape_near_window(const ValidSet& shape, const Box64& window) {
+  ShapeNearWindow near;
   for (std::uint32_t i = 0; i < shape.polygons().size(); ++i) {
     const Box64 b = *bounding_box(shape.polygons()[i]);
     if (!b.overlaps(window)) continue;
-    near.push_back(i);
-    all_inside = all_inside && window.contains(b);
+    near.members.push_back(i);
+    near.boxes.push_back(b);
+    near.all_inside = near.all_inside && window.contains(b);
   }
-  detail::RelabelTable rt{labels.data(), table.data(), table.size(), all_inside ? 1 : 2};
+  return near;
+}
+
+PipelineResult run_relabel(const ValidSet& regions, std::span<const RegionLabel> labels,
+                           const ValidSet& shape, const ShapeNearWindow& near, const Box64& window,
+                           std::span<const RegionLabel> table, const ClipOptions& options,
+                           const std::vector<std::uint32_t>* in_play, std::vector<Box64>* moved) {
+  const PolygonSet& members = regions.polygons();
+  // When all the near members lie in the window, being inside one of them is being inside
+  // shape ∩ window and the window's own ring is not needed; otherwise it joins them and
+  // "inside both" is a count of two.
+  RelabelTable rt{labels.data(), table.data(), table.size(), near.all_inside ? 1 : 2};
   // The two lambdas are called, and the unwinding of the builder below runs, only for an
   // internal error: not reached by tests.
   auto inputs = [&] { return to_wkt(members); };
   auto shape_wkt = [&] {
     return to_wkt(shape.polygons()) + " within " + to_wkt(PolygonSet{box_ring(window)});
   };
-  detail::PipelineResult r = detail::guarded(
+  PipelineResult r = guarded(
       [&] {
-        detail::PipelineBuilder p(detail::LabelMode::kOwnerAndCount, detail::LabelOf::relabel(rt),
-                                  options.checked);
-        p.subject(members).clip(shape.polygons(), &near);
-        if (!all_inside) p.clip_box(window);
+        PipelineBuilder p(LabelMode::kOwnerAndCount, LabelOf::relabel(rt), options.checked);
+        p.subject(members, in_play).clip(shape.polygons(), &near.members);
+        if (!near.all_inside) p.clip_box(window);
         return p
             .collinear_free(ValidSetFactory::collinear_free(regions) &&
                             ValidSetFactory::collinear_free(shape))
             .corner_bridges()
-            .run(nullptr, true);
+            .run(moved, true);
       },
       options, "relabel", inputs, shape_wkt);
   if (options.checked) check_inside(r.clipped.polygons, window, "relabel", inputs);
+  return r;
+}
+
+LabeledClipResult relabeled_regions(PipelineResult& r) {
   LabeledClipResult out;
   out.stats = r.clipped.stats;
-  const std::size_t n = r.clipped.polygons.size();
-  out.regions = labeled(r, 0, n, low_half);
+  out.regions = labeled(r, 0, r.clipped.polygons.size(), low_half);
   return out;
+}
+
+}  // namespace detail
+
+LabeledClipResult relabel(const ValidSet& regions, std::span<const RegionLabel> labels,
+                          const ValidSet& shape, const Box64& window,
+                          std::span<const RegionLabel> table, const ClipOptions& options) {
+  detail::require_relabel_input(regions, labels, window);
+  const detail::ShapeNearWindow near = detail::shape_near_window(shape, window);
+  detail::PipelineResult r =
+      detail::run_relabel(regions, labels, shape, near, window, table, options, nullptr, nullptr);
+  return detail::relabeled_regions(r);
 }
 
 std::vector<LabeledSet> cut_to_windows(const ValidSet& regions, std::span<const RegionLabel> labels,

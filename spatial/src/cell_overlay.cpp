@@ -348,7 +348,7 @@ std::optional<LabeledSet> overlay_cell(const Node& cell, const ValidSet& shape,
                                        const ClipOptions& options) {
   if (auto quick = quick_overlay(cell, shape, table)) return std::move(quick->content);
   LabeledClipResult r =
-      relabel(cell.content.set, cell.content.labels, shape, cell.box, table, options);
+      relabel_near(cell.content.set, cell.content.labels, shape, cell.box, table, options);
   if (same_content(r.regions, cell.content)) return std::nullopt;
   return std::move(r.regions);
 }

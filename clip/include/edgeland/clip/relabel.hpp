@@ -60,6 +60,22 @@ EDGELAND_EXPORT LabeledClipResult relabel(const ValidSet& regions,
                                           std::span<const RegionLabel> table,
                                           const ClipOptions& options = {});
 
+// relabel() of regions that already are a canonical decomposition (an earlier relabel() or
+// cut_to_windows() result with its labels, as a landscape cell holds), with the regions the
+// shape cannot reach left out of the arrangement and returned as they are: the cost follows
+// the regions the shape and its rounding reach, not all of them. A region is left out when its
+// box, grown by a unit, meets no box of a shape member reaching the window nor of any segment
+// snap rounding moved (the overlay runs again with it otherwise); the pieces of one label whose
+// boxes meet go in or stay out together. On such input the result is relabel()'s, byte for
+// byte (clip/README.md, "Regions the shape cannot reach"); on other input it is still valid and
+// labels every point as relabel() does, but left-out regions keep the pieces they were given.
+// Errors as relabel().
+EDGELAND_EXPORT LabeledClipResult relabel_near(const ValidSet& regions,
+                                               std::span<const RegionLabel> labels,
+                                               const ValidSet& shape, const Box64& window,
+                                               std::span<const RegionLabel> table,
+                                               const ClipOptions& options = {});
+
 // The regions cut into closed boxes with pairwise disjoint interiors, one labeled set per window,
 // from one arrangement of the regions and all windows: along a line two windows share, the
 // pieces on both sides come from the same rounded edges, so they meet exactly. Parts outside

@@ -1,0 +1,134 @@
+// relabel_near() (relabel.hpp): relabel() with the regions the shape cannot reach left out of
+// the arrangement, the locality filter of clip() (clip_near.hpp) for labeled regions. Why the
+// result is relabel()'s: clip/README.md, "Regions the shape cannot reach".
+#include <algorithm>
+#include <utility>
+
+#include "box_sweep.hpp"
+#include "canonical.hpp"
+#include "edgeland/clip/relabel.hpp"
+#include "grown_box.hpp"
+#include "relabel_pipeline.hpp"
+#include "valid_set_factory.hpp"
+
+namespace edgeland {
+namespace {
+
+using detail::ScratchVector;
+
+std::uint32_t root_of(ScratchVector<std::uint32_t>& parent, std::uint32_t i) {
+  while (parent[i] != i) i = parent[i] = parent[parent[i]];
+  return i;
+}
+
+// The group of every piece (a representative piece): pieces of one label whose closed boxes
+// meet are in one group. The pieces of a region share its bridges, and regions of one label
+// that touch at a vertex share a point where two of their rings touch, which their bridges may
+// end at: each such set is decomposed as a whole, so it goes in or stays out as a whole.
+ScratchVector<std::uint32_t> groups_of(const std::vector<Box64>& boxes,
+                                       std::span<const RegionLabel> labels) {
+  ScratchVector<std::uint32_t> parent;
+  parent.resize(boxes.size());
+  for (std::uint32_t i = 0; i < parent.size(); ++i) parent[i] = i;
+  detail::for_each_overlapping_pair(boxes, [&](std::uint32_t i, std::uint32_t j) {
+    if (labels[i] == labels[j]) parent[root_of(parent, i)] = root_of(parent, j);
+  });
+  for (std::uint32_t i = 0; i < parent.size(); ++i) parent[i] = root_of(parent, i);
+  return parent;
+}
+
+// Brings in every piece of a group that has a piece in play.
+void whole_groups(const ScratchVector<std::uint32_t>& group, ScratchVector<std::uint8_t>& in) {
+  ScratchVector<std::uint8_t> group_in;
+  group_in.assign(group.size(), 0);
+  for (std::size_t i = 0; i < group.size(); ++i) group_in[group[i]] |= in[i];
+  for (std::size_t i = 0; i < group.size(); ++i) in[i] = group_in[group[i]];
+}
+
+// Marks the pieces whose box, grown by a unit, meets one of `boxes` (a sweep over both, as
+// clip_near's: either list may be long). Returns whether any was not marked before.
+bool bring_in_near(const std::vector<Box64>& pieces, const std::vector<Box64>& boxes,
+                   ScratchVector<std::uint8_t>& in) {
+  ScratchVector<Box64> reach;
+  ScratchVector<std::uint32_t> which;
+  for (std::uint32_t i = 0; i < pieces.size(); ++i)
+    if (!in[i]) {
+      reach.push_back(detail::grown(pieces[i], 1));
+      which.push_back(i);
+    }
+  bool grew = false;
+  detail::for_each_overlapping_pair(reach, boxes, [&](std::uint32_t k, std::uint32_t) {
+    if (!in[which[k]]) in[which[k]] = grew = true;
+  });
+  return grew;
+}
+
+// The computed regions and the left-out pieces, each part in canonical order (the left-out
+// ones put in it when the input was not), merged into one labeled set in canonical order.
+LabeledClipResult merged(LabeledClipResult computed, const ValidSet& regions,
+                         std::span<const RegionLabel> labels,
+                         const ScratchVector<std::uint8_t>& in) {
+  const bool canonical = ValidSetFactory::canonical(regions);
+  std::vector<std::pair<Polygon, RegionLabel>> kept;
+  for (std::size_t i = 0; i < in.size(); ++i)
+    if (!in[i])
+      kept.emplace_back(
+          canonical ? regions.polygons()[i] : detail::canonical_ring(regions.polygons()[i]),
+          labels[i]);
+  if (!canonical) std::sort(kept.begin(), kept.end());
+  PolygonSet from = std::move(computed.regions.set).release();
+  const std::vector<RegionLabel>& from_labels = computed.regions.labels;
+  ClipResult out;
+  out.stats = computed.stats;
+  std::vector<RegionLabel> out_labels;
+  out.polygons.reserve(from.size() + kept.size());
+  out_labels.reserve(from.size() + kept.size());
+  std::size_t a = 0, b = 0;
+  while (a < from.size() || b < kept.size()) {
+    if (b == kept.size() || (a < from.size() && from[a] < kept[b].first)) {
+      out.polygons.push_back(std::move(from[a]));
+      out_labels.push_back(from_labels[a++]);
+    } else {
+      out.polygons.push_back(std::move(kept[b].first));
+      out_labels.push_back(kept[b++].second);
+    }
+  }
+  LabeledClipResult r;
+  r.stats = out.stats;
+  r.regions = {ValidSetFactory::from(std::move(out)).set, std::move(out_labels)};
+  return r;
+}
+
+}  // namespace
+
+LabeledClipResult relabel_near(const ValidSet& regions, std::span<const RegionLabel> labels,
+                               const ValidSet& shape, const Box64& window,
+                               std::span<const RegionLabel> table, const ClipOptions& options) {
+  detail::require_relabel_input(regions, labels, window);
+  const detail::ShapeNearWindow near = detail::shape_near_window(shape, window);
+  const PolygonSet& pieces = regions.polygons();
+  ScratchVector<Box64> boxes;
+  boxes.resize(pieces.size());
+  for (std::size_t i = 0; i < pieces.size(); ++i) boxes[i] = *bounding_box(pieces[i]);
+  const ScratchVector<std::uint32_t> group = groups_of(boxes, labels);
+  ScratchVector<std::uint8_t> in;
+  in.assign(pieces.size(), 0);
+  bring_in_near(boxes, near.boxes, in);
+  ScratchVector<std::uint32_t> in_play;
+  ScratchVector<Box64> moved;
+  for (;;) {
+    whole_groups(group, in);
+    const bool all = std::find(in.begin(), in.end(), 0) == in.end();
+    in_play.clear();
+    for (std::uint32_t i = 0; i < in.size(); ++i)
+      if (in[i]) in_play.push_back(i);
+    detail::PipelineResult r = detail::run_relabel(regions, labels, shape, near, window, table,
+                                                   options, all ? nullptr : &in_play, &moved);
+    if (all) return detail::relabeled_regions(r);
+    // A moved segment near a left-out piece could have met a vertex or an edge of it.
+    if (bring_in_near(boxes, moved, in)) continue;
+    return merged(detail::relabeled_regions(r), regions, labels, in);
+  }
+}
+
+}  // namespace edgeland

@@ -1,0 +1,40 @@
+#pragma once
+// What relabel() and relabel_near() (relabel.hpp) share: the checks of their input, the shape's
+// members that can reach the window, and the pipeline of one labeled overlay.
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "edgeland/clip/relabel.hpp"
+#include "edgeland/kernel/scratch.hpp"
+#include "pipeline.hpp"
+
+namespace edgeland::detail {
+
+// Throws InvalidOverlay unless every region has a label > 0, the window is a box of the input
+// range with an interior, and every region lies in it.
+void require_relabel_input(const ValidSet& regions, std::span<const RegionLabel> labels,
+                           const Box64& window);
+
+// The shape's members whose boxes meet the window (the others take no part) and whether all of
+// them lie in it (then the window's own ring is not needed).
+struct ShapeNearWindow {
+  ScratchVector<std::uint32_t> members;
+  ScratchVector<Box64> boxes;  // per entry of `members`
+  bool all_inside = true;
+};
+ShapeNearWindow shape_near_window(const ValidSet& shape, const Box64& window);
+
+// The arrangement of the region polygons listed in `in_play` (all of them when null), the
+// shape's near members and, when needed, the window's ring; faces relabeled by `table`, regions
+// cut at their corners (clip/README.md, "Labeled overlays"). `moved` (if not null) receives the
+// boxes of the segments snap rounding moved. Guarded: an internal failure is an InternalError.
+PipelineResult run_relabel(const ValidSet& regions, std::span<const RegionLabel> labels,
+                           const ValidSet& shape, const ShapeNearWindow& near, const Box64& window,
+                           std::span<const RegionLabel> table, const ClipOptions& options,
+                           const std::vector<std::uint32_t>* in_play, std::vector<Box64>* moved);
+
+// The labeled regions of a run_relabel() result.
+LabeledClipResult relabeled_regions(PipelineResult& r);
+
+}  // namespace edgeland::detail
