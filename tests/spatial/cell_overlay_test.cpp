@@ -265,5 +265,22 @@ RC_GTEST_PROP(CellOverlayProperty, QuickAnswersOverTheSideLinesAreTheOverlays, (
   check_quick_against_relabel(cell, ValidSet(*test::gen::polygon_set(c, r)), random_table());
 }
 
+// The whole overlay of a cell (quick cases, then relabel_near(), which leaves the regions the
+// shape cannot reach out of the arrangement) is relabel()'s, with small shapes so that some
+// regions of the cell are out of their reach.
+RC_GTEST_PROP(CellOverlayProperty, EveryOverlayIsRelabels, ()) {
+  const std::int64_t size = *rc::gen::element<std::int64_t>(16, 64, 256);
+  const NodePtr cell = random_cell(size);
+  const std::int64_t r = *rc::gen::element<std::int64_t>(2, 5, size / 8, size / 4, size);
+  const Point64 c = *test::gen::point_in({0, 0}, {size, size});
+  const ValidSet shape(*test::gen::polygon_set(c, r));
+  const std::vector<RegionLabel> table = random_table();
+  const auto overlay = detail::overlay_cell(*cell, shape, table, {.checked = true});
+  const auto exact = by_relabel(*cell, shape, table);
+  RC_TAG(cell->content.labels.size() > 1 ? "several pieces" : "one piece or none");
+  RC_ASSERT(overlay.has_value() == exact.has_value());
+  if (exact) RC_ASSERT(same(*overlay, *exact));
+}
+
 }  // namespace
 }  // namespace edgeland
