@@ -69,7 +69,8 @@ EDGELAND_EXPORT LabeledClipResult relabel(const ValidSet& regions,
 // boxes meet go in or stay out together. On such input the result is relabel()'s, byte for
 // byte (clip/README.md, "Regions the shape cannot reach"); on other input it is still valid and
 // labels every point as relabel() does, but left-out regions keep the pieces they were given.
-// Errors as relabel().
+// The stats count what the arrangement that ran met (left-out regions add nothing). Errors as
+// relabel().
 EDGELAND_EXPORT LabeledClipResult relabel_near(const ValidSet& regions,
                                                std::span<const RegionLabel> labels,
                                                const ValidSet& shape, const Box64& window,
