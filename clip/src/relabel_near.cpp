@@ -16,6 +16,9 @@ namespace {
 
 using detail::ScratchVector;
 
+// Up to this many boxes a list is compared pairwise: sorting for a sweep costs more.
+constexpr std::size_t kFewBoxes = 32;
+
 std::uint32_t root_of(ScratchVector<std::uint32_t>& parent, std::uint32_t i) {
   while (parent[i] != i) i = parent[i] = parent[parent[i]];
   return i;
@@ -30,9 +33,16 @@ ScratchVector<std::uint32_t> groups_of(const std::vector<Box64>& boxes,
   ScratchVector<std::uint32_t> parent;
   parent.resize(boxes.size());
   for (std::uint32_t i = 0; i < parent.size(); ++i) parent[i] = i;
-  detail::for_each_overlapping_pair(boxes, [&](std::uint32_t i, std::uint32_t j) {
+  auto join = [&](std::uint32_t i, std::uint32_t j) {
     if (labels[i] == labels[j]) parent[root_of(parent, i)] = root_of(parent, j);
-  });
+  };
+  if (boxes.size() <= kFewBoxes) {
+    for (std::uint32_t i = 0; i < boxes.size(); ++i)
+      for (std::uint32_t j = 0; j < i; ++j)
+        if (boxes[i].overlaps(boxes[j])) join(i, j);
+  } else {
+    detail::for_each_overlapping_pair(boxes, join);
+  }
   for (std::uint32_t i = 0; i < parent.size(); ++i) parent[i] = root_of(parent, i);
   return parent;
 }
@@ -45,10 +55,24 @@ void whole_groups(const ScratchVector<std::uint32_t>& group, ScratchVector<std::
   for (std::size_t i = 0; i < group.size(); ++i) in[i] = group_in[group[i]];
 }
 
-// Marks the pieces whose box, grown by a unit, meets one of `boxes` (a sweep over both, as
-// clip_near's: either list may be long). Returns whether any was not marked before.
+// Marks the pieces whose box, grown by a unit, meets one of `boxes`. Returns whether any was
+// not marked before. Few against few (a landscape cell's pieces and a shape's members) are
+// compared pairwise; otherwise a sweep over both, as clip_near's: either list may be long.
 bool bring_in_near(const std::vector<Box64>& pieces, const std::vector<Box64>& boxes,
                    ScratchVector<std::uint8_t>& in) {
+  bool grew = false;
+  if (pieces.size() * boxes.size() <= kFewBoxes * kFewBoxes) {
+    for (std::size_t i = 0; i < pieces.size(); ++i) {
+      if (in[i]) continue;
+      const Box64 reach = detail::grown(pieces[i], 1);
+      for (const Box64& b : boxes) {
+        if (!reach.overlaps(b)) continue;
+        in[i] = grew = true;
+        break;
+      }
+    }
+    return grew;
+  }
   ScratchVector<Box64> reach;
   ScratchVector<std::uint32_t> which;
   for (std::uint32_t i = 0; i < pieces.size(); ++i)
@@ -56,26 +80,53 @@ bool bring_in_near(const std::vector<Box64>& pieces, const std::vector<Box64>& b
       reach.push_back(detail::grown(pieces[i], 1));
       which.push_back(i);
     }
-  bool grew = false;
   detail::for_each_overlapping_pair(reach, boxes, [&](std::uint32_t k, std::uint32_t) {
     if (!in[which[k]]) in[which[k]] = grew = true;
   });
   return grew;
 }
 
-// The computed regions and the left-out pieces, each part in canonical order (the left-out
-// ones put in it when the input was not), merged into one labeled set in canonical order.
-LabeledClipResult merged(LabeledClipResult computed, const ValidSet& regions,
-                         std::span<const RegionLabel> labels,
-                         const ScratchVector<std::uint8_t>& in) {
-  const bool canonical = ValidSetFactory::canonical(regions);
-  std::vector<std::pair<Polygon, RegionLabel>> kept;
-  for (std::size_t i = 0; i < in.size(); ++i)
-    if (!in[i])
-      kept.emplace_back(
-          canonical ? regions.polygons()[i] : detail::canonical_ring(regions.polygons()[i]),
-          labels[i]);
-  if (!canonical) std::sort(kept.begin(), kept.end());
+bool all_in(const ScratchVector<std::uint8_t>& in) {
+  return std::find(in.begin(), in.end(), 0) == in.end();
+}
+
+// The left-out pieces, in canonical order: `pieces` (with `labels`) as they are, at `index`,
+// when the input is canonical (an operation's output, the case this is for); else each ring put
+// in canonical form into `own` and the list sorted.
+struct LeftOut {
+  const PolygonSet* pieces = nullptr;
+  const RegionLabel* labels = nullptr;
+  ScratchVector<std::uint32_t> index;
+  PolygonSet own;
+  std::vector<RegionLabel> own_labels;
+  std::size_t size() const { return index.size(); }
+  const Polygon& polygon(std::size_t k) const { return (*pieces)[index[k]]; }
+  RegionLabel label(std::size_t k) const { return labels[index[k]]; }
+};
+
+void collect_left_out(const ValidSet& regions, std::span<const RegionLabel> labels,
+                      const ScratchVector<std::uint8_t>& in, LeftOut& out) {
+  for (std::uint32_t i = 0; i < in.size(); ++i)
+    if (!in[i]) out.index.push_back(i);
+  out.pieces = &regions.polygons();
+  out.labels = labels.data();
+  if (ValidSetFactory::canonical(regions)) return;
+  std::vector<std::pair<Polygon, RegionLabel>> sorted;
+  for (std::uint32_t i : out.index)
+    sorted.emplace_back(detail::canonical_ring(regions.polygons()[i]), labels[i]);
+  std::sort(sorted.begin(), sorted.end());
+  for (std::uint32_t k = 0; k < sorted.size(); ++k) {
+    out.own.push_back(std::move(sorted[k].first));
+    out.own_labels.push_back(sorted[k].second);
+    out.index[k] = k;
+  }
+  out.pieces = &out.own;
+  out.labels = out.own_labels.data();
+}
+
+// The computed regions and copies of the left-out pieces merged into one labeled set in
+// canonical order (the lexicographic order of the rings: both parts are in it).
+LabeledClipResult merged(LabeledClipResult computed, const LeftOut& kept) {
   PolygonSet from = std::move(computed.regions.set).release();
   const std::vector<RegionLabel>& from_labels = computed.regions.labels;
   ClipResult out;
@@ -85,18 +136,44 @@ LabeledClipResult merged(LabeledClipResult computed, const ValidSet& regions,
   out_labels.reserve(from.size() + kept.size());
   std::size_t a = 0, b = 0;
   while (a < from.size() || b < kept.size()) {
-    if (b == kept.size() || (a < from.size() && from[a] < kept[b].first)) {
+    if (b == kept.size() || (a < from.size() && from[a] < kept.polygon(b))) {
       out.polygons.push_back(std::move(from[a]));
       out_labels.push_back(from_labels[a++]);
     } else {
-      out.polygons.push_back(std::move(kept[b].first));
-      out_labels.push_back(kept[b++].second);
+      out.polygons.push_back(kept.polygon(b));
+      out_labels.push_back(kept.label(b++));
     }
   }
   LabeledClipResult r;
   r.stats = out.stats;
   r.regions = {ValidSetFactory::from(std::move(out)).set, std::move(out_labels)};
   return r;
+}
+
+// Runs the pipeline on the groups of pieces marked in `in`, bringing in more and running again
+// while a moved segment comes near a left-out piece; then merges the left-out pieces in.
+LabeledClipResult overlay_groups_in_reach(
+    const ValidSet& regions, std::span<const RegionLabel> labels, const ValidSet& shape,
+    const detail::ShapeNearWindow& near, const Box64& window, std::span<const RegionLabel> table,
+    const ClipOptions& options, const std::vector<Box64>& boxes, ScratchVector<std::uint8_t>& in) {
+  const ScratchVector<std::uint32_t> group = groups_of(boxes, labels);
+  ScratchVector<std::uint32_t> in_play;
+  ScratchVector<Box64> moved;
+  for (;;) {
+    whole_groups(group, in);
+    const bool all = all_in(in);
+    in_play.clear();
+    for (std::uint32_t i = 0; i < in.size(); ++i)
+      if (in[i]) in_play.push_back(i);
+    detail::PipelineResult r = detail::run_relabel(regions, labels, shape, near, window, table,
+                                                   options, all ? nullptr : &in_play, &moved);
+    if (all) return detail::relabeled_regions(r);
+    // A moved segment near a left-out piece could have met a vertex or an edge of it.
+    if (bring_in_near(boxes, moved, in)) continue;
+    LeftOut kept;
+    collect_left_out(regions, labels, in, kept);
+    return merged(detail::relabeled_regions(r), kept);
+  }
 }
 
 }  // namespace
@@ -110,25 +187,15 @@ LabeledClipResult relabel_near(const ValidSet& regions, std::span<const RegionLa
   ScratchVector<Box64> boxes;
   boxes.resize(pieces.size());
   for (std::size_t i = 0; i < pieces.size(); ++i) boxes[i] = *bounding_box(pieces[i]);
-  const ScratchVector<std::uint32_t> group = groups_of(boxes, labels);
   ScratchVector<std::uint8_t> in;
   in.assign(pieces.size(), 0);
   bring_in_near(boxes, near.boxes, in);
-  ScratchVector<std::uint32_t> in_play;
-  ScratchVector<Box64> moved;
-  for (;;) {
-    whole_groups(group, in);
-    const bool all = std::find(in.begin(), in.end(), 0) == in.end();
-    in_play.clear();
-    for (std::uint32_t i = 0; i < in.size(); ++i)
-      if (in[i]) in_play.push_back(i);
-    detail::PipelineResult r = detail::run_relabel(regions, labels, shape, near, window, table,
-                                                   options, all ? nullptr : &in_play, &moved);
-    if (all) return detail::relabeled_regions(r);
-    // A moved segment near a left-out piece could have met a vertex or an edge of it.
-    if (bring_in_near(boxes, moved, in)) continue;
-    return merged(detail::relabeled_regions(r), regions, labels, in);
-  }
+  if (!all_in(in))
+    return overlay_groups_in_reach(regions, labels, shape, near, window, table, options, boxes, in);
+  // The shape reaches every piece: relabel() as it is.
+  detail::PipelineResult r =
+      detail::run_relabel(regions, labels, shape, near, window, table, options, nullptr, nullptr);
+  return detail::relabeled_regions(r);
 }
 
 }  // namespace edgeland

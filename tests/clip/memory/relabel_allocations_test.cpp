@@ -94,5 +94,29 @@ TEST(RelabelAllocations, ASequenceOfBlastsAllocatesNearlyOnlyItsResultsOnceWarm)
   EXPECT_LE(extra, 4u);
 }
 
+// relabel_near() on a cell of several regions with a small blast in one corner, once warm:
+// beyond what relabel() of the same overlay allocates besides its result, merging the left-out
+// pieces back costs their copies (part of the result) and two arrays, the merged result's
+// vectors, which replace the pipeline's.
+TEST(RelabelAllocations, ANearOverlayAllocatesAtMostTwoArraysMoreThanRelabel) {
+  const LabeledSet cell = worn_cell();
+  ASSERT_GT(cell.labels.size(), 2u);
+  const ValidSet shape(PolygonSet{blast({240, 12}, 6)});
+  auto near_extra = [&] {
+    const std::size_t before = fuzz::allocations_made();
+    const LabeledClipResult r = relabel_near(cell.set, cell.labels, shape, kCell, carve_table());
+    const std::size_t made = fuzz::allocations_made() - before;
+    return made - std::min(made, blocks_of(r.regions));
+  };
+  for (int i = 0; i < 30; ++i) {
+    near_extra();
+    extra_allocations(cell, shape, nullptr);
+  }
+  for (int i = 0; i < 10; ++i) {
+    const std::size_t full = extra_allocations(cell, shape, nullptr);
+    EXPECT_LE(near_extra(), full + 2) << i;
+  }
+}
+
 }  // namespace
 }  // namespace edgeland
