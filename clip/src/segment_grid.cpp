@@ -6,6 +6,7 @@
 #include <limits>
 #include <utility>
 
+#include "edgeland/kernel/assert.hpp"
 #include "edgeland/kernel/grid_cells.hpp"
 #include "offsets.hpp"
 
@@ -38,21 +39,29 @@ std::size_t registrations(const std::vector<Segment>& segments, std::int64_t sid
   return total;
 }
 
+Box64 bounding_box(const std::vector<Segment>& segments) {
+  Box64 b{segments[0].a, segments[0].a};
+  for (const Segment& s : segments) {
+    b.expand(s.a);
+    b.expand(s.b);
+  }
+  return b;
+}
+
 }  // namespace
 
-SegmentGrid::SegmentGrid(const std::vector<Segment>& segments) {
+SegmentGrid::SegmentGrid(const std::vector<Segment>& segments)
+    : SegmentGrid(segments, segments.empty() ? Box64{} : bounding_box(segments)) {}
+
+SegmentGrid::SegmentGrid(const std::vector<Segment>& segments, const Box64& extent) {
   const std::size_t n = segments.size();
   if (n == 0) return;
-  min_x_ = max_x_ = segments[0].a.x;
-  min_y_ = max_y_ = segments[0].a.y;
-  for (const Segment& s : segments)
-    for (Point64 p : {s.a, s.b}) {
-      min_x_ = std::min(min_x_, p.x);
-      max_x_ = std::max(max_x_, p.x);
-      min_y_ = std::min(min_y_, p.y);
-      max_y_ = std::max(max_y_, p.y);
-    }
-  const Box64 extent{{min_x_, min_y_}, {max_x_, max_y_}};
+  min_x_ = extent.min.x;
+  min_y_ = extent.min.y;
+  max_x_ = extent.max.x;
+  max_y_ = extent.max.y;
+  EDGELAND_ASSERT(extent.contains(bounding_box(segments)), "segment grid",
+                  "a segment outside the extent");
   const std::uint64_t cell_limit = 4 * std::uint64_t{n} + 16;
   // One to four cells per segment (a power-of-two side). The work is registrations plus pairs
   // tested inside cells; on spiky stars, their fragments and checkerboards this size came within

@@ -59,6 +59,9 @@ class SegmentGrid {
  public:
   // Keeps no reference to `segments`.
   explicit SegmentGrid(const std::vector<Segment>& segments);
+  // The cells laid over `extent`, which holds every segment, instead of over the segments' own
+  // box, so that other segments inside it can be walked through them (for_each_along).
+  SegmentGrid(const std::vector<Segment>& segments, const Box64& extent);
 
   // visit(i, j), i < j, exactly once for every pair of segments registered in a common cell;
   // this includes every pair of segments that share a point.
@@ -70,6 +73,11 @@ class SegmentGrid {
   // per cell (callers dedupe).
   template <class F>
   void for_each_in_box(const Box64& b, F&& visit);
+
+  // visit(i) for every segment i registered in a cell that s passes through (once per such
+  // cell): this includes every segment sharing a point with s. s lies within the extent.
+  template <class F>
+  void for_each_along(const Segment& s, F&& visit);
 
   // Number of (segment, cell) registrations: the size of the structure, for tests.
   std::size_t entries() const { return registrations_; }
@@ -274,6 +282,15 @@ void SegmentGrid::for_each_in_box(const Box64& b, F&& visit) {
   for (std::int64_t c = c0; c <= c1; ++c)
     for (std::int64_t r = r0; r <= r1; ++r)
       for_each_in_cell(static_cast<std::size_t>(c * rows_ + r), b, visit);
+}
+
+template <class F>
+void SegmentGrid::for_each_along(const Segment& s, F&& visit) {
+  fill_lists();
+  if (items_.empty()) return;
+  for_each_cell(s, [&](std::size_t k) {
+    for (std::uint32_t x = cell_begin_[k]; x < cell_begin_[k + 1]; ++x) visit(items_[x]);
+  });
 }
 
 template <class F>
