@@ -77,9 +77,9 @@ SegmentGrid::SegmentGrid(const std::vector<Segment>& segments, const Box64& exte
   while (registrations(segments, side) > kRegistrationsPerSegment * n + 1024) side *= 2;
 
   set_side(side);
-  // Offsets n . (p - corner) stay within 3 * 2^10 * side (p within a side of the cell): 2^18
-  // steps per side keep them within 2^31.
-  offset_shift_ = std::max(0, shift_ - 18);
+  // A cell's offsets span at most (|n.x| + |n.y|) * side <= 2^11 * side: 2^5 steps per side
+  // keep them below 2^16.
+  offset_shift_ = std::max(0, shift_ - 5);
   // One walk records every (cell, segment) registration in segment order, straight into the
   // slots, reserved at their exact number (growing a list of 10^7 registrations by doubling
   // copied it and held both copies: at zigzag stars of 10^6 the kernel's zeroing of fresh pages
@@ -136,7 +136,7 @@ std::size_t SegmentGrid::cell_pairs() const {
 }
 
 std::size_t SegmentGrid::later_starts_up_to(std::uint32_t from, std::uint32_t end,
-                                            std::int32_t hi) const {
+                                            std::uint16_t hi) const {
   std::uint32_t step = 1, known = from;  // lo_[y] <= hi for every y in [from, known)
   while (end - known > step && lo_[known + step - 1] <= hi) {
     known += step;
@@ -158,6 +158,15 @@ IntegerRange scaled_out(std::int64_t lo, std::int64_t hi, int shift) {
 
 }  // namespace
 
+IntegerRange SegmentGrid::stored_range(std::size_t k, std::int64_t lo, std::int64_t hi) const {
+  const Normal n = normal_[k];
+  const std::int64_t least =
+      side_ * (std::min<std::int64_t>(n.x, 0) + std::min<std::int64_t>(n.y, 0));
+  const std::int64_t span = side_ * (std::abs(n.x) + std::abs(n.y));
+  return scaled_out(std::clamp<std::int64_t>(lo - least, 0, span),
+                    std::clamp<std::int64_t>(hi - least, 0, span), offset_shift_);
+}
+
 IntegerRange SegmentGrid::box_offsets(std::size_t k, const Box64& b) const {
   const Point64 o = corner(k);
   const Box64 part{{std::max(b.min.x, o.x), std::max(b.min.y, o.y)},
@@ -168,8 +177,8 @@ IntegerRange SegmentGrid::box_offsets(std::size_t k, const Box64& b) const {
                      x_hi = n.x >= 0 ? part.max.x : part.min.x;
   const std::int64_t y_lo = n.y >= 0 ? part.min.y : part.max.y,
                      y_hi = n.y >= 0 ? part.max.y : part.min.y;
-  return scaled_out(n.x * (x_lo - o.x) + n.y * (y_lo - o.y),
-                    n.x * (x_hi - o.x) + n.y * (y_hi - o.y), offset_shift_);
+  return stored_range(k, n.x * (x_lo - o.x) + n.y * (y_lo - o.y),
+                      n.x * (x_hi - o.x) + n.y * (y_hi - o.y));
 }
 
 IntegerRange SegmentGrid::part_offsets(std::size_t k, const Segment& s, LineAt& line) const {
@@ -200,7 +209,7 @@ IntegerRange SegmentGrid::part_offsets(std::size_t k, const Segment& s, LineAt& 
       add(x, y.hi);
     }
   }
-  return scaled_out(lo, hi, offset_shift_);
+  return stored_range(k, lo, hi);
 }
 
 std::string SegmentGrid::offsets_violation(const std::vector<Segment>& segments) const {
@@ -220,7 +229,7 @@ std::string SegmentGrid::offsets_violation(const std::vector<Segment>& segments)
       for (Point64 p : {segments[items_[x]].a, segments[items_[x]].b}) {
         if (!cell.contains(p)) continue;
         const std::int64_t u = normal_[k].x * (p.x - o.x) + normal_[k].y * (p.y - o.y);
-        const IntegerRange scaled = scaled_out(u, u, offset_shift_);
+        const IntegerRange scaled = stored_range(k, u, u);
         if (scaled.lo < lo_[x] || scaled.hi > hi_[x])
           return "segment " + std::to_string(items_[x]) + ": an end's offset in cell " +
                  std::to_string(k) + " lies outside its interval";
@@ -245,12 +254,10 @@ std::pair<std::int64_t, std::int64_t> short_normal(const Segment& s) {
 
 // Sort keys: lo above the item's place in its cell (the places are in id order, so the keys
 // sort by (lo, id)); 64-bit keys compare faster than records.
-std::uint64_t sort_key(std::int32_t lo, std::uint32_t place) {
-  return std::uint64_t{static_cast<std::uint32_t>(lo) ^ 0x80000000u} << 32 | place;
+std::uint64_t sort_key(std::uint16_t lo, std::uint32_t place) {
+  return std::uint64_t{lo} << 32 | place;
 }
-std::int32_t key_lo(std::uint64_t key) {
-  return static_cast<std::int32_t>(static_cast<std::uint32_t>(key >> 32) ^ 0x80000000u);
-}
+std::uint16_t key_lo(std::uint64_t key) { return static_cast<std::uint16_t>(key >> 32); }
 
 // Where the ascending run starting at x ends.
 std::size_t run_end(const ScratchVector<std::uint64_t>& keys, std::size_t x) {
@@ -322,8 +329,8 @@ void SegmentGrid::bound_parts(const std::vector<Segment>& segments) {
       const Slot slot{slot_at_[e], slot_cell_[e]};
       if (!crowded(slot.cell)) continue;
       const IntegerRange u = part_offsets(slot.cell, segments[i], line);
-      lo_[slot.at] = static_cast<std::int32_t>(u.lo);
-      hi_[slot.at] = static_cast<std::int32_t>(u.hi);
+      lo_[slot.at] = static_cast<std::uint16_t>(u.lo);
+      hi_[slot.at] = static_cast<std::uint16_t>(u.hi);
       width_[slot.cell] = std::max(width_[slot.cell], u.hi - u.lo);
     }
   }
@@ -332,7 +339,7 @@ void SegmentGrid::bound_parts(const std::vector<Segment>& segments) {
 void SegmentGrid::sort_crowded_cells() {
   ScratchVector<std::uint64_t> keys, merged;
   ScratchVector<std::uint32_t> ids;
-  ScratchVector<std::int32_t> his;
+  ScratchVector<std::uint16_t> his;
   for (std::size_t k = 0; k + 1 < cell_begin_.size(); ++k) {
     if (!crowded(k)) continue;
     const std::uint32_t begin = cell_begin_[k], end = cell_begin_[k + 1];

@@ -28,7 +28,10 @@
 // segments are sorted by it: a pair is proposed there only when its intervals overlap. Two
 // segments sharing a point P in the cell both hold P's offset, so no meeting is lost. The
 // intervals come from kernel/line_bounds.hpp (the line's y at the part's x ends, rounded
-// outward), scaled down by a power of two (rounded outward again) to fit 32 bits.
+// outward), cut to the offsets the closed cell itself spans (every point of a part lies in it)
+// and scaled down by a power of two (rounded outward again) to fit 16 bits: a cell's span is at
+// most 2^11 sides, so steps of a 2^-16 of it (about 16 units at the zigzag stars' cells) widen
+// the intervals by little, and the bounds take 4 bytes per registration instead of 8.
 //
 // Built in two steps: the constructor walks the segments and counts each cell's segments (all
 // that cell_pairs() needs to weigh the grid against the run index), and the cells' lists are
@@ -141,14 +144,17 @@ class SegmentGrid {
   template <class F>
   void for_each_in_cell(std::size_t k, const Box64& b, F&& visit) const;
   // The cell's lower-left corner, and the bounds of n . (p - corner) over the points p of
-  // `part` (the part of a segment or box in cell k), scaled to 32 bits.
+  // `part` (the part of a segment or box in cell k), as stored: cut and scaled (stored_range).
   Point64 corner(std::size_t k) const {
     return {min_x_ + static_cast<std::int64_t>(k) / rows_ * side_,
             min_y_ + static_cast<std::int64_t>(k) % rows_ * side_};
   }
   IntegerRange box_offsets(std::size_t k, const Box64& b) const;
+  // Bounds lo <= hi of n . (p - corner) in cell k as stored: measured from the least offset of
+  // the closed cell, cut to the cell's span, divided by 2^offset_shift_ (rounded outward).
+  IntegerRange stored_range(std::size_t k, std::int64_t lo, std::int64_t hi) const;
   // How many items in [from, end) of a crowded cell's sorted list start at most at hi.
-  std::size_t later_starts_up_to(std::uint32_t from, std::uint32_t end, std::int32_t hi) const;
+  std::size_t later_starts_up_to(std::uint32_t from, std::uint32_t end, std::uint16_t hi) const;
   // The line of one segment at the ends of its parts, along x (along y when steep): the last
   // two answers are kept, since the walk's consecutive cells share a column or row boundary.
   class LineAt {
@@ -203,8 +209,8 @@ class SegmentGrid {
   int shift_ = 0;  // side_ == 2^shift_: cells are found by shifts, not divisions
   // CSR over cells: items_ of cell k, ascending ids, or by (lo_, id) in a crowded cell.
   ScratchVector<std::uint32_t> cell_begin_;
-  ScratchVector<std::uint32_t> items_;   // segment ids
-  ScratchVector<std::int32_t> lo_, hi_;  // per item in a crowded cell: its offset bounds
+  ScratchVector<std::uint32_t> items_;    // segment ids
+  ScratchVector<std::uint16_t> lo_, hi_;  // per item in a crowded cell: its offset bounds
   struct Normal {
     std::int16_t x, y;
   };
@@ -306,7 +312,7 @@ void SegmentGrid::for_each_in_cell(std::size_t k, const Box64& b, F&& visit) con
   const std::int64_t reach = q.lo - width_[k];  // no item starting lower reaches q.lo
   x = static_cast<std::uint32_t>(
       std::lower_bound(lo_.begin() + x, lo_.begin() + end, reach,
-                       [](std::int32_t v, std::int64_t t) { return v < t; }) -
+                       [](std::uint16_t v, std::int64_t t) { return v < t; }) -
       lo_.begin());
   for (; x < end && lo_[x] <= q.hi; ++x)
     if (hi_[x] >= q.lo) visit(items_[x]);
@@ -321,7 +327,7 @@ void SegmentGrid::for_each_partner(const Slot& s, F&& f) const {
   }
   // Sorted by lo: later items overlap until one starts past hi; earlier ones start at most
   // the cell's widest interval below lo if they reach it.
-  const std::int32_t lo = lo_[s.at], hi = hi_[s.at];
+  const std::uint16_t lo = lo_[s.at], hi = hi_[s.at];
   for (std::uint32_t y = s.at + 1; y < end && lo_[y] <= hi; ++y) f(items_[y]);
   const std::int64_t reach = std::int64_t{lo} - width_[s.cell];
   for (std::uint32_t y = s.at; y-- > begin && lo_[y] >= reach;)
