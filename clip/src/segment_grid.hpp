@@ -111,7 +111,7 @@ class SegmentGrid {
     if (cell_pairs() > 16 * segments.size() + 4096) order_crowded_cells(segments);
   }
 
-  // Frees the per-segment slots (8 of the 20 bytes per registration at zigzag stars) once the last
+  // Frees the per-segment slots (8 of the 16 bytes per registration at zigzag stars) once the last
   // pair walk is done: box queries do not read them. (Lists not filled yet still need the
   // slots' cells, which go once they are.) for_each_candidate_pair, order_crowded_cells and
   // offsets_violation must not be called afterwards.
