@@ -55,19 +55,22 @@ rc::Gen<Input> crowded_rings() {
 }
 
 // Many rings (over 256 segments, so no flat search), each of random points in its own window,
-// the windows scattered over a larger square: many crossings, yet few segments pass through the
-// pixel of a vertex that is not hot, so the re-check walks every fragment through a grid of the
-// few fragments off their classic routes (snap_recheck.cpp, check_against_off_fragments).
+// the windows scattered over a larger square, and a few crowded ones (windows of 6 to 40 units)
+// among them: many crossings, yet few segments pass through the pixel of a vertex that is not
+// hot, nearly all of them in the crowded rings, so the re-check walks every fragment through a
+// grid of the few fragments off their classic routes (snap_recheck.cpp,
+// check_against_off_fragments), and those pairs are the ones that need it.
 rc::Gen<Input> scattered_rings() {
   return rc::gen::exec([] {
-    const std::int64_t window = *rc::gen::element<std::int64_t>(5'000, 20'000);
+    const std::int64_t wide = *rc::gen::element<std::int64_t>(5'000, 20'000);
     const std::int64_t square = *rc::gen::element<std::int64_t>(30'000, 60'000);
-    const int rings = *rc::gen::inRange(10, 15);
+    const int rings = *rc::gen::inRange(10, 15), crowded = *rc::gen::inRange(1, 4);
     Input in;
-    for (int r = 0; r < rings; ++r) {
+    for (int r = 0; r < rings + crowded; ++r) {
       const Point64 c{*rc::gen::inRange<std::int64_t>(0, square),
                       *rc::gen::inRange<std::int64_t>(0, square)};
-      const int n = *rc::gen::inRange(20, 37);
+      const std::int64_t window = r < rings ? wide : *rc::gen::element<std::int64_t>(6, 12, 40);
+      const int n = r < rings ? *rc::gen::inRange(20, 37) : *rc::gen::inRange(8, 30);
       std::vector<Point64> pts;
       for (int i = 0; i < n; ++i) {
         const Point64 p{c.x + *rc::gen::inRange<std::int64_t>(0, window + 1) - window / 2,
