@@ -130,21 +130,23 @@ std::size_t SegmentGrid::cell_pairs() const {
     }
     // Sorted by lo: item x overlaps the later items starting at most at its hi, usually a
     // few, so they are counted by galloping from x rather than by halving the whole list.
-    for (std::uint32_t x = begin; x < end; ++x) pairs += later_starts_up_to(x + 1, end, hi_[x]);
+    for (std::uint32_t x = begin; x < end; ++x)
+      pairs += later_starts_up_to(x + 1, end, bounds_[x].hi);
   }
   return pairs;
 }
 
 std::size_t SegmentGrid::later_starts_up_to(std::uint32_t from, std::uint32_t end,
                                             std::uint16_t hi) const {
-  std::uint32_t step = 1, known = from;  // lo_[y] <= hi for every y in [from, known)
-  while (end - known > step && lo_[known + step - 1] <= hi) {
+  std::uint32_t step = 1, known = from;  // bounds_[y].lo <= hi for every y in [from, known)
+  while (end - known > step && bounds_[known + step - 1].lo <= hi) {
     known += step;
     step *= 2;
   }
   const std::uint32_t stop = end - known > step ? known + step : end;
-  return static_cast<std::size_t>(std::upper_bound(lo_.begin() + known, lo_.begin() + stop, hi) -
-                                  (lo_.begin() + from));
+  const auto past = std::upper_bound(bounds_.begin() + known, bounds_.begin() + stop, hi,
+                                     [](std::uint16_t v, const Bounds& b) { return v < b.lo; });
+  return static_cast<std::size_t>(past - (bounds_.begin() + from));
 }
 
 namespace {
@@ -222,15 +224,16 @@ std::string SegmentGrid::offsets_violation(const std::vector<Segment>& segments)
     const Point64 o = corner(k);
     const Box64 cell{o, {o.x + side_, o.y + side_}};
     for (std::uint32_t x = cell_begin_[k]; x < cell_begin_[k + 1]; ++x) {
-      if (x > cell_begin_[k] && lo_[x - 1] > lo_[x])
+      const Bounds b = bounds_[x];
+      if (x > cell_begin_[k] && bounds_[x - 1].lo > b.lo)
         return "cell " + std::to_string(k) + " unsorted";
-      if (hi_[x] < lo_[x] || hi_[x] - lo_[x] > width_[k])
+      if (b.hi < b.lo || b.hi - b.lo > width_[k])
         return "cell " + std::to_string(k) + ": an interval is wider than the cell's width";
       for (Point64 p : {segments[items_[x]].a, segments[items_[x]].b}) {
         if (!cell.contains(p)) continue;
         const std::int64_t u = normal_[k].x * (p.x - o.x) + normal_[k].y * (p.y - o.y);
         const IntegerRange scaled = stored_range(k, u, u);
-        if (scaled.lo < lo_[x] || scaled.hi > hi_[x])
+        if (scaled.lo < b.lo || scaled.hi > b.hi)
           return "segment " + std::to_string(items_[x]) + ": an end's offset in cell " +
                  std::to_string(k) + " lies outside its interval";
       }
@@ -321,16 +324,14 @@ void SegmentGrid::order_crowded_cells(const std::vector<Segment>& segments) {
 
 void SegmentGrid::bound_parts(const std::vector<Segment>& segments) {
   // Each segment's intervals in walk order: its cells share column (or row) boundaries.
-  lo_.assign(items_.size(), 0);
-  hi_.assign(items_.size(), 0);
+  bounds_.assign(items_.size(), Bounds{0, 0});
   for (std::uint32_t i = 0; i + 1 < slot_begin_.size(); ++i) {
     LineAt line(segments[i]);
     for (std::uint32_t e = slot_begin_[i]; e < slot_begin_[i + 1]; ++e) {
       const Slot slot{slot_at_[e], slot_cell_[e]};
       if (!crowded(slot.cell)) continue;
       const IntegerRange u = part_offsets(slot.cell, segments[i], line);
-      lo_[slot.at] = static_cast<std::uint16_t>(u.lo);
-      hi_[slot.at] = static_cast<std::uint16_t>(u.hi);
+      bounds_[slot.at] = {static_cast<std::uint16_t>(u.lo), static_cast<std::uint16_t>(u.hi)};
       width_[slot.cell] = std::max(width_[slot.cell], u.hi - u.lo);
     }
   }
@@ -344,15 +345,15 @@ void SegmentGrid::sort_crowded_cells() {
     if (!crowded(k)) continue;
     const std::uint32_t begin = cell_begin_[k], end = cell_begin_[k + 1];
     keys.clear();
-    for (std::uint32_t x = begin; x < end; ++x) keys.push_back(sort_key(lo_[x], x - begin));
+    for (std::uint32_t x = begin; x < end; ++x) keys.push_back(sort_key(bounds_[x].lo, x - begin));
     sort_runs(keys, merged);
     ids.assign(items_.begin() + begin, items_.begin() + end);
-    his.assign(hi_.begin() + begin, hi_.begin() + end);
+    his.clear();
+    for (std::uint32_t x = begin; x < end; ++x) his.push_back(bounds_[x].hi);
     for (std::uint32_t x = begin; x < end; ++x) {
       const auto from = static_cast<std::uint32_t>(keys[x - begin]);
       items_[x] = ids[from];
-      lo_[x] = key_lo(keys[x - begin]);
-      hi_[x] = his[from];
+      bounds_[x] = {key_lo(keys[x - begin]), his[from]};
     }
   }
   point_slots_at_items();
