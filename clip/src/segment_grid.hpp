@@ -207,7 +207,7 @@ class SegmentGrid {
   std::int64_t min_x_ = 0, min_y_ = 0, max_x_ = 0, max_y_ = 0;
   std::int64_t side_ = 1, columns_ = 0, rows_ = 0;
   int shift_ = 0;  // side_ == 2^shift_: cells are found by shifts, not divisions
-  // CSR over cells: items_ of cell k, ascending ids, or by (lo_, id) in a crowded cell.
+  // CSR over cells: items_ of cell k, ascending ids, or by (lo, id) in a crowded cell.
   ScratchVector<std::uint32_t> cell_begin_;
   ScratchVector<std::uint32_t> items_;  // segment ids
   // Per item in a crowded cell: its offset bounds, side by side (a scan reads both, and one
@@ -220,7 +220,7 @@ class SegmentGrid {
     std::int16_t x, y;
   };
   ScratchVector<Normal> normal_;  // per crowded cell
-  // per cell once ordered: largest hi_ - lo_ when crowded, else -1 (empty until ordered)
+  // per cell once ordered: largest hi - lo of its bounds_ when crowded, else -1 (empty until ordered)
   ScratchVector<std::int64_t> width_;
   int offset_shift_ = 0;  // offsets are divided by 2^offset_shift_
   // CSR over segments: the slots of segment i, in walk order: slot k's cell and its place in
