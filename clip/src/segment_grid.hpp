@@ -220,7 +220,7 @@ class SegmentGrid {
     std::int16_t x, y;
   };
   ScratchVector<Normal> normal_;  // per crowded cell
-  // per cell once ordered: largest hi - lo of its bounds_ when crowded, else -1 (empty until ordered)
+  // per cell once ordered: its bounds_' largest hi - lo when crowded, else -1 (empty till then)
   ScratchVector<std::int64_t> width_;
   int offset_shift_ = 0;  // offsets are divided by 2^offset_shift_
   // CSR over segments: the slots of segment i, in walk order: slot k's cell and its place in
