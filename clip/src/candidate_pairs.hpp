@@ -36,6 +36,9 @@ inline bool walk_grid(SegmentGrid& grid, const SegmentIndex& index,
   if (cell_pairs <= many) return true;
   const std::size_t index_pairs = index.x_overlapping_run_pairs(cell_pairs);
   if (index_pairs <= many) return false;
+  // Only the count is needed now: the runs go before the grid grows by its offset bounds
+  // (rebuilt should the index win after all), so the two are never held together.
+  index.release_runs();
   grid.order_crowded_cells(segs);
   return grid.cell_pairs() <= index_pairs;
 }

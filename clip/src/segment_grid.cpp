@@ -6,6 +6,7 @@
 #include <limits>
 #include <utility>
 
+#include "edgeland/kernel/assert.hpp"
 #include "edgeland/kernel/grid_cells.hpp"
 #include "offsets.hpp"
 
@@ -38,21 +39,29 @@ std::size_t registrations(const std::vector<Segment>& segments, std::int64_t sid
   return total;
 }
 
+Box64 bounding_box(const std::vector<Segment>& segments) {
+  Box64 b{segments[0].a, segments[0].a};
+  for (const Segment& s : segments) {
+    b.expand(s.a);
+    b.expand(s.b);
+  }
+  return b;
+}
+
 }  // namespace
 
-SegmentGrid::SegmentGrid(const std::vector<Segment>& segments) {
+SegmentGrid::SegmentGrid(const std::vector<Segment>& segments)
+    : SegmentGrid(segments, segments.empty() ? Box64{} : bounding_box(segments)) {}
+
+SegmentGrid::SegmentGrid(const std::vector<Segment>& segments, const Box64& extent) {
   const std::size_t n = segments.size();
   if (n == 0) return;
-  min_x_ = max_x_ = segments[0].a.x;
-  min_y_ = max_y_ = segments[0].a.y;
-  for (const Segment& s : segments)
-    for (Point64 p : {s.a, s.b}) {
-      min_x_ = std::min(min_x_, p.x);
-      max_x_ = std::max(max_x_, p.x);
-      min_y_ = std::min(min_y_, p.y);
-      max_y_ = std::max(max_y_, p.y);
-    }
-  const Box64 extent{{min_x_, min_y_}, {max_x_, max_y_}};
+  min_x_ = extent.min.x;
+  min_y_ = extent.min.y;
+  max_x_ = extent.max.x;
+  max_y_ = extent.max.y;
+  EDGELAND_ASSERT(extent.contains(bounding_box(segments)), "segment grid",
+                  "a segment outside the extent");
   const std::uint64_t cell_limit = 4 * std::uint64_t{n} + 16;
   // One to four cells per segment (a power-of-two side). The work is registrations plus pairs
   // tested inside cells; on spiky stars, their fragments and checkerboards this size came within
@@ -68,9 +77,9 @@ SegmentGrid::SegmentGrid(const std::vector<Segment>& segments) {
   while (registrations(segments, side) > kRegistrationsPerSegment * n + 1024) side *= 2;
 
   set_side(side);
-  // Offsets n . (p - corner) stay within 3 * 2^10 * side (p within a side of the cell): 2^18
-  // steps per side keep them within 2^31.
-  offset_shift_ = std::max(0, shift_ - 18);
+  // A cell's offsets span at most (|n.x| + |n.y|) * side <= 2^11 * side: 2^5 steps per side
+  // keep them below 2^16.
+  offset_shift_ = std::max(0, shift_ - 5);
   // One walk records every (cell, segment) registration in segment order, straight into the
   // slots, reserved at their exact number (growing a list of 10^7 registrations by doubling
   // copied it and held both copies: at zigzag stars of 10^6 the kernel's zeroing of fresh pages
@@ -121,21 +130,23 @@ std::size_t SegmentGrid::cell_pairs() const {
     }
     // Sorted by lo: item x overlaps the later items starting at most at its hi, usually a
     // few, so they are counted by galloping from x rather than by halving the whole list.
-    for (std::uint32_t x = begin; x < end; ++x) pairs += later_starts_up_to(x + 1, end, hi_[x]);
+    for (std::uint32_t x = begin; x < end; ++x)
+      pairs += later_starts_up_to(x + 1, end, bounds_[x].hi);
   }
   return pairs;
 }
 
 std::size_t SegmentGrid::later_starts_up_to(std::uint32_t from, std::uint32_t end,
-                                            std::int32_t hi) const {
-  std::uint32_t step = 1, known = from;  // lo_[y] <= hi for every y in [from, known)
-  while (end - known > step && lo_[known + step - 1] <= hi) {
+                                            std::uint16_t hi) const {
+  std::uint32_t step = 1, known = from;  // bounds_[y].lo <= hi for every y in [from, known)
+  while (end - known > step && bounds_[known + step - 1].lo <= hi) {
     known += step;
     step *= 2;
   }
   const std::uint32_t stop = end - known > step ? known + step : end;
-  return static_cast<std::size_t>(std::upper_bound(lo_.begin() + known, lo_.begin() + stop, hi) -
-                                  (lo_.begin() + from));
+  const auto past = std::upper_bound(bounds_.begin() + known, bounds_.begin() + stop, hi,
+                                     [](std::uint16_t v, const Bounds& b) { return v < b.lo; });
+  return static_cast<std::size_t>(past - (bounds_.begin() + from));
 }
 
 namespace {
@@ -149,6 +160,15 @@ IntegerRange scaled_out(std::int64_t lo, std::int64_t hi, int shift) {
 
 }  // namespace
 
+IntegerRange SegmentGrid::stored_range(std::size_t k, std::int64_t lo, std::int64_t hi) const {
+  const Normal n = normal_[k];
+  const std::int64_t least =
+      side_ * (std::min<std::int64_t>(n.x, 0) + std::min<std::int64_t>(n.y, 0));
+  const std::int64_t span = side_ * (std::abs(n.x) + std::abs(n.y));
+  return scaled_out(std::clamp<std::int64_t>(lo - least, 0, span),
+                    std::clamp<std::int64_t>(hi - least, 0, span), offset_shift_);
+}
+
 IntegerRange SegmentGrid::box_offsets(std::size_t k, const Box64& b) const {
   const Point64 o = corner(k);
   const Box64 part{{std::max(b.min.x, o.x), std::max(b.min.y, o.y)},
@@ -159,8 +179,8 @@ IntegerRange SegmentGrid::box_offsets(std::size_t k, const Box64& b) const {
                      x_hi = n.x >= 0 ? part.max.x : part.min.x;
   const std::int64_t y_lo = n.y >= 0 ? part.min.y : part.max.y,
                      y_hi = n.y >= 0 ? part.max.y : part.min.y;
-  return scaled_out(n.x * (x_lo - o.x) + n.y * (y_lo - o.y),
-                    n.x * (x_hi - o.x) + n.y * (y_hi - o.y), offset_shift_);
+  return stored_range(k, n.x * (x_lo - o.x) + n.y * (y_lo - o.y),
+                      n.x * (x_hi - o.x) + n.y * (y_hi - o.y));
 }
 
 IntegerRange SegmentGrid::part_offsets(std::size_t k, const Segment& s, LineAt& line) const {
@@ -191,7 +211,7 @@ IntegerRange SegmentGrid::part_offsets(std::size_t k, const Segment& s, LineAt& 
       add(x, y.hi);
     }
   }
-  return scaled_out(lo, hi, offset_shift_);
+  return stored_range(k, lo, hi);
 }
 
 std::string SegmentGrid::offsets_violation(const std::vector<Segment>& segments) const {
@@ -204,15 +224,16 @@ std::string SegmentGrid::offsets_violation(const std::vector<Segment>& segments)
     const Point64 o = corner(k);
     const Box64 cell{o, {o.x + side_, o.y + side_}};
     for (std::uint32_t x = cell_begin_[k]; x < cell_begin_[k + 1]; ++x) {
-      if (x > cell_begin_[k] && lo_[x - 1] > lo_[x])
+      const Bounds b = bounds_[x];
+      if (x > cell_begin_[k] && bounds_[x - 1].lo > b.lo)
         return "cell " + std::to_string(k) + " unsorted";
-      if (hi_[x] < lo_[x] || hi_[x] - lo_[x] > width_[k])
+      if (b.hi < b.lo || b.hi - b.lo > width_[k])
         return "cell " + std::to_string(k) + ": an interval is wider than the cell's width";
       for (Point64 p : {segments[items_[x]].a, segments[items_[x]].b}) {
         if (!cell.contains(p)) continue;
         const std::int64_t u = normal_[k].x * (p.x - o.x) + normal_[k].y * (p.y - o.y);
-        const IntegerRange scaled = scaled_out(u, u, offset_shift_);
-        if (scaled.lo < lo_[x] || scaled.hi > hi_[x])
+        const IntegerRange scaled = stored_range(k, u, u);
+        if (scaled.lo < b.lo || scaled.hi > b.hi)
           return "segment " + std::to_string(items_[x]) + ": an end's offset in cell " +
                  std::to_string(k) + " lies outside its interval";
       }
@@ -236,12 +257,10 @@ std::pair<std::int64_t, std::int64_t> short_normal(const Segment& s) {
 
 // Sort keys: lo above the item's place in its cell (the places are in id order, so the keys
 // sort by (lo, id)); 64-bit keys compare faster than records.
-std::uint64_t sort_key(std::int32_t lo, std::uint32_t place) {
-  return std::uint64_t{static_cast<std::uint32_t>(lo) ^ 0x80000000u} << 32 | place;
+std::uint64_t sort_key(std::uint16_t lo, std::uint32_t place) {
+  return std::uint64_t{lo} << 32 | place;
 }
-std::int32_t key_lo(std::uint64_t key) {
-  return static_cast<std::int32_t>(static_cast<std::uint32_t>(key >> 32) ^ 0x80000000u);
-}
+std::uint16_t key_lo(std::uint64_t key) { return static_cast<std::uint16_t>(key >> 32); }
 
 // Where the ascending run starting at x ends.
 std::size_t run_end(const ScratchVector<std::uint64_t>& keys, std::size_t x) {
@@ -305,16 +324,14 @@ void SegmentGrid::order_crowded_cells(const std::vector<Segment>& segments) {
 
 void SegmentGrid::bound_parts(const std::vector<Segment>& segments) {
   // Each segment's intervals in walk order: its cells share column (or row) boundaries.
-  lo_.assign(items_.size(), 0);
-  hi_.assign(items_.size(), 0);
+  bounds_.assign(items_.size(), Bounds{0, 0});
   for (std::uint32_t i = 0; i + 1 < slot_begin_.size(); ++i) {
     LineAt line(segments[i]);
     for (std::uint32_t e = slot_begin_[i]; e < slot_begin_[i + 1]; ++e) {
       const Slot slot{slot_at_[e], slot_cell_[e]};
       if (!crowded(slot.cell)) continue;
       const IntegerRange u = part_offsets(slot.cell, segments[i], line);
-      lo_[slot.at] = static_cast<std::int32_t>(u.lo);
-      hi_[slot.at] = static_cast<std::int32_t>(u.hi);
+      bounds_[slot.at] = {static_cast<std::uint16_t>(u.lo), static_cast<std::uint16_t>(u.hi)};
       width_[slot.cell] = std::max(width_[slot.cell], u.hi - u.lo);
     }
   }
@@ -323,20 +340,20 @@ void SegmentGrid::bound_parts(const std::vector<Segment>& segments) {
 void SegmentGrid::sort_crowded_cells() {
   ScratchVector<std::uint64_t> keys, merged;
   ScratchVector<std::uint32_t> ids;
-  ScratchVector<std::int32_t> his;
+  ScratchVector<std::uint16_t> his;
   for (std::size_t k = 0; k + 1 < cell_begin_.size(); ++k) {
     if (!crowded(k)) continue;
     const std::uint32_t begin = cell_begin_[k], end = cell_begin_[k + 1];
     keys.clear();
-    for (std::uint32_t x = begin; x < end; ++x) keys.push_back(sort_key(lo_[x], x - begin));
+    for (std::uint32_t x = begin; x < end; ++x) keys.push_back(sort_key(bounds_[x].lo, x - begin));
     sort_runs(keys, merged);
     ids.assign(items_.begin() + begin, items_.begin() + end);
-    his.assign(hi_.begin() + begin, hi_.begin() + end);
+    his.clear();
+    for (std::uint32_t x = begin; x < end; ++x) his.push_back(bounds_[x].hi);
     for (std::uint32_t x = begin; x < end; ++x) {
       const auto from = static_cast<std::uint32_t>(keys[x - begin]);
       items_[x] = ids[from];
-      lo_[x] = key_lo(keys[x - begin]);
-      hi_[x] = his[from];
+      bounds_[x] = {key_lo(keys[x - begin]), his[from]};
     }
   }
   point_slots_at_items();

@@ -28,7 +28,10 @@
 // segments are sorted by it: a pair is proposed there only when its intervals overlap. Two
 // segments sharing a point P in the cell both hold P's offset, so no meeting is lost. The
 // intervals come from kernel/line_bounds.hpp (the line's y at the part's x ends, rounded
-// outward), scaled down by a power of two (rounded outward again) to fit 32 bits.
+// outward), cut to the offsets the closed cell itself spans (every point of a part lies in it)
+// and scaled down by a power of two (rounded outward again) to fit 16 bits: a cell's span is at
+// most 2^11 sides, so steps of a 2^-16 of it (about 16 units at the zigzag stars' cells) widen
+// the intervals by little, and the bounds take 4 bytes per registration instead of 8.
 //
 // Built in two steps: the constructor walks the segments and counts each cell's segments (all
 // that cell_pairs() needs to weigh the grid against the run index), and the cells' lists are
@@ -59,6 +62,9 @@ class SegmentGrid {
  public:
   // Keeps no reference to `segments`.
   explicit SegmentGrid(const std::vector<Segment>& segments);
+  // The cells laid over `extent`, which holds every segment, instead of over the segments' own
+  // box, so that other segments inside it can be walked through them (for_each_along).
+  SegmentGrid(const std::vector<Segment>& segments, const Box64& extent);
 
   // visit(i, j), i < j, exactly once for every pair of segments registered in a common cell;
   // this includes every pair of segments that share a point.
@@ -70,6 +76,11 @@ class SegmentGrid {
   // per cell (callers dedupe).
   template <class F>
   void for_each_in_box(const Box64& b, F&& visit);
+
+  // visit(i) for every segment i registered in a cell that s passes through (once per such
+  // cell): this includes every segment sharing a point with s. s lies within the extent.
+  template <class F>
+  void for_each_along(const Segment& s, F&& visit);
 
   // Number of (segment, cell) registrations: the size of the structure, for tests.
   std::size_t entries() const { return registrations_; }
@@ -100,7 +111,7 @@ class SegmentGrid {
     if (cell_pairs() > 16 * segments.size() + 4096) order_crowded_cells(segments);
   }
 
-  // Frees the per-segment slots (8 of the 20 bytes per registration at zigzag stars) once the last
+  // Frees the per-segment slots (8 of the 16 bytes per registration at zigzag stars) once the last
   // pair walk is done: box queries do not read them. (Lists not filled yet still need the
   // slots' cells, which go once they are.) for_each_candidate_pair, order_crowded_cells and
   // offsets_violation must not be called afterwards.
@@ -133,14 +144,17 @@ class SegmentGrid {
   template <class F>
   void for_each_in_cell(std::size_t k, const Box64& b, F&& visit) const;
   // The cell's lower-left corner, and the bounds of n . (p - corner) over the points p of
-  // `part` (the part of a segment or box in cell k), scaled to 32 bits.
+  // `part` (the part of a segment or box in cell k), as stored: cut and scaled (stored_range).
   Point64 corner(std::size_t k) const {
     return {min_x_ + static_cast<std::int64_t>(k) / rows_ * side_,
             min_y_ + static_cast<std::int64_t>(k) % rows_ * side_};
   }
   IntegerRange box_offsets(std::size_t k, const Box64& b) const;
+  // Bounds lo <= hi of n . (p - corner) in cell k as stored: measured from the least offset of
+  // the closed cell, cut to the cell's span, divided by 2^offset_shift_ (rounded outward).
+  IntegerRange stored_range(std::size_t k, std::int64_t lo, std::int64_t hi) const;
   // How many items in [from, end) of a crowded cell's sorted list start at most at hi.
-  std::size_t later_starts_up_to(std::uint32_t from, std::uint32_t end, std::int32_t hi) const;
+  std::size_t later_starts_up_to(std::uint32_t from, std::uint32_t end, std::uint16_t hi) const;
   // The line of one segment at the ends of its parts, along x (along y when steep): the last
   // two answers are kept, since the walk's consecutive cells share a column or row boundary.
   class LineAt {
@@ -193,15 +207,20 @@ class SegmentGrid {
   std::int64_t min_x_ = 0, min_y_ = 0, max_x_ = 0, max_y_ = 0;
   std::int64_t side_ = 1, columns_ = 0, rows_ = 0;
   int shift_ = 0;  // side_ == 2^shift_: cells are found by shifts, not divisions
-  // CSR over cells: items_ of cell k, ascending ids, or by (lo_, id) in a crowded cell.
+  // CSR over cells: items_ of cell k, ascending ids, or by (lo, id) in a crowded cell.
   ScratchVector<std::uint32_t> cell_begin_;
-  ScratchVector<std::uint32_t> items_;   // segment ids
-  ScratchVector<std::int32_t> lo_, hi_;  // per item in a crowded cell: its offset bounds
+  ScratchVector<std::uint32_t> items_;  // segment ids
+  // Per item in a crowded cell: its offset bounds, side by side (a scan reads both, and one
+  // array is one cache miss per cell instead of two).
+  struct Bounds {
+    std::uint16_t lo, hi;
+  };
+  ScratchVector<Bounds> bounds_;
   struct Normal {
     std::int16_t x, y;
   };
   ScratchVector<Normal> normal_;  // per crowded cell
-  // per cell once ordered: largest hi_ - lo_ when crowded, else -1 (empty until ordered)
+  // per cell once ordered: its bounds_' largest hi - lo when crowded, else -1 (empty till then)
   ScratchVector<std::int64_t> width_;
   int offset_shift_ = 0;  // offsets are divided by 2^offset_shift_
   // CSR over segments: the slots of segment i, in walk order: slot k's cell and its place in
@@ -277,6 +296,15 @@ void SegmentGrid::for_each_in_box(const Box64& b, F&& visit) {
 }
 
 template <class F>
+void SegmentGrid::for_each_along(const Segment& s, F&& visit) {
+  fill_lists();
+  if (items_.empty()) return;
+  for_each_cell(s, [&](std::size_t k) {
+    for (std::uint32_t x = cell_begin_[k]; x < cell_begin_[k + 1]; ++x) visit(items_[x]);
+  });
+}
+
+template <class F>
 void SegmentGrid::for_each_in_cell(std::size_t k, const Box64& b, F&& visit) const {
   std::uint32_t x = cell_begin_[k];
   const std::uint32_t end = cell_begin_[k + 1];
@@ -288,11 +316,11 @@ void SegmentGrid::for_each_in_cell(std::size_t k, const Box64& b, F&& visit) con
   const IntegerRange q = box_offsets(k, b);
   const std::int64_t reach = q.lo - width_[k];  // no item starting lower reaches q.lo
   x = static_cast<std::uint32_t>(
-      std::lower_bound(lo_.begin() + x, lo_.begin() + end, reach,
-                       [](std::int32_t v, std::int64_t t) { return v < t; }) -
-      lo_.begin());
-  for (; x < end && lo_[x] <= q.hi; ++x)
-    if (hi_[x] >= q.lo) visit(items_[x]);
+      std::lower_bound(bounds_.begin() + x, bounds_.begin() + end, reach,
+                       [](const Bounds& v, std::int64_t t) { return v.lo < t; }) -
+      bounds_.begin());
+  for (; x < end && bounds_[x].lo <= q.hi; ++x)
+    if (bounds_[x].hi >= q.lo) visit(items_[x]);
 }
 
 template <class F>
@@ -304,11 +332,11 @@ void SegmentGrid::for_each_partner(const Slot& s, F&& f) const {
   }
   // Sorted by lo: later items overlap until one starts past hi; earlier ones start at most
   // the cell's widest interval below lo if they reach it.
-  const std::int32_t lo = lo_[s.at], hi = hi_[s.at];
-  for (std::uint32_t y = s.at + 1; y < end && lo_[y] <= hi; ++y) f(items_[y]);
+  const std::uint16_t lo = bounds_[s.at].lo, hi = bounds_[s.at].hi;
+  for (std::uint32_t y = s.at + 1; y < end && bounds_[y].lo <= hi; ++y) f(items_[y]);
   const std::int64_t reach = std::int64_t{lo} - width_[s.cell];
-  for (std::uint32_t y = s.at; y-- > begin && lo_[y] >= reach;)
-    if (hi_[y] >= lo) f(items_[y]);
+  for (std::uint32_t y = s.at; y-- > begin && bounds_[y].lo >= reach;)
+    if (bounds_[y].hi >= lo) f(items_[y]);
 }
 
 template <class F>

@@ -109,6 +109,9 @@ class SnapRounds {
     for (std::size_t round = 1;; ++round) {
       if (round == kStableRounds + 1) restart_classic();
       close(round > kStableRounds, out);
+      // The re-check reads the closure's record of which segments pass near which vertices
+      // instead of asking the grid; only another round would (clip/README.md, "Snap rounding").
+      if (closure_.near_vertex_complete) search_.near.release_grid();
       snap_steps::Rechecked again =
           recheck(segs_, route(segs_, closure_, contacts_.splits), closure_, search_,
                   contacts_.splits, is_hot_, out.touched);

@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -53,6 +54,42 @@ rc::Gen<Input> crowded_rings() {
   });
 }
 
+// Many rings (over 256 segments, so no flat search), each of random points in its own window,
+// the windows scattered over a larger square, and a few crowded ones (windows of 6 to 40 units)
+// among them: many crossings, yet few segments pass through the pixel of a vertex that is not
+// hot, nearly all of them in the crowded rings, so the re-check walks every fragment through a
+// grid of the few fragments off their classic routes (snap_recheck.cpp,
+// check_against_off_fragments), and those pairs are the ones that need it.
+rc::Gen<Input> scattered_rings() {
+  return rc::gen::exec([] {
+    const std::int64_t wide = *rc::gen::element<std::int64_t>(5'000, 20'000);
+    const std::int64_t square = *rc::gen::element<std::int64_t>(30'000, 60'000);
+    const int rings = *rc::gen::inRange(10, 15), crowded = *rc::gen::inRange(1, 4);
+    Input in;
+    for (int r = 0; r < rings + crowded; ++r) {
+      const Point64 c{*rc::gen::inRange<std::int64_t>(0, square),
+                      *rc::gen::inRange<std::int64_t>(0, square)};
+      const std::int64_t window = r < rings ? wide : *rc::gen::element<std::int64_t>(6, 12, 40);
+      const int n = r < rings ? *rc::gen::inRange(20, 37) : *rc::gen::inRange(8, 30);
+      std::vector<Point64> pts;
+      for (int i = 0; i < n; ++i) {
+        const Point64 p{c.x + *rc::gen::inRange<std::int64_t>(0, window + 1) - window / 2,
+                        c.y + *rc::gen::inRange<std::int64_t>(0, window + 1) - window / 2};
+        if (pts.empty() || p != pts.back()) pts.push_back(p);
+      }
+      while (pts.size() > 1 && pts.front() == pts.back()) pts.pop_back();
+      if (pts.size() < 2) continue;
+      const auto first = static_cast<std::uint32_t>(in.segments.size());
+      for (std::size_t i = 0; i < pts.size(); ++i) {
+        in.segments.push_back({pts[i], pts[(i + 1) % pts.size()]});
+        in.next.push_back(i + 1 < pts.size() ? static_cast<std::uint32_t>(in.segments.size())
+                                             : first);
+      }
+    }
+    return in;
+  });
+}
+
 // Every fragment, listed or not (a segment without listed fragments is its own fragment).
 std::vector<Fragment> all_fragments(const Input& in, const std::vector<Fragment>& listed) {
   std::vector<bool> has(in.segments.size(), false);
@@ -73,18 +110,18 @@ bool within_half_unit(const Segment& s, Point64 p) {
   return 2 * (det < 0 ? -det : det) <= (dx < 0 ? -dx : dx) + (dy < 0 ? -dy : dy);
 }
 
-RC_GTEST_PROP(SnapRounding, FragmentsMeetOnlyAtCommonEndpoints, ()) {
-  const Input in = *crowded_rings();
-  RC_PRE(!in.segments.empty());
-  const std::vector<Fragment> listed = node_and_snap_round(in.segments, in.next, false).fragments;
-  const std::vector<Fragment> all = all_fragments(in, listed);
-  // At twice as many fragments as segments the re-check takes its filtered grid path.
-  RC_TAG(all.size() >= 2 * in.segments.size() ? "many fragments" : "few fragments");
+// Fragments meet only at common endpoints or coincide: every pair whose boxes overlap, tested
+// exactly (pairs from a sort by min x, independent of the library's searches).
+void require_fragments_meet_only_at_endpoints(std::vector<Fragment> all) {
+  std::sort(all.begin(), all.end(), [](const Fragment& x, const Fragment& y) {
+    return std::min(x.seg.a.x, x.seg.b.x) < std::min(y.seg.a.x, y.seg.b.x);
+  });
   for (std::size_t i = 0; i < all.size(); ++i) {
     const Segment& f = all[i].seg;
     RC_ASSERT(f.a != f.b);
     for (std::size_t j = i + 1; j < all.size(); ++j) {
       const Segment& g = all[j].seg;
+      if (std::min(g.a.x, g.b.x) > std::max(f.a.x, f.b.x)) break;
       const SegmentIntersection r = intersect(f, g);
       switch (r.relation) {
         case SegmentRelation::kDisjoint:
@@ -102,6 +139,22 @@ RC_GTEST_PROP(SnapRounding, FragmentsMeetOnlyAtCommonEndpoints, ()) {
       }
     }
   }
+}
+
+RC_GTEST_PROP(SnapRounding, FragmentsMeetOnlyAtCommonEndpoints, ()) {
+  const Input in = *crowded_rings();
+  RC_PRE(!in.segments.empty());
+  const std::vector<Fragment> listed = node_and_snap_round(in.segments, in.next, false).fragments;
+  const std::vector<Fragment> all = all_fragments(in, listed);
+  // At twice as many fragments as segments the re-check takes its filtered grid path.
+  RC_TAG(all.size() >= 2 * in.segments.size() ? "many fragments" : "few fragments");
+  require_fragments_meet_only_at_endpoints(all);
+}
+
+RC_GTEST_PROP(SnapRounding, FragmentsOfManyScatteredRingsMeetOnlyAtCommonEndpoints, ()) {
+  const Input in = *scattered_rings();
+  const std::vector<Fragment> listed = node_and_snap_round(in.segments, in.next, false).fragments;
+  require_fragments_meet_only_at_endpoints(all_fragments(in, listed));
 }
 
 RC_GTEST_PROP(SnapRounding, EachSegmentIsAChainOfNearbyFragments, ()) {
