@@ -12,6 +12,7 @@
 #include "check.hpp"
 #include "ids.hpp"
 #include "shape_cut.hpp"
+#include "split_content.hpp"
 
 namespace edgeland::detail {
 namespace {
@@ -147,8 +148,7 @@ EditBuilder::Draft EditBuilder::split_if_needed(Draft cell) {
     return cell;
   const std::vector<Box64> boxes = split_boxes(cell.box, config);
   grow_cells(boxes.size() - 1);
-  std::vector<LabeledSet> parts =
-      cut_to_windows(cell.content.set, cell.content.labels, boxes, clip_options());
+  std::vector<LabeledSet> parts = cut_to_children(std::move(cell.content), boxes, clip_options());
   std::vector<Draft> children;
   for (std::size_t i = 0; i < boxes.size(); ++i)
     children.push_back(Draft::cell(boxes[i], cell.depth + 1, std::move(parts[i])));
