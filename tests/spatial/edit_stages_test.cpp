@@ -11,6 +11,7 @@
 #include "edit.hpp"
 #include "ids.hpp"
 #include "node.hpp"
+#include "split_content.hpp"
 #include "state_of.hpp"
 
 namespace edgeland {
@@ -75,6 +76,47 @@ TEST(SplitBoxes, ChildrenPartitionTheParentAtTheWholeRange) {
     }
     EXPECT_TRUE(area == Int128(world.max.x - world.min.x) * (world.max.y - world.min.y));
   }
+}
+
+// ---- cut_to_children -------------------------------------------------------------------------
+
+// A cell's canonical content: two regions (rock 1, ore 2) from `relabel` within the box.
+LabeledSet canonical_content(const Box64& box, const PolygonSet& polygons,
+                             const std::vector<RegionLabel>& labels) {
+  return relabel(ValidSet(polygons), labels, ValidSet(), box, {}).regions;
+}
+
+void expect_parts_equal(const std::vector<LabeledSet>& a, const std::vector<LabeledSet>& b) {
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    EXPECT_EQ(a[i].set.polygons(), b[i].set.polygons()) << i;
+    EXPECT_EQ(a[i].labels, b[i].labels) << i;
+  }
+}
+
+TEST(CutToChildren, ContentInOneChildIsCutToWindowsAnswerWithoutAnArrangement) {
+  const Box64 box{{0, 0}, {64, 64}};
+  const LandscapeConfig config;
+  const std::vector<Box64> boxes = detail::split_boxes(box, config);
+  // An ore square inside a rock frame, all in the upper right quarter, touching its lines.
+  const LabeledSet content = relabel(ValidSet(PolygonSet{square(32, 32, 60, 60)}), {{1}},
+                                     ValidSet(PolygonSet{square(40, 40, 50, 50)}), box, {{0, 2}})
+                                 .regions;
+  ASSERT_GT(content.labels.size(), 2u);
+  const std::vector<LabeledSet> parts = detail::cut_to_children(content, boxes, {});
+  expect_parts_equal(parts, cut_to_windows(content.set, content.labels, boxes));
+  EXPECT_EQ(parts[3].set.polygons(), content.set.polygons());
+  EXPECT_TRUE(parts[0].labels.empty() && parts[1].labels.empty() && parts[2].labels.empty());
+}
+
+TEST(CutToChildren, ContentOverACellLineIsCutInOneArrangement) {
+  const Box64 box{{0, 0}, {64, 64}};
+  const std::vector<Box64> boxes = detail::split_boxes(box, LandscapeConfig{});
+  const LabeledSet content =
+      canonical_content(box, {{{10, 10}, {50, 13}, {47, 50}, {12, 41}}}, {1});
+  const std::vector<LabeledSet> parts = detail::cut_to_children(content, boxes, {.checked = true});
+  expect_parts_equal(parts, cut_to_windows(content.set, content.labels, boxes));
+  for (const LabeledSet& p : parts) EXPECT_FALSE(p.labels.empty());
 }
 
 // ---- ids -------------------------------------------------------------------------------------
