@@ -123,6 +123,18 @@ RC_GTEST_PROP(RelabelNearProperty, IsRelabelAmongSliversAndMovedSegments, ()) {
   }
 }
 
+// relabel_near()'s result, expected to be relabel()'s.
+LabeledClipResult near_and_full_agree(const LabeledSet& regions, const ValidSet& shape,
+                                      const Box64& window, const std::vector<RegionLabel>& table) {
+  LabeledClipResult near =
+      relabel_near(regions.set, regions.labels, shape, window, table, kChecked);
+  const LabeledClipResult full =
+      relabel(regions.set, regions.labels, shape, window, table, kChecked);
+  EXPECT_EQ(near.regions.set.polygons(), full.regions.set.polygons());
+  EXPECT_EQ(near.regions.labels, full.regions.labels);
+  return near;
+}
+
 TEST(RelabelNear, KeepsAFarRegionAsItIsAndChangesTheNearOne) {
   // Two rock squares (1) apart and an ore square (2) beside the first; a carve in the first.
   const PolygonSet pieces{box_polygon(0, 0, 10, 10), box_polygon(10, 0, 20, 10),
@@ -133,12 +145,7 @@ TEST(RelabelNear, KeepsAFarRegionAsItIsAndChangesTheNearOne) {
       relabel(ValidSet(pieces), labels, ValidSet(), window, {}, kChecked).regions;
   const ValidSet hole(PolygonSet{box_polygon(3, 3, 6, 7)});
   const std::vector<RegionLabel> carve{0, 0, 2};  // rock to air, ore kept
-  const LabeledClipResult near =
-      relabel_near(regions.set, regions.labels, hole, window, carve, kChecked);
-  const LabeledClipResult full =
-      relabel(regions.set, regions.labels, hole, window, carve, kChecked);
-  EXPECT_EQ(near.regions.set.polygons(), full.regions.set.polygons());
-  EXPECT_EQ(near.regions.labels, full.regions.labels);
+  const LabeledClipResult near = near_and_full_agree(regions, hole, window, carve);
   // The carve left a hole in the first square (cut into pieces), the far square as it was.
   EXPECT_EQ(twice_area(near.regions.set.polygons()), 2 * (300 - 12));
   EXPECT_NE(std::find(near.regions.set.polygons().begin(), near.regions.set.polygons().end(),
@@ -161,12 +168,7 @@ TEST(RelabelNear, TakesTheWholeRegionWhenTheShapeReachesSomeOfItsPieces) {
   const ValidSet shape(
       PolygonSet{{{-1, 6}, {3, 6}, {1, 7}, {0, 7}, {-2, 8}, {-3, 8}, {-1, 7}, {-3, 7}}});
   const std::vector<RegionLabel> table{0};
-  const LabeledClipResult near =
-      relabel_near(regions.set, regions.labels, shape, window, table, kChecked);
-  const LabeledClipResult full =
-      relabel(regions.set, regions.labels, shape, window, table, kChecked);
-  EXPECT_EQ(near.regions.set.polygons(), full.regions.set.polygons());
-  EXPECT_EQ(near.regions.labels, full.regions.labels);
+  near_and_full_agree(regions, shape, window, table);
 }
 
 TEST(RelabelNear, OnOtherInputLabelsEveryPointAsRelabelDoes) {

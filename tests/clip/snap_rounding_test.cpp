@@ -27,6 +27,18 @@ struct Input {
   std::vector<std::uint32_t> next;  // ring successor of each segment
 };
 
+// Appends the ring through `pts` (a repeated closing point dropped; fewer than two points: none)
+// as segments linked along it.
+void add_ring(std::vector<Point64> pts, Input& in) {
+  while (pts.size() > 1 && pts.front() == pts.back()) pts.pop_back();
+  if (pts.size() < 2) return;
+  const auto first = static_cast<std::uint32_t>(in.segments.size());
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    in.segments.push_back({pts[i], pts[(i + 1) % pts.size()]});
+    in.next.push_back(i + 1 < pts.size() ? static_cast<std::uint32_t>(in.segments.size()) : first);
+  }
+}
+
 // Rings of random points (self-intersecting, overlapping each other) in [0, side]^2.
 rc::Gen<Input> crowded_rings() {
   return rc::gen::exec([] {
@@ -41,14 +53,7 @@ rc::Gen<Input> crowded_rings() {
                         *rc::gen::inRange<std::int64_t>(0, side + 1) - side / 2};
         if (pts.empty() || p != pts.back()) pts.push_back(p);
       }
-      while (pts.size() > 1 && pts.front() == pts.back()) pts.pop_back();
-      if (pts.size() < 2) continue;
-      const auto first = static_cast<std::uint32_t>(in.segments.size());
-      for (std::size_t i = 0; i < pts.size(); ++i) {
-        in.segments.push_back({pts[i], pts[(i + 1) % pts.size()]});
-        in.next.push_back(i + 1 < pts.size() ? static_cast<std::uint32_t>(in.segments.size())
-                                             : first);
-      }
+      add_ring(std::move(pts), in);
     }
     return in;
   });
@@ -77,14 +82,7 @@ rc::Gen<Input> scattered_rings() {
                         c.y + *rc::gen::inRange<std::int64_t>(0, window + 1) - window / 2};
         if (pts.empty() || p != pts.back()) pts.push_back(p);
       }
-      while (pts.size() > 1 && pts.front() == pts.back()) pts.pop_back();
-      if (pts.size() < 2) continue;
-      const auto first = static_cast<std::uint32_t>(in.segments.size());
-      for (std::size_t i = 0; i < pts.size(); ++i) {
-        in.segments.push_back({pts[i], pts[(i + 1) % pts.size()]});
-        in.next.push_back(i + 1 < pts.size() ? static_cast<std::uint32_t>(in.segments.size())
-                                             : first);
-      }
+      add_ring(std::move(pts), in);
     }
     return in;
   });
