@@ -150,30 +150,36 @@ LabeledClipResult merged(LabeledClipResult computed, const LeftOut& kept) {
   return r;
 }
 
-// Runs the pipeline on the groups of pieces marked in `in`, bringing in more and running again
-// while a moved segment comes near a left-out piece; then merges the left-out pieces in.
+// relabel()'s pipeline on every piece.
+LabeledClipResult overlay_all(const ValidSet& regions, std::span<const RegionLabel> labels,
+                              const ValidSet& shape, const detail::ShapeNearWindow& near,
+                              const Box64& window, std::span<const RegionLabel> table,
+                              const ClipOptions& options) {
+  detail::PipelineResult r =
+      detail::run_relabel(regions, labels, shape, near, window, table, options, nullptr, nullptr);
+  return detail::relabeled_regions(r);
+}
+
+// Runs the pipeline on the groups of pieces marked in `in` and merges the left-out pieces in;
+// if a segment snap rounding moved comes near a left-out piece (it could have met a vertex or
+// an edge of it), runs it again on every piece instead. So an overlay costs at most two runs.
 LabeledClipResult overlay_groups_in_reach(
     const ValidSet& regions, std::span<const RegionLabel> labels, const ValidSet& shape,
     const detail::ShapeNearWindow& near, const Box64& window, std::span<const RegionLabel> table,
     const ClipOptions& options, const std::vector<Box64>& boxes, ScratchVector<std::uint8_t>& in) {
-  const ScratchVector<std::uint32_t> group = groups_of(boxes, labels);
+  whole_groups(groups_of(boxes, labels), in);
+  if (all_in(in)) return overlay_all(regions, labels, shape, near, window, table, options);
   ScratchVector<std::uint32_t> in_play;
+  for (std::uint32_t i = 0; i < in.size(); ++i)
+    if (in[i]) in_play.push_back(i);
   ScratchVector<Box64> moved;
-  for (;;) {
-    whole_groups(group, in);
-    const bool all = all_in(in);
-    in_play.clear();
-    for (std::uint32_t i = 0; i < in.size(); ++i)
-      if (in[i]) in_play.push_back(i);
-    detail::PipelineResult r = detail::run_relabel(regions, labels, shape, near, window, table,
-                                                   options, all ? nullptr : &in_play, &moved);
-    if (all) return detail::relabeled_regions(r);
-    // A moved segment near a left-out piece could have met a vertex or an edge of it.
-    if (bring_in_near(boxes, moved, in)) continue;
-    LeftOut kept;
-    collect_left_out(regions, labels, in, kept);
-    return merged(detail::relabeled_regions(r), kept);
-  }
+  detail::PipelineResult r =
+      detail::run_relabel(regions, labels, shape, near, window, table, options, &in_play, &moved);
+  if (bring_in_near(boxes, moved, in))
+    return overlay_all(regions, labels, shape, near, window, table, options);
+  LeftOut kept;
+  collect_left_out(regions, labels, in, kept);
+  return merged(detail::relabeled_regions(r), kept);
 }
 
 }  // namespace
@@ -192,10 +198,7 @@ LabeledClipResult relabel_near(const ValidSet& regions, std::span<const RegionLa
   bring_in_near(boxes, near.boxes, in);
   if (!all_in(in))
     return overlay_groups_in_reach(regions, labels, shape, near, window, table, options, boxes, in);
-  // The shape reaches every piece: relabel() as it is.
-  detail::PipelineResult r =
-      detail::run_relabel(regions, labels, shape, near, window, table, options, nullptr, nullptr);
-  return detail::relabeled_regions(r);
+  return overlay_all(regions, labels, shape, near, window, table, options);  // reaches every piece
 }
 
 }  // namespace edgeland
