@@ -66,9 +66,10 @@ EDGELAND_EXPORT LabeledClipResult relabel(const ValidSet& regions,
 // the regions the shape and its rounding reach, not all of them. A region is left out when its
 // box, grown by a unit, meets no box of a shape member reaching the window nor of any segment
 // snap rounding moved (otherwise the overlay runs again on every region, as relabel(): at most
-// two runs); the pieces of one label whose boxes meet go in or stay out together. On such input the result is relabel()'s, byte for
-// byte (clip/README.md, "Regions the shape cannot reach"); on other input it is still valid and
-// labels every point as relabel() does, but left-out regions keep the pieces they were given.
+// two runs); the pieces of one label whose boxes meet go in or stay out together. On such input
+// the result is relabel()'s, byte for byte (clip/README.md, "Regions the shape cannot reach");
+// on other input it is still valid and labels every point as relabel() does, but left-out
+// regions keep the pieces they were given.
 // The stats count what the arrangement that ran met (left-out regions add nothing). Errors as
 // relabel().
 EDGELAND_EXPORT LabeledClipResult relabel_near(const ValidSet& regions,
