@@ -179,7 +179,9 @@ LabeledClipResult overlay_groups_in_reach(
     return overlay_all(regions, labels, shape, near, window, table, options);
   LeftOut kept;
   collect_left_out(regions, labels, in, kept);
-  return merged(detail::relabeled_regions(r), kept);
+  LabeledClipResult out = merged(detail::relabeled_regions(r), kept);
+  out.pieces_left_out = kept.size();
+  return out;
 }
 
 }  // namespace

@@ -13,6 +13,7 @@
 #include "edgeland/kernel/box_queries.hpp"
 #include "edgeland/kernel/point_in_polygon.hpp"
 #include "edgeland/kernel/predicates.hpp"
+#include "edgeland/kernel/wkt_writer.hpp"
 
 namespace edgeland::detail {
 namespace {
@@ -329,6 +330,18 @@ std::optional<QuickAnswer> covered_answer(const Node& cell, const ValidSet& shap
   return std::nullopt;
 }
 
+// Checked mode: an overlay that left regions out is relabel()'s (clip/README.md, "Regions the
+// shape cannot reach", says why it is; the cell is a canonical decomposition, I3).
+void require_relabels(const Node& cell, const ValidSet& shape, std::span<const RegionLabel> table,
+                      const LabeledSet& near) {
+  const LabeledClipResult full =
+      relabel(cell.content.set, cell.content.labels, shape, cell.box, table, {.checked = true});
+  // Not reached by tests: the two agree (an internal error otherwise).
+  if (!same_content(full.regions, near))
+    throw InternalError("cell overlay: relabel_near differs from relabel",
+                        to_wkt(cell.content.set.polygons()), to_wkt(shape.polygons()));
+}
+
 }  // namespace
 
 std::optional<QuickAnswer> quick_overlay(const Node& cell, const ValidSet& shape,
@@ -349,6 +362,7 @@ std::optional<LabeledSet> overlay_cell(const Node& cell, const ValidSet& shape,
   if (auto quick = quick_overlay(cell, shape, table)) return std::move(quick->content);
   LabeledClipResult r =
       relabel_near(cell.content.set, cell.content.labels, shape, cell.box, table, options);
+  if (options.checked && r.pieces_left_out > 0) require_relabels(cell, shape, table, r.regions);
   if (same_content(r.regions, cell.content)) return std::nullopt;
   return std::move(r.regions);
 }

@@ -44,6 +44,7 @@ struct LabeledSet {
 struct LabeledClipResult {
   LabeledSet regions;
   ClipStats stats;
+  std::size_t pieces_left_out = 0;  // relabel_near(): input pieces returned as they were
 };
 
 // Inside shape ∩ window, a point of label l becomes table[l] (l = 0: a point no member covers;
