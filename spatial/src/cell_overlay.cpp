@@ -14,6 +14,7 @@
 #include "edgeland/kernel/point_in_polygon.hpp"
 #include "edgeland/kernel/predicates.hpp"
 #include "edgeland/kernel/wkt_writer.hpp"
+#include "same_content.hpp"
 
 namespace edgeland::detail {
 namespace {
@@ -304,10 +305,6 @@ std::optional<QuickCase> changes_nothing(const Node& cell, const ValidSet& shape
     if (!leaves_all_as_is(cell, member, near.boxes[k], table)) return std::nullopt;
   }
   return QuickCase::kInsideOneFace;
-}
-
-bool same_content(const LabeledSet& a, const LabeledSet& b) {
-  return a.labels == b.labels && a.set.polygons() == b.set.polygons();
 }
 
 // The shape covers the cell (some member contains it): the answer when it is known.

@@ -1,9 +1,11 @@
 #include "split_content.hpp"
 
+#include <algorithm>
 #include <optional>
 
 #include "edgeland/clip/errors.hpp"
 #include "edgeland/kernel/wkt_writer.hpp"
+#include "same_content.hpp"
 
 namespace edgeland::detail {
 namespace {
@@ -20,10 +22,7 @@ std::optional<std::size_t> only_child_holding(const LabeledSet& content,
 }
 
 bool same_parts(const std::vector<LabeledSet>& a, const std::vector<LabeledSet>& b) {
-  if (a.size() != b.size()) return false;
-  for (std::size_t i = 0; i < a.size(); ++i)
-    if (a[i].labels != b[i].labels || a[i].set.polygons() != b[i].set.polygons()) return false;
-  return true;
+  return std::equal(a.begin(), a.end(), b.begin(), b.end(), same_content);
 }
 
 }  // namespace
