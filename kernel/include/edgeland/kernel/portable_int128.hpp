@@ -111,10 +111,21 @@ class PortableInteger128 {
   using Words = detail::wide::WordPair<std::uint64_t>;
 
   constexpr PortableInteger128() noexcept = default;
-  // Every integer converts implicitly, as to __int128 (a signed one sign-extended).
+  // Every integer converts implicitly, as to __int128 (a signed one sign-extended; a native
+  // 128-bit one, where the compiler has it, word for word).
   template <std::integral T>
   constexpr PortableInteger128(T value) noexcept  // NOLINT: implicit, as the native type
-      : lo_(static_cast<std::uint64_t>(value)), hi_(sign_fill(value)) {}
+      : lo_(static_cast<std::uint64_t>(value)), hi_(high_word_of(value)) {}
+  // A floating-point value truncated toward zero, as natively (defined for |value| < 2^127).
+  template <std::floating_point T>
+  explicit constexpr PortableInteger128(T value) noexcept {
+    const T magnitude = value < 0 ? -value : value;
+    constexpr T kWord = T(18446744073709551616.0);  // 2^64: m / 2^64 and what is left are exact
+    const auto hi = static_cast<std::uint64_t>(magnitude / kWord);
+    lo_ = static_cast<std::uint64_t>(magnitude - static_cast<T>(hi) * kWord);
+    hi_ = hi;
+    if (value < 0) *this = -*this;
+  }
   // The other signedness converts implicitly too, keeping the bits (as natively).
   constexpr PortableInteger128(PortableInteger128<!Signed> other) noexcept  // NOLINT
       : lo_(other.low_word()), hi_(other.high_word()) {}
@@ -129,11 +140,14 @@ class PortableInteger128 {
   constexpr std::uint64_t high_word() const noexcept { return hi_; }
   constexpr bool negative() const noexcept { return Signed && (hi_ >> 63) != 0; }
 
-  // To a narrower integer: the low bits, as a static_cast of the native type; to bool: != 0.
+  // To a narrower integer: the low bits, as a static_cast of the native type; to bool: != 0; to
+  // a native 128-bit integer: both words.
   template <std::integral T>
   explicit constexpr operator T() const noexcept {
     if constexpr (std::is_same_v<T, bool>) {
       return (lo_ | hi_) != 0;
+    } else if constexpr (sizeof(T) > sizeof(std::uint64_t)) {
+      return static_cast<T>((static_cast<T>(hi_) << 64) | static_cast<T>(lo_));
     } else {
       return static_cast<T>(lo_);
     }
@@ -244,10 +258,13 @@ class PortableInteger128 {
 
   constexpr Words words() const noexcept { return {lo_, hi_}; }
 
-  // The high word of an integer's sign extension: all ones for a negative value, else zero.
+  // The high word of an integer: of its sign extension for one of 64 bits or fewer (all ones
+  // for a negative value, else zero), its own for a wider one.
   template <std::integral T>
-  static constexpr std::uint64_t sign_fill(T value) noexcept {
-    if constexpr (std::is_signed_v<T>) {
+  static constexpr std::uint64_t high_word_of(T value) noexcept {
+    if constexpr (sizeof(T) > sizeof(std::uint64_t)) {
+      return static_cast<std::uint64_t>(value >> 64);
+    } else if constexpr (std::is_signed_v<T>) {
       return value < 0 ? ~std::uint64_t{0} : 0;
     } else {
       return 0;
