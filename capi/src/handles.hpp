@@ -10,6 +10,8 @@
 
 #include "edgeland/clip/valid_set.hpp"
 #include "edgeland/edgeland.h"
+#include "edgeland/game/islands.hpp"
+#include "edgeland/game/surface_tracker.hpp"
 #include "edgeland/spatial/landscape.hpp"
 
 namespace edgeland::capi {
@@ -39,11 +41,51 @@ inline PolygonsHandle borrowed_polygons() {
   return p;
 }
 
+// A change set: the C++ value (the trackers and mesh_update take it) and its arrays.
 struct ChangesHandle {
+  bool borrowed = false;
+  ChangeSet source;
   std::vector<std::uint64_t> removed;
   PolygonsHandle added = borrowed_polygons();
   std::vector<el_box> cells;
   std::vector<el_area_delta> area_delta;
+};
+
+struct SurfaceTrackerHandle {
+  SurfaceTracker tracker;
+};
+
+struct IslandTrackerHandle {
+  IslandTracker tracker;
+};
+
+// Chains as arrays (offsets has one entry more than the chains), and the ids an update removed.
+struct ChainsHandle {
+  std::vector<std::uint64_t> removed;
+  std::vector<el_chain_info> info;
+  std::vector<std::uint32_t> offsets{0};
+  std::vector<el_point> points;
+  std::vector<std::uint8_t> materials;
+};
+
+// Islands: the C++ values (detach takes one) and their arrays.
+struct IslandsHandle {
+  std::vector<Island> islands;
+  std::vector<el_island_info> info;
+  PolygonsHandle pieces = borrowed_polygons();
+};
+
+struct DetachedHandle {
+  el_detached_info summary{};
+  ChangesHandle changes;  // borrowed
+  PolygonsHandle regions = borrowed_polygons();
+};
+
+struct MeshesHandle {
+  std::vector<std::uint64_t> dropped;
+  PolygonsHandle polygons = borrowed_polygons();
+  std::vector<std::uint32_t> triangle_offsets{0};
+  std::vector<std::uint32_t> triangles;
 };
 
 struct CrossingsHandle {
@@ -80,6 +122,36 @@ struct HandleOf<el_crossings> {
 template <>
 struct HandleOf<el_bytes> {
   using type = BytesHandle;
+};
+
+template <>
+struct HandleOf<el_surface_tracker> {
+  using type = SurfaceTrackerHandle;
+};
+
+template <>
+struct HandleOf<el_island_tracker> {
+  using type = IslandTrackerHandle;
+};
+
+template <>
+struct HandleOf<el_chains> {
+  using type = ChainsHandle;
+};
+
+template <>
+struct HandleOf<el_islands> {
+  using type = IslandsHandle;
+};
+
+template <>
+struct HandleOf<el_detached> {
+  using type = DetachedHandle;
+};
+
+template <>
+struct HandleOf<el_meshes> {
+  using type = MeshesHandle;
 };
 
 // The object behind a handle (NULL stays NULL), const as the handle is.

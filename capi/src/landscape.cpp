@@ -61,8 +61,8 @@ template <class Edit>
 void edit(el_landscape* landscape, el_changes** changes, Edit&& apply) {
   Landscape& world = object_of(landscape, "landscape").world;
   Landscape next = world;
-  const ChangeSet done = apply(next);
-  std::unique_ptr<ChangesHandle> out = changes != nullptr ? to_c(done) : nullptr;
+  ChangeSet done = apply(next);
+  std::unique_ptr<ChangesHandle> out = changes != nullptr ? to_c(std::move(done)) : nullptr;
   world = std::move(next);
   if (changes != nullptr) hand_out(std::move(out), changes);
 }

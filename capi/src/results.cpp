@@ -42,7 +42,9 @@ using namespace edgeland::capi;
 
 extern "C" {
 
-EL_API void el_changes_destroy(el_changes* changes) { delete object(changes); }
+EL_API void el_changes_destroy(el_changes* changes) {
+  if (changes != nullptr && !object(changes)->borrowed) delete object(changes);
+}
 EL_API const uint64_t* el_changes_removed(const el_changes* h, size_t* count) {
   return view(h, &ChangesHandle::removed, count);
 }
@@ -105,6 +107,78 @@ EL_API const el_point* el_polygons_points(const el_polygons* h, size_t* count) {
 EL_API el_status el_polygons_copy_points(const el_polygons* h, el_point* buf, size_t cap,
                                          size_t* needed) {
   return copy(h, &PolygonsHandle::points, buf, cap, needed);
+}
+
+EL_API void el_chains_destroy(el_chains* h) { delete object(h); }
+EL_API const uint64_t* el_chains_removed(const el_chains* h, size_t* count) {
+  return view(h, &ChainsHandle::removed, count);
+}
+EL_API el_status el_chains_copy_removed(const el_chains* h, uint64_t* buf, size_t cap,
+                                        size_t* needed) {
+  return copy(h, &ChainsHandle::removed, buf, cap, needed);
+}
+EL_API const el_chain_info* el_chains_info(const el_chains* h, size_t* count) {
+  return view(h, &ChainsHandle::info, count);
+}
+EL_API el_status el_chains_copy_info(const el_chains* h, el_chain_info* buf, size_t cap,
+                                     size_t* needed) {
+  return copy(h, &ChainsHandle::info, buf, cap, needed);
+}
+EL_API const uint32_t* el_chains_offsets(const el_chains* h, size_t* count) {
+  return view(h, &ChainsHandle::offsets, count);
+}
+EL_API el_status el_chains_copy_offsets(const el_chains* h, uint32_t* buf, size_t cap,
+                                        size_t* needed) {
+  return copy(h, &ChainsHandle::offsets, buf, cap, needed);
+}
+EL_API const el_point* el_chains_points(const el_chains* h, size_t* count) {
+  return view(h, &ChainsHandle::points, count);
+}
+EL_API el_status el_chains_copy_points(const el_chains* h, el_point* buf, size_t cap,
+                                       size_t* needed) {
+  return copy(h, &ChainsHandle::points, buf, cap, needed);
+}
+EL_API const uint8_t* el_chains_materials(const el_chains* h, size_t* count) {
+  return view(h, &ChainsHandle::materials, count);
+}
+EL_API el_status el_chains_copy_materials(const el_chains* h, uint8_t* buf, size_t cap,
+                                          size_t* needed) {
+  return copy(h, &ChainsHandle::materials, buf, cap, needed);
+}
+
+EL_API void el_islands_destroy(el_islands* h) { delete object(h); }
+EL_API size_t el_islands_count(const el_islands* h) { return h != nullptr ? object(h)->info.size() : 0; }
+EL_API const el_island_info* el_islands_info(const el_islands* h, size_t* count) {
+  return view(h, &IslandsHandle::info, count);
+}
+EL_API el_status el_islands_copy_info(const el_islands* h, el_island_info* buf, size_t cap,
+                                      size_t* needed) {
+  return copy(h, &IslandsHandle::info, buf, cap, needed);
+}
+EL_API const el_polygons* el_islands_pieces(const el_islands* h) {
+  return h != nullptr ? handle<const el_polygons>(&object(h)->pieces) : nullptr;
+}
+
+EL_API const uint64_t* el_meshes_dropped(const el_meshes* h, size_t* count) {
+  return view(h, &MeshesHandle::dropped, count);
+}
+EL_API el_status el_meshes_copy_dropped(const el_meshes* h, uint64_t* buf, size_t cap,
+                                        size_t* needed) {
+  return copy(h, &MeshesHandle::dropped, buf, cap, needed);
+}
+EL_API const uint32_t* el_meshes_triangle_offsets(const el_meshes* h, size_t* count) {
+  return view(h, &MeshesHandle::triangle_offsets, count);
+}
+EL_API el_status el_meshes_copy_triangle_offsets(const el_meshes* h, uint32_t* buf, size_t cap,
+                                                 size_t* needed) {
+  return copy(h, &MeshesHandle::triangle_offsets, buf, cap, needed);
+}
+EL_API const uint32_t* el_meshes_triangles(const el_meshes* h, size_t* count) {
+  return view(h, &MeshesHandle::triangles, count);
+}
+EL_API el_status el_meshes_copy_triangles(const el_meshes* h, uint32_t* buf, size_t cap,
+                                          size_t* needed) {
+  return copy(h, &MeshesHandle::triangles, buf, cap, needed);
 }
 
 EL_API void el_crossings_destroy(el_crossings* h) { delete object(h); }

@@ -67,16 +67,21 @@ void append(PolygonsHandle& out, std::uint64_t id, Material material, const Box6
   out.offsets.push_back(static_cast<std::uint32_t>(out.points.size()));
 }
 
-std::unique_ptr<ChangesHandle> to_c(const ChangeSet& changes) {
-  auto out = std::make_unique<ChangesHandle>();
-  out->removed.assign(changes.removed.begin(), changes.removed.end());
+void fill(ChangesHandle& out, ChangeSet changes) {
+  out.removed.assign(changes.removed.begin(), changes.removed.end());
   for (const ChangeSet::Added& a : changes.added) {
-    append(out->added, a.id, a.material, a.cell, a.polygon);
+    append(out.added, a.id, a.material, a.cell, a.polygon);
   }
-  for (const Box64& cell : changes.cells) out->cells.push_back(to_c(cell));
+  for (const Box64& cell : changes.cells) out.cells.push_back(to_c(cell));
   for (const auto& [material, twice] : changes.twice_area_delta) {
-    out->area_delta.push_back({to_c(twice), material.value(), 0});
+    out.area_delta.push_back({to_c(twice), material.value(), 0});
   }
+  out.source = std::move(changes);
+}
+
+std::unique_ptr<ChangesHandle> to_c(ChangeSet changes) {
+  auto out = std::make_unique<ChangesHandle>();
+  fill(*out, std::move(changes));
   return out;
 }
 

@@ -28,7 +28,9 @@ PolygonSet polygon_set_of(const std::int64_t* xy, const std::uint32_t* offsets,
 // Appends one polygon to the arrays (EL_LIMIT_EXCEEDED past 2^32 - 1 points: offsets are 32 bits).
 void append(PolygonsHandle& out, std::uint64_t id, Material material, const Box64& cell,
             const Polygon& polygon);
-std::unique_ptr<ChangesHandle> to_c(const ChangeSet& changes);
+// The arrays of a change set, which then keeps the C++ value too.
+std::unique_ptr<ChangesHandle> to_c(ChangeSet changes);
+void fill(ChangesHandle& out, ChangeSet changes);
 
 // The handle made and owned here, released to the caller's out-parameter only when everything
 // succeeded (so a failure leaves *out as it was).

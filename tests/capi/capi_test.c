@@ -343,6 +343,99 @@ static void test_shape_builders(void) {
   CHECK(error.value == 0 && error.minimum == 1 && error.limit == (int64_t)1 << 33);
 }
 
+/* The game layer: chains and islands kept in step from change sets, detach, meshes, pieces. */
+static void test_game_layer(void) {
+  const el_box box = {{0, 0}, {1024, 512}};
+  el_landscape* world = NULL;
+  el_surface_tracker* surface = NULL;
+  el_island_tracker* islands = NULL;
+  el_shape* ground = square(0, 0, 100); /* on the border: anchored */
+  el_shape* floating = square(400, 300, 40);
+  el_changes* changes = NULL;
+  el_chains* chains = NULL;
+  el_islands* found = NULL;
+  el_detached* detached = NULL;
+  el_meshes* meshes = NULL;
+  el_detached_info info;
+  el_error error;
+  size_t n = 0, points = 0;
+  const el_chain_info* chain;
+  const el_island_info* island;
+  el_error_init(&error);
+
+  OK(el_landscape_create(&box, 0, NULL, &world, NULL));
+  OK(el_surface_tracker_create(world, NULL, &surface, NULL));
+  OK(el_island_tracker_create(world, NULL, &islands, NULL));
+  OK(el_landscape_fill(world, ground, 1, &changes, NULL));
+  OK(el_surface_tracker_update(surface, world, changes, &chains, NULL));
+  chain = el_chains_info(chains, &n);
+  el_chains_points(chains, &points);
+  CHECK(n >= 1 && points >= 2 && chain[0].id >= 1 && chain[0].closed == 0);
+  CHECK(el_chains_materials(chains, NULL)[0] == 1);
+  el_chains_destroy(chains);
+  OK(el_island_tracker_update(islands, world, changes, &found, NULL));
+  CHECK(el_islands_count(found) == 0); /* the ground touches the border */
+  el_islands_destroy(found);
+  el_changes_destroy(changes);
+
+  OK(el_landscape_fill(world, floating, 2, &changes, NULL));
+  OK(el_surface_tracker_update(surface, world, changes, &chains, NULL));
+  el_chains_info(chains, &n);
+  CHECK(n == 1 && el_chains_info(chains, NULL)[0].closed == 1);
+  el_chains_destroy(chains);
+  OK(el_island_tracker_update(islands, world, changes, &found, NULL));
+  island = el_islands_info(found, &n);
+  CHECK(n == 1 && island[0].twice_area.lo == 2 * 40 * 40 && island[0].piece_count >= 1);
+  CHECK(el_polygons_materials(el_islands_pieces(found), NULL)[island[0].first_piece] == 2);
+  OK(el_mesh_update(changes, &meshes, NULL));
+  {
+    size_t triangles = 0, offsets = 0;
+    el_meshes_triangles(meshes, &triangles);
+    el_meshes_triangle_offsets(meshes, &offsets);
+    CHECK(triangles == 3 * 2 && offsets == 2 && el_polygons_count(el_meshes_polygons(meshes)) == 1);
+  }
+  el_meshes_destroy(meshes);
+  el_changes_destroy(changes);
+
+  CHECK(el_detach(world, found, 1, &detached, &error) == EL_INDEX_OUT_OF_RANGE);
+  OK(el_detach(world, found, 0, &detached, NULL));
+  OK(el_detached_summary(detached, &info, NULL));
+  CHECK(info.twice_area.lo == 3200 && info.centroid_x_num.lo == 420 * info.centroid_den.lo);
+  CHECK(el_polygons_count(el_detached_regions(detached)) == 1);
+  {
+    const uint8_t at = 0;
+    uint8_t m = 9;
+    const el_point inside = {420, 320};
+    OK(el_landscape_material_at(world, &inside, &m, NULL));
+    CHECK(m == at);
+  }
+  OK(el_surface_tracker_update(surface, world, el_detached_changes(detached), &chains, NULL));
+  el_chains_removed(chains, &n);
+  CHECK(n == 1);
+  el_chains_destroy(chains);
+  el_changes_destroy((el_changes*)el_detached_changes(detached)); /* borrowed: a no-op */
+  CHECK(el_detach(world, found, 0, &detached, &error) == EL_STALE_ISLAND);
+  CHECK(error.index >= 1);
+  el_detached_destroy(detached);
+  el_islands_destroy(found);
+
+  { /* an L as convex pieces */
+    const el_point l[6] = {{0, 0}, {20, 0}, {20, 10}, {10, 10}, {10, 20}, {0, 20}};
+    const el_point bow[4] = {{0, 0}, {10, 10}, {10, 0}, {0, 10}};
+    el_polygons* pieces = NULL;
+    OK(el_convex_pieces(l, 6, 8, &pieces, NULL));
+    CHECK(el_polygons_count(pieces) == 2);
+    el_polygons_destroy(pieces);
+    CHECK(el_convex_pieces(l, 6, 2, &pieces, &error) == EL_INVALID_ARGUMENT && error.minimum == 3);
+    CHECK(el_convex_pieces(bow, 4, 8, &pieces, &error) == EL_INVALID_INPUT);
+  }
+  el_surface_tracker_destroy(surface);
+  el_island_tracker_destroy(islands);
+  el_shape_destroy(ground);
+  el_shape_destroy(floating);
+  el_landscape_destroy(world);
+}
+
 static void test_null_is_harmless(void) {
   size_t count = 5;
   el_landscape_destroy(NULL);
@@ -351,6 +444,12 @@ static void test_null_is_harmless(void) {
   el_polygons_destroy(NULL);
   el_crossings_destroy(NULL);
   el_bytes_destroy(NULL);
+  el_surface_tracker_destroy(NULL);
+  el_island_tracker_destroy(NULL);
+  el_chains_destroy(NULL);
+  el_islands_destroy(NULL);
+  el_detached_destroy(NULL);
+  el_meshes_destroy(NULL);
   el_error_init(NULL);
   CHECK(el_changes_removed(NULL, &count) == NULL && count == 0);
   CHECK(el_polygons_count(NULL) == 0);
@@ -366,6 +465,7 @@ int main(void) {
   test_snapshots_and_saves();
   test_relabel_and_log();
   test_shape_builders();
+  test_game_layer();
   test_null_is_harmless();
   printf("capi: %d checks passed\n", checks);
   return 0;

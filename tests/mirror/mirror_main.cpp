@@ -16,8 +16,8 @@ using namespace edgeland;
 using namespace edgeland::mirror;
 
 // Pinned from the first native run (gcc 12, -O2), reached again by the portable build.
-constexpr std::uint64_t kFinalHash = 0;
-constexpr std::uint64_t kDigest = 0;
+constexpr std::uint64_t kFinalHash = 0x76a2861e8da15363;
+constexpr std::uint64_t kDigest = 0x454fb2cad96a6a4e;
 
 int failures = 0;
 
@@ -63,7 +63,7 @@ int main(int argc, char** argv) {
   for (int f = 0; f < kFrames; ++f) {
     if (f % 1000 == 500) bad_input(world, f);
     const std::int64_t edits = 1 + random.below(3);
-    for (std::int64_t e = 0; e < edits; ++e) apply(mirror, draw_edit(random, world));
+    for (std::int64_t e = 0; e < edits; ++e) apply_changes(mirror, draw_edit(random, world));
     if (f % 100 == 90) {
       snapshot = world;
       mirror_snapshot = mirror;

@@ -33,7 +33,7 @@ class Random {
 // The polygons by id, kept from change sets only.
 using Mirror = std::map<PolygonId, std::pair<Material, Polygon>>;
 
-inline void apply(Mirror& mirror, const ChangeSet& changes) {
+inline void apply_changes(Mirror& mirror, const ChangeSet& changes) {
   for (const PolygonId id : changes.removed) mirror.erase(id);
   for (const ChangeSet::Added& a : changes.added) mirror[a.id] = {a.material, a.polygon};
 }

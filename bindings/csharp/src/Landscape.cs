@@ -3,6 +3,7 @@
 using System;
 using System.Collections.Generic;
 using System.Numerics;
+using System.Runtime.InteropServices;
 using System.Text;
 
 namespace Edgeland
@@ -17,13 +18,25 @@ namespace Edgeland
     }
 
     // What an edit changed: ids removed (ascending), polygons added (ascending id), the cells
-    // rebuilt, twice the change of area per material (exact; sums to zero).
-    public sealed class ChangeSet
+    // rebuilt, twice the change of area per material (exact; sums to zero). It keeps the C change
+    // set, which the game layer's trackers and MeshUpdate take: Dispose() frees it at once.
+    public sealed class ChangeSet : IDisposable
     {
         public ulong[] Removed;
         public Polygon[] Added;
         public Box[] Cells;
         public Dictionary<int, BigInteger> AreaDelta;
+        internal SafeHandle Owner;   // the handle that owns the C change set
+        internal IntPtr Pointer;     // the C change set (borrowed from Owner for detach's)
+
+        // The C change set for a call; the owner stays alive (and checked) through it.
+        internal IntPtr Use()
+        {
+            if (Owner.IsClosed) throw new ObjectDisposedException("ChangeSet");
+            return Pointer;
+        }
+
+        public void Dispose() { Owner.Dispose(); }
     }
 
     // A polygon set validated once (strictly simple, counter-clockwise, disjoint interiors).
@@ -111,6 +124,7 @@ namespace Edgeland
     public sealed class Landscape : IDisposable
     {
         LandscapeHandle handle;
+        internal LandscapeHandle Raw { get { return handle; } }
 
         Landscape(LandscapeHandle h) { handle = h; }
 
@@ -394,20 +408,23 @@ namespace Edgeland
 
         public static ChangeSet Changes(ChangesHandle h)
         {
-            using (h)
-            {
-                UIntPtr n;
-                ulong* removed = (ulong*)Native.el_changes_removed(h, out n);
-                var r = new ulong[(int)n];
-                for (int i = 0; i < r.Length; ++i) r[i] = removed[i];
-                Box* cells = (Box*)Native.el_changes_cells(h, out n);
-                var c = new Box[(int)n];
-                for (int i = 0; i < c.Length; ++i) c[i] = cells[i];
-                AreaDelta* deltas = (AreaDelta*)Native.el_changes_area_delta(h, out n);
-                var d = new Dictionary<int, BigInteger>();
-                for (int i = 0; i < (int)n; ++i) d[(int)deltas[i].Material] = deltas[i].TwiceArea.ToBigInteger();
-                return new ChangeSet { Removed = r, Added = Polygons(Native.el_changes_added(h)), Cells = c, AreaDelta = d };
-            }
+            return Changes(h, h.DangerousGetHandle());
+        }
+
+        // The change set behind `pointer`, kept alive by `owner`.
+        public static ChangeSet Changes(SafeHandle owner, IntPtr pointer)
+        {
+            UIntPtr n;
+            ulong* removed = (ulong*)Native.el_changes_removed(pointer, out n);
+            var r = new ulong[(int)n];
+            for (int i = 0; i < r.Length; ++i) r[i] = removed[i];
+            Box* cells = (Box*)Native.el_changes_cells(pointer, out n);
+            var c = new Box[(int)n];
+            for (int i = 0; i < c.Length; ++i) c[i] = cells[i];
+            AreaDelta* deltas = (AreaDelta*)Native.el_changes_area_delta(pointer, out n);
+            var d = new Dictionary<int, BigInteger>();
+            for (int i = 0; i < (int)n; ++i) d[(int)deltas[i].Material] = deltas[i].TwiceArea.ToBigInteger();
+            return new ChangeSet { Removed = r, Added = Polygons(Native.el_changes_added(pointer)), Cells = c, AreaDelta = d, Owner = owner, Pointer = pointer };
         }
 
         public static byte[] Bytes(BytesHandle h)

@@ -56,6 +56,41 @@ namespace Edgeland
         uint reserved;
     }
 
+    // One surface chain beside its points (el_chain_info).
+    [StructLayout(LayoutKind.Sequential)]
+    public struct ChainInfo
+    {
+        public Box Cell;
+        public Point GhostPrev, GhostNext;
+        public ulong Id;
+        public uint Closed;
+        uint reserved;
+    }
+
+    [StructLayout(LayoutKind.Sequential)]
+    internal struct IslandInfo
+    {
+        public Box Bounds;
+        public Int128Value TwiceArea;
+        public uint FirstPiece, PieceCount;
+    }
+
+    [StructLayout(LayoutKind.Sequential)]
+    internal struct DetachedInfo
+    {
+        public Int128Value TwiceArea, CentroidXNum, CentroidYNum, CentroidDen;
+    }
+
+    // Which materials collide and which never fall (el_physics_materials).
+    [StructLayout(LayoutKind.Sequential)]
+    internal unsafe struct NativePhysicsMaterials
+    {
+        public uint StructSize;
+        public uint Flags;
+        public fixed byte Solid[256];
+        public fixed byte Anchored[256];
+    }
+
     [StructLayout(LayoutKind.Sequential)]
     internal unsafe struct NativeError
     {
@@ -119,6 +154,31 @@ namespace Edgeland
         protected override bool ReleaseHandle() { Native.el_bytes_destroy(handle); return true; }
     }
 
+    internal sealed class SurfaceTrackerHandle : NativeHandle
+    {
+        protected override bool ReleaseHandle() { Native.el_surface_tracker_destroy(handle); return true; }
+    }
+    internal sealed class IslandTrackerHandle : NativeHandle
+    {
+        protected override bool ReleaseHandle() { Native.el_island_tracker_destroy(handle); return true; }
+    }
+    internal sealed class ChainsHandle : NativeHandle
+    {
+        protected override bool ReleaseHandle() { Native.el_chains_destroy(handle); return true; }
+    }
+    internal sealed class IslandsHandle : NativeHandle
+    {
+        protected override bool ReleaseHandle() { Native.el_islands_destroy(handle); return true; }
+    }
+    internal sealed class DetachedHandle : NativeHandle
+    {
+        protected override bool ReleaseHandle() { Native.el_detached_destroy(handle); return true; }
+    }
+    internal sealed class MeshesHandle : NativeHandle
+    {
+        protected override bool ReleaseHandle() { Native.el_meshes_destroy(handle); return true; }
+    }
+
     internal static class Native
     {
         // libedgeland_c.so / edgeland_c.dll / libedgeland_c.dylib; on iOS (static library)
@@ -167,10 +227,10 @@ namespace Edgeland
         [DllImport(Lib)] public static extern int el_landscape_load(byte[] data, UIntPtr size, ref LandscapeConfig config, out LandscapeHandle landscape, ref NativeError error);
 
         [DllImport(Lib)] public static extern void el_changes_destroy(IntPtr changes);
-        [DllImport(Lib)] public static extern IntPtr el_changes_removed(ChangesHandle changes, out UIntPtr count);
-        [DllImport(Lib)] public static extern IntPtr el_changes_added(ChangesHandle changes);
-        [DllImport(Lib)] public static extern IntPtr el_changes_cells(ChangesHandle changes, out UIntPtr count);
-        [DllImport(Lib)] public static extern IntPtr el_changes_area_delta(ChangesHandle changes, out UIntPtr count);
+        [DllImport(Lib)] public static extern IntPtr el_changes_removed(IntPtr changes, out UIntPtr count);
+        [DllImport(Lib)] public static extern IntPtr el_changes_added(IntPtr changes);
+        [DllImport(Lib)] public static extern IntPtr el_changes_cells(IntPtr changes, out UIntPtr count);
+        [DllImport(Lib)] public static extern IntPtr el_changes_area_delta(IntPtr changes, out UIntPtr count);
 
         [DllImport(Lib)] public static extern void el_polygons_destroy(IntPtr polygons);
         [DllImport(Lib)] public static extern UIntPtr el_polygons_count(IntPtr polygons);
@@ -183,6 +243,40 @@ namespace Edgeland
         [DllImport(Lib)] public static extern void el_crossings_destroy(IntPtr crossings);
         [DllImport(Lib)] public static extern int el_crossings_copy(CrossingsHandle crossings, [Out] Crossing[] buf, UIntPtr cap, out UIntPtr needed);
         [DllImport(Lib)] public static extern IntPtr el_crossings_data(CrossingsHandle crossings, out UIntPtr count);
+
+        [DllImport(Lib)] public static extern void el_physics_materials_init(ref NativePhysicsMaterials materials);
+        [DllImport(Lib)] public static extern int el_surface_tracker_create(LandscapeHandle landscape, ref NativePhysicsMaterials materials, out SurfaceTrackerHandle tracker, ref NativeError error);
+        [DllImport(Lib)] public static extern void el_surface_tracker_destroy(IntPtr tracker);
+        [DllImport(Lib)] public static extern int el_surface_tracker_update(SurfaceTrackerHandle tracker, LandscapeHandle landscape, IntPtr changes, out ChainsHandle update, ref NativeError error);
+        [DllImport(Lib)] public static extern int el_surface_tracker_resync(SurfaceTrackerHandle tracker, LandscapeHandle landscape, out ChainsHandle update, ref NativeError error);
+        [DllImport(Lib)] public static extern int el_surface_tracker_chains(SurfaceTrackerHandle tracker, out ChainsHandle all, ref NativeError error);
+        [DllImport(Lib)] public static extern void el_chains_destroy(IntPtr chains);
+        [DllImport(Lib)] public static extern IntPtr el_chains_removed(ChainsHandle chains, out UIntPtr count);
+        [DllImport(Lib)] public static extern IntPtr el_chains_info(ChainsHandle chains, out UIntPtr count);
+        [DllImport(Lib)] public static extern IntPtr el_chains_offsets(ChainsHandle chains, out UIntPtr count);
+        [DllImport(Lib)] public static extern IntPtr el_chains_points(ChainsHandle chains, out UIntPtr count);
+        [DllImport(Lib)] public static extern IntPtr el_chains_materials(ChainsHandle chains, out UIntPtr count);
+        [DllImport(Lib)] public static extern int el_island_tracker_create(LandscapeHandle landscape, ref NativePhysicsMaterials materials, out IslandTrackerHandle tracker, ref NativeError error);
+        [DllImport(Lib)] public static extern void el_island_tracker_destroy(IntPtr tracker);
+        [DllImport(Lib)] public static extern int el_island_tracker_update(IslandTrackerHandle tracker, LandscapeHandle landscape, IntPtr changes, out IslandsHandle found, ref NativeError error);
+        [DllImport(Lib)] public static extern int el_island_tracker_resync(IslandTrackerHandle tracker, LandscapeHandle landscape, out IslandsHandle found, ref NativeError error);
+        [DllImport(Lib)] public static extern int el_island_tracker_islands(IslandTrackerHandle tracker, LandscapeHandle landscape, out IslandsHandle all, ref NativeError error);
+        [DllImport(Lib)] public static extern void el_islands_destroy(IntPtr islands);
+        [DllImport(Lib)] public static extern IntPtr el_islands_info(IslandsHandle islands, out UIntPtr count);
+        [DllImport(Lib)] public static extern IntPtr el_islands_pieces(IslandsHandle islands);
+        [DllImport(Lib)] public static extern int el_detach(LandscapeHandle landscape, IslandsHandle islands, UIntPtr index, out DetachedHandle detached, ref NativeError error);
+        [DllImport(Lib)] public static extern void el_detached_destroy(IntPtr detached);
+        [DllImport(Lib)] public static extern int el_detached_summary(DetachedHandle detached, out DetachedInfo info, ref NativeError error);
+        [DllImport(Lib)] public static extern IntPtr el_detached_changes(DetachedHandle detached);
+        [DllImport(Lib)] public static extern IntPtr el_detached_regions(DetachedHandle detached);
+        [DllImport(Lib)] public static extern int el_mesh_update(IntPtr changes, out MeshesHandle meshes, ref NativeError error);
+        [DllImport(Lib)] public static extern int el_all_meshes(LandscapeHandle landscape, out MeshesHandle meshes, ref NativeError error);
+        [DllImport(Lib)] public static extern void el_meshes_destroy(IntPtr meshes);
+        [DllImport(Lib)] public static extern IntPtr el_meshes_dropped(MeshesHandle meshes, out UIntPtr count);
+        [DllImport(Lib)] public static extern IntPtr el_meshes_polygons(MeshesHandle meshes);
+        [DllImport(Lib)] public static extern IntPtr el_meshes_triangle_offsets(MeshesHandle meshes, out UIntPtr count);
+        [DllImport(Lib)] public static extern IntPtr el_meshes_triangles(MeshesHandle meshes, out UIntPtr count);
+        [DllImport(Lib)] public static extern int el_convex_pieces(Point[] points, UIntPtr count, uint maxVertices, out PolygonsHandle pieces, ref NativeError error);
 
         [DllImport(Lib)] public static extern void el_bytes_destroy(IntPtr bytes);
         [DllImport(Lib)] public static extern IntPtr el_bytes_data(BytesHandle bytes, out UIntPtr size);
@@ -199,6 +293,8 @@ namespace Edgeland
             Require(Marshal.SizeOf(typeof(LandscapeConfig)) == 56, "el_landscape_config");
             Require(Marshal.SizeOf(typeof(LandscapeStats)) == 48, "el_stats");
             Require(Marshal.SizeOf(typeof(AreaDelta)) == 32 && Marshal.SizeOf(typeof(Int128Value)) == 24, "el_area_delta");
+            Require(Marshal.SizeOf(typeof(ChainInfo)) == 80 && Marshal.SizeOf(typeof(IslandInfo)) == 64, "el_chain_info");
+            Require(Marshal.SizeOf(typeof(DetachedInfo)) == 96 && Marshal.SizeOf(typeof(NativePhysicsMaterials)) == 520, "el_detached_info");
         }
         static void Require(bool ok, string what)
         {

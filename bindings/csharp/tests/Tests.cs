@@ -103,6 +103,43 @@ static class Tests
         }
     }
 
+    static void GameLayer()
+    {
+        using (var world = new Landscape(new Box(0, 0, 1024, 512)))
+        using (var surface = new SurfaceTracker(world))
+        using (var islands = new IslandTracker(world))
+        using (var ground = new Shape(Square(0, 0, 100)))
+        using (var floating = new Shape(Square(400, 300, 40)))
+        {
+            ChangeSet changes = world.Fill(ground, 1);
+            ChainUpdate update = surface.Update(world, changes);
+            Check(update.Added.Length >= 1 && update.Added[0].Materials[0] == 1 && update.Added[0].Info.Closed == 0, "ground chains");
+            using (Islands none = islands.Update(world, changes)) Check(none.All.Length == 0, "the ground is held");
+            changes = world.Fill(floating, 2);
+            Chain[] added = surface.Update(world, changes).Added;
+            Check(added.Length == 1 && added[0].Info.Closed == 1, "a closed chain around the floating square");
+            ulong[] dropped;
+            Check(Game.MeshUpdate(changes, out dropped)[0].Triangles.Length == 6, "a square's mesh");
+            using (Islands found = islands.Update(world, changes))
+            {
+                Check(found.All.Length == 1 && found.All[0].TwiceArea == 3200 && found.All[0].Pieces[0].Material == 2, "the island");
+                using (Detached d = Game.Detach(world, found, 0))
+                {
+                    Check(d.TwiceArea == 3200 && d.CentroidXNum == 420 * d.CentroidDen && d.Regions.Length == 1, "detached");
+                    Check(world.MaterialAt(new Point(420, 320)) == 0, "the island is gone");
+                    Check(surface.Update(world, d.Changes).Removed.SequenceEqual(new[] { added[0].Info.Id }), "its chain removed");
+                    using (Islands again = islands.Update(world, d.Changes)) Check(again.All.Length == 0, "no island left");
+                }
+                Throws<StaleIslandException>(() => Game.Detach(world, found, 0), "a stale island");
+                Throws<IndexRangeException>(() => Game.Detach(world, found, 1), "an island index out of range");
+            }
+            Check(Game.AllMeshes(world).Length == world.PolygonsIn(world.World).Length, "all meshes");
+            var ell = new[] { new Point(0, 0), new Point(20, 0), new Point(20, 10), new Point(10, 10), new Point(10, 20), new Point(0, 20) };
+            Check(Game.ConvexPieces(ell).Length == 2, "convex pieces");
+            Throws<InvalidArgumentException>(() => Game.ConvexPieces(ell, 2), "max vertices 2");
+        }
+    }
+
     static void DisposedObjectsRefuseUse()
     {
         using (var world = new Landscape(new Box(0, 0, 100, 100), 1))
@@ -234,6 +271,7 @@ static class Tests
         ErrorsKeepTheWorld();
         Queries();
         SnapshotsAndSaves();
+        GameLayer();
         DisposedObjectsRefuseUse();
         Console.WriteLine("csharp: " + checks + " checks passed");
         return 0;

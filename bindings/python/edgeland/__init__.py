@@ -14,6 +14,8 @@ from .errors import (ArgumentOutOfRange, BufferTooSmall, CoordinateOutOfRange, E
                      InvalidInput, InvalidMaterial, InvalidOverlay, LimitExceeded, LoadError,
                      NonPositiveArea, NullArgument, OutOfMemory, StaleIsland, TooManyVertices,
                      VersionMismatch, BY_STATUS)
+from .game import (IslandTracker, SurfaceTracker, all_meshes, convex_pieces, detach,
+                   mesh_update)
 from .landscape import Landscape
 from .results import ChangeSet, Crossing, Polygon
 from .shapes import Shape

@@ -42,8 +42,8 @@ def made(function, *args):
     return out.value
 
 
-class Temporary(Handle):
-    """A result handle read at once into Python values and freed."""
+class Owned(Handle):
+    """A result handle, freed with its Python owner (or at the end of a with block)."""
 
     def __init__(self, pointer, destroy):
         self._destroy = destroy

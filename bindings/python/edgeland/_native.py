@@ -47,6 +47,26 @@ class Error(Structure):
                 ("message", c_char * 256)]
 
 
+class ChainInfo(Structure):
+    _fields_ = [("cell", Box), ("ghost_prev", Point), ("ghost_next", Point), ("id", c_uint64),
+                ("closed", c_uint32), ("reserved", c_uint32)]
+
+
+class IslandInfo(Structure):
+    _fields_ = [("bounds", Box), ("twice_area", Int128), ("first_piece", c_uint32),
+                ("piece_count", c_uint32)]
+
+
+class DetachedInfo(Structure):
+    _fields_ = [("twice_area", Int128), ("centroid_x_num", Int128), ("centroid_y_num", Int128),
+                ("centroid_den", Int128)]
+
+
+class PhysicsMaterials(Structure):
+    _fields_ = [("struct_size", c_uint32), ("flags", c_uint32), ("solid", c_uint8 * 256),
+                ("anchored", c_uint8 * 256)]
+
+
 class LandscapeConfig(Structure):
     _fields_ = [("struct_size", c_uint32), ("tree", c_uint32), ("edge_cap", c_uint32),
                 ("merge_below", c_uint32), ("min_cell_size", c_int64), ("grid_depth", c_int32),
@@ -65,6 +85,8 @@ assert ctypes.sizeof(Crossing) == 168 and Crossing.polygon.offset == 152
 assert ctypes.sizeof(Error) == 328 and Error.message.offset == 72
 assert ctypes.sizeof(LandscapeConfig) == 56 and ctypes.sizeof(Stats) == 48
 assert ctypes.sizeof(AreaDelta) == 32 and ctypes.sizeof(Int128) == 24
+assert ctypes.sizeof(ChainInfo) == 80 and ctypes.sizeof(IslandInfo) == 64
+assert ctypes.sizeof(DetachedInfo) == 96 and ctypes.sizeof(PhysicsMaterials) == 520
 
 
 def _load():
@@ -146,6 +168,40 @@ _PROTOTYPES = {
     "el_crossings_destroy": (None, [_handle]),
     "el_crossings_data": (POINTER(Crossing), [_handle, _count]),
     "el_bytes_destroy": (None, [_handle]),
+    "el_physics_materials_init": (None, [POINTER(PhysicsMaterials)]),
+    "el_surface_tracker_create": (_status, [_handle, POINTER(PhysicsMaterials), _out, _err]),
+    "el_surface_tracker_destroy": (None, [_handle]),
+    "el_surface_tracker_update": (_status, [_handle, _handle, _handle, _out, _err]),
+    "el_surface_tracker_resync": (_status, [_handle, _handle, _out, _err]),
+    "el_surface_tracker_chains": (_status, [_handle, _out, _err]),
+    "el_chains_destroy": (None, [_handle]),
+    "el_chains_removed": (POINTER(c_uint64), [_handle, _count]),
+    "el_chains_info": (POINTER(ChainInfo), [_handle, _count]),
+    "el_chains_offsets": (POINTER(c_uint32), [_handle, _count]),
+    "el_chains_points": (POINTER(Point), [_handle, _count]),
+    "el_chains_materials": (POINTER(c_uint8), [_handle, _count]),
+    "el_island_tracker_create": (_status, [_handle, POINTER(PhysicsMaterials), _out, _err]),
+    "el_island_tracker_destroy": (None, [_handle]),
+    "el_island_tracker_update": (_status, [_handle, _handle, _handle, _out, _err]),
+    "el_island_tracker_resync": (_status, [_handle, _handle, _out, _err]),
+    "el_island_tracker_islands": (_status, [_handle, _handle, _out, _err]),
+    "el_islands_destroy": (None, [_handle]),
+    "el_islands_count": (c_size_t, [_handle]),
+    "el_islands_info": (POINTER(IslandInfo), [_handle, _count]),
+    "el_islands_pieces": (_handle, [_handle]),
+    "el_detach": (_status, [_handle, _handle, c_size_t, _out, _err]),
+    "el_detached_destroy": (None, [_handle]),
+    "el_detached_summary": (_status, [_handle, POINTER(DetachedInfo), _err]),
+    "el_detached_changes": (_handle, [_handle]),
+    "el_detached_regions": (_handle, [_handle]),
+    "el_mesh_update": (_status, [_handle, _out, _err]),
+    "el_all_meshes": (_status, [_handle, _out, _err]),
+    "el_meshes_destroy": (None, [_handle]),
+    "el_meshes_dropped": (POINTER(c_uint64), [_handle, _count]),
+    "el_meshes_polygons": (_handle, [_handle]),
+    "el_meshes_triangle_offsets": (POINTER(c_uint32), [_handle, _count]),
+    "el_meshes_triangles": (POINTER(c_uint32), [_handle, _count]),
+    "el_convex_pieces": (_status, [POINTER(Point), c_size_t, c_uint32, _out, _err]),
     "el_bytes_data": (POINTER(c_uint8), [_handle, _count]),
 }
 

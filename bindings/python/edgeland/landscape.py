@@ -2,7 +2,7 @@
 import ctypes
 
 from . import _native, results
-from ._handles import Handle, Temporary, made
+from ._handles import Handle, Owned, made
 from .errors import call
 from .shapes import Shape, _box, _point, as_shape
 
@@ -55,7 +55,7 @@ class Landscape(Handle):
 
     def save(self):
         """The versioned, checksummed binary save, as bytes."""
-        with Temporary(made(_lib.el_landscape_save, self), "el_bytes_destroy") as h:
+        with Owned(made(_lib.el_landscape_save, self), "el_bytes_destroy") as h:
             return results.read_bytes(h)
 
     @classmethod
@@ -69,8 +69,8 @@ class Landscape(Handle):
     # --- edits ----------------------------------------------------------------------------
     def _edit(self, function, shape, *args):
         shape = as_shape(shape)
-        with Temporary(made(function, self, shape, *args), "el_changes_destroy") as h:
-            return results.change_set(h)
+        return results.change_set(Owned(made(function, self, shape, *args),
+                                            "el_changes_destroy"))
 
     def carve(self, shape):
         """Everything under the shape becomes empty space (material 0)."""
@@ -103,7 +103,7 @@ class Landscape(Handle):
 
     def crossings(self, a, b):
         """Every material change along the segment a -> b, in order, exact."""
-        with Temporary(made(_lib.el_landscape_crossings, self, ctypes.byref(_point(a)),
+        with Owned(made(_lib.el_landscape_crossings, self, ctypes.byref(_point(a)),
                             ctypes.byref(_point(b))), "el_crossings_destroy") as h:
             count = ctypes.c_size_t()
             data = _lib.el_crossings_data(h, ctypes.byref(count))
@@ -130,7 +130,7 @@ class Landscape(Handle):
         return list(materials[:count.value])
 
     def _polygons_handle(self, box):
-        return Temporary(made(_lib.el_landscape_polygons_in, self,
+        return Owned(made(_lib.el_landscape_polygons_in, self,
                               ctypes.byref(_box(box or self.world))), "el_polygons_destroy")
 
     def polygons_in(self, box=None):
@@ -172,7 +172,7 @@ class Landscape(Handle):
 
     def check(self):
         """Every invariant over the whole world: the problems found (empty: valid)."""
-        with Temporary(made(_lib.el_landscape_check, self), "el_bytes_destroy") as h:
+        with Owned(made(_lib.el_landscape_check, self), "el_bytes_destroy") as h:
             return results.read_bytes(h).decode().splitlines()
 
     def set_checked(self, on=True):
@@ -188,5 +188,5 @@ class Landscape(Handle):
     @property
     def log(self):
         """The edit log recorded since start_log() (README.md, "Landscape edit logs")."""
-        with Temporary(made(_lib.el_landscape_log, self), "el_bytes_destroy") as h:
+        with Owned(made(_lib.el_landscape_log, self), "el_bytes_destroy") as h:
             return results.read_bytes(h).decode()

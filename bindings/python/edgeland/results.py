@@ -34,13 +34,18 @@ class Crossing(NamedTuple):
     after: int
 
 
-class ChangeSet(NamedTuple):
+class ChangeSet:
     """What an edit changed: ids removed (ascending), polygons added (ascending id), the cells
-    rebuilt, twice the change of area per material (exact; the values sum to 0)."""
-    removed: list
-    added: list
-    cells: list
-    area_delta: dict
+    rebuilt, twice the change of area per material (exact; the values sum to 0). It keeps the C
+    change set, which the game layer's trackers and mesh_update take."""
+
+    def __init__(self, handle, removed, added, cells, area_delta):
+        self._handle = handle
+        self.removed, self.added, self.cells, self.area_delta = removed, added, cells, area_delta
+
+    def __repr__(self):
+        return "ChangeSet(removed=%d ids, added=%d polygons, cells=%d)" % (
+            len(self.removed), len(self.added), len(self.cells))
 
 
 def crossing(c):
@@ -91,14 +96,16 @@ def polygon_arrays(handle):
 
 
 def change_set(handle):
-    """The Python ChangeSet of an el_changes handle (read, not freed)."""
+    """The Python ChangeSet of an el_changes handle (a Handle it keeps, or a borrowed pointer
+    whose owner it must outlive)."""
     count = ctypes.c_size_t()
     removed = _native.array(_lib.el_changes_removed(handle, ctypes.byref(count)), count.value)
     added = polygons(_lib.el_changes_added(handle))
     cells = [box_tuple(b) for b in
              _native.array(_lib.el_changes_cells(handle, ctypes.byref(count)), count.value)]
     deltas = _native.array(_lib.el_changes_area_delta(handle, ctypes.byref(count)), count.value)
-    return ChangeSet(removed, added, cells, {d.material: d.twice_area.value() for d in deltas})
+    return ChangeSet(handle, removed, added, cells,
+                     {d.material: d.twice_area.value() for d in deltas})
 
 
 def read_bytes(handle):

@@ -2,7 +2,7 @@
 import ctypes
 
 from . import _native, results
-from ._handles import Handle, Temporary, made
+from ._handles import Handle, Owned, made
 from .errors import call
 
 _lib = _native.lib
@@ -67,7 +67,7 @@ class Shape(Handle):
     @property
     def polygons(self):
         """The polygons, each a list of (x, y)."""
-        with Temporary(made(_lib.el_shape_polygons, self), "el_polygons_destroy") as h:
+        with Owned(made(_lib.el_shape_polygons, self), "el_polygons_destroy") as h:
             return [p.points for p in results.polygons(h)]
 
 

@@ -370,6 +370,154 @@ EL_API void el_bytes_destroy(el_bytes* bytes);
 EL_API const uint8_t* el_bytes_data(const el_bytes* bytes, size_t* size);
 EL_API el_status el_bytes_copy(const el_bytes* bytes, uint8_t* buf, size_t cap, size_t* needed);
 
+/* ---- the game layer (game/README.md) ---------------------------------------------------------
+ * Bound as it stands: the surface tracker, the island tracker, detach, meshes and convex pieces,
+ * each fed every edit's change set in order (also those detach returns). */
+
+typedef struct el_surface_tracker el_surface_tracker; /* C++ SurfaceTracker */
+typedef struct el_island_tracker el_island_tracker;   /* C++ IslandTracker */
+typedef struct el_chains el_chains;                   /* surface chains and chain ids removed */
+typedef struct el_islands el_islands;                 /* debris islands */
+typedef struct el_detached el_detached;               /* an island taken out (C++ DetachedIsland) */
+typedef struct el_meshes el_meshes;                   /* triangle meshes and mesh ids dropped */
+
+enum { EL_SURFACE_BORDER_WALL = 1 }; /* el_physics_materials.flags */
+
+/* C++ PhysicsMaterials and SurfaceOptions: solid[m] != 0 when material m collides (0 never
+ * does), anchored[m] != 0 when it never falls; EL_SURFACE_BORDER_WALL makes the world border a
+ * wall around the non-solid parts. Defaults (el_physics_materials_init): every material but 0
+ * solid, none anchored, no wall. */
+typedef struct el_physics_materials {
+  uint32_t struct_size;
+  uint32_t flags;
+  uint8_t solid[256];
+  uint8_t anchored[256];
+} el_physics_materials;
+EL_API void el_physics_materials_init(el_physics_materials* materials);
+
+/* One surface chain (C++ SurfaceChain) beside its points: the id, whether it is closed, its
+ * cell, its ghost vertices (the surface points before its first and after its last point). */
+typedef struct el_chain_info {
+  el_box cell;
+  el_point ghost_prev, ghost_next;
+  uint64_t id;
+  uint32_t closed;
+  uint32_t reserved;
+} el_chain_info;
+
+/* The chains kept in step with a landscape: create with every chain of the world (ids from 1),
+ * then update with each edit's change set, in order (resync after any other change: a restored
+ * snapshot, a load). An update's el_chains holds the ids removed and the chains added. */
+EL_API el_status el_surface_tracker_create(const el_landscape* landscape,
+                                           const el_physics_materials* materials,
+                                           el_surface_tracker** out, el_error* error);
+EL_API void el_surface_tracker_destroy(el_surface_tracker* tracker);
+EL_API el_status el_surface_tracker_update(el_surface_tracker* tracker,
+                                           const el_landscape* landscape,
+                                           const el_changes* changes, el_chains** update,
+                                           el_error* error);
+EL_API el_status el_surface_tracker_resync(el_surface_tracker* tracker,
+                                           const el_landscape* landscape, el_chains** update,
+                                           el_error* error);
+/* Every chain the tracker holds now, by ascending id (none removed). */
+EL_API el_status el_surface_tracker_chains(const el_surface_tracker* tracker, el_chains** all,
+                                           el_error* error);
+
+/* Chains as arrays: chain i has info[i] and the points offsets[i] .. offsets[i + 1] - 1, with
+ * solid on their left; materials[k] is the solid material left of the segment from point k to
+ * the next (a closed chain's last point to its first; 0 after an open chain's last point and
+ * along a border wall). */
+EL_API void el_chains_destroy(el_chains* chains);
+EL_API const uint64_t* el_chains_removed(const el_chains* chains, size_t* count);
+EL_API el_status el_chains_copy_removed(const el_chains* chains, uint64_t* buf, size_t cap,
+                                        size_t* needed);
+EL_API const el_chain_info* el_chains_info(const el_chains* chains, size_t* count);
+EL_API el_status el_chains_copy_info(const el_chains* chains, el_chain_info* buf, size_t cap,
+                                     size_t* needed);
+EL_API const uint32_t* el_chains_offsets(const el_chains* chains, size_t* count);
+EL_API el_status el_chains_copy_offsets(const el_chains* chains, uint32_t* buf, size_t cap,
+                                        size_t* needed);
+EL_API const el_point* el_chains_points(const el_chains* chains, size_t* count);
+EL_API el_status el_chains_copy_points(const el_chains* chains, el_point* buf, size_t cap,
+                                       size_t* needed);
+EL_API const uint8_t* el_chains_materials(const el_chains* chains, size_t* count);
+EL_API el_status el_chains_copy_materials(const el_chains* chains, uint8_t* buf, size_t cap,
+                                          size_t* needed);
+
+/* One debris island (C++ Island): its bounds, exact twice area, and its pieces
+ * first_piece .. first_piece + piece_count - 1 of the islands' pieces (landscape polygons). */
+typedef struct el_island_info {
+  el_box bounds;
+  el_int128 twice_area;
+  uint32_t first_piece;
+  uint32_t piece_count;
+} el_island_info;
+
+/* Islands kept in step: an update returns the islands that exist now and did not before. */
+EL_API el_status el_island_tracker_create(const el_landscape* landscape,
+                                          const el_physics_materials* materials,
+                                          el_island_tracker** out, el_error* error);
+EL_API void el_island_tracker_destroy(el_island_tracker* tracker);
+EL_API el_status el_island_tracker_update(el_island_tracker* tracker, const el_landscape* landscape,
+                                          const el_changes* changes, el_islands** found,
+                                          el_error* error);
+EL_API el_status el_island_tracker_resync(el_island_tracker* tracker, const el_landscape* landscape,
+                                          el_islands** found, el_error* error);
+/* Every island of the landscape last seen (`landscape` must be it). */
+EL_API el_status el_island_tracker_islands(const el_island_tracker* tracker,
+                                           const el_landscape* landscape, el_islands** all,
+                                           el_error* error);
+
+EL_API void el_islands_destroy(el_islands* islands);
+EL_API size_t el_islands_count(const el_islands* islands);
+EL_API const el_island_info* el_islands_info(const el_islands* islands, size_t* count);
+EL_API el_status el_islands_copy_info(const el_islands* islands, el_island_info* buf, size_t cap,
+                                      size_t* needed);
+/* All islands' pieces (borrowed, as el_changes_added). */
+EL_API const el_polygons* el_islands_pieces(const el_islands* islands);
+
+/* An island taken out: twice its area and its centroid (x_num / den, y_num / den), exact. */
+typedef struct el_detached_info {
+  el_int128 twice_area;
+  el_int128 centroid_x_num, centroid_y_num, centroid_den;
+} el_detached_info;
+
+/* Removes island `index` of `islands` from the landscape as one edit (EL_STALE_ISLAND when the
+ * landscape changed under it: the tracker reports it again after the next update). Pass the
+ * returned change set (el_detached_changes) to every tracker, as any edit's. */
+EL_API el_status el_detach(el_landscape* landscape, const el_islands* islands, size_t index,
+                           el_detached** out, el_error* error);
+EL_API void el_detached_destroy(el_detached* detached);
+EL_API el_status el_detached_summary(const el_detached* detached, el_detached_info* out,
+                                     el_error* error);
+/* The edit's change set and the island's region, each material's maximal polygons (ids 0);
+ * both borrowed. */
+EL_API const el_changes* el_detached_changes(const el_detached* detached);
+EL_API const el_polygons* el_detached_regions(const el_detached* detached);
+
+/* Triangle meshes per polygon id: an edit's (from its change set alone: the meshes to drop and
+ * those to build) or the whole world's. Mesh i is polygon i of el_meshes_polygons (id,
+ * material, its own vertices) and the triangles triangle_offsets[i] .. triangle_offsets[i + 1]
+ * - 1, three vertex indices each, counter-clockwise. */
+EL_API el_status el_mesh_update(const el_changes* changes, el_meshes** out, el_error* error);
+EL_API el_status el_all_meshes(const el_landscape* landscape, el_meshes** out, el_error* error);
+EL_API void el_meshes_destroy(el_meshes* meshes);
+EL_API const uint64_t* el_meshes_dropped(const el_meshes* meshes, size_t* count);
+EL_API el_status el_meshes_copy_dropped(const el_meshes* meshes, uint64_t* buf, size_t cap,
+                                        size_t* needed);
+EL_API const el_polygons* el_meshes_polygons(const el_meshes* meshes);
+EL_API const uint32_t* el_meshes_triangle_offsets(const el_meshes* meshes, size_t* count);
+EL_API el_status el_meshes_copy_triangle_offsets(const el_meshes* meshes, uint32_t* buf,
+                                                 size_t cap, size_t* needed);
+EL_API const uint32_t* el_meshes_triangles(const el_meshes* meshes, size_t* count);
+EL_API el_status el_meshes_copy_triangles(const el_meshes* meshes, uint32_t* buf, size_t cap,
+                                          size_t* needed);
+
+/* A valid polygon (the kernel's rules) as convex pieces of at most max_vertices (>= 3; Box2D's
+ * is 8) vertices each, strictly convex and counter-clockwise, tiling it exactly. */
+EL_API el_status el_convex_pieces(const el_point* points, size_t count, uint32_t max_vertices,
+                                  el_polygons** out, el_error* error);
+
 /* ---- layout ------------------------------------------------------------------------------------
  * The same on every target: 8-byte fields first, explicit padding, no pointers or size_t in
  * structs (i686's 4-byte alignment of int64_t would move a field after a 4-byte one). C99 has
@@ -390,6 +538,13 @@ EL_LAYOUT_ASSERT(config, sizeof(el_landscape_config) == 56 &&
                              offsetof(el_landscape_config, min_cell_size) == 16 &&
                              offsetof(el_landscape_config, max_vertices) == 32);
 EL_LAYOUT_ASSERT(stats, sizeof(el_stats) == 48 && offsetof(el_stats, polygons) == 8);
+EL_LAYOUT_ASSERT(physics_materials, sizeof(el_physics_materials) == 520 &&
+                                        offsetof(el_physics_materials, anchored) == 264);
+EL_LAYOUT_ASSERT(chain_info, sizeof(el_chain_info) == 80 && offsetof(el_chain_info, id) == 64 &&
+                                 offsetof(el_chain_info, closed) == 72);
+EL_LAYOUT_ASSERT(island_info, sizeof(el_island_info) == 64 &&
+                                  offsetof(el_island_info, first_piece) == 56);
+EL_LAYOUT_ASSERT(detached_info, sizeof(el_detached_info) == 96);
 
 #ifdef __cplusplus
 }

@@ -33,6 +33,8 @@ struct WordPair {
 constexpr std::uint64_t low_half(std::uint64_t x) noexcept { return x & 0xffffffffu; }
 constexpr std::uint64_t high_half(std::uint64_t x) noexcept { return x >> 32; }
 constexpr std::uint64_t half_up(std::uint64_t x) noexcept { return x << 32; }
+// The product of two halves: at most (2^32 - 1)^2, so it never wraps a word.
+constexpr std::uint64_t half_product(std::uint64_t a, std::uint64_t b) noexcept { return a * b; }
 // Word arithmetic modulo 2^64.
 constexpr std::uint64_t wrapping_add(std::uint64_t a, std::uint64_t b) noexcept { return a + b; }
 constexpr std::uint64_t wrapping_mul(std::uint64_t a, std::uint64_t b) noexcept { return a * b; }
@@ -43,7 +45,8 @@ constexpr std::uint64_t wrapping_mul(std::uint64_t a, std::uint64_t b) noexcept 
 template <class W>
 constexpr WordPair<W> multiply_words(W a, W b) noexcept {
   const W a0 = low_half(a), a1 = high_half(a), b0 = low_half(b), b1 = high_half(b);
-  const W p00 = a0 * b0, p01 = a0 * b1, p10 = a1 * b0, p11 = a1 * b1;
+  const W p00 = half_product(a0, b0), p01 = half_product(a0, b1), p10 = half_product(a1, b0),
+          p11 = half_product(a1, b1);
   const W mid = high_half(p00) + low_half(p01) + low_half(p10);
   return {half_up(low_half(mid)) + low_half(p00),
           p11 + high_half(p01) + high_half(p10) + high_half(mid)};
