@@ -2,8 +2,9 @@
 // multiply_words (64 x 64 -> 128 bits on 32-bit halves) and multiply_wrapping (128 x 128 bits
 // modulo 2^128), instantiated with a symbolic word. Every word operation the templates perform
 // is an obligation: + on words and half_product must not wrap (the code relies on that), half_up
-// must get a value below 2^32; wrapping_add and wrapping_mul are defined modulo 2^64, as uint64_t's.
-// The native __int128 needs none of this; MSVC and the portable build run exactly this code.
+// must get a value below 2^32; wrapping_add and wrapping_mul are defined modulo 2^64, as
+// uint64_t's. The native __int128 needs none of this; MSVC and the portable build run exactly this
+// code.
 #include <string>
 #include <vector>
 
@@ -91,8 +92,8 @@ void multiply_wrapping(Prover& p) {
   const z3::expr product = (a.hi.v * w + a.lo.v) * (b.hi.v * w + b.lo.v);
   const std::vector<z3::expr> cross = {a.lo.v * b.lo.v, a.lo.v * b.hi.v, a.hi.v * b.lo.v,
                                        a.hi.v * b.hi.v};
-  p.establish("(a b) = words' products", product == cross[3] * w * w + (cross[1] + cross[2]) * w +
-                                                        cross[0],
+  p.establish("(a b) = words' products",
+              product == cross[3] * w * w + (cross[1] + cross[2]) * w + cross[0],
               {a.lo.v, a.hi.v, b.lo.v, b.hi.v});
   products.insert(products.end(), cross.begin(), cross.end());
   products.push_back(product);

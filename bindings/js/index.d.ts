@@ -48,6 +48,11 @@ export class InvalidConfig extends EdgelandError {}
 export class LimitExceeded extends EdgelandError {}
 /** A save that cannot be read (`index`: the byte offset). */
 export class LoadError extends EdgelandError {}
+/** The island changed since it was found (`index`: the first polygon id missing). */
+export class StaleIsland extends EdgelandError {}
+export class IndexOutOfRange extends EdgelandError {}
+/** A number below its minimum (`minimum`). */
+export class InvalidArgument extends EdgelandError {}
 /** A shape builder's number outside its range. */
 export class ArgumentOutOfRange extends EdgelandError {}
 
@@ -72,16 +77,17 @@ export class Polygons implements Iterable<PolygonRecord> {
   [Symbol.iterator](): Iterator<PolygonRecord>;
 }
 
-/** What an edit changed. */
-export interface ChangeSet {
+/** What an edit changed. It keeps the C change set for the game layer: dispose() frees it. */
+export class ChangeSet implements Disposable {
   /** Ids that no longer exist, ascending. */
-  removed: BigUint64Array;
+  readonly removed: BigUint64Array;
   /** The polygons added, ascending id. */
-  added: Polygons;
+  readonly added: Polygons;
   /** The cells rebuilt, 4 numbers each (x0, y0, x1, y1). */
-  cells: Int32Array;
+  readonly cells: Int32Array;
   /** Twice the change of area per material, exact; the values sum to 0. */
-  areaDelta: Map<number, bigint>;
+  readonly areaDelta: Map<number, bigint>;
+  dispose(): void;
 }
 
 /** An exact fraction. */
@@ -178,3 +184,81 @@ export class Landscape implements Disposable {
   readonly log: string;
   dispose(): void;
 }
+
+// --- the game layer ---------------------------------------------------------------------------
+
+export interface PhysicsMaterials {
+  /** The materials that collide (default: every one but 0). */
+  solid?: Iterable<number>;
+  /** The materials that never fall. */
+  anchored?: Iterable<number>;
+  /** The world border as a wall around the non-solid parts. */
+  borderWall?: boolean;
+}
+
+export interface ChainRecord {
+  id: bigint;
+  closed: boolean;
+  cell: BoxXY;
+  ghostPrev: XY;
+  ghostNext: XY;
+}
+
+/** Chains as flat arrays: chain i is chains[i] and the points xy[2 offsets[i] .. 2 offsets[i + 1]);
+ * materials[k] is the material left of the segment after point k. */
+export interface Chains {
+  removed: BigUint64Array;
+  chains: ChainRecord[];
+  offsets: Uint32Array;
+  xy: Int32Array;
+  materials: Uint8Array;
+}
+
+export class SurfaceTracker implements Disposable {
+  constructor(world: Landscape, materials?: PhysicsMaterials);
+  update(world: Landscape, changes: ChangeSet): Chains;
+  resync(world: Landscape): Chains;
+  readonly chains: Chains;
+  dispose(): void;
+}
+
+export interface IslandRecord {
+  bounds: BoxXY;
+  twiceArea: bigint;
+  pieces: PolygonRecord[];
+}
+
+export class Islands implements Disposable {
+  readonly islands: IslandRecord[];
+  readonly length: number;
+  dispose(): void;
+}
+
+export class IslandTracker implements Disposable {
+  constructor(world: Landscape, materials?: PhysicsMaterials);
+  update(world: Landscape, changes: ChangeSet): Islands;
+  resync(world: Landscape): Islands;
+  islands(world: Landscape): Islands;
+  dispose(): void;
+}
+
+export interface Detached extends Disposable {
+  changes: ChangeSet;
+  regions: Polygons;
+  twiceArea: bigint;
+  centroid: {x: bigint; y: bigint; den: bigint};
+}
+export function detach(world: Landscape, islands: Islands, index: number): Detached;
+
+export interface Mesh {
+  id: bigint;
+  material: number;
+  /** The polygon's own vertices, 2 numbers each. */
+  vertices: Int32Array;
+  /** Counter-clockwise index triples into the vertices. */
+  triangles: Uint32Array;
+}
+export function meshUpdate(changes: ChangeSet): {dropped: BigUint64Array; meshes: Mesh[]};
+export function allMeshes(world: Landscape): Mesh[];
+export function convexPieces(polygon: XY[], maxVertices?: number): XY[][];
+

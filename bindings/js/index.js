@@ -87,9 +87,13 @@ export class InvalidMaterial extends EdgelandError {}
 export class InvalidConfig extends EdgelandError {}
 export class LimitExceeded extends EdgelandError {}
 export class LoadError extends EdgelandError {}
+export class StaleIsland extends EdgelandError {}
+export class IndexOutOfRange extends EdgelandError {}
+export class InvalidArgument extends EdgelandError {}
 export class ArgumentOutOfRange extends EdgelandError {}
 const CLASSES = {10: InvalidInput, 11: CoordinateOutOfRange, 12: InvalidBox, 15: ArgumentOutOfRange,
-  20: InvalidConfig, 21: InvalidMaterial, 22: LimitExceeded, 23: LoadError};
+  20: InvalidConfig, 21: InvalidMaterial, 22: LimitExceeded, 23: LoadError, 14: InvalidArgument,
+  30: StaleIsland, 40: IndexOutOfRange};
 
 const ERROR_SIZE = 328;
 function readError(p) {
@@ -187,19 +191,26 @@ function readPolygons(allocate, h) {
     int32s(array(allocate, M._el_polygons_points, h, BigInt64Array, 2)));
 }
 
-function readChangeSet(allocate, h) {
-  const deltas = new Map();
-  const count = allocate(4);
-  const p = M._el_changes_area_delta(h, count);
-  for (let i = 0; i < dv().getUint32(count, true); ++i) {
-    deltas.set(dv().getUint32(p + 32 * i + 24, true), readInt128(p + 32 * i));
+// What an edit changed: ids removed (ascending), polygons added (ascending id), the cells rebuilt
+// (4 numbers each), twice the change of area per material (exact; sums to 0). It keeps the C
+// change set, which the game layer's trackers and meshUpdate take: dispose() frees it at once.
+export class ChangeSet extends Handle {
+  constructor(pointer, destroy, owner = null) {
+    super(pointer, destroy);
+    this._owner = owner;  // a detached island's change set lives in its island's handle
+    scratch((allocate) => {
+      const deltas = new Map();
+      const count = allocate(4);
+      const p = M._el_changes_area_delta(pointer, count);
+      for (let i = 0; i < dv().getUint32(count, true); ++i) {
+        deltas.set(dv().getUint32(p + 32 * i + 24, true), readInt128(p + 32 * i));
+      }
+      this.removed = array(allocate, M._el_changes_removed, pointer, BigUint64Array);
+      this.added = readPolygons(allocate, M._el_changes_added(pointer));
+      this.cells = int32s(array(allocate, M._el_changes_cells, pointer, BigInt64Array, 4));
+      this.areaDelta = deltas;
+    });
   }
-  return {
-    removed: array(allocate, M._el_changes_removed, h, BigUint64Array),
-    added: readPolygons(allocate, M._el_changes_added(h)),
-    cells: int32s(array(allocate, M._el_changes_cells, h, BigInt64Array, 4)),
-    areaDelta: deltas,
-  };
 }
 
 // A material change along a segment: t and the point exact ({num, den} of BigInts), the
@@ -348,14 +359,8 @@ export class Landscape extends Handle {
   _edit(fn, shape, ...args) {
     const s = asShape(shape);
     try {
-      return scratch((a) => {
-        const h = made(a, fn, this.pointer, s.shape.pointer, ...args);
-        try {
-          return readChangeSet(a, h);
-        } finally {
-          M._el_changes_destroy(h);
-        }
-      });
+      return scratch((a) => new ChangeSet(made(a, fn, this.pointer, s.shape.pointer, ...args),
+        M._el_changes_destroy));
     } finally {
       if (s.own) s.shape.dispose();
     }
@@ -495,4 +500,184 @@ export class Landscape extends Handle {
 export function version() {
   const v = M._el_version();
   return [v >> 16, (v >> 8) & 0xff, v & 0xff];
+}
+
+// --- the game layer (game/README.md) ----------------------------------------------------------
+// Surface chains and debris islands kept in step from change sets, detach, meshes, convex pieces.
+// Pass every edit's change set to every tracker, in order (detach's too); resync after a
+// restored snapshot or a load.
+
+// el_physics_materials: options {solid: [materials that collide] (default: all but 0),
+// anchored: [materials that never fall], borderWall: the world border as a wall}.
+function physicsMaterials(allocate, {solid = null, anchored = [], borderWall = false} = {}) {
+  const m = allocate(520);
+  M._el_physics_materials_init(m);
+  const bytes = view(Uint8Array, m + 8, 512);
+  if (solid !== null) {
+    bytes.fill(0, 0, 256);
+    for (const material of solid) bytes[material] = 1;
+  }
+  for (const material of anchored) bytes[256 + material] = 1;
+  dv().setUint32(m + 4, borderWall ? 1 : 0, true);
+  return m;
+}
+
+// Chains as flat arrays: chain i is info (id, closed, cell, ghosts) and the points
+// xy[2 offsets[i] .. 2 offsets[i + 1]); materials[k]: the material left of the segment after
+// point k (0 after an open chain's last point and along a border wall).
+function readChains(allocate, h) {
+  const count = allocate(4);
+  const p = M._el_chains_info(h, count);
+  const n = dv().getUint32(count, true);
+  const d = dv();
+  const at = (q) => Number(d.getBigInt64(q, true));
+  const chains = Array.from({length: n}, (_, i) => {
+    const q = p + 80 * i;
+    return {
+      id: d.getBigUint64(q + 64, true), closed: d.getUint32(q + 72, true) !== 0,
+      cell: [[at(q), at(q + 8)], [at(q + 16), at(q + 24)]],
+      ghostPrev: [at(q + 32), at(q + 40)], ghostNext: [at(q + 48), at(q + 56)],
+    };
+  });
+  return {
+    removed: array(allocate, M._el_chains_removed, h, BigUint64Array),
+    chains,
+    offsets: array(allocate, M._el_chains_offsets, h, Uint32Array),
+    xy: int32s(array(allocate, M._el_chains_points, h, BigInt64Array, 2)),
+    materials: array(allocate, M._el_chains_materials, h, Uint8Array),
+  };
+}
+
+function chainsFrom(fn, ...args) {
+  return scratch((a) => {
+    const h = made(a, fn, ...args);
+    try {
+      return readChains(a, h);
+    } finally {
+      M._el_chains_destroy(h);
+    }
+  });
+}
+
+// The collision surface as per-cell chains with ghost vertices (C++ SurfaceTracker).
+export class SurfaceTracker extends Handle {
+  constructor(world, materials = {}) {
+    super(scratch((a) => made(a, M._el_surface_tracker_create, world.pointer,
+      physicsMaterials(a, materials))), M._el_surface_tracker_destroy);
+  }
+  // {removed, chains, offsets, xy, materials}: the chains the edit removed and added.
+  update(world, changes) {
+    return chainsFrom(M._el_surface_tracker_update, this.pointer, world.pointer, changes.pointer);
+  }
+  resync(world) {
+    return chainsFrom(M._el_surface_tracker_resync, this.pointer, world.pointer);
+  }
+  // Every chain the tracker holds, by ascending id (removed is empty).
+  get chains() {
+    return chainsFrom(M._el_surface_tracker_chains, this.pointer);
+  }
+}
+
+// Islands found by a tracker: islands[i] = {bounds, twiceArea, pieces: [polygon records]};
+// detach(world, islands, i) takes one. dispose() frees them.
+export class Islands extends Handle {
+  constructor(pointer) {
+    super(pointer, M._el_islands_destroy);
+    scratch((a) => {
+      const count = a(4);
+      const p = M._el_islands_info(pointer, count);
+      const pieces = [...readPolygons(a, M._el_islands_pieces(pointer))];
+      const d = dv();
+      const at = (q) => Number(d.getBigInt64(q, true));
+      this.islands = Array.from({length: dv().getUint32(count, true)}, (_, i) => {
+        const q = p + 64 * i;
+        const first = d.getUint32(q + 56, true), n = d.getUint32(q + 60, true);
+        return {bounds: [[at(q), at(q + 8)], [at(q + 16), at(q + 24)]],
+          twiceArea: readInt128(q + 32), pieces: pieces.slice(first, first + n)};
+      });
+    });
+  }
+  get length() { return this.islands.length; }
+}
+
+// Debris islands found incrementally (C++ IslandTracker).
+export class IslandTracker extends Handle {
+  constructor(world, materials = {}) {
+    super(scratch((a) => made(a, M._el_island_tracker_create, world.pointer,
+      physicsMaterials(a, materials))), M._el_island_tracker_destroy);
+  }
+  // The islands that exist now and did not before.
+  update(world, changes) {
+    return scratch((a) => new Islands(made(a, M._el_island_tracker_update, this.pointer,
+      world.pointer, changes.pointer)));
+  }
+  resync(world) {
+    return scratch((a) => new Islands(made(a, M._el_island_tracker_resync, this.pointer,
+      world.pointer)));
+  }
+  islands(world) {
+    return scratch((a) => new Islands(made(a, M._el_island_tracker_islands, this.pointer,
+      world.pointer)));
+  }
+}
+
+// Removes islands.islands[index] from the world as one edit (StaleIsland when the world
+// changed under it): {changes, regions (Polygons, ids 0), twiceArea, centroid: {x, y, den}}.
+// dispose() frees it (and its change set).
+export function detach(world, islands, index) {
+  return scratch((a) => {
+    const h = made(a, M._el_detach, world.pointer, islands.pointer, index);
+    const info = a(96);
+    call(a, M._el_detached_summary, h, info);
+    const owner = new Handle(h, M._el_detached_destroy);
+    return {
+      changes: new ChangeSet(M._el_detached_changes(h), () => {}, owner),
+      regions: readPolygons(a, M._el_detached_regions(h)),
+      twiceArea: readInt128(info),
+      centroid: {x: readInt128(info + 24), y: readInt128(info + 48), den: readInt128(info + 72)},
+      dispose: () => owner.dispose(),
+    };
+  });
+}
+
+// Meshes: {dropped, meshes: [{id, material, vertices: Int32Array xy, triangles: Uint32Array}]}.
+function readMeshes(allocate, h) {
+  const polygons = readPolygons(allocate, M._el_meshes_polygons(h));
+  const offsets = array(allocate, M._el_meshes_triangle_offsets, h, Uint32Array);
+  const triangles = array(allocate, M._el_meshes_triangles, h, Uint32Array);
+  const meshes = Array.from({length: polygons.count}, (_, i) => ({
+    id: polygons.ids[i], material: polygons.materials[i],
+    vertices: polygons.xy.slice(2 * polygons.offsets[i], 2 * polygons.offsets[i + 1]),
+    triangles: triangles.slice(3 * offsets[i], 3 * offsets[i + 1]),
+  }));
+  return {dropped: array(allocate, M._el_meshes_dropped, h, BigUint64Array), meshes};
+}
+
+function meshesFrom(fn, ...args) {
+  return scratch((a) => {
+    const h = made(a, fn, ...args);
+    try {
+      return readMeshes(a, h);
+    } finally {
+      M._el_meshes_destroy(h);
+    }
+  });
+}
+
+// The meshes an edit drops and builds, from its change set alone.
+export function meshUpdate(changes) { return meshesFrom(M._el_mesh_update, changes.pointer); }
+export function allMeshes(world) { return meshesFrom(M._el_all_meshes, world.pointer).meshes; }
+
+// A valid polygon ([[x, y], ...]) as strictly convex pieces of at most maxVertices vertices.
+export function convexPieces(polygon, maxVertices = 8) {
+  return scratch((a) => {
+    const points = a(16 * polygon.length);
+    polygon.forEach((p, i) => writePoint(points + 16 * i, p));
+    const h = made(a, M._el_convex_pieces, points, polygon.length, maxVertices);
+    try {
+      return [...readPolygons(a, h)].map((p) => p.points);
+    } finally {
+      M._el_polygons_destroy(h);
+    }
+  });
 }

@@ -30,7 +30,8 @@ static_assert(EL_SETTING_WORLD_OUT_OF_RANGE == static_cast<int>(Setting::kWorldO
               EL_SETTING_MIN_CELL_SIZE == static_cast<int>(Setting::kMinCellSize) &&
               EL_SETTING_GRID_DEPTH == static_cast<int>(Setting::kGridDepth) &&
               EL_SETTING_TREE == static_cast<int>(Setting::kTree) &&
-              EL_SETTING_GRID_DEPTH_BEYOND_CELLS == static_cast<int>(Setting::kGridDepthBeyondCells));
+              EL_SETTING_GRID_DEPTH_BEYOND_CELLS ==
+                  static_cast<int>(Setting::kGridDepthBeyondCells));
 using Limit = LimitExceeded::Limit;
 static_assert(EL_LIMIT_VERTICES == static_cast<int>(Limit::kVertices) &&
               EL_LIMIT_SHAPE_VERTICES == static_cast<int>(Limit::kShapeVertices) &&
@@ -132,8 +133,8 @@ el_error describe_current() {
     e.limit = 255;
     return e;
   } catch (const LimitExceeded& x) {
-    return count_error(EL_LIMIT_EXCEEDED, x.what(), static_cast<std::uint32_t>(x.limit),
-                       x.maximum, x.requested);
+    return count_error(EL_LIMIT_EXCEEDED, x.what(), static_cast<std::uint32_t>(x.limit), x.maximum,
+                       x.requested);
   } catch (const LoadError& x) {
     el_error e = base(EL_LOAD_ERROR, x.what());
     e.index = x.offset;
@@ -175,27 +176,48 @@ EL_API void el_error_init(el_error* error) {
 
 EL_API const char* el_status_name(el_status status) {
   switch (status) {
-    case EL_OK: return "EL_OK";
-    case EL_NULL_ARGUMENT: return "EL_NULL_ARGUMENT";
-    case EL_OUT_OF_MEMORY: return "EL_OUT_OF_MEMORY";
-    case EL_VERSION_MISMATCH: return "EL_VERSION_MISMATCH";
-    case EL_INTERNAL: return "EL_INTERNAL";
-    case EL_INVALID_INPUT: return "EL_INVALID_INPUT";
-    case EL_COORDINATE_OUT_OF_RANGE: return "EL_COORDINATE_OUT_OF_RANGE";
-    case EL_INVALID_BOX: return "EL_INVALID_BOX";
-    case EL_TOO_MANY_VERTICES: return "EL_TOO_MANY_VERTICES";
-    case EL_INVALID_ARGUMENT: return "EL_INVALID_ARGUMENT";
-    case EL_ARGUMENT_OUT_OF_RANGE: return "EL_ARGUMENT_OUT_OF_RANGE";
-    case EL_NON_POSITIVE_AREA: return "EL_NON_POSITIVE_AREA";
-    case EL_INVALID_OVERLAY: return "EL_INVALID_OVERLAY";
-    case EL_INVALID_CONFIG: return "EL_INVALID_CONFIG";
-    case EL_INVALID_MATERIAL: return "EL_INVALID_MATERIAL";
-    case EL_LIMIT_EXCEEDED: return "EL_LIMIT_EXCEEDED";
-    case EL_LOAD_ERROR: return "EL_LOAD_ERROR";
-    case EL_STALE_ISLAND: return "EL_STALE_ISLAND";
-    case EL_INDEX_OUT_OF_RANGE: return "EL_INDEX_OUT_OF_RANGE";
-    case EL_BUFFER_TOO_SMALL: return "EL_BUFFER_TOO_SMALL";
-    default: return "EL_UNKNOWN";
+    case EL_OK:
+      return "EL_OK";
+    case EL_NULL_ARGUMENT:
+      return "EL_NULL_ARGUMENT";
+    case EL_OUT_OF_MEMORY:
+      return "EL_OUT_OF_MEMORY";
+    case EL_VERSION_MISMATCH:
+      return "EL_VERSION_MISMATCH";
+    case EL_INTERNAL:
+      return "EL_INTERNAL";
+    case EL_INVALID_INPUT:
+      return "EL_INVALID_INPUT";
+    case EL_COORDINATE_OUT_OF_RANGE:
+      return "EL_COORDINATE_OUT_OF_RANGE";
+    case EL_INVALID_BOX:
+      return "EL_INVALID_BOX";
+    case EL_TOO_MANY_VERTICES:
+      return "EL_TOO_MANY_VERTICES";
+    case EL_INVALID_ARGUMENT:
+      return "EL_INVALID_ARGUMENT";
+    case EL_ARGUMENT_OUT_OF_RANGE:
+      return "EL_ARGUMENT_OUT_OF_RANGE";
+    case EL_NON_POSITIVE_AREA:
+      return "EL_NON_POSITIVE_AREA";
+    case EL_INVALID_OVERLAY:
+      return "EL_INVALID_OVERLAY";
+    case EL_INVALID_CONFIG:
+      return "EL_INVALID_CONFIG";
+    case EL_INVALID_MATERIAL:
+      return "EL_INVALID_MATERIAL";
+    case EL_LIMIT_EXCEEDED:
+      return "EL_LIMIT_EXCEEDED";
+    case EL_LOAD_ERROR:
+      return "EL_LOAD_ERROR";
+    case EL_STALE_ISLAND:
+      return "EL_STALE_ISLAND";
+    case EL_INDEX_OUT_OF_RANGE:
+      return "EL_INDEX_OUT_OF_RANGE";
+    case EL_BUFFER_TOO_SMALL:
+      return "EL_BUFFER_TOO_SMALL";
+    default:
+      return "EL_UNKNOWN";
   }
 }
 

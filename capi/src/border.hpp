@@ -64,7 +64,8 @@ template <class T>
 void write_sized(T* dest, T value) {
   const std::uint32_t size = dest->struct_size;
   value.struct_size = size;
-  std::memcpy(static_cast<void*>(dest), static_cast<const void*>(&value), size < sizeof(T) ? size : sizeof(T));
+  std::memcpy(static_cast<void*>(dest), static_cast<const void*>(&value),
+              size < sizeof(T) ? size : sizeof(T));
 }
 
 }  // namespace edgeland::capi

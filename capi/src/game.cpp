@@ -78,7 +78,8 @@ std::unique_ptr<IslandsHandle> islands_of(std::vector<Island> islands) {
     info.first_piece = checked_count(out->pieces.ids.size());
     info.piece_count = checked_count(island.pieces.size());
     out->info.push_back(info);
-    for (const IslandPiece& p : island.pieces) append(out->pieces, p.id, p.material, p.cell, p.polygon);
+    for (const IslandPiece& p : island.pieces)
+      append(out->pieces, p.id, p.material, p.cell, p.polygon);
   }
   out->islands = std::move(islands);
   return out;
@@ -90,7 +91,8 @@ std::unique_ptr<MeshesHandle> meshes_of(std::vector<PolygonId> dropped,
   out->dropped = std::move(dropped);
   for (const PolygonMesh& mesh : built) {
     append(out->polygons, mesh.id, mesh.material, Box64{}, mesh.vertices);
-    for (const Triangle& t : mesh.triangles) out->triangles.insert(out->triangles.end(), {t.a, t.b, t.c});
+    for (const Triangle& t : mesh.triangles)
+      out->triangles.insert(out->triangles.end(), {t.a, t.b, t.c});
     out->triangle_offsets.push_back(checked_count(out->triangles.size() / 3));
   }
   return out;
@@ -126,9 +128,8 @@ EL_API el_status el_surface_tracker_create(const el_landscape* landscape,
 EL_API void el_surface_tracker_destroy(el_surface_tracker* tracker) { delete object(tracker); }
 
 EL_API el_status el_surface_tracker_update(el_surface_tracker* tracker,
-                                           const el_landscape* landscape,
-                                           const el_changes* changes, el_chains** update,
-                                           el_error* error) {
+                                           const el_landscape* landscape, const el_changes* changes,
+                                           el_chains** update, el_error* error) {
   return execute(error, [&] {
     need(update, "update");
     SurfaceTracker& t = object_of(tracker, "tracker").tracker;
@@ -208,8 +209,8 @@ EL_API el_status el_detach(el_landscape* landscape, const el_islands* islands, s
     need(out, "out");
     const std::vector<Island>& all = object_of(islands, "islands").islands;
     if (index >= all.size()) {
-      throw BorderError(EL_INDEX_OUT_OF_RANGE, "island " + std::to_string(index) + " of " +
-                                                   std::to_string(all.size()));
+      throw BorderError(EL_INDEX_OUT_OF_RANGE,
+                        "island " + std::to_string(index) + " of " + std::to_string(all.size()));
     }
     // As every edit: on a snapshot, translated, then committed (the strong guarantee).
     Landscape& world = object_of(landscape, "landscape").world;

@@ -1,4 +1,6 @@
 // el_landscape_*: the C++ Landscape's members, one translation each.
+#include "edgeland/spatial/landscape.hpp"
+
 #include <cstring>
 #include <memory>
 #include <sstream>
@@ -8,7 +10,6 @@
 
 #include "border.hpp"
 #include "edgeland/edgeland.h"
-#include "edgeland/spatial/landscape.hpp"
 #include "handles.hpp"
 #include "translate.hpp"
 
@@ -85,7 +86,8 @@ std::unique_ptr<BytesHandle> bytes_of(std::string text) {
 }
 
 // The materials list of overlaps() into the caller's 256 bytes.
-void materials_out(const std::vector<Material>& found, std::uint8_t* materials, std::size_t* count) {
+void materials_out(const std::vector<Material>& found, std::uint8_t* materials,
+                   std::size_t* count) {
   need(materials, "materials");
   need(count, "count");
   for (std::size_t i = 0; i < found.size(); ++i) materials[i] = found[i].value();
@@ -110,8 +112,8 @@ EL_API el_status el_landscape_create(const el_box* world, int32_t fill,
   return execute(error, [&] {
     need(out, "out");
     const el_landscape_config c = config_of(config);
-    auto made = std::make_unique<LandscapeHandle>(LandscapeHandle{
-        Landscape(box_of(world, "world"), Material(fill), landscape_config(c), landscape_limits(c))});
+    auto made = std::make_unique<LandscapeHandle>(LandscapeHandle{Landscape(
+        box_of(world, "world"), Material(fill), landscape_config(c), landscape_limits(c))});
     made->world.set_checked((c.flags & EL_LANDSCAPE_CHECKED) != 0);
     hand_out(std::move(made), out);
   });
@@ -121,7 +123,9 @@ EL_API el_status el_landscape_clone(const el_landscape* landscape, el_landscape*
                                     el_error* error) {
   return execute(error, [&] {
     need(out, "out");
-    hand_out(std::make_unique<LandscapeHandle>(LandscapeHandle{object_of(landscape, "landscape").world}), out);
+    hand_out(
+        std::make_unique<LandscapeHandle>(LandscapeHandle{object_of(landscape, "landscape").world}),
+        out);
   });
 }
 
@@ -134,8 +138,8 @@ EL_API el_status el_landscape_carve(el_landscape* landscape, const el_shape* sha
   });
 }
 
-EL_API el_status el_landscape_fill(el_landscape* landscape, const el_shape* shape,
-                                   int32_t material, el_changes** changes, el_error* error) {
+EL_API el_status el_landscape_fill(el_landscape* landscape, const el_shape* shape, int32_t material,
+                                   el_changes** changes, el_error* error) {
   return execute(error, [&] {
     edit(landscape, changes,
          [&](Landscape& world) { return world.fill(shape_of(shape), Material(material)); });
@@ -143,17 +147,15 @@ EL_API el_status el_landscape_fill(el_landscape* landscape, const el_shape* shap
 }
 
 EL_API el_status el_landscape_fill_empty(el_landscape* landscape, const el_shape* shape,
-                                         int32_t material, el_changes** changes,
-                                         el_error* error) {
+                                         int32_t material, el_changes** changes, el_error* error) {
   return execute(error, [&] {
     edit(landscape, changes,
          [&](Landscape& world) { return world.fill_empty(shape_of(shape), Material(material)); });
   });
 }
 
-EL_API el_status el_landscape_replace(el_landscape* landscape, const el_shape* shape,
-                                      int32_t from, int32_t to, el_changes** changes,
-                                      el_error* error) {
+EL_API el_status el_landscape_replace(el_landscape* landscape, const el_shape* shape, int32_t from,
+                                      int32_t to, el_changes** changes, el_error* error) {
   return execute(error, [&] {
     edit(landscape, changes, [&](Landscape& world) {
       return world.replace(shape_of(shape), Material(from), Material(to));
@@ -187,8 +189,9 @@ EL_API el_status el_landscape_crossings(const el_landscape* landscape, const el_
   return execute(error, [&] {
     need(out, "out");
     auto made = std::make_unique<CrossingsHandle>();
-    for (const MaterialCrossing& c : object_of(landscape, "landscape")
-                                         .world.crossings(point_of(from, "from"), point_of(to, "to"))) {
+    for (const MaterialCrossing& c :
+         object_of(landscape, "landscape")
+             .world.crossings(point_of(from, "from"), point_of(to, "to"))) {
       made->data.push_back(to_c(c));
     }
     hand_out(std::move(made), out);
@@ -209,10 +212,10 @@ EL_API el_status el_landscape_raycast(const el_landscape* landscape, const el_po
 }
 
 EL_API el_status el_landscape_overlaps_box(const el_landscape* landscape, const el_box* box,
-                                           uint8_t materials[256], size_t* count,
-                                           el_error* error) {
+                                           uint8_t materials[256], size_t* count, el_error* error) {
   return execute(error, [&] {
-    materials_out(object_of(landscape, "landscape").world.overlaps(box_of(box, "box")), materials, count);
+    materials_out(object_of(landscape, "landscape").world.overlaps(box_of(box, "box")), materials,
+                  count);
   });
 }
 
@@ -220,7 +223,8 @@ EL_API el_status el_landscape_overlaps_shape(const el_landscape* landscape, cons
                                              uint8_t materials[256], size_t* count,
                                              el_error* error) {
   return execute(error, [&] {
-    materials_out(object_of(landscape, "landscape").world.overlaps(shape_of(shape)), materials, count);
+    materials_out(object_of(landscape, "landscape").world.overlaps(shape_of(shape)), materials,
+                  count);
   });
 }
 
@@ -229,10 +233,11 @@ EL_API el_status el_landscape_polygons_in(const el_landscape* landscape, const e
   return execute(error, [&] {
     need(out, "out");
     auto made = std::make_unique<PolygonsHandle>();
-    object_of(landscape, "landscape").world.polygons_in(box_of(box, "box"), [&](const PolygonView& v) {
-      append(*made, v.id, v.material, v.cell, *v.polygon);
-      return true;
-    });
+    object_of(landscape, "landscape")
+        .world.polygons_in(box_of(box, "box"), [&](const PolygonView& v) {
+          append(*made, v.id, v.material, v.cell, *v.polygon);
+          return true;
+        });
     hand_out(std::move(made), out);
   });
 }
@@ -246,7 +251,8 @@ EL_API el_status el_landscape_twice_area(const el_landscape* landscape, int32_t 
 }
 
 EL_API el_status el_landscape_world(const el_landscape* landscape, el_box* out, el_error* error) {
-  return execute(error, [&] { need(out, "out") = to_c(object_of(landscape, "landscape").world.world()); });
+  return execute(error,
+                 [&] { need(out, "out") = to_c(object_of(landscape, "landscape").world.world()); });
 }
 
 EL_API void el_stats_init(el_stats* stats) {
@@ -319,7 +325,8 @@ EL_API el_status el_landscape_load(const uint8_t* data, size_t size,
     BytesIn buffer(data, size);
     std::istream in(&buffer);
     const el_landscape_config c = config_of(config);
-    hand_out(std::make_unique<LandscapeHandle>(LandscapeHandle{Landscape::load(in, landscape_limits(c))}),
+    hand_out(std::make_unique<LandscapeHandle>(
+                 LandscapeHandle{Landscape::load(in, landscape_limits(c))}),
              out);
   });
 }

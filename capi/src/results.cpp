@@ -58,7 +58,8 @@ EL_API const el_polygons* el_changes_added(const el_changes* h) {
 EL_API const el_box* el_changes_cells(const el_changes* h, size_t* count) {
   return view(h, &ChangesHandle::cells, count);
 }
-EL_API el_status el_changes_copy_cells(const el_changes* h, el_box* buf, size_t cap, size_t* needed) {
+EL_API el_status el_changes_copy_cells(const el_changes* h, el_box* buf, size_t cap,
+                                       size_t* needed) {
   return copy(h, &ChangesHandle::cells, buf, cap, needed);
 }
 EL_API const el_area_delta* el_changes_area_delta(const el_changes* h, size_t* count) {
@@ -72,7 +73,9 @@ EL_API el_status el_changes_copy_area_delta(const el_changes* h, el_area_delta* 
 EL_API void el_polygons_destroy(el_polygons* h) {
   if (h != nullptr && !object(h)->borrowed) delete object(h);
 }
-EL_API size_t el_polygons_count(const el_polygons* h) { return h != nullptr ? object(h)->ids.size() : 0; }
+EL_API size_t el_polygons_count(const el_polygons* h) {
+  return h != nullptr ? object(h)->ids.size() : 0;
+}
 EL_API const uint64_t* el_polygons_ids(const el_polygons* h, size_t* count) {
   return view(h, &PolygonsHandle::ids, count);
 }
@@ -147,7 +150,9 @@ EL_API el_status el_chains_copy_materials(const el_chains* h, uint8_t* buf, size
 }
 
 EL_API void el_islands_destroy(el_islands* h) { delete object(h); }
-EL_API size_t el_islands_count(const el_islands* h) { return h != nullptr ? object(h)->info.size() : 0; }
+EL_API size_t el_islands_count(const el_islands* h) {
+  return h != nullptr ? object(h)->info.size() : 0;
+}
 EL_API const el_island_info* el_islands_info(const el_islands* h, size_t* count) {
   return view(h, &IslandsHandle::info, count);
 }
@@ -193,15 +198,17 @@ EL_API el_status el_crossings_copy(const el_crossings* h, el_crossing* buf, size
 EL_API void el_bytes_destroy(el_bytes* h) { delete object(h); }
 EL_API const uint8_t* el_bytes_data(const el_bytes* h, size_t* size) {
   if (size != nullptr) *size = h != nullptr ? object(h)->data.size() : 0;
-  return h != nullptr && !object(h)->data.empty() ? reinterpret_cast<const uint8_t*>(object(h)->data.data())
-                                          : nullptr;
+  return h != nullptr && !object(h)->data.empty()
+             ? reinterpret_cast<const uint8_t*>(object(h)->data.data())
+             : nullptr;
 }
 EL_API el_status el_bytes_copy(const el_bytes* h, uint8_t* buf, size_t cap, size_t* needed) {
   return execute(nullptr, [&] {
     const std::string& data = need(object(h), "bytes").data;
     if (needed != nullptr) *needed = data.size();
     if (cap < data.size()) throw BorderError(EL_BUFFER_TOO_SMALL, "buffer too small");
-    if (!data.empty()) std::copy(data.begin(), data.end(), reinterpret_cast<char*>(&need(buf, "buf")));
+    if (!data.empty())
+      std::copy(data.begin(), data.end(), reinterpret_cast<char*>(&need(buf, "buf")));
   });
 }
 

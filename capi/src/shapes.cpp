@@ -1,9 +1,10 @@
 // el_shape_*: a validated polygon set, from CSR arrays or kernel/shapes.hpp's builders.
+#include "edgeland/kernel/shapes.hpp"
+
 #include <memory>
 
 #include "border.hpp"
 #include "edgeland/edgeland.h"
-#include "edgeland/kernel/shapes.hpp"
 #include "handles.hpp"
 #include "translate.hpp"
 
@@ -16,7 +17,9 @@ template <class Build>
 el_status built(el_shape** out, el_error* error, Build&& build) {
   return execute(error, [&] {
     need(out, "out");
-    hand_out(std::make_unique<ShapeHandle>(ShapeHandle{ValidSet(PolygonSet{build()}, Operand::kClip)}), out);
+    hand_out(
+        std::make_unique<ShapeHandle>(ShapeHandle{ValidSet(PolygonSet{build()}, Operand::kClip)}),
+        out);
   });
 }
 
@@ -33,7 +36,8 @@ EL_API el_status el_shape_create(const int64_t* xy, const uint32_t* offsets, siz
   return execute(error, [&] {
     need(out, "out");
     PolygonSet set = polygon_set_of(xy, offsets, polygon_count);
-    hand_out(std::make_unique<ShapeHandle>(ShapeHandle{ValidSet(std::move(set), Operand::kClip)}), out);
+    hand_out(std::make_unique<ShapeHandle>(ShapeHandle{ValidSet(std::move(set), Operand::kClip)}),
+             out);
   });
 }
 
@@ -72,7 +76,8 @@ EL_API el_status el_shape_polygons(const el_shape* shape, el_polygons** out, el_
   return execute(error, [&] {
     need(out, "out");
     auto made = std::make_unique<PolygonsHandle>();
-    for (const Polygon& p : object_of(shape, "shape").set.polygons()) append(*made, 0, kEmpty, {}, p);
+    for (const Polygon& p : object_of(shape, "shape").set.polygons())
+      append(*made, 0, kEmpty, {}, p);
     hand_out(std::move(made), out);
   });
 }

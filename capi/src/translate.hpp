@@ -4,12 +4,12 @@
 #include <memory>
 #include <vector>
 
+#include "border.hpp"
 #include "edgeland/kernel/bbox.hpp"
 #include "edgeland/kernel/int128.hpp"
 #include "edgeland/kernel/point.hpp"
 #include "edgeland/kernel/polygon.hpp"
 #include "edgeland/spatial/types.hpp"
-#include "border.hpp"
 #include "handles.hpp"
 
 namespace edgeland::capi {

@@ -11,8 +11,8 @@
 #include "edgeland/kernel/errors.hpp"
 #include "edgeland/kernel/triangulate.hpp"
 #include "edgeland/kernel/validate.hpp"
-#include "support/generators.hpp"
 #include "support/big_int.hpp"
+#include "support/generators.hpp"
 
 namespace edgeland::testing {
 namespace {

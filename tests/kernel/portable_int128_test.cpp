@@ -4,6 +4,8 @@
 // builds: in the portable one (-DEDGELAND_PORTABLE_INT128=ON) Int128 is the class under test,
 // in the native one the class is still what MSVC would compile. The fuzz target
 // int128_portable does the same on decoded bytes (fuzz/int128_decoders.cpp).
+#include "edgeland/kernel/portable_int128.hpp"
+
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
@@ -14,7 +16,6 @@
 
 #include "edgeland/kernel/checked.hpp"
 #include "edgeland/kernel/int128.hpp"
-#include "edgeland/kernel/portable_int128.hpp"
 #include "support/int128_differential.hpp"
 
 namespace edgeland {
@@ -69,20 +70,22 @@ RC_GTEST_PROP(PortableInt128, AgreesWithTheNativeTypeOnRandomValues,
 TEST(PortableInt128, ConvertsToDoubleRoundingTiesToEven) {
   const Native base = Native{1} << 100;  // doubles here are 2^48 apart
   const Native ulp = Native{1} << 48, half = ulp / 2;
-  for (const Native v : {base + half, base + half + 1, base + half - 1, base + ulp + half,
-                         base + ulp + half + 1, -(base + half), -(base + ulp + half), kMax, kMin,
-                         kMax - half}) {
+  for (const Native v :
+       {base + half, base + half + 1, base + half - 1, base + ulp + half, base + ulp + half + 1,
+        -(base + half), -(base + ulp + half), kMax, kMin, kMax - half}) {
     EXPECT_EQ(static_cast<double>(portable(v)), static_cast<double>(v));
   }
   EXPECT_EQ(static_cast<double>(portable(base + half)), std::ldexp(1.0, 100));
-  EXPECT_EQ(static_cast<double>(portable(base + ulp + half)), std::ldexp(1.0, 100) + 2 * std::ldexp(1.0, 48));
+  EXPECT_EQ(static_cast<double>(portable(base + ulp + half)),
+            std::ldexp(1.0, 100) + 2 * std::ldexp(1.0, 48));
   EXPECT_EQ(static_cast<double>(portable(kMax)), std::ldexp(1.0, 127));
 }
 
 TEST(PortableInt128, IsAConstantExpression) {
   static_assert((PortableInt128{1} << 62) == PortableInt128{std::int64_t{1} << 62});
   static_assert(PortableInt128{-7} / 2 == -3 && PortableInt128{-7} % 2 == -1);
-  static_assert(std::numeric_limits<PortableInt128>::max() + 1 == std::numeric_limits<PortableInt128>::min());
+  static_assert(std::numeric_limits<PortableInt128>::max() + 1 ==
+                std::numeric_limits<PortableInt128>::min());
   static_assert(static_cast<std::int64_t>(PortableInt128{-5} >> 1) == -3);
   static_assert(sizeof(PortableInt128) == 16 && std::is_trivially_copyable_v<PortableInt128>);
 }
@@ -116,7 +119,8 @@ TEST(CheckedArithmetic, OverflowTestsAgreeWithTheExactResult) {
       if (fits(product)) EXPECT_EQ(r, product);
     }
   }
-  const Int128 top = std::numeric_limits<Int128>::max(), bottom = std::numeric_limits<Int128>::min();
+  const Int128 top = std::numeric_limits<Int128>::max(),
+               bottom = std::numeric_limits<Int128>::min();
   Int128 r = 0;
   EXPECT_TRUE(arith::add_overflows(top, Int128(1), &r));
   EXPECT_FALSE(arith::add_overflows(top, Int128(-1), &r));

@@ -80,7 +80,8 @@ int main(int argc, char** argv) {
     const std::uint64_t h = world.state_hash();
     hashes << f << ' ' << h << '\n';
     digest = (digest ^ h) * 0x100000001B3ULL;
-    if (f % 100 == 99 || f == kFrames - 1) expect(mirror == polygons_of(world), f, "mirror differs");
+    if (f % 100 == 99 || f == kFrames - 1)
+      expect(mirror == polygons_of(world), f, "mirror differs");
   }
   std::printf("final hash %016llx digest %016llx, %zu polygons\n",
               static_cast<unsigned long long>(world.state_hash()),

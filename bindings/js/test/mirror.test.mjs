@@ -84,6 +84,7 @@ test('the mirror reaches the C++ run\'s hashes', () => {
       const changes = drawEdit(world);
       for (const id of changes.removed) assert.ok(mirror.delete(id), `frame ${f}: id ${id}`);
       for (const p of changes.added) mirror.set(p.id, key(p));
+      changes.dispose();
     }
     if (f % 100 === 90) {
       snapshot?.dispose();

@@ -73,11 +73,11 @@ typedef int32_t el_status;
 /* One code per edgeland error class (the C++ name in brackets), plus the border's own. */
 enum {
   EL_OK = 0,
-  EL_NULL_ARGUMENT = 1,     /* a required pointer argument was NULL */
-  EL_OUT_OF_MEMORY = 2,     /* std::bad_alloc */
-  EL_VERSION_MISMATCH = 3,  /* a struct_size this library does not know, el_check_version */
-  EL_INTERNAL = 4,          /* a bug in edgeland [LandscapeInternalError, InternalError, other] */
-  EL_INVALID_INPUT = 10,    /* a shape breaks a rule of validate() [InvalidInput] */
+  EL_NULL_ARGUMENT = 1,    /* a required pointer argument was NULL */
+  EL_OUT_OF_MEMORY = 2,    /* std::bad_alloc */
+  EL_VERSION_MISMATCH = 3, /* a struct_size this library does not know, el_check_version */
+  EL_INTERNAL = 4,         /* a bug in edgeland [LandscapeInternalError, InternalError, other] */
+  EL_INVALID_INPUT = 10,   /* a shape breaks a rule of validate() [InvalidInput] */
   EL_COORDINATE_OUT_OF_RANGE = 11, /* beyond |c| <= 2^31 - 1 [CoordinateOutOfRange] */
   EL_INVALID_BOX = 12,             /* [InvalidBox] */
   EL_TOO_MANY_VERTICES = 13,       /* [TooManyVertices] */
@@ -119,7 +119,12 @@ enum {
   EL_SETTING_TREE = 6,
   EL_SETTING_GRID_DEPTH_BEYOND_CELLS = 7
 };
-enum { EL_LIMIT_VERTICES = 0, EL_LIMIT_SHAPE_VERTICES = 1, EL_LIMIT_CELLS = 2, EL_LIMIT_POLYGON_IDS = 3 };
+enum {
+  EL_LIMIT_VERTICES = 0,
+  EL_LIMIT_SHAPE_VERTICES = 1,
+  EL_LIMIT_CELLS = 2,
+  EL_LIMIT_POLYGON_IDS = 3
+};
 /* el_error.operand for input errors: which argument. */
 enum {
   EL_OPERAND_SUBJECT = 0,
@@ -144,15 +149,15 @@ typedef struct el_box {
 typedef struct el_error {
   uint32_t struct_size;
   el_status status;
-  uint32_t kind;    /* EL_RULE_*, EL_SETTING_*, EL_LIMIT_* or the overlay reason (above) */
-  uint32_t operand; /* EL_OPERAND_* for input errors */
-  uint64_t index;   /* input: the polygon; load: the byte offset; stale island: the polygon id;
-                       overlay: the member or window; argument errors: the argument's position */
-  uint64_t vertex;  /* input: the vertex or edge (EL_NONE if none) */
-  int64_t value;    /* the value given: a material number, a count requested, an argument */
-  int64_t limit;    /* the largest accepted (LIMIT_EXCEEDED, TOO_MANY_VERTICES, ARGUMENT_*) */
-  int64_t minimum;  /* the least accepted (INVALID_ARGUMENT, ARGUMENT_OUT_OF_RANGE) */
-  el_point where;   /* input: the offending point */
+  uint32_t kind;     /* EL_RULE_*, EL_SETTING_*, EL_LIMIT_* or the overlay reason (above) */
+  uint32_t operand;  /* EL_OPERAND_* for input errors */
+  uint64_t index;    /* input: the polygon; load: the byte offset; stale island: the polygon id;
+                        overlay: the member or window; argument errors: the argument's position */
+  uint64_t vertex;   /* input: the vertex or edge (EL_NONE if none) */
+  int64_t value;     /* the value given: a material number, a count requested, an argument */
+  int64_t limit;     /* the largest accepted (LIMIT_EXCEEDED, TOO_MANY_VERTICES, ARGUMENT_*) */
+  int64_t minimum;   /* the least accepted (INVALID_ARGUMENT, ARGUMENT_OUT_OF_RANGE) */
+  el_point where;    /* input: the offending point */
   char message[256]; /* the C++ error's message, NUL-terminated, cut at 255 bytes */
 } el_error;
 
@@ -190,16 +195,18 @@ typedef struct el_area_delta {
   uint32_t reserved;
 } el_area_delta;
 
-/* ---- handles ---------------------------------------------------------------------------------- */
+/* ---- handles ----------------------------------------------------------------------------------
+ */
 
-typedef struct el_landscape el_landscape;  /* a world (C++ Landscape) */
-typedef struct el_shape el_shape;          /* a validated polygon set (C++ ValidSet) */
-typedef struct el_changes el_changes;      /* what an edit changed (C++ ChangeSet) */
-typedef struct el_polygons el_polygons;    /* polygons with ids, materials and cells */
-typedef struct el_crossings el_crossings;  /* material changes along a segment */
-typedef struct el_bytes el_bytes;          /* bytes: a save, a log, a report */
+typedef struct el_landscape el_landscape; /* a world (C++ Landscape) */
+typedef struct el_shape el_shape;         /* a validated polygon set (C++ ValidSet) */
+typedef struct el_changes el_changes;     /* what an edit changed (C++ ChangeSet) */
+typedef struct el_polygons el_polygons;   /* polygons with ids, materials and cells */
+typedef struct el_crossings el_crossings; /* material changes along a segment */
+typedef struct el_bytes el_bytes;         /* bytes: a save, a log, a report */
 
-/* ---- shapes ----------------------------------------------------------------------------------- */
+/* ---- shapes -----------------------------------------------------------------------------------
+ */
 
 /* A polygon set from CSR arrays, validated once (InvalidInput / CoordinateOutOfRange with the
  * polygon and vertex otherwise, operand EL_OPERAND_CLIP): strictly simple, counter-clockwise,
@@ -224,7 +231,8 @@ EL_API el_status el_shape_rotated_box(const el_point* center, int64_t half_width
 EL_API el_status el_shape_polygons(const el_shape* shape, el_polygons** out, el_error* error);
 EL_API void el_shape_destroy(el_shape* shape);
 
-/* ---- landscapes ------------------------------------------------------------------------------- */
+/* ---- landscapes -------------------------------------------------------------------------------
+ */
 
 enum { EL_TREE_QUADTREE = 0, EL_TREE_KD = 1 };
 enum { EL_LANDSCAPE_CHECKED = 1 }; /* el_landscape_config.flags */
@@ -258,14 +266,12 @@ EL_API void el_landscape_destroy(el_landscape* landscape);
 /* Edits. `changes` may be NULL (not wanted); else *changes gets a new change set. */
 EL_API el_status el_landscape_carve(el_landscape* landscape, const el_shape* shape,
                                     el_changes** changes, el_error* error);
-EL_API el_status el_landscape_fill(el_landscape* landscape, const el_shape* shape,
-                                   int32_t material, el_changes** changes, el_error* error);
+EL_API el_status el_landscape_fill(el_landscape* landscape, const el_shape* shape, int32_t material,
+                                   el_changes** changes, el_error* error);
 EL_API el_status el_landscape_fill_empty(el_landscape* landscape, const el_shape* shape,
-                                         int32_t material, el_changes** changes,
-                                         el_error* error);
-EL_API el_status el_landscape_replace(el_landscape* landscape, const el_shape* shape,
-                                      int32_t from, int32_t to, el_changes** changes,
-                                      el_error* error);
+                                         int32_t material, el_changes** changes, el_error* error);
+EL_API el_status el_landscape_replace(el_landscape* landscape, const el_shape* shape, int32_t from,
+                                      int32_t to, el_changes** changes, el_error* error);
 /* Inside the shape every material from_to[2i] becomes from_to[2i + 1] at once, the others
  * stay (C++ relabel with a MaterialMap; a later pair for one material wins). */
 EL_API el_status el_landscape_relabel(el_landscape* landscape, const el_shape* shape,
@@ -284,8 +290,7 @@ EL_API el_status el_landscape_raycast(const el_landscape* landscape, const el_po
 /* The solid materials whose interiors meet the box's (or shape's), ascending, into
  * materials[0 .. *count - 1] (at most 255). */
 EL_API el_status el_landscape_overlaps_box(const el_landscape* landscape, const el_box* box,
-                                           uint8_t materials[256], size_t* count,
-                                           el_error* error);
+                                           uint8_t materials[256], size_t* count, el_error* error);
 EL_API el_status el_landscape_overlaps_shape(const el_landscape* landscape, const el_shape* shape,
                                              uint8_t materials[256], size_t* count,
                                              el_error* error);
@@ -324,7 +329,8 @@ EL_API el_status el_landscape_load(const uint8_t* data, size_t size,
                                    const el_landscape_config* config, el_landscape** out,
                                    el_error* error);
 
-/* ---- results ---------------------------------------------------------------------------------- */
+/* ---- results ----------------------------------------------------------------------------------
+ */
 
 /* A change set: ids removed (ascending), polygons added (el_polygons, ascending id; borrowed:
  * it lives as long as the change set and needs no destroy), cells rebuilt, area per material. */
@@ -413,9 +419,8 @@ EL_API el_status el_surface_tracker_create(const el_landscape* landscape,
                                            el_surface_tracker** out, el_error* error);
 EL_API void el_surface_tracker_destroy(el_surface_tracker* tracker);
 EL_API el_status el_surface_tracker_update(el_surface_tracker* tracker,
-                                           const el_landscape* landscape,
-                                           const el_changes* changes, el_chains** update,
-                                           el_error* error);
+                                           const el_landscape* landscape, const el_changes* changes,
+                                           el_chains** update, el_error* error);
 EL_API el_status el_surface_tracker_resync(el_surface_tracker* tracker,
                                            const el_landscape* landscape, el_chains** update,
                                            el_error* error);
@@ -507,8 +512,8 @@ EL_API el_status el_meshes_copy_dropped(const el_meshes* meshes, uint64_t* buf, 
                                         size_t* needed);
 EL_API const el_polygons* el_meshes_polygons(const el_meshes* meshes);
 EL_API const uint32_t* el_meshes_triangle_offsets(const el_meshes* meshes, size_t* count);
-EL_API el_status el_meshes_copy_triangle_offsets(const el_meshes* meshes, uint32_t* buf,
-                                                 size_t cap, size_t* needed);
+EL_API el_status el_meshes_copy_triangle_offsets(const el_meshes* meshes, uint32_t* buf, size_t cap,
+                                                 size_t* needed);
 EL_API const uint32_t* el_meshes_triangles(const el_meshes* meshes, size_t* count);
 EL_API el_status el_meshes_copy_triangles(const el_meshes* meshes, uint32_t* buf, size_t cap,
                                           size_t* needed);
@@ -530,8 +535,8 @@ EL_LAYOUT_ASSERT(crossing, sizeof(el_crossing) == 168 && offsetof(el_crossing, r
                                offsetof(el_crossing, polygon) == 152 &&
                                offsetof(el_crossing, edge) == 160 &&
                                offsetof(el_crossing, after) == 165);
-EL_LAYOUT_ASSERT(area_delta, sizeof(el_area_delta) == 32 &&
-                                 offsetof(el_area_delta, material) == 24);
+EL_LAYOUT_ASSERT(area_delta,
+                 sizeof(el_area_delta) == 32 && offsetof(el_area_delta, material) == 24);
 EL_LAYOUT_ASSERT(error, sizeof(el_error) == 328 && offsetof(el_error, index) == 16 &&
                             offsetof(el_error, where) == 56 && offsetof(el_error, message) == 72);
 EL_LAYOUT_ASSERT(config, sizeof(el_landscape_config) == 56 &&
@@ -542,8 +547,8 @@ EL_LAYOUT_ASSERT(physics_materials, sizeof(el_physics_materials) == 520 &&
                                         offsetof(el_physics_materials, anchored) == 264);
 EL_LAYOUT_ASSERT(chain_info, sizeof(el_chain_info) == 80 && offsetof(el_chain_info, id) == 64 &&
                                  offsetof(el_chain_info, closed) == 72);
-EL_LAYOUT_ASSERT(island_info, sizeof(el_island_info) == 64 &&
-                                  offsetof(el_island_info, first_piece) == 56);
+EL_LAYOUT_ASSERT(island_info,
+                 sizeof(el_island_info) == 64 && offsetof(el_island_info, first_piece) == 56);
 EL_LAYOUT_ASSERT(detached_info, sizeof(el_detached_info) == 96);
 
 #ifdef __cplusplus

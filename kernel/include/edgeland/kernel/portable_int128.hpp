@@ -105,7 +105,7 @@ constexpr WordPair<Words128> divide_unsigned(Words128 n, Words128 d) noexcept {
   return {q, r};
 }
 
-}  // namespace edgeland::detail::wide
+}  // namespace detail::wide
 
 // A 128-bit integer held as two words, signed (two's complement) or not.
 template <bool Signed>
@@ -164,21 +164,26 @@ class PortableInteger128 {
   }
 
   // --- arithmetic, as the native type (wrapping) ---------------------------------------------
-  friend constexpr PortableInteger128 operator+(PortableInteger128 a, PortableInteger128 b) noexcept {
+  friend constexpr PortableInteger128 operator+(PortableInteger128 a,
+                                                PortableInteger128 b) noexcept {
     const std::uint64_t lo = a.lo_ + b.lo_;
     return from_words(lo, a.hi_ + b.hi_ + (lo < a.lo_ ? 1 : 0));
   }
-  friend constexpr PortableInteger128 operator-(PortableInteger128 a, PortableInteger128 b) noexcept {
+  friend constexpr PortableInteger128 operator-(PortableInteger128 a,
+                                                PortableInteger128 b) noexcept {
     return from_words(a.lo_ - b.lo_, a.hi_ - b.hi_ - (a.lo_ < b.lo_ ? 1 : 0));
   }
-  friend constexpr PortableInteger128 operator*(PortableInteger128 a, PortableInteger128 b) noexcept {
+  friend constexpr PortableInteger128 operator*(PortableInteger128 a,
+                                                PortableInteger128 b) noexcept {
     const Words r = detail::wide::multiply_wrapping(a.words(), b.words());
     return from_words(r.lo, r.hi);
   }
-  friend constexpr PortableInteger128 operator/(PortableInteger128 a, PortableInteger128 b) noexcept {
+  friend constexpr PortableInteger128 operator/(PortableInteger128 a,
+                                                PortableInteger128 b) noexcept {
     return a.divide(b).quotient;
   }
-  friend constexpr PortableInteger128 operator%(PortableInteger128 a, PortableInteger128 b) noexcept {
+  friend constexpr PortableInteger128 operator%(PortableInteger128 a,
+                                                PortableInteger128 b) noexcept {
     return a.divide(b).remainder;
   }
   constexpr PortableInteger128 operator-() const noexcept { return PortableInteger128{} - *this; }
@@ -186,13 +191,16 @@ class PortableInteger128 {
   constexpr PortableInteger128 operator~() const noexcept { return from_words(~lo_, ~hi_); }
   constexpr bool operator!() const noexcept { return (lo_ | hi_) == 0; }
 
-  friend constexpr PortableInteger128 operator&(PortableInteger128 a, PortableInteger128 b) noexcept {
+  friend constexpr PortableInteger128 operator&(PortableInteger128 a,
+                                                PortableInteger128 b) noexcept {
     return from_words(a.lo_ & b.lo_, a.hi_ & b.hi_);
   }
-  friend constexpr PortableInteger128 operator|(PortableInteger128 a, PortableInteger128 b) noexcept {
+  friend constexpr PortableInteger128 operator|(PortableInteger128 a,
+                                                PortableInteger128 b) noexcept {
     return from_words(a.lo_ | b.lo_, a.hi_ | b.hi_);
   }
-  friend constexpr PortableInteger128 operator^(PortableInteger128 a, PortableInteger128 b) noexcept {
+  friend constexpr PortableInteger128 operator^(PortableInteger128 a,
+                                                PortableInteger128 b) noexcept {
     return from_words(a.lo_ ^ b.lo_, a.hi_ ^ b.hi_);
   }
   // Shifts by 0..127 (the count converts from any integer, as natively).
@@ -212,14 +220,30 @@ class PortableInteger128 {
     return from_words((a.lo_ >> n) | (a.hi_ << (64 - n)), (a.hi_ >> n) | (fill << (64 - n)));
   }
 
-  constexpr PortableInteger128& operator+=(PortableInteger128 b) noexcept { return *this = *this + b; }
-  constexpr PortableInteger128& operator-=(PortableInteger128 b) noexcept { return *this = *this - b; }
-  constexpr PortableInteger128& operator*=(PortableInteger128 b) noexcept { return *this = *this * b; }
-  constexpr PortableInteger128& operator/=(PortableInteger128 b) noexcept { return *this = *this / b; }
-  constexpr PortableInteger128& operator%=(PortableInteger128 b) noexcept { return *this = *this % b; }
-  constexpr PortableInteger128& operator&=(PortableInteger128 b) noexcept { return *this = *this & b; }
-  constexpr PortableInteger128& operator|=(PortableInteger128 b) noexcept { return *this = *this | b; }
-  constexpr PortableInteger128& operator^=(PortableInteger128 b) noexcept { return *this = *this ^ b; }
+  constexpr PortableInteger128& operator+=(PortableInteger128 b) noexcept {
+    return *this = *this + b;
+  }
+  constexpr PortableInteger128& operator-=(PortableInteger128 b) noexcept {
+    return *this = *this - b;
+  }
+  constexpr PortableInteger128& operator*=(PortableInteger128 b) noexcept {
+    return *this = *this * b;
+  }
+  constexpr PortableInteger128& operator/=(PortableInteger128 b) noexcept {
+    return *this = *this / b;
+  }
+  constexpr PortableInteger128& operator%=(PortableInteger128 b) noexcept {
+    return *this = *this % b;
+  }
+  constexpr PortableInteger128& operator&=(PortableInteger128 b) noexcept {
+    return *this = *this & b;
+  }
+  constexpr PortableInteger128& operator|=(PortableInteger128 b) noexcept {
+    return *this = *this | b;
+  }
+  constexpr PortableInteger128& operator^=(PortableInteger128 b) noexcept {
+    return *this = *this ^ b;
+  }
   constexpr PortableInteger128& operator<<=(int n) noexcept { return *this = *this << n; }
   constexpr PortableInteger128& operator>>=(int n) noexcept { return *this = *this >> n; }
   constexpr PortableInteger128& operator++() noexcept { return *this = *this + 1; }
@@ -325,7 +349,9 @@ class std::numeric_limits<edgeland::PortableInteger128<Signed>> {
   static constexpr bool is_modulo = !Signed;
   static constexpr int digits = Signed ? 127 : 128;
   static constexpr int radix = 2;
-  static constexpr T min() noexcept { return Signed ? T::from_words(0, std::uint64_t{1} << 63) : T(0); }
+  static constexpr T min() noexcept {
+    return Signed ? T::from_words(0, std::uint64_t{1} << 63) : T(0);
+  }
   static constexpr T lowest() noexcept { return min(); }
   static constexpr T max() noexcept {
     return T::from_words(~std::uint64_t{0}, Signed ? ~std::uint64_t{0} >> 1 : ~std::uint64_t{0});

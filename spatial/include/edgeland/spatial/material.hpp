@@ -41,8 +41,9 @@ concept MaterialNumber = std::integral<T> && !std::same_as<T, bool> && !std::sam
 // converts like its number; a scoped one (`enum class`) does not convert implicitly, as nothing
 // does from a scoped enumeration (the deleted constructor below says how to pass one).
 template <class E>
-concept UnscopedMaterialEnum = std::is_enum_v<E> && std::is_convertible_v<E, std::underlying_type_t<E>> &&
-                               MaterialNumber<std::underlying_type_t<E>>;
+concept UnscopedMaterialEnum =
+    std::is_enum_v<E> && std::is_convertible_v<E, std::underlying_type_t<E>> &&
+    MaterialNumber<std::underlying_type_t<E>>;
 template <class E>
 concept ScopedEnum = std::is_enum_v<E> && !std::is_convertible_v<E, std::underlying_type_t<E>>;
 
@@ -60,7 +61,7 @@ class Material {
       : value_(checked(static_cast<std::underlying_type_t<E>>(number))) {}
   // A scoped enumerator (enum class) is refused at compile time; the compiler quotes this line:
   template <ScopedEnum E>
-  Material(E) = delete;  // an enum class: pass Material(static_cast<int>(e)), or make the enum unscoped
+  Material(E) = delete;  // an enum class: pass Material(static_cast<int>(e))
 
   // The material's number, 0..255.
   constexpr std::uint8_t value() const noexcept { return value_; }
