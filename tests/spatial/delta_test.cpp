@@ -1,0 +1,299 @@
+// Deltas (issue 37, items 1 and 3; spatial/README.md "Deltas, divergence and repair"): the
+// envelope and its three kinds round-trip, lockstep by COMMAND reaches the writer's state hash,
+// late join is a snapshot and the COMMANDs after it, CHANGES keep a thin client's mirror equal to
+// the world, and hostile bytes are refused with a typed error and the world unchanged.
+#include "edgeland/spatial/delta.hpp"
+
+#include <gtest/gtest.h>
+
+#include <sstream>
+#include <string>
+
+#include "pinned_sequence.hpp"
+
+namespace edgeland {
+namespace {
+
+using Kind = EditCommand::Kind;
+
+// A stream of edits of every kind over a 4096^2 world: blobs of radius 20-140.
+EditCommand edit_number(std::uint64_t& seed) {
+  const Point64 c{static_cast<std::int64_t>(pinned::splitmix64(seed) % 4400) - 150,
+                  static_cast<std::int64_t>(pinned::splitmix64(seed) % 4400) - 150};
+  const std::int64_t r = 20 + static_cast<std::int64_t>(pinned::splitmix64(seed) % 120);
+  EditCommand e;
+  e.shape = {pinned::blob(c, r)};
+  switch (pinned::splitmix64(seed) % 6) {
+    case 0:
+      e.kind = Kind::kFill;
+      e.material = 2;
+      break;
+    case 1:
+      e.kind = Kind::kReplace;
+      e.material = 1;
+      e.to = 3;
+      break;
+    case 2:
+      e.kind = Kind::kFillEmpty;
+      e.material = 4;
+      break;
+    case 3:
+      e.kind = Kind::kRelabel;
+      e.map.set(1, 2).set(2, 1).set(0, 5);
+      break;
+    default:
+      e.kind = Kind::kCarve;
+      break;
+  }
+  return e;
+}
+
+Landscape fresh_world(Material fill = 1) { return Landscape({{0, 0}, {4096, 4096}}, fill); }
+
+std::string save_of(const Landscape& l) {
+  std::ostringstream out;
+  l.save(out);
+  return out.str();
+}
+
+TEST(DeltaCodec, EveryKindRoundTrips) {
+  Landscape server = fresh_world();
+  std::uint64_t seed = 37;
+  for (std::uint64_t sequence = 1; sequence <= 40; ++sequence) {
+    const Landscape before = server;
+    const EditCommand edit = edit_number(seed);
+    const ChangeSet changes = apply_edit(server, edit);
+    for (const Delta& d :
+         {command_delta(before, server, sequence, edit),
+          changes_delta(before, server, sequence, changes),
+          patch_delta(server, sequence, std::vector<TreePath>{TreePath{}}, before.state_hash())}) {
+      const std::string bytes = encode_delta(d);
+      EXPECT_EQ(decode_delta(bytes), d);
+    }
+  }
+}
+
+TEST(DeltaCodec, AnEditOfEachKindKeepsItsMaterialsAndShape) {
+  EditCommand e;
+  e.shape = {pinned::blob({100, 100}, 50), pinned::blob({-1000000, 2000000000}, 70)};
+  for (const Kind kind :
+       {Kind::kCarve, Kind::kFill, Kind::kFillEmpty, Kind::kReplace, Kind::kRelabel}) {
+    e.kind = kind;
+    e.material = kind == Kind::kCarve || kind == Kind::kRelabel ? Material() : Material(7);
+    e.to = kind == Kind::kReplace ? Material(255) : Material();
+    e.map = kind == Kind::kRelabel ? MaterialMap().set(0, 9).set(200, 3) : MaterialMap();
+    Delta d;
+    d.header.kind = DeltaKind::kCommand;
+    d.edits = {e};
+    EXPECT_EQ(decode_delta(encode_delta(d)).edits.front(), e);
+  }
+}
+
+// Every prefix of a delta, and every byte of it changed (the checksum made right again, so the
+// change reaches the reader behind it), is refused with a DeltaError or read as some delta:
+// nothing else escapes and nothing crashes (ASan in CI).
+TEST(DeltaCodec, TruncatedOrChangedBytesAreRefusedWithTheirOffset) {
+  Landscape server = fresh_world();
+  std::uint64_t seed = 5;
+  const Landscape before = server;
+  const EditCommand edit = edit_number(seed);
+  apply_edit(server, edit);
+  const std::string bytes = encode_delta(command_delta(before, server, 1, edit));
+  for (std::size_t n = 0; n < bytes.size(); ++n)
+    EXPECT_THROW(decode_delta(std::string_view(bytes).substr(0, n)), DeltaError) << n;
+  std::string corrupt = bytes;
+  corrupt[20] ^= 1;
+  try {
+    decode_delta(corrupt);
+    FAIL() << "a changed byte passed the checksum";
+  } catch (const DeltaError& e) {
+    EXPECT_EQ(e.offset, 8u);
+    EXPECT_NE(std::string(e.what()).find("checksum"), std::string::npos);
+  }
+  const auto fix_checksum = [](std::string& b) {
+    std::uint64_t h = 0xcbf29ce484222325ull;
+    for (std::size_t i = 0; i + 8 < b.size(); ++i) {
+      h ^= static_cast<unsigned char>(b[i]);
+      h *= 0x100000001b3ull;
+    }
+    for (int i = 0; i < 8; ++i) b[b.size() - 8 + i] = static_cast<char>(h >> (8 * i));
+  };
+  for (std::size_t i = 8; i + 8 < bytes.size(); ++i)
+    for (const int flip : {0x01, 0x80, 0xff}) {
+      std::string b = bytes;
+      b[i] = static_cast<char>(b[i] ^ flip);
+      fix_checksum(b);
+      try {
+        decode_delta(b);
+      } catch (const DeltaError&) {
+      }
+    }
+}
+
+TEST(DeltaCodec, ACountLargerThanTheBytesIsRefusedBeforeAnyAllocation) {
+  Delta d;
+  d.header.kind = DeltaKind::kChanges;
+  std::string bytes = encode_delta(d);
+  // The removed count (one byte, 0) becomes a 9-byte varint claiming 2^62 ids.
+  const std::size_t at = bytes.size() - 8 - 2;
+  bytes.replace(at, 1, "\x80\x80\x80\x80\x80\x80\x80\x80\x40", 9);
+  std::uint64_t h = 0xcbf29ce484222325ull;
+  for (std::size_t i = 0; i + 8 < bytes.size(); ++i) {
+    h ^= static_cast<unsigned char>(bytes[i]);
+    h *= 0x100000001b3ull;
+  }
+  for (int i = 0; i < 8; ++i) bytes[bytes.size() - 8 + i] = static_cast<char>(h >> (8 * i));
+  try {
+    decode_delta(bytes);
+    FAIL();
+  } catch (const DeltaError& e) {
+    EXPECT_NE(std::string(e.what()).find("count larger"), std::string::npos) << e.what();
+  }
+}
+
+// Lockstep: every COMMAND of a server's edits, applied by a client, gives the server's state
+// hash, which the delta's result hash checks at every step.
+TEST(DeltaCommand, LockstepReachesTheServersHashAtEveryEdit) {
+  Landscape server = fresh_world(), client = fresh_world();
+  std::uint64_t seed = 11;
+  for (std::uint64_t sequence = 1; sequence <= 150; ++sequence) {
+    const Landscape before = server;
+    const EditCommand edit = edit_number(seed);
+    const ChangeSet expected = apply_edit(server, edit);
+    const std::string bytes = encode_delta(command_delta(before, server, sequence, edit));
+    const ChangeSet got = client.apply_delta(decode_delta(bytes));
+    ASSERT_EQ(client.state_hash(), server.state_hash()) << sequence;
+    EXPECT_EQ(got.removed, expected.removed);
+    EXPECT_EQ(got.added.size(), expected.added.size());
+  }
+  EXPECT_TRUE(client.check().ok());
+}
+
+TEST(DeltaCommand, AnotherWorldAlgorithmBaseOrResultIsRefusedAndChangesNothing) {
+  Landscape server = fresh_world(), client = fresh_world();
+  std::uint64_t seed = 3;
+  const EditCommand edit = edit_number(seed);
+  const Landscape before = server;
+  apply_edit(server, edit);
+  const Delta good = command_delta(before, server, 1, edit);
+  const std::uint64_t hash = client.state_hash();
+  const auto refused = [&](Delta d, DeltaMismatch::Field field, const DeltaChecks& checks = {}) {
+    try {
+      client.apply_delta(d, checks);
+      ADD_FAILURE() << "applied";
+    } catch (const DeltaMismatch& e) {
+      EXPECT_EQ(e.field, field);
+    }
+    EXPECT_EQ(client.state_hash(), hash);
+  };
+  Delta d = good;
+  d.header.world ^= 1;
+  refused(d, DeltaMismatch::Field::kWorld);
+  d = good;
+  d.header.algorithm = kAlgorithmVersion + 1;
+  refused(d, DeltaMismatch::Field::kAlgorithm);
+  d = good;
+  d.header.base ^= 1;
+  refused(d, DeltaMismatch::Field::kBase);
+  d = good;
+  d.header.result ^= 1;
+  refused(d, DeltaMismatch::Field::kResult);
+  // A client that knows it diverged applies without the checks.
+  d.header.base ^= 1;
+  client.apply_delta(d, {.base = false, .result = false});
+  EXPECT_EQ(client.state_hash(), server.state_hash());
+  // A world of another configuration is another world.
+  LandscapeConfig kd;
+  kd.tree = TreeKind::kKdTree;
+  EXPECT_NE(Landscape({{0, 0}, {4096, 4096}}, 1, kd).world_hash(), client.world_hash());
+}
+
+// A hostile COMMAND decodes but its shape is out of range or invalid: the edit's own typed
+// error, and the world as it was.
+TEST(DeltaCommand, AHostileShapeGetsTheEditsErrorAndChangesNothing) {
+  Landscape client = fresh_world();
+  const std::uint64_t hash = client.state_hash();
+  Delta d;
+  d.header = {DeltaKind::kCommand, kAlgorithmVersion, client.world_hash(), 1, hash, 0};
+  EditCommand e;
+  e.shape = {{{0, 0}, {kCoordBound + 1, 0}, {0, 10}}};
+  d.edits = {e};
+  EXPECT_THROW(client.apply_delta(decode_delta(encode_delta(d))), CoordinateOutOfRange);
+  d.edits.front().shape = {{{0, 0}, {10, 10}, {10, 0}, {0, 10}}};  // a bow-tie
+  EXPECT_THROW(client.apply_delta(decode_delta(encode_delta(d))), InvalidInput);
+  d.edits.front().shape = {{{0, 0}, {std::int64_t{1} << 62, 0}, {0, 10}}};
+  EXPECT_THROW(decode_delta(encode_delta(d)), DeltaError);
+  EXPECT_EQ(client.state_hash(), hash);
+  Delta changes;
+  changes.header = d.header;
+  changes.header.kind = DeltaKind::kChanges;
+  EXPECT_THROW(client.apply_delta(changes, {.base = true, .result = false}), DeltaError);
+  EXPECT_EQ(client.state_hash(), hash);
+}
+
+// Late join (item 3): a snapshot taken at sequence k, then the COMMANDs after k, gives the
+// server's state at every later step.
+TEST(DeltaLateJoin, ASnapshotThenTheCommandsAfterItReachTheServersHash) {
+  Landscape server = fresh_world();
+  std::vector<std::string> log;  // log[i]: the delta of edit i + 1
+  std::string snapshot;
+  std::uint64_t seed = 21;
+  constexpr std::uint64_t kSnapshotAt = 60;
+  for (std::uint64_t sequence = 1; sequence <= 120; ++sequence) {
+    const Landscape before = server;
+    const EditCommand edit = edit_number(seed);
+    apply_edit(server, edit);
+    log.push_back(encode_delta(command_delta(before, server, sequence, edit)));
+    if (sequence == kSnapshotAt) snapshot = save_of(server);
+  }
+  std::istringstream in(snapshot);
+  Landscape joiner = Landscape::load(in);
+  for (std::uint64_t sequence = kSnapshotAt + 1; sequence <= log.size(); ++sequence) {
+    const Delta d = decode_delta(log[sequence - 1]);
+    ASSERT_EQ(d.header.sequence, sequence);
+    joiner.apply_delta(d);
+  }
+  EXPECT_EQ(joiner.state_hash(), server.state_hash());
+}
+
+// CHANGES: a thin client's mirror holds exactly the world's polygons after every edit, and its
+// digest is the world's drawn digest.
+TEST(DeltaChanges, AMirrorFollowsTheWorldPolygonForPolygon) {
+  Landscape server = fresh_world(kEmpty);
+  DrawMirror mirror;
+  std::uint64_t seed = 8;
+  for (std::uint64_t sequence = 1; sequence <= 80; ++sequence) {
+    const Landscape before = server;
+    const ChangeSet changes = apply_edit(server, edit_number(seed));
+    mirror.apply(decode_delta(encode_delta(changes_delta(before, server, sequence, changes))));
+    ASSERT_EQ(mirror.digest(), server.drawn_digest()) << sequence;
+  }
+  std::map<PolygonId, DrawnPolygon> world;
+  server.polygons_in(server.world(), [&](const PolygonView& v) {
+    world.emplace(v.id, DrawnPolygon{v.id, v.material, *v.polygon});
+    return true;
+  });
+  EXPECT_EQ(mirror.polygons(), world);
+  EXPECT_GT(world.size(), 20u);
+}
+
+TEST(DeltaChanges, AMirrorRefusesIdsItDoesNotHoldOrHoldsTwiceAndStaysAsItWas) {
+  DrawMirror mirror;
+  Delta d;
+  d.header.kind = DeltaKind::kChanges;
+  d.added = {{5, 1, {{0, 0}, {1, 0}, {0, 1}}}};
+  mirror.apply(d);
+  const std::uint64_t digest = mirror.digest();
+  EXPECT_THROW(mirror.apply(d), DeltaError);  // 5 again
+  Delta remove = d;
+  remove.added.clear();
+  remove.removed = {6};
+  EXPECT_THROW(mirror.apply(remove), DeltaError);
+  d.header.kind = DeltaKind::kCommand;
+  EXPECT_THROW(mirror.apply(d), DeltaError);
+  EXPECT_EQ(mirror.digest(), digest);
+  EXPECT_EQ(mirror.polygons().size(), 1u);
+}
+
+}  // namespace
+}  // namespace edgeland
