@@ -25,8 +25,9 @@ namespace {
 std::vector<std::size_t> entry_order(const Delta& d) {
   std::vector<std::size_t> order(d.patches.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::sort(order.begin(), order.end(),
-            [&](std::size_t a, std::size_t b) { return d.patches[a].path < d.patches[b].path; });
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return path_less(d.patches[a].path, d.patches[b].path);
+  });
   for (std::size_t k = 1; k < order.size(); ++k)
     if (path_within(d.patches[order[k]].path, d.patches[order[k - 1]].path))
       refuse(order[k], "its path lies within another entry's");

@@ -25,6 +25,13 @@ NodePtr replace_node(const std::vector<NodePtr>& chain, const TreePath& path, No
   return node;
 }
 
+bool path_less(const TreePath& a, const TreePath& b) {
+  const std::size_t n = std::min(a.size(), b.size());
+  for (std::size_t i = 0; i < n; ++i)
+    if (a[i] != b[i]) return a[i] < b[i];
+  return a.size() < b.size();
+}
+
 bool path_within(const TreePath& a, const TreePath& b) {
   return a.size() >= b.size() && std::equal(b.begin(), b.end(), a.begin());
 }
