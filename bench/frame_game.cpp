@@ -108,13 +108,15 @@ struct Body {
 class EdgelandGame {
  public:
   explicit EdgelandGame(const Landscape& start)
-      : land_(start), terrain_(world_, land_, terrain_options()), islands_(land_, game_materials()) {}
+      : land_(start),
+        terrain_(world_, land_, terrain_options()),
+        islands_(land_, game_materials()) {}
 
   void edit(const FrameEdit& e, std::array<double, kFrameStageCount>& t, FrameGameRun& run) {
     const ValidSet shape(PolygonSet{e.shape}, Operand::kClip);
     ThreadClock clock;
-    const ChangeSet changes = e.kind == FrameEdit::Kind::kCarve ? land_.carve(shape)
-                                                                 : land_.fill(shape, e.material);
+    const ChangeSet changes =
+        e.kind == FrameEdit::Kind::kCarve ? land_.carve(shape) : land_.fill(shape, e.material);
     t[kFrameEdits] += clock.lap();
     follow(changes, t, run);
   }
@@ -185,7 +187,8 @@ class EdgelandGame {
 
 class PixelGame {
  public:
-  explicit PixelGame(const BitmapWorld& start) : bitmap_(start), terrain_(world_, bitmap_, options()) {}
+  explicit PixelGame(const BitmapWorld& start)
+      : bitmap_(start), terrain_(world_, bitmap_, options()) {}
 
   void edit(const FrameEdit& e, std::array<double, kFrameStageCount>& t) {
     const PolygonSet shape{e.shape};
@@ -219,8 +222,11 @@ class PixelGame {
 class FrameGame {
  public:
   explicit FrameGame(const FrameGameOptions& options)
-      : options_(options), random_(options.seed), start_(game_world(options.size)),
-        edgeland_(start_), pixel_(as_bitmap(start_)) {
+      : options_(options),
+        random_(options.seed),
+        start_(game_world(options.size)),
+        edgeland_(start_),
+        pixel_(as_bitmap(start_)) {
     drop_bodies(options_.bodies);
     for (int i = 0; i < 120; ++i) step(edgeland_.world());  // the bodies land
   }
@@ -274,9 +280,10 @@ class FrameGame {
     const Point64 below{c.x + random_.in(-40, 40), c.y - random_.in(0, 60)};
     if (roll < 35) return {FrameEdit::Kind::kCarve, circle(below, random_.in(8, 40)), kEmpty};
     if (roll < 50)
-      return {FrameEdit::Kind::kCarve,
-              regular_polygon(below, random_.in(8, 48), random_.in(5, 12), {random_.in(0, 99), 100}),
-              kEmpty};
+      return {
+          FrameEdit::Kind::kCarve,
+          regular_polygon(below, random_.in(8, 48), random_.in(5, 12), {random_.in(0, 99), 100}),
+          kEmpty};
     if (roll < 70) {
       const Point64 to{below.x + random_.in(-80, 80), below.y + random_.in(-30, 30)};
       return {FrameEdit::Kind::kCarve, capsule(below, to, random_.in(6, 16)), kEmpty};
@@ -312,8 +319,8 @@ class FrameGame {
 
   int balls_and_boxes() const {
     const std::vector<Body>& bodies = edgeland_.bodies();
-    return static_cast<int>(std::count_if(bodies.begin(), bodies.end(),
-                                          [](const Body& b) { return !b.debris; }));
+    return static_cast<int>(
+        std::count_if(bodies.begin(), bodies.end(), [](const Body& b) { return !b.debris; }));
   }
 
   // Balls and boxes of half a metre dropped from above the hills.
@@ -322,8 +329,8 @@ class FrameGame {
       const std::int64_t s = options_.size;
       b2BodyDef def;
       def.type = b2_dynamicBody;
-      def.position = box2d::to_b2(edgeland_.units(),
-                                  {random_.in(s / 20, s - s / 20), s * 3 / 4 + random_.in(0, s / 8)});
+      def.position = box2d::to_b2(
+          edgeland_.units(), {random_.in(s / 20, s - s / 20), s * 3 / 4 + random_.in(0, s / 8)});
       b2Body* body = edgeland_.world().CreateBody(&def);
       b2CircleShape ball;
       ball.m_radius = 0.5f;

@@ -45,8 +45,8 @@ enum FrameStage : std::size_t {
   kFrameStageCount
 };
 inline constexpr std::array<const char*, kFrameStageCount> kFrameStageNames{
-    "edits", "colliders", "islands", "meshes",        "paint",     "trace",
-    "rebuild", "edgeland", "pixel",  "edgeland_step", "pixel_step"};
+    "edits",   "colliders", "islands", "meshes",        "paint",     "trace",
+    "rebuild", "edgeland",  "pixel",   "edgeland_step", "pixel_step"};
 
 struct FrameGameOptions {
   std::uint64_t seed = 0x6A3E;
