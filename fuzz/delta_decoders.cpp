@@ -129,6 +129,7 @@ std::optional<Finding> run_delta(const std::uint8_t* data, std::size_t size) {
     try {
       d = decode_delta(bytes);
     } catch (const DeltaError&) {
+    } catch (const InvalidInput&) {  // a COMMAND's shape; CoordinateOutOfRange too
     } catch (const std::exception& e) {
       other = e.what();
     }
@@ -139,7 +140,8 @@ std::optional<Finding> run_delta(const std::uint8_t* data, std::size_t size) {
     return Finding{
         "decoding " + std::to_string(bytes.size()) + " bytes took " + std::to_string(peak), ""};
   if (!d) return std::nullopt;
-  if (decode_delta(encode_delta(*d)) != *d)
+  const std::string again = encode_delta(*d);
+  if (encode_delta(decode_delta(again)) != again)
     return Finding{"a decoded delta does not round-trip", ""};
   if (d->header.kind == DeltaKind::kChanges) return apply_to_mirror(*d);
   const Landscape& base = base_worlds()[(flags >> 1) % base_worlds().size()];
@@ -154,18 +156,14 @@ std::vector<std::string> delta_seeds() {
   };
   const Landscape& filled = base_worlds()[0];
   Landscape after = filled;
-  EditCommand e;
-  e.shape = {square({500, 500}, 90)};
-  for (const EditCommand::Kind kind :
-       {EditCommand::Kind::kCarve, EditCommand::Kind::kFill, EditCommand::Kind::kRelabel}) {
-    e.kind = kind;
-    e.material = 3;
-    e.map.set(1, 4).set(0, 2);
+  const ValidSet shape(PolygonSet{square({500, 500}, 90)});
+  for (const Edit& e : {Edit::carve(shape), Edit::fill(shape, 3),
+                        Edit::relabel(shape, MaterialMap().set(1, 4).set(0, 2))}) {
     Landscape next = filled;
     const ChangeSet changes = apply_edit(next, e);
     add(1 | 8 | 16, command_delta(filled, next, 1, e));
     add(1, changes_delta(filled, next, 1, changes));
-    if (kind == EditCommand::Kind::kFill) after = next;
+    if (e.kind == Edit::Kind::kFill) after = next;
   }
   add(1 | 8 | 16, patch_delta(after, 1, {{}}, filled.state_hash()));
   add(1 | 16, patch_delta(after, 1, {{0}, {3}}, filled.state_hash()));

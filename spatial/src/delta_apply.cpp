@@ -1,25 +1,29 @@
 // Applying deltas (Landscape::apply_delta, apply_edit) and the world's own hash.
 #include "edgeland/spatial/delta.hpp"
+#include "edit_form.hpp"
 #include "patch.hpp"
 #include "state_hash.hpp"
 
 namespace edgeland {
 
-ChangeSet apply_edit(Landscape& world, const EditCommand& e) {
-  using Kind = EditCommand::Kind;
+ChangeSet apply_edit(Landscape& world, const Edit& e) {
+  using Kind = Edit::Kind;
+  if (!detail::has_its_form(e)) return world.relabel(e.shape, e.map);
   switch (e.kind) {
     case Kind::kCarve:
       return world.carve(e.shape);
     case Kind::kFill:
-      return world.fill(e.shape, e.material);
+      return world.fill(e.shape, e.map[kEmpty]);
     case Kind::kFillEmpty:
-      return world.fill_empty(e.shape, e.material);
-    case Kind::kReplace:
-      return world.replace(e.shape, e.material, e.to);
+      return world.fill_empty(e.shape, e.map[kEmpty]);
+    case Kind::kReplace: {
+      const auto [from, to] = detail::replaced(e.map);
+      return world.replace(e.shape, from, to);
+    }
     case Kind::kRelabel:
-      return world.relabel(e.shape, e.map);
+      break;
   }
-  throw DeltaError("unknown edit kind " + std::to_string(static_cast<int>(e.kind)), 0);
+  return world.relabel(e.shape, e.map);
 }
 
 std::uint64_t Landscape::world_hash() const noexcept {

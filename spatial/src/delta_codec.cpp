@@ -5,6 +5,7 @@
 #include "byte_codec.hpp"
 #include "delta_format.hpp"
 #include "edgeland/spatial/delta.hpp"
+#include "edit_form.hpp"
 #include "save_format.hpp"
 
 namespace edgeland {
@@ -13,7 +14,7 @@ namespace {
 namespace format = detail::delta_format;
 using detail::ByteReader;
 using detail::ByteWriter;
-using Kind = EditCommand::Kind;
+using Kind = Edit::Kind;
 
 // --- writing -----------------------------------------------------------------------------------
 void write_ring(ByteWriter& w, const Polygon& ring) {
@@ -39,14 +40,20 @@ void write_map(ByteWriter& w, const MaterialMap& map) {
   }
 }
 
-void write_edit(ByteWriter& w, const EditCommand& e) {
-  w.u8(static_cast<std::uint8_t>(e.kind));
-  if (e.kind == Kind::kFill || e.kind == Kind::kFillEmpty || e.kind == Kind::kReplace)
-    w.u8(e.material.value());
-  if (e.kind == Kind::kReplace) w.u8(e.to.value());
-  if (e.kind == Kind::kRelabel) write_map(w, e.map);
-  w.varint(e.shape.size());
-  for (const Polygon& p : e.shape) write_ring(w, p);
+// The kind and its materials (a map of another form than its kind's is sent as a relabel: the
+// map is what an Edit does), then the shape.
+void write_edit(ByteWriter& w, const Edit& e) {
+  const Kind kind = detail::has_its_form(e) ? e.kind : Kind::kRelabel;
+  w.u8(static_cast<std::uint8_t>(kind));
+  if (kind == Kind::kFill || kind == Kind::kFillEmpty) w.u8(e.map[kEmpty].value());
+  if (kind == Kind::kReplace) {
+    const auto [from, to] = detail::replaced(e.map);
+    w.u8(from.value());
+    w.u8(to.value());
+  }
+  if (kind == Kind::kRelabel) write_map(w, e.map);
+  w.varint(e.shape.polygons().size());
+  for (const Polygon& p : e.shape.polygons()) write_ring(w, p);
 }
 
 void write_patch(ByteWriter& w, const Delta& d) {
@@ -85,7 +92,7 @@ void write_payload(ByteWriter& w, const Delta& d) {
     case DeltaKind::kCommand:
       w.u8(format::kSingleEdit);
       w.varint(d.edits.size());
-      for (const EditCommand& e : d.edits) write_edit(w, e);
+      for (const Edit& e : d.edits) write_edit(w, e);
       return;
     case DeltaKind::kPatch:
       write_patch(w, d);
@@ -156,19 +163,33 @@ class DeltaReader {
     d.edits.push_back(read_edit());
   }
 
-  EditCommand read_edit() {
-    EditCommand e;
-    const auto kind = in_.fixed(1);
-    if (kind > static_cast<std::uint64_t>(Kind::kRelabel))
-      in_.fail("unknown edit kind " + std::to_string(kind));
-    e.kind = static_cast<Kind>(kind);
-    if (e.kind == Kind::kFill || e.kind == Kind::kFillEmpty || e.kind == Kind::kReplace)
-      e.material = static_cast<std::uint8_t>(in_.fixed(1));
-    if (e.kind == Kind::kReplace) e.to = static_cast<std::uint8_t>(in_.fixed(1));
-    if (e.kind == Kind::kRelabel) e.map = read_map();
-    e.shape.resize(in_.count(format::kMinPolygonBytes));
-    for (Polygon& p : e.shape) p = read_shape_ring();
-    return e;
+  Edit read_edit() {
+    const auto number = in_.fixed(1);
+    if (number > static_cast<std::uint64_t>(Kind::kRelabel))
+      in_.fail("unknown edit kind " + std::to_string(number));
+    const auto kind = static_cast<Kind>(number);
+    MaterialMap map;
+    if (kind == Kind::kCarve) map = MaterialMap::uniform(kEmpty);
+    if (kind == Kind::kFill) map = MaterialMap::uniform(static_cast<std::uint8_t>(in_.fixed(1)));
+    if (kind == Kind::kFillEmpty) map.set(kEmpty, static_cast<std::uint8_t>(in_.fixed(1)));
+    if (kind == Kind::kReplace) {
+      const auto from = static_cast<std::uint8_t>(in_.fixed(1));
+      map.set(from, static_cast<std::uint8_t>(in_.fixed(1)));
+    }
+    if (kind == Kind::kRelabel) map = read_map();
+    PolygonSet shape(in_.count(format::kMinPolygonBytes));
+    for (Polygon& p : shape) p = read_shape_ring();
+    return Edit{kind, valid_shape(std::move(shape)), map};
+  }
+
+  // What an edit does with a shape: a coordinate beyond the bound is CoordinateOutOfRange, any
+  // other violation InvalidInput naming the shape as the clip operand.
+  static ValidSet valid_shape(PolygonSet shape) {
+    for (std::size_t i = 0; i < shape.size(); ++i)
+      for (std::size_t j = 0; j < shape[i].size(); ++j)
+        if (!in_range(shape[i][j]))
+          throw CoordinateOutOfRange(Operand::kClip, i, 0, j, shape[i][j]);
+    return ValidSet(std::move(shape), Operand::kClip);
   }
 
   MaterialMap read_map() {

@@ -14,7 +14,7 @@ DeltaHeader header_of(DeltaKind kind, const Landscape& before, std::uint64_t bas
 }  // namespace
 
 Delta command_delta(const Landscape& before, const Landscape& after, std::uint64_t sequence,
-                    const EditCommand& edit) {
+                    const Edit& edit) {
   Delta d;
   d.header = header_of(DeltaKind::kCommand, before, before.state_hash(), after, sequence);
   d.edits.push_back(edit);

@@ -41,21 +41,11 @@ namespace edgeland {
 // them): peers of different versions may exchange PATCH and CHANGES, never COMMAND.
 inline constexpr std::uint32_t kAlgorithmVersion = 1;
 
-// One edit as a COMMAND carries it: the kind and its materials, and the shape (validated when
-// applied, as the Landscape's edit methods validate theirs).
-struct EditCommand {
-  enum class Kind : std::uint8_t { kCarve, kFill, kFillEmpty, kReplace, kRelabel };
-  Kind kind = Kind::kCarve;
-  Material material;  // fill, fill_empty: the material; replace: the material replaced
-  Material to;        // replace: what it becomes
-  MaterialMap map;    // relabel
-  PolygonSet shape;
-  friend bool operator==(const EditCommand&, const EditCommand&) = default;
-};
-
-// Runs the edit on the landscape (Landscape::carve, fill, ... with its arguments): the same
+// Runs one edit (types.hpp Edit) on the landscape: Landscape::carve, fill, fill_empty or replace
+// with the materials its map holds when the map has the kind's form (so the edit log records
+// the kind), else Landscape::relabel with the map (the map is what an Edit does). The same
 // errors and guarantees.
-EDGELAND_EXPORT ChangeSet apply_edit(Landscape& world, const EditCommand& edit);
+EDGELAND_EXPORT ChangeSet apply_edit(Landscape& world, const Edit& edit);
 
 enum class DeltaKind : std::uint8_t { kCommand = 1, kPatch = 2, kChanges = 3 };
 
@@ -90,25 +80,28 @@ struct DrawnPolygon {
 
 struct Delta {
   DeltaHeader header;
-  // kCommand: the edit (one; a batch form is reserved for batch edits).
-  std::vector<EditCommand> edits;
+  // kCommand: the edit (one; a batch form is reserved for batch edits). A COMMAND carries an
+  // edit's kind and the materials of its kind (fill: one; replace: from and to; relabel: the
+  // pairs its map changes) rather than the whole map.
+  std::vector<Edit> edits;
   // kPatch: the landscape's next id after the patch, and the subtrees (none: only the counter).
   PolygonId next_id = 0;
   std::vector<PatchEntry> patches;
   // kChanges: ascending ids.
   std::vector<PolygonId> removed;
   std::vector<DrawnPolygon> added;
-  friend bool operator==(const Delta&, const Delta&) = default;
 };
 
 // The delta's bytes (envelope, payload, checksum).
 EDGELAND_EXPORT std::string encode_delta(const Delta& delta);
-// Reads untrusted bytes. Throws DeltaError (what and at which byte). O(size).
+// Reads untrusted bytes. Throws DeltaError (what and at which byte), or for a COMMAND whose
+// shape is no valid set what an edit throws for it (CoordinateOutOfRange, InvalidInput with
+// operand kClip). O(size log size): a COMMAND's shape is validated.
 EDGELAND_EXPORT Delta decode_delta(std::string_view bytes);
 
 // A COMMAND: `edit` took `before` to `after` (its result), as edit number `sequence`.
 EDGELAND_EXPORT Delta command_delta(const Landscape& before, const Landscape& after,
-                                    std::uint64_t sequence, const EditCommand& edit);
+                                    std::uint64_t sequence, const Edit& edit);
 // A PATCH of `source`'s subtrees at `paths` (each an existing node; none nesting another), as of
 // edit number `sequence`; `base` is the receiver's state hash when known (0 otherwise).
 // Throws std::invalid_argument for a path that is not a loaded node of `source`.
