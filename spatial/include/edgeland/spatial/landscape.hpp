@@ -43,6 +43,7 @@
 #include <iosfwd>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -88,6 +89,25 @@ struct LandscapeState {
 };
 
 }  // namespace detail
+
+// One cell's polygons as arrays, for code that reads whole cells (the game layer): what
+// polygons_in hands out one view at a time, without a visitor or a reference count per polygon.
+// It shares the cell, so the arrays stay valid as long as it lives, whatever happens to the
+// landscape meanwhile (as PolygonView). Canonical order within the cell.
+class EDGELAND_EXPORT CellContents {
+ public:
+  const Box64& box() const noexcept;
+  std::size_t size() const noexcept;
+  std::span<const Polygon> polygons() const noexcept;
+  std::span<const PolygonId> ids() const noexcept;
+  std::span<const Box64> bounds() const noexcept;  // each polygon's bounding box
+  Material material(std::size_t i) const noexcept;
+
+ private:
+  friend class Landscape;
+  explicit CellContents(std::shared_ptr<const detail::Node> cell) : cell_(std::move(cell)) {}
+  std::shared_ptr<const detail::Node> cell_;
+};
 
 class EDGELAND_EXPORT Landscape {
  public:
@@ -151,6 +171,9 @@ class EDGELAND_EXPORT Landscape {
   // Calls visit for every cell whose closed box meets the closed box (empty cells included),
   // in tree order; stop by returning false.
   void cells_in(const Box64& box, const std::function<bool(const CellView&)>& visit) const;
+  // The cell whose box is exactly `box`, if the landscape has one. O(depth). (A box that is not a
+  // cell's, an inner node's included, gives nullopt: no error.)
+  std::optional<CellContents> cell(const Box64& box) const;
   // Twice the area of a material (exact), over the whole world (material 0: the empty area).
   Int128 twice_area(Material m) const;
   LandscapeStats stats() const;
