@@ -90,7 +90,7 @@ ChangeSet changes_between(std::span<const GoneCell> gone, const CellStore& store
 }  // namespace
 
 GameState::GameState(Landscape world, const GameOptions& options)
-    : options_(options), land_(std::move(world)), surface_(options.surface) {
+    : options_(options), land_(std::move(world)), filled_(land_), surface_(options.surface) {
   const std::vector<Box64> cells = all_cells(land_);
   store_.scan(land_, cells, options_.surface.materials);
   surface_.update(land_, store_, {}, cells);
@@ -115,6 +115,7 @@ GameUpdate GameState::apply(std::span<const Edit> edits) {
   GameUpdate out;
   start_work();
   note_fills(edits);
+  filled_ = land_;  // before debris leaves it: a body in a fill that fell is buried too
   follow(before, changes, out);
   take_changes(out.changes, std::move(changes));
   drain_debris(out);
@@ -125,6 +126,7 @@ GameUpdate GameState::apply(std::span<const Edit> edits) {
 GameUpdate GameState::reset(Landscape world) {
   land_ = std::move(world);
   fills_.clear();
+  filled_ = land_;
   queue_.clear();
   GameUpdate out;
   start_work();
@@ -218,8 +220,8 @@ void GameState::note_fills(std::span<const Edit> edits) {
     if (fills(e, options_.surface.materials)) fills_.push_back(e.shape);
 }
 
-// The box meets a filling shape's interior where the landscape is now solid: the shape cut to
-// the box (the clipper's one rounding), then overlaps().
+// The box meets a filling shape's interior where the edits left solid (before any of it fell as
+// debris): the shape cut to the box (the clipper's one rounding), then overlaps().
 bool GameState::buried(const Box64& box) const {
   if (box.min.x >= box.max.x || box.min.y >= box.max.y) return false;
   for (const ValidSet& shape : fills_) {
@@ -227,7 +229,7 @@ bool GameState::buried(const Box64& box) const {
     if (!bounds || !bounds->overlaps_open(box)) continue;
     const ValidClipResult inside = clip_to_box(shape, box);
     if (inside.set.polygons().empty()) continue;
-    for (Material m : land_.overlaps(inside.set))
+    for (Material m : filled_.overlaps(inside.set))
       if (options_.surface.materials.is_solid(m)) return true;
   }
   return false;

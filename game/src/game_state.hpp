@@ -55,6 +55,7 @@ class GameState {
 
   GameOptions options_;
   Landscape land_;
+  Landscape filled_;  // the landscape right after the last edits (buried())
   CellStore store_;
   SurfaceState surface_;
   std::unique_ptr<IslandTree> islands_;

@@ -61,8 +61,10 @@ class EDGELAND_EXPORT GameDriver {
 
   // Whether the last update's fills buried a body whose bounding box is `box`: the box's
   // interior meets the interior of a filling edit's shape (one that turns some non-solid
-  // material solid) where the landscape is now solid. A game removes such bodies: a body
-  // inside solid has no surface to stand on. O(depth + the shape).
+  // material solid) where the edits left solid material (also where that solid then fell as
+  // debris: a body inside a debris body is buried too). A game removes such bodies: a body
+  // inside solid has no surface to stand on. To within the clipper's one rounding of the
+  // shape cut to the box. O(depth + the shape).
   bool buried(const Box64& box) const;
 
   const Landscape& landscape() const noexcept;
