@@ -124,7 +124,8 @@ class EdgelandGame {
     t[kFrameEdits] += clock.lap();
     terrain_.apply(u);
     t[kFrameColliders] += clock.lap();
-    for (const Debris& d : u.debris) bodies_.push_back({box2d::make_debris_body(world_, d, units()), true});
+    for (const Debris& d : u.debris)
+      bodies_.push_back({box2d::make_debris_body(world_, d, units()), true});
     t[kFrameIslands] += clock.lap();
     benchmark::DoNotOptimize(u.meshes);
     note(u, run);

@@ -76,8 +76,8 @@ enum Stage : std::size_t {
   kStageCount
 };
 constexpr std::array<const char*, kStageCount> kStageNames{
-    "landscape_edit", "game_update", "terrain_update", "debris_bodies",
-    "bitmap_edit",    "chunk_trace", "chunk_rebuild",  "edgeland",
+    "landscape_edit", "game_update",   "terrain_update", "debris_bodies",
+    "bitmap_edit",    "chunk_trace",   "chunk_rebuild",  "edgeland",
     "pixel",          "edgeland_step", "pixel_step"};
 
 // One frame of a b2World, as a game steps it between edits.
@@ -173,7 +173,8 @@ void edgeland_edit(EdgelandSide& e, Workload w, const ValidSet& shape, std::size
   c.cells += static_cast<double>(u.changes.cells.size());
   c.chains_removed += static_cast<double>(u.chains.removed.size());
   c.chains_added += static_cast<double>(u.chains.added.size());
-  for (const PolygonMesh& m : u.meshes.built) c.triangles += static_cast<double>(m.triangles.size());
+  for (const PolygonMesh& m : u.meshes.built)
+    c.triangles += static_cast<double>(m.triangles.size());
   c.islands += static_cast<double>(u.debris.size());
   c.max_traced = std::max(c.max_traced, u.work.cells_traced);
 }

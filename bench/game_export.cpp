@@ -97,7 +97,7 @@ void run_game_export(benchmark::State& state) {
     state.counters["find_islands_ms"] =
         1e3 * fastest([&] { islands = find_islands(world, surface.materials).size(); });
     // The terrain from a game driver made at once: its chains, then Box2D's fixtures.
-  state.counters["terrain_build_ms"] =
+    state.counters["terrain_build_ms"] =
         1e3 * fastest_build([&](b2World& b2) {
           const GameDriver game(world, game_options);
           auto terrain = std::make_unique<box2d::Terrain>(b2, game, terrain_options);

@@ -12,8 +12,12 @@ bool box_less(const Box64& l, const Box64& r) {
 // Whether a record still describes the cell: the same polygons with the same ids and materials
 // (ids alone could repeat in another landscape, a load).
 bool same_cell(const CellScan& kept, const CellContents& now) {
-  if (!std::ranges::equal(kept.ids(), now.ids())) return false;
-  if (!std::ranges::equal(kept.contents->polygons(), now.polygons())) return false;
+  // std::equal, not std::ranges::equal: Emscripten 3.1.6's libc++ has no ranges algorithms.
+  const auto same = [](auto a, auto b) {
+    return std::equal(a.begin(), a.end(), b.begin(), b.end());
+  };
+  if (!same(kept.ids(), now.ids())) return false;
+  if (!same(kept.contents->polygons(), now.polygons())) return false;
   for (std::size_t i = 0; i < now.size(); ++i)
     if (kept.materials[i] != now.material(i)) return false;
   return true;

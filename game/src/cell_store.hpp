@@ -15,7 +15,7 @@ namespace edgeland::game_detail {
 
 struct BoxHash {
   std::size_t operator()(const Box64& b) const noexcept {
-    return Point64Hash{}(b.min) * 31u ^ Point64Hash{}(b.max);
+    return Point64Hash{}(b.min) * 31u ^ Point64Hash {}(b.max);
   }
 };
 
@@ -64,8 +64,7 @@ class CellStore {
 
 // The cells of `before` a change replaced: those whose interiors meet a new cell's (`fresh`,
 // ChangeSet::cells).
-void replaced_cells(const Landscape& before, std::span<const Box64> fresh,
-                    std::vector<Box64>& out);
+void replaced_cells(const Landscape& before, std::span<const Box64> fresh, std::vector<Box64>& out);
 
 // The cells of `world` whose polygons differ from the store's records (`fresh`), and the
 // records that no longer match a cell of `world` as it is (`gone`): a change of any kind (a

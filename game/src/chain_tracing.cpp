@@ -23,6 +23,11 @@ constexpr int kSy[4] = {1, 1, -1, -1};
 
 Point64 minus(Point64 a, Point64 b) { return {a.x - b.x, a.y - b.y}; }
 
+// Inside the box and on none of its sides: every quadrant around p is the cell's.
+bool strictly_inside(const Box64& box, Point64 p) {
+  return box.min.x < p.x && p.x < box.max.x && box.min.y < p.y && p.y < box.max.y;
+}
+
 // For each segment, the one that follows it in the cell (scratch.next), or kNoSegment.
 // scratch.order sorts the segments by start point.
 void successors(std::span<const SurfaceSegment> segs, const Box64& cell, const Box64& world,
@@ -38,6 +43,10 @@ void successors(std::span<const SurfaceSegment> segs, const Box64& cell, const B
     auto last = first;
     while (last != order.end() && segs[*last].a == v) ++last;
     if (first == last) continue;
+    if (last - first == 1 && strictly_inside(cell, v)) {  // nothing blocked: the one way on
+      next[i] = *first;
+      continue;
+    }
     dirs.clear();
     for (auto it = first; it != last; ++it) dirs.push_back(minus(segs[*it].b, v));
     const auto pick = first_clockwise(minus(segs[i].a, v), dirs,

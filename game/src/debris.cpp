@@ -1,21 +1,30 @@
 #include "debris.hpp"
 
+#include <algorithm>
 #include <map>
+#include <optional>
 
 #include "edgeland/clip/clip.hpp"
+#include "edgeland/game/render_meshes.hpp"
 #include "edgeland/kernel/centroid.hpp"
 #include "edgeland/kernel/convex_pieces.hpp"
 
 namespace edgeland::game_detail {
 namespace {
 
-bool holds(const Landscape& world, const IslandPiece& piece) {
-  bool found = false;
-  world.polygons_in(*bounding_box(piece.polygon), [&](const PolygonView& v) {
-    found = v.id == piece.id && v.material == piece.material && *v.polygon == piece.polygon;
-    return !found;
+// Where the landscape holds the piece now: the cell whose box holds the polygon's and whose
+// polygons include its id (an unchanged polygon keeps its id, also in a cell split or merged
+// since the island was found; ids are never reused).
+std::optional<PolygonRef> current(const Landscape& world, const IslandPiece& piece) {
+  const Box64 bounds = *bounding_box(piece.polygon);
+  std::optional<PolygonRef> out;
+  world.cells_in({bounds.min, bounds.min}, [&](const CellView& c) {
+    if (!c.box.contains(bounds)) return true;
+    const std::span<const PolygonId> ids = world.cell(c.box)->ids();
+    if (std::find(ids.begin(), ids.end(), piece.id) != ids.end()) out = PolygonRef{piece.id, c.box};
+    return !out;
   });
-  return found;
+  return out;
 }
 
 // The island's region per material as maximal polygons: its pieces merged (one union of
@@ -41,16 +50,26 @@ std::vector<DebrisPiece> pieces_of(const std::vector<Debris::Region>& regions,
 
 }  // namespace
 
-bool present(const Landscape& world, const Island& island) {
-  for (const IslandPiece& p : island.pieces)
-    if (!holds(world, p)) return false;
+bool present(const Landscape& world, const Island& island, std::vector<PolygonRef>& refs) {
+  const std::size_t first = refs.size();
+  for (const IslandPiece& p : island.pieces) {
+    const std::optional<PolygonRef> ref = current(world, p);
+    if (!ref) {
+      refs.resize(first);
+      return false;
+    }
+    refs.push_back(*ref);
+  }
   return true;
 }
 
-Debris debris_of(const Island& island, std::size_t max_piece_vertices) {
+Debris debris_of(const Island& island, const GameOptions& options) {
   Debris d;
   d.regions = regions_of(island);
-  d.pieces = pieces_of(d.regions, max_piece_vertices);
+  d.pieces = pieces_of(d.regions, options.max_piece_vertices);
+  if (options.meshes)
+    for (const Debris::Region& r : d.regions)
+      for (const Polygon& p : r.polygons) d.meshes.push_back(polygon_mesh(0, r.material, p));
   d.twice_area = island.twice_area;
   PolygonSet all;
   for (const IslandPiece& p : island.pieces) all.push_back(p.polygon);
@@ -60,19 +79,18 @@ Debris debris_of(const Island& island, std::size_t max_piece_vertices) {
 }
 
 DetachedAll detach_islands(Landscape& world, std::span<const Island> islands,
-                           std::size_t max_piece_vertices) {
+                           const GameOptions& options) {
   DetachedAll out;
-  PolygonSet carved;
+  std::vector<PolygonRef> refs;
   for (const Island& island : islands) {
-    if (!present(world, island)) {
+    if (!present(world, island, refs)) {
       ++out.stale;
       continue;
     }
-    out.debris.push_back(debris_of(island, max_piece_vertices));
-    for (const IslandPiece& p : island.pieces) carved.push_back(p.polygon);
+    out.debris.push_back(debris_of(island, options));
   }
-  // Islands touch one another at points at most: their polygons together are a valid set.
-  if (!carved.empty()) out.changes = world.carve(ValidSet(std::move(carved)));
+  // The polygons carved out by their ids: nothing to validate, nothing rounds.
+  if (!refs.empty()) out.changes = world.remove(refs);
   return out;
 }
 

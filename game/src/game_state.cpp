@@ -53,7 +53,9 @@ struct Held {
   Material material;
   const Polygon* ring;
   Box64 cell;
-  bool same(const Held& o) const { return id == o.id && material == o.material && *ring == *o.ring; }
+  bool same(const Held& o) const {
+    return id == o.id && material == o.material && *ring == *o.ring;
+  }
 };
 
 void add_held(const CellContents& c, std::vector<Held>& out) {
@@ -63,8 +65,8 @@ void add_held(const CellContents& c, std::vector<Held>& out) {
 
 // Whether `list` (ascending by id) holds the same polygon as `h`.
 bool holds(const std::vector<Held>& list, const Held& h) {
-  const auto [lo, hi] = std::equal_range(
-      list.begin(), list.end(), h, [](const Held& l, const Held& r) { return l.id < r.id; });
+  const auto [lo, hi] = std::equal_range(list.begin(), list.end(), h,
+                                         [](const Held& l, const Held& r) { return l.id < r.id; });
   return std::any_of(lo, hi, [&](const Held& o) { return o.same(h); });
 }
 
@@ -176,7 +178,7 @@ void GameState::drain_debris(GameUpdate& out) {
   if (queue_.empty()) return;
   const std::vector<Island> islands = take_from_queue();
   const Landscape before = land_;
-  DetachedAll detached = detach_islands(land_, islands, options_.max_piece_vertices);
+  DetachedAll detached = detach_islands(land_, islands, options_);
   if (!detached.changes.cells.empty()) follow(before, detached.changes, out);
   take_changes(out.changes, std::move(detached.changes));
   out.work.islands_detached += detached.debris.size();

@@ -61,7 +61,8 @@ void SurfaceState::compute_covers(const Landscape& world, CellStore& store,
     CellRecord& record = store.at(box);
     covers_of(world, store, box, record.covers);
     const auto before = gone_.find(box);
-    add_computed(record, box, before == gone_.end() ? std::vector<ChainId>{} : before->second->chains);
+    add_computed(record, box,
+                 before == gone_.end() ? std::vector<ChainId>{} : before->second->chains);
   }
   for (const Box64& box : fresh) {
     const auto before = gone_.find(box);
@@ -181,8 +182,8 @@ void SurfaceState::reghost_kept(const Box64& world, CellStore& store, ChainUpdat
 void SurfaceState::rekey(const SurfaceChain& kept, const SurfaceChain& again, CellStore& store,
                          ChainUpdate& update) {
   std::vector<ChainId>& ids = store.at(kept.cell).chains;
-  const auto at = std::find_if(ids.begin(), ids.end(),
-                               [&](ChainId id) { return &chains_.at(id) == &kept; });
+  const auto at =
+      std::find_if(ids.begin(), ids.end(), [&](ChainId id) { return &chains_.at(id) == &kept; });
   auto node = chains_.extract(*at);
   update.removed.push_back(node.key());
   node.key() = next_id_++;
@@ -196,8 +197,7 @@ void SurfaceState::rekey(const SurfaceChain& kept, const SurfaceChain& again, Ce
 // Stage "commit": each computed cell's new chains take the id of an equal old chain of the same
 // box, or a fresh one (moved into the map, the index pointed at the map's node); old chains not
 // taken, and those of gone cells whose box is gone, are removed.
-void SurfaceState::commit(CellStore& store, std::span<const GoneCell> gone,
-                          ChainUpdate& update) {
+void SurfaceState::commit(CellStore& store, std::span<const GoneCell> gone, ChainUpdate& update) {
   for (Computed& c : computed_) {
     std::vector<ChainId>& ids = store.at(c.box).chains;
     ids.clear();

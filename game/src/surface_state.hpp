@@ -48,7 +48,7 @@ class SurfaceState {
   // A cell whose chains are traced again, and its new chains (ghosts set in stage "ghosts").
   struct Computed {
     Box64 box;
-    std::vector<ChainId> old;     // its chains before (the gone cell's of that box, if any)
+    std::vector<ChainId> old;          // its chains before (the gone cell's of that box, if any)
     std::size_t first = 0, count = 0;  // its new chains in pending_
   };
 

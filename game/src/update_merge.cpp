@@ -54,8 +54,6 @@ void finish_changes(ChangeSet& changes, const Landscape& world) {
             [](const auto& l, const auto& r) { return l.first < r.first; });
 }
 
-void finish_chains(ChainUpdate& chains) {
-  std::sort(chains.removed.begin(), chains.removed.end());
-}
+void finish_chains(ChainUpdate& chains) { std::sort(chains.removed.begin(), chains.removed.end()); }
 
 }  // namespace edgeland::game_detail

@@ -161,9 +161,14 @@ ChangeSet Landscape::relabel(const ValidSet& shape, const MaterialMap& map) {
 // it was), the edit's line recorded, and the commit, one assignment.
 ChangeSet Landscape::apply(const ValidSet& shape, const detail::EditTable& table,
                            const std::function<std::string()>& log_line) {
+  return apply([&] { return detail::EditBuilder(s_, table).build(shape); }, log_line);
+}
+
+ChangeSet Landscape::apply(const std::function<detail::EditResult()>& build,
+                           const std::function<std::string()>& log_line) {
   detail::EditResult edit = [&] {
     try {
-      return detail::EditBuilder(s_, table).build(shape);
+      return build();
     } catch (const detail::EditFailure& failure) {
       throw detail::internal_error(s_, failure.what, log_line());
     }

@@ -61,21 +61,25 @@ PhysicsMaterials PhysicsScene::materials() {
   return m;
 }
 
+GameOptions PhysicsScene::game_options() {
+  GameOptions g;
+  g.surface.materials = materials();
+  g.surface.border_wall = true;  // nothing leaves the world
+  return g;
+}
+
 TerrainOptions PhysicsScene::terrain_options(const PhysicsSceneOptions& options) {
   TerrainOptions t;
-  t.surface.materials = materials();
-  t.surface.border_wall = true;  // nothing leaves the world
-  t.units.units_per_engine_unit = options.units_per_metre;
+  t.units_per_metre = options.units_per_metre;
   return t;
 }
 
 PhysicsScene::PhysicsScene(const PhysicsSceneOptions& options)
     : options_(options),
       random_(options.seed),
-      land_(scene_world(options.size)),
+      game_(scene_world(options.size), game_options()),
       world_(b2Vec2(0, -10)),
-      terrain_(world_, land_, terrain_options(options)),
-      islands_(land_, materials()) {
+      terrain_(world_, game_, terrain_options(options)) {
   drop_bodies(options_.bodies);
 }
 
@@ -115,71 +119,53 @@ void PhysicsScene::settle(int frames) {
     world_.Step(1.0f / 60.0f, 8, 3);
     stats_.step_seconds += since(start);
     ++stats_.frames;
+    ++stats_.settled;
   }
 }
 
+// The frame's edits as one batch, the update applied, buried bodies replaced, one step.
 void PhysicsScene::frame() {
-  for (int k = 0; k < options_.edits_per_frame; ++k) edit_near_a_body();
+  std::vector<Edit> edits;
+  for (int k = 0; k < options_.edits_per_frame; ++k) edits.push_back(edit_near_a_body());
+  auto start = Clock::now();
+  const GameUpdate update = game_.apply(edits);
+  stats_.game_seconds += since(start);
+  stats_.edits += options_.edits_per_frame;
+  apply(update);
+  bury_bodies();
+  drop_bodies(options_.bodies - balls_and_boxes());
   settle(1);
+  --stats_.settled;  // settle() counted it
 }
 
-// A blast around a random body, or a fill beside or below it; bodies a fill buries leave the
-// play and new ones drop from the sky, so about `bodies` are always in play.
-void PhysicsScene::edit_near_a_body() {
+// A blast around a random body, or a fill beside or below it.
+Edit PhysicsScene::edit_near_a_body() {
   const SceneBody& target = bodies_[static_cast<std::size_t>(random_.in(0, bodies_.size() - 1))];
   const Point64 c = centre(target.body);
   if (random_.in(0, 3) == 0) {
-    const PolygonSet shape{
-        blast({c.x + random_.in(-120, 120), c.y - random_.in(40, 120)}, random_.in(8, 32))};
-    bury_bodies_under(shape);
-    const auto start = Clock::now();
-    const ChangeSet changes = land_.fill(shape, static_cast<Material>(random_.in(2, 3)));
-    stats_.edit_seconds += since(start);
-    apply(changes);
-    drop_bodies(options_.bodies - balls_and_boxes());
-  } else {
-    const PolygonSet shape{
-        blast({c.x + random_.in(-60, 60), c.y + random_.in(-80, 20)}, random_.in(8, 48))};
-    const auto start = Clock::now();
-    const ChangeSet changes = land_.carve(shape);
-    stats_.edit_seconds += since(start);
-    apply(changes);
+    const Polygon shape =
+        blast({c.x + random_.in(-120, 120), c.y - random_.in(40, 120)}, random_.in(8, 32));
+    return Edit::fill(ValidSet(PolygonSet{shape}), static_cast<Material>(random_.in(2, 3)));
   }
+  const Polygon shape =
+      blast({c.x + random_.in(-60, 60), c.y + random_.in(-80, 20)}, random_.in(8, 48));
+  return Edit::carve(ValidSet(PolygonSet{shape}));
 }
 
-// Every tracker sees every edit, the detaches too.
-void PhysicsScene::apply(const ChangeSet& changes) {
-  ++stats_.edits;
+// The update's chains to the terrain, its debris as bodies.
+void PhysicsScene::apply(const GameUpdate& update) {
   auto start = Clock::now();
-  const ChainUpdate u = terrain_.update(land_, changes);
+  terrain_.apply(update);
   stats_.collider_seconds += since(start);
-  stats_.chains_removed += u.removed.size();
-  stats_.chains_added += u.added.size();
+  stats_.chains_removed += update.chains.removed.size();
+  stats_.chains_added += update.chains.added.size();
   start = Clock::now();
-  std::vector<Island> pending = islands_.update(land_, changes);
-  stats_.island_seconds += since(start);
-  detach_islands(std::move(pending));
-}
-
-// The loop of islands.hpp: a detach can re-cut the cells of another island found by the same
-// edit; that one is then stale, and the tracker reports it again.
-void PhysicsScene::detach_islands(std::vector<Island> pending) {
-  while (!pending.empty()) {
-    const Island island = std::move(pending.back());
-    pending.pop_back();
-    DetachedIsland detached;
-    try {
-      detached = detach(land_, island);
-    } catch (const StaleIsland&) {
-      continue;
-    }
-    terrain_.update(land_, detached.changes);
-    for (Island& again : islands_.update(land_, detached.changes))
-      pending.push_back(std::move(again));
-    b2Body* debris = make_debris_body(world_, detached, terrain_.units());
+  for (const Debris& d : update.debris) {
+    b2Body* debris = make_debris_body(world_, d, terrain_.units());
     bodies_.push_back({debris, true, debris->GetPosition().y});
     ++stats_.detached;
   }
+  stats_.debris_seconds += since(start);
 }
 
 Box64 PhysicsScene::box_of(b2Body* body) const {
@@ -190,20 +176,16 @@ Box64 PhysicsScene::box_of(b2Body* body) const {
   return {{lo.x - 1, lo.y - 1}, {hi.x + 1, hi.y + 1}};
 }
 
-// A fill buries the bodies it overlaps, debris included (the game put solid where they are):
-// they leave the play, the one exception to "no centre in solid".
-void PhysicsScene::bury_bodies_under(const PolygonSet& shape) {
-  Landscape probe(land_.world());
-  probe.fill(shape, 1);
+// The frame's fills buried the bodies they overlap, debris included (the game put solid where
+// they are): they leave the play, the one exception to "no centre in solid".
+void PhysicsScene::bury_bodies() {
   for (SceneBody& b : bodies_) {
-    if (probe.overlaps(box_of(b.body)).empty()) continue;
+    if (!game_.buried(box_of(b.body))) continue;
     world_.DestroyBody(b.body);
     b.body = nullptr;
     ++stats_.buried;
   }
-  bodies_.erase(std::remove_if(bodies_.begin(), bodies_.end(),
-                               [](const SceneBody& b) { return b.body == nullptr; }),
-                bodies_.end());
+  std::erase_if(bodies_, [](const SceneBody& b) { return b.body == nullptr; });
 }
 
 Point64 PhysicsScene::centre(const b2Body* body) const {
@@ -216,7 +198,7 @@ std::vector<Point64> PhysicsScene::centres_in_solid() const {
   for (const SceneBody& b : bodies_) {
     if (b.debris) continue;
     const Point64 c = centre(b.body);
-    if (materials().is_solid(land_.material_at(c))) out.push_back(c);
+    if (materials().is_solid(land().material_at(c))) out.push_back(c);
   }
   return out;
 }
@@ -225,7 +207,7 @@ std::vector<Point64> PhysicsScene::centres_outside_world() const {
   std::vector<Point64> out;
   for (const SceneBody& b : bodies_) {
     const Point64 c = centre(b.body);
-    if (!land_.world().contains(c)) out.push_back(c);
+    if (!land().world().contains(c)) out.push_back(c);
   }
   return out;
 }

@@ -1,9 +1,10 @@
 #pragma once
 // The physics scene of the Box2D adapter's test and of `edgeland demo --physics` (one scene,
 // so the demo shows what the test checks): a layered world with hills (bedrock, rock, dirt), 200
-// balls and boxes resting and rolling on it, and a stream of blasts and fills near them. Every
-// edit goes to the terrain's fixtures and to the island tracker; new islands are detached and fall
-// as debris bodies. Deterministic: a seeded generator, a fixed step.
+// balls and boxes resting and rolling on it, and a stream of blasts and fills near them. Each
+// frame's edits go to the game driver as one batch; its update goes to the terrain's fixtures,
+// its debris become bodies, and the bodies its fills buried leave the play. Deterministic: a
+// seeded generator, a fixed step.
 #include <box2d/box2d.h>
 
 #include <cstdint>
@@ -29,9 +30,10 @@ struct SceneBody {
 
 // What the scene has done, and where its time went (wall clock; reporting only).
 struct SceneStats {
-  int frames = 0, edits = 0, detached = 0, buried = 0;
+  int frames = 0, settled = 0, edits = 0, detached = 0,
+      buried = 0;  // settled: frames without edits
   std::size_t chains_removed = 0, chains_added = 0;
-  double edit_seconds = 0, collider_seconds = 0, island_seconds = 0, step_seconds = 0;
+  double game_seconds = 0, collider_seconds = 0, debris_seconds = 0, step_seconds = 0;
 };
 
 class PhysicsScene {
@@ -52,9 +54,11 @@ class PhysicsScene {
   Point64 centre(const b2Body* body) const;
 
   static PhysicsMaterials materials();  // bedrock (1) anchored
+  static GameOptions game_options();
   static TerrainOptions terrain_options(const PhysicsSceneOptions& options);
 
-  const Landscape& land() const { return land_; }
+  const Landscape& land() const { return game_.landscape(); }
+  const GameDriver& game() const { return game_; }
   b2World& world() { return world_; }
   const Terrain& terrain() const { return terrain_; }
   const std::vector<SceneBody>& bodies() const { return bodies_; }
@@ -71,20 +75,18 @@ class PhysicsScene {
   };
 
   void drop_bodies(int count);
-  void edit_near_a_body();
-  void apply(const ChangeSet& changes);
-  void detach_islands(std::vector<Island> pending);
-  void bury_bodies_under(const PolygonSet& shape);
+  Edit edit_near_a_body();
+  void apply(const GameUpdate& update);
+  void bury_bodies();
   Box64 box_of(b2Body* body) const;
   Polygon blast(Point64 centre, std::int64_t radius);
   int balls_and_boxes() const;
 
   PhysicsSceneOptions options_;
   Random random_;
-  Landscape land_;
+  GameDriver game_;
   b2World world_;
   Terrain terrain_;
-  IslandTracker islands_;
   std::vector<SceneBody> bodies_;
   SceneStats stats_;
 };

@@ -42,8 +42,8 @@ namespace {
 // The origin's rule (terrain.hpp, UNITS) and the float range, checked on the world's corners.
 EngineUnits engine_units(const TerrainOptions& options, const Box64& world) {
   const EngineUnits units{options.origin.value_or(world.min), options.units_per_metre};
-  for (const Point64 corner : {world.min, world.max, Point64{world.min.x, world.max.y},
-                               Point64{world.max.x, world.min.y}})
+  for (const Point64 corner :
+       {world.min, world.max, Point64{world.min.x, world.max.y}, Point64{world.max.x, world.min.y}})
     require_in_engine_range(corner, units.origin);
   return units;
 }
@@ -59,7 +59,8 @@ OutOfEngineRange::OutOfEngineRange(Point64 p, Point64 o)
 
 void require_in_engine_range(Point64 p, Point64 origin) {
   const auto far = [](std::int64_t a, std::int64_t b) {
-    return static_cast<Int128>(a) - b > kMaxEngineOffset || static_cast<Int128>(b) - a > kMaxEngineOffset;
+    return static_cast<Int128>(a) - b > kMaxEngineOffset ||
+           static_cast<Int128>(b) - a > kMaxEngineOffset;
   };
   if (far(p.x, origin.x) || far(p.y, origin.y)) throw OutOfEngineRange(p, origin);
 }
@@ -77,6 +78,29 @@ Terrain::Terrain(b2World& world, const GameDriver& game, const TerrainOptions& o
       grid_(std::max<std::int64_t>(1, options.body_grid)),
       bodies_(static_cast<std::size_t>(grid_ * grid_), nullptr) {
   for (const auto& [id, chain] : game.chains()) add(id, chain);
+  reserve_proxies(options.reserve_proxies.value_or(
+      std::max(kDefaultReservedProxies, 2 * static_cast<std::size_t>(world_.GetProxyCount()))));
+}
+
+// BROAD PHASE (terrain.hpp): a zig-zag chain of `count` edges a unit of Box2D's space apart,
+// beyond the world's lower-left corner (nothing there to pair with), stepped over and destroyed.
+void Terrain::reserve_proxies(std::size_t count) {
+  if (count <= static_cast<std::size_t>(world_.GetProxyCount())) return;
+  const b2Vec2 corner = to_b2(units_, world_box_.min);
+  b2BodyDef def;
+  def.type = b2_staticBody;
+  def.position.Set(corner.x - 1000.0f, corner.y - 1000.0f);
+  b2Body* scratch = world_.CreateBody(&def);
+  std::vector<b2Vec2>& v = vertices_;
+  v.clear();
+  for (std::size_t i = 0; i <= count; ++i)
+    v.push_back({static_cast<float>(i % 512) * 0.5f,
+                 static_cast<float>(i / 512) * 0.5f + static_cast<float>(i % 2) * 0.25f});
+  b2ChainShape chain;
+  chain.CreateChain(v.data(), static_cast<int32>(v.size()), v.front(), v.back());
+  scratch->CreateFixture(&chain, 0.0f);
+  world_.Step(0.0f, 0, 0);  // the broad phase forgets the new proxies (else each destroy scans)
+  world_.DestroyBody(scratch);
 }
 
 Terrain::~Terrain() {

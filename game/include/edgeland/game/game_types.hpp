@@ -94,6 +94,8 @@ struct Debris {
   };
   std::vector<Region> regions;      // ascending material
   std::vector<DebrisPiece> pieces;  // the convex pieces of every region polygon, in order
+  std::vector<PolygonMesh> meshes;  // each region polygon's mesh, in order (GameOptions::meshes;
+                                    // ids 0: these polygons are not the landscape's)
   Int128 twice_area = 0;
   RationalPoint centroid;
   Box64 bounds;
@@ -119,7 +121,7 @@ struct GameWork {
   std::size_t cells_scanned = 0;    // cells read and cut into boundary pieces (stage 1)
   std::size_t boundary_passes = 0;  // stage-1 passes run (one per cell scanned)
   std::size_t cells_traced = 0;     // cells whose chains were traced (scanned or re-covered)
-  std::size_t islands_found = 0;     // new islands (joining the debris queue)
+  std::size_t islands_found = 0;    // new islands (joining the debris queue)
   std::size_t islands_detached = 0;
 };
 

@@ -69,7 +69,8 @@ struct Node;     // the tree (spatial/src/node.hpp)
 struct LogLine;  // the recorded log, a persistent list shared by copies (spatial/src/edit_log.hpp)
 using AreaTable = std::array<Int128, kMaterialCount>;
 
-struct EditTable;  // an edit's material -> material table (spatial/src/edit.hpp)
+struct EditTable;   // an edit's material -> material table (spatial/src/edit.hpp)
+struct EditResult;  // what an edit builds (spatial/src/edit.hpp)
 
 // A landscape's whole state, private to Landscape: spatial/src's stages take it as an argument
 // from the Landscape's members. An edit builds the next state from it and Landscape::apply
@@ -133,6 +134,12 @@ class EDGELAND_EXPORT Landscape {
   ChangeSet fill_empty(const PolygonSet& shape, Material material);
   ChangeSet replace(const PolygonSet& shape, Material from, Material to);
   ChangeSet relabel(const PolygonSet& shape, const MaterialMap& map);
+  // Removes these polygons (each at most once): a carve of exactly their region, recorded as one
+  // in the log. Its edges are the landscape's own, so it meets no crossing, rounds nothing and
+  // leaves every other polygon's region as it was; no shape is validated (each cell's polygons
+  // are a valid set). What a game detaching debris calls. Throws UnknownPolygon (nothing
+  // changed), LimitExceeded, LandscapeInternalError. O(depth per polygon + the cells' overlays).
+  ChangeSet remove(std::span<const PolygonRef> polygons);
 
   // --- queries -------------------------------------------------------------------------------
   // Queries check their coordinates as edits check their shapes: a point, a segment end or a
@@ -218,6 +225,9 @@ class EDGELAND_EXPORT Landscape {
   // The one edit driver (spatial/README.md, "An edit"): builds the next state from s_ with the
   // shape and the table, appends `log_line` to the log when recording, then commits.
   ChangeSet apply(const ValidSet& shape, const detail::EditTable& table,
+                  const std::function<std::string()>& log_line);
+  // The same for any way of building the next state (Landscape::remove's cut shape).
+  ChangeSet apply(const std::function<detail::EditResult()>& build,
                   const std::function<std::string()>& log_line);
 
   detail::LandscapeState s_;

@@ -48,14 +48,20 @@ void require_in_engine_range(Point64 p, Point64 origin);
 b2Vec2 to_b2(const EngineUnits& units, Point64 p);
 
 struct TerrainOptions {
-  double units_per_metre = 1;   // landscape units in one Box2D metre (> 0)
-  std::optional<Point64> origin;  // the landscape point at Box2D's (0, 0); default: the world's corner
+  double units_per_metre = 1;  // landscape units in one Box2D metre (> 0)
+  std::optional<Point64>
+      origin;  // the landscape point at Box2D's (0, 0); default: the world's corner
   std::array<float, kMaterialCount> friction;  // by Material::value() (0: the wall); default 0.6
   // The world box cut into body_grid x body_grid regions, a static body per region with chains
   // (see Terrain). At least 1.
   std::int64_t body_grid = 16;
+  // Broad-phase proxies reserved when the terrain is built (see Terrain, BROAD PHASE): unset,
+  // twice the terrain's own and at least kDefaultReservedProxies; 0, none.
+  std::optional<std::size_t> reserve_proxies;
   TerrainOptions() { friction.fill(0.6f); }
 };
+
+inline constexpr std::size_t kDefaultReservedProxies = std::size_t{1} << 14;
 
 // The terrain: one b2ChainShape fixture per run of one material of a surface chain (the chain
 // cut where its material changes, each run keeping the ghosts of its neighbours, so the joints
@@ -66,6 +72,16 @@ struct TerrainOptions {
 // fixtures, bench/README.md "Game layer"); not one per cell either, because every b2World::Step
 // walks every body, static ones too (0.5-0.9 ms a frame at 16,000 bodies). Fixture user data
 // holds the material.
+//
+// BROAD PHASE. Box2D 2.4 keeps every fixture's proxies in a dynamic tree whose node pool doubles
+// when full (b2DynamicTree::AllocateNode: a new array, a copy, a new free list: O(capacity)), at
+// about 8,192, 16,384, 32,768 ... proxies: a frame that passes such a count paid 0.7, 1.4,
+// 2.4 ms more inside one CreateFixture (measured in thread CPU time; 5.5-9.5 ms in a loaded
+// game, issue 35). The pool never shrinks, so the terrain reserves it once when built: a
+// temporary chain far from the world with that many edges is made, forgotten by one step of
+// zero length (b2World::Step(0, 0, 0): no body moves; Box2D's step also clears forces) and
+// destroyed, its nodes left in the pool's free list. Then no fixture the updates create pays a
+// doubling until the terrain outgrows the reserve.
 class Terrain {
  public:
   // The fixtures of every chain the game has now. Throws OutOfEngineRange.
@@ -84,6 +100,7 @@ class Terrain {
   const EngineUnits& units() const { return units_; }
 
  private:
+  void reserve_proxies(std::size_t count);
   std::size_t region_of(const Box64& cell) const;
   b2Body* body_of(std::size_t region);
   void add(ChainId id, const SurfaceChain& chain);
