@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "edgeland/clip/valid_set.hpp"
 #include "edgeland/kernel/bbox.hpp"
 #include "edgeland/kernel/fraction.hpp"
 #include "edgeland/kernel/int128.hpp"
@@ -69,6 +70,33 @@ struct CellView {
   Box64 box;
   std::uint32_t depth = 0;
   std::size_t polygons = 0, vertices = 0;
+};
+
+// One edit of a batch (Landscape::apply_batch, a frame's edits): inside `shape` every material m
+// becomes map[m]. `kind` says how it was asked for (what an edit log writes); the map alone
+// says what it does. carve, fill, fill_empty and replace are relabels with these maps, as on
+// Landscape.
+struct Edit {
+  enum class Kind : std::uint8_t { kCarve, kFill, kFillEmpty, kReplace, kRelabel };
+  Kind kind = Kind::kRelabel;
+  ValidSet shape;
+  MaterialMap map;
+
+  static Edit carve(ValidSet shape) {
+    return {Kind::kCarve, std::move(shape), MaterialMap::uniform(kEmpty)};
+  }
+  static Edit fill(ValidSet shape, Material m) {
+    return {Kind::kFill, std::move(shape), MaterialMap::uniform(m)};
+  }
+  static Edit fill_empty(ValidSet shape, Material m) {
+    return {Kind::kFillEmpty, std::move(shape), MaterialMap().set(kEmpty, m)};
+  }
+  static Edit replace(ValidSet shape, Material from, Material to) {
+    return {Kind::kReplace, std::move(shape), MaterialMap().set(from, to)};
+  }
+  static Edit relabel(ValidSet shape, const MaterialMap& map) {
+    return {Kind::kRelabel, std::move(shape), map};
+  }
 };
 
 // What an edit changed.
