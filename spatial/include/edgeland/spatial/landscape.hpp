@@ -35,7 +35,8 @@
 //
 // HEADERS. This is the front end and the umbrella: it includes material.hpp (Material),
 // types.hpp (the configuration, views, change sets, crossings, reports) and errors.hpp (the
-// landscape's errors), which code that only handles those types can include alone.
+// landscape's errors), which code that only handles those types can include alone, and
+// landscape_state.hpp (the private state, detail::LandscapeState).
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -58,37 +59,18 @@
 #include "edgeland/kernel/predicates.hpp"
 #include "edgeland/kernel/validate.hpp"
 #include "edgeland/spatial/errors.hpp"
+#include "edgeland/spatial/landscape_state.hpp"
 #include "edgeland/spatial/material.hpp"
 #include "edgeland/spatial/types.hpp"
 
 namespace edgeland {
 
+struct Delta;       // delta.hpp
+struct PatchEntry;  // delta.hpp
+
 namespace detail {
-
-struct Node;     // the tree (spatial/src/node.hpp)
-struct LogLine;  // the recorded log, a persistent list shared by copies (spatial/src/edit_log.hpp)
-using AreaTable = std::array<Int128, kMaterialCount>;
-
 struct EditTable;   // an edit's material -> material table (spatial/src/edit.hpp)
 struct EditResult;  // what an edit builds (spatial/src/edit.hpp)
-
-// A landscape's whole state, private to Landscape: spatial/src's stages take it as an argument
-// from the Landscape's members. An edit builds the next state from it and Landscape::apply
-// commits that by one assignment, so a throw leaves it as it was.
-struct LandscapeState {
-  Box64 world;
-  LandscapeConfig config;
-  LandscapeLimits limits;
-  std::shared_ptr<const Node> root;
-  std::shared_ptr<const AreaTable> areas;  // twice the area of every solid material
-  PolygonId next_id = 1;
-  std::uint64_t edits = 0;  // successful edits since construction (or load)
-  Material initial_fill = kEmpty;
-  bool checked = false;
-  bool logging = false;
-  std::shared_ptr<const LogLine> log;  // the last line recorded
-};
-
 }  // namespace detail
 
 // One cell's polygons as arrays, for code that reads whole cells (the game layer): what
@@ -188,6 +170,8 @@ class EDGELAND_EXPORT Landscape {
   const Box64& world() const noexcept { return s_.world; }
   const LandscapeConfig& config() const noexcept { return s_.config; }
   const LandscapeLimits& limits() const noexcept { return s_.limits; }
+  // The id the next new polygon takes (ids are never reused: every id in the world is below it).
+  PolygonId next_id() const noexcept { return s_.next_id; }
 
   // --- state -----------------------------------------------------------------------------
   // FNV-style 64-bit hash of the whole state (world, configuration, tree, every polygon with
@@ -219,6 +203,27 @@ class EDGELAND_EXPORT Landscape {
   // own bytes are bounded by them first). O(n log n) for n vertices: each cell is validated once.
   void save(std::ostream& out) const;
   static Landscape load(std::istream& in, const LandscapeLimits& limits = {});
+
+  // --- deltas and divergence (delta.hpp; spatial/README.md "Deltas, divergence and repair") --
+  // The hash of the world box and the configuration: a delta names the world it belongs to.
+  std::uint64_t world_hash() const noexcept;
+  // The node at `path`: its box, its hash and its children's hashes; nullopt when the path names
+  // no node. O(depth).
+  std::optional<NodeDigest> node_digest(const TreePath& path) const;
+  // The subtree at `path` as a PATCH carries it (patch_delta). Throws InvalidPath. O(subtree).
+  PatchEntry patch_entry(const TreePath& path) const;
+  // Applies a COMMAND (the edit, as apply_edit) or a PATCH (its subtrees, ids and counters),
+  // after checking that it belongs to this world (DeltaMismatch kWorld; a COMMAND also kAlgorithm)
+  // and, as `checks` asks, that this landscape is its base (kBase) and that the result is its
+  // result (kResult). Returns what changed, as an edit does. Throws DeltaError (a CHANGES delta,
+  // or a PATCH whose subtree breaks a rule of this world: the offset is within that subtree),
+  // DeltaMismatch, LimitExceeded, or what the COMMAND's edit throws; then the landscape is as
+  // it was. O(edit) for a COMMAND; O(patched subtrees + the polygons outside them) for a PATCH,
+  // which checks its ids against every other polygon.
+  ChangeSet apply_delta(const Delta& delta, const DeltaChecks& checks = {});
+  // Sum of polygon_digest (delta.hpp) over every polygon below `path`: what a thin client's
+  // DrawMirror holding that part of the world has as its digest. Throws InvalidPath. O(subtree).
+  std::uint64_t drawn_digest(const TreePath& path = {}) const;
 
  private:
   explicit Landscape(detail::LandscapeState state) : s_(std::move(state)) {}

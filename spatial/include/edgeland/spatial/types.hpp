@@ -139,6 +139,27 @@ struct LandscapeReport {
   bool ok() const noexcept { return problems.empty(); }
 };
 
+// A node of the tree by the child indices from the root down (each below the node's child
+// count, split_boxes order): {} is the root. Deltas and region records name nodes so.
+using TreePath = std::vector<std::uint8_t>;
+
+// One node as two worlds compare it (Landscape::node_digest, DivergenceSearch).
+struct NodeDigest {
+  Box64 box;
+  std::uint64_t hash = 0;  // the node's hash: its box and its cell's polygons or children's hashes
+  bool cell = false;       // a leaf
+  bool loaded = true;      // false: an unloaded region, whose hash is known but not its children
+  std::vector<std::uint64_t> children;  // the children's hashes (inner nodes)
+  friend bool operator==(const NodeDigest&, const NodeDigest&) = default;
+};
+
+// Which hashes Landscape::apply_delta compares. A client that knows it has diverged turns them
+// off to keep applying what it receives while it repairs.
+struct DeltaChecks {
+  bool base = true;    // the landscape's state hash must be the delta's base hash
+  bool result = true;  // the result must come out with the delta's result hash
+};
+
 struct LandscapeStats {
   std::size_t polygons = 0, vertices = 0, cells = 0, depth = 0;
   std::size_t bytes = 0;  // memory of the cells and nodes this landscape holds (shared or not)
