@@ -81,4 +81,11 @@ InvalidMaterial::InvalidMaterial(std::int64_t n)
 
 void detail::throw_invalid_material(std::int64_t number) { throw InvalidMaterial(number); }
 
+UnknownPolygon::UnknownPolygon(PolygonId i, const Box64& c)
+    : LandscapeError("polygon " + std::to_string(i) + " is not in the cell (" +
+                     std::to_string(c.min.x) + " " + std::to_string(c.min.y) + " " +
+                     std::to_string(c.max.x) + " " + std::to_string(c.max.y) + ")"),
+      id(i),
+      cell(c) {}
+
 }  // namespace edgeland

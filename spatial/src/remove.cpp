@@ -44,13 +44,6 @@ std::unordered_map<const Node*, std::vector<std::size_t>> locate(
 
 }  // namespace
 
-UnknownPolygon::UnknownPolygon(PolygonId i, const Box64& c)
-    : LandscapeError("polygon " + std::to_string(i) + " is not in the cell (" +
-                     std::to_string(c.min.x) + " " + std::to_string(c.min.y) + " " +
-                     std::to_string(c.max.x) + " " + std::to_string(c.max.y) + ")"),
-      id(i),
-      cell(c) {}
-
 ChangeSet Landscape::remove(std::span<const PolygonRef> polygons) {
   const auto members = locate(s_.root, polygons);
   detail::ShapeCut cut;
