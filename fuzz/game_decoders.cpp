@@ -1,7 +1,7 @@
 // The game layer's fuzz target (issue 26): an edit sequence decoded as edit_sequence decodes it
 // (landscape_decoding.hpp), with a material table and a border mode, and after every edit the
 // game layer checked against references that share no code with it (the tests' oracles:
-// tests/game/surface_oracle, island_oracle, chain_rules.hpp; tests/support/piece_checks).
+// tests/support/surface_oracle, island_oracle, chain_rules.hpp; tests/support/piece_checks).
 // Declared in decoders.hpp.
 #include <algorithm>
 #include <map>

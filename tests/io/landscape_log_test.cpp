@@ -12,9 +12,9 @@
 #include <tuple>
 
 #include "edgeland/clip/clip.hpp"
+#include "edgeland/demo/integer_trig.hpp"
+#include "edgeland/demo/splitmix64.hpp"
 #include "edgeland/io/log_kind.hpp"
-#include "integer_trig.hpp"
-#include "splitmix64.hpp"
 
 namespace edgeland::log {
 namespace {
@@ -169,6 +169,23 @@ TEST(LandscapeLogParser, TheWorldComesFirstAndOnlyOnce) {
   }
 }
 
+TEST(LandscapeLogParser, EveryErrorKindHasItsDocumentedStableName) {
+  // The kinds of real errors, named as landscape_log.hpp documents ("missing-world" ...): a tool
+  // reporting them in JSON depends on these strings staying the same, and no two are alike.
+  const auto name_of = [](std::string_view text) {
+    const ParsedLandscapeLog parsed = parse_landscape_log(text);
+    EXPECT_TRUE(parsed.error.has_value()) << text;
+    return std::string(parsed.error ? landscape_log_error_kind_name(parsed.error->kind) : "");
+  };
+  const std::string world = "world 0 0 9 9\n";
+  EXPECT_EQ(name_of(world + "dig " + kBox), "unknown-command");
+  EXPECT_EQ(name_of(std::string("carve ") + kBox), "missing-world");
+  EXPECT_EQ(name_of(world + world), "repeated-world");
+  EXPECT_EQ(name_of(world + "fill 256 " + kBox), "bad-argument");
+  EXPECT_EQ(name_of(world + "fill 1"), "missing-shape");
+  EXPECT_EQ(name_of(world + "carve POLYGON ((0 0, 1.5 0, 1 1, 0 0))"), "bad-shape");
+}
+
 TEST(LandscapeLogParser, StopsAtTheFirstBadLineKeepingTheEditsBefore) {
   const std::string text = std::string("world 0 0 99 99\nfill 1 ") + kBox + "\ncarve " + kBox +
                            "\nfill 300 " + kBox + "\ncarve " + kBox + "\n";
@@ -254,13 +271,13 @@ TEST(LandscapeLogApply, WorldMaterialFillsTheWorld) {
 
 // A ring of n points around c with radii in [r/2, r] from the integer table: rough enough to
 // snap, many-sided enough to split cells (edge_cap 128) and small enough to merge them again.
-Ring random_ring(cli::SplitMix64& random, const Box64& area) {
+Ring random_ring(demo::SplitMix64& random, const Box64& area) {
   const Point64 c{random.between(area.min.x, area.max.x), random.between(area.min.y, area.max.y)};
   const std::int64_t r = random.between(3, 120);
   const int n = static_cast<int>(random.between(3, 40));
   Ring ring;
   for (int i = 0; i < n; ++i) {
-    ring.push_back(cli::polar(c, r * random.between(50, 100) / 100, i * cli::kFullTurn / n));
+    ring.push_back(demo::polar(c, r * random.between(50, 100) / 100, i * demo::kFullTurn / n));
   }
   return ring;
 }
@@ -269,7 +286,7 @@ Ring random_ring(cli::SplitMix64& random, const Box64& area) {
 // relabels of random maps of 0..6),
 // each shape a valid set made by the OGC import; some reach past the world box.
 void random_edits(Landscape& l, std::uint64_t seed, int count) {
-  cli::SplitMix64 random(seed);
+  demo::SplitMix64 random(seed);
   const Box64 area{{l.world().min.x - 50, l.world().min.y - 50},
                    {l.world().max.x + 50, l.world().max.y + 50}};
   for (int i = 0; i < count; ++i) {

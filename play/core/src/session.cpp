@@ -2,17 +2,13 @@
 
 #include <utility>
 
-#include "edgeland/clip/clip.hpp"
-
 namespace edgeland::play {
 
 Session::Session(Landscape world, std::size_t max_undo)
     : world_(std::move(world)), max_undo_(max_undo) {}
 
-std::optional<ChangeSet> Session::apply(const ToolEdit& edit) {
-  const ClipOptions options{.checked = world_.checked()};
-  const PolygonSet shape = import_polygons({{tool_ring(edit)}}, options).polygons;
-  if (shape.empty()) return std::nullopt;
+ChangeSet Session::apply(const ToolEdit& edit) {
+  const PolygonSet shape{tool_shape(edit)};
   Landscape before = world_;
   ChangeSet changes =
       log::apply_edit(world_, edit_kind(edit.tool), shape, edit.material, edit.from_material);

@@ -7,12 +7,13 @@
 #include <fstream>
 #include <optional>
 
+#include "edgeland/demo/landscape.hpp"
 #include "picture.hpp"
 
 namespace edgeland::play {
 namespace {
 
-constexpr Material kWater = 5;
+using demo::kWater;
 
 bool solid(Material m) { return m != kEmpty && m != kWater; }
 
@@ -48,7 +49,7 @@ App::App(SDL_Renderer* renderer, const AppOptions& options)
     : renderer_(renderer),
       options_(options),
       view_{options.world, options.width, options.height},
-      session_(demo_landscape(options.world, options.seed)),
+      session_(demo::demo_landscape(options.world, options.seed)),
       mesh_(view_),
       physics_(session_.world(), options.units_per_metre, surface_options()),
       islands_(session_.world(), surface_options().materials) {
@@ -124,7 +125,7 @@ void App::use_tool(Point64 from, Point64 to) {
                       .material = *kind == ToolKind::kWater ? kWater : material_,
                       .from_material = from_};
   const auto start = std::chrono::steady_clock::now();
-  std::optional<ChangeSet> changes;
+  ChangeSet changes;
   try {
     changes = session_.apply(edit);
   } catch (const Error&) {
@@ -133,9 +134,8 @@ void App::use_tool(Point64 from, Point64 to) {
   }
   last_edit_ms_ = ms_since(start);
   report_.edit_ms_total += last_edit_ms_;
-  if (!changes) return;
   ++report_.edits;
-  take(*changes, *kind != ToolKind::kExplosion && *kind != ToolKind::kDigger);
+  take(changes, *kind != ToolKind::kExplosion && *kind != ToolKind::kDigger);
 }
 
 void App::press_key(const std::string& key) {

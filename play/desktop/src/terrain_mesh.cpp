@@ -1,13 +1,13 @@
 #include "terrain_mesh.hpp"
 
+#include "edgeland/demo/palette.hpp"
 #include "edgeland/game/render_meshes.hpp"
-#include "material_palette.hpp"
 
 namespace edgeland::play {
 
 void TerrainMesh::add(PolygonId id, Material material, const Polygon& polygon) {
   if (material == kEmpty) return;
-  const cli::Rgb c = cli::material_colour(material);
+  const demo::Rgb c = demo::material_colour(material);
   Mesh mesh;
   for (const Point64& p : polygon) {
     const SDL_FPoint at{view_.x(static_cast<double>(p.x)), view_.y(static_cast<double>(p.y))};

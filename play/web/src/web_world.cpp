@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 
+#include "edgeland/demo/landscape.hpp"
 #include "edgeland/io/landscape_log.hpp"
 #include "edgeland/io/landscape_replay.hpp"
 #include "edgeland/kernel/convex_pieces.hpp"
@@ -10,7 +11,7 @@
 namespace edgeland::play {
 namespace {
 
-constexpr Material kWater = 5;
+using demo::kWater;
 
 // Water is no obstacle; the world's border is a wall, so that nothing rolls out of the world.
 SurfaceOptions surface_options() {
@@ -21,7 +22,7 @@ SurfaceOptions surface_options() {
 }
 
 Landscape starting_world(const Box64& box, Material fill, std::uint64_t seed) {
-  if (seed > 0) return demo_landscape(box, seed);
+  if (seed > 0) return demo::demo_landscape(box, seed);
   Landscape world(box, fill);
   world.start_log();
   return world;
@@ -159,15 +160,14 @@ WebUpdate WebWorld::apply(const ToolEdit& edit) {
   const auto start = std::chrono::steady_clock::now();
   WebUpdate update;
   try {
-    if (const std::optional<ChangeSet> changes = session_.apply(edit)) {
-      const Landscape& world = session_.world();
-      PendingChanges pending;
-      pending.take(*changes);
-      pending.take(surface_.update(world, *changes));
-      settle(islands_.update(world, *changes), pending);
-      update = to_update(pending);
-      ++edits_;
-    }
+    const ChangeSet changes = session_.apply(edit);
+    const Landscape& world = session_.world();
+    PendingChanges pending;
+    pending.take(changes);
+    pending.take(surface_.update(world, changes));
+    settle(islands_.update(world, changes), pending);
+    update = to_update(pending);
+    ++edits_;
   } catch (const Error& error) {
     update.error = error.what();
   }

@@ -4,7 +4,6 @@
 // every edit keeps the world before it, and undo is one assignment; the recorded edit log lives
 // in the landscape and goes back with it, so the log of the world shown always replays to it.
 #include <cstddef>
-#include <optional>
 #include <vector>
 
 #include "edgeland/play/tool_shapes.hpp"
@@ -18,13 +17,10 @@ class Session {
   // `max_undo` snapshots to go back to.
   explicit Session(Landscape world, std::size_t max_undo = 256);
 
-  // Applies the tool's edit (its shape imported as an OGC polygon: tool_ring's integer rounding
-  // may leave a ring that is not strictly simple). Nothing when the shape has no area. Throws
-  // what the landscape's edits throw, the world then unchanged (strong guarantee).
-  std::optional<ChangeSet> apply(const ToolEdit& edit);
+  // Applies the tool's edit (tool_shape: valid by construction). Throws what the landscape's
+  // edits throw, the world then unchanged (strong guarantee).
+  ChangeSet apply(const ToolEdit& edit);
 
-  bool can_undo() const noexcept { return !undo_.empty(); }
-  bool can_redo() const noexcept { return !redo_.empty(); }
   // Back to the world before the last edit (or forward again); false when there is none.
   bool undo();
   bool redo();
@@ -41,9 +37,5 @@ class Session {
   std::vector<Landscape> undo_;  // oldest first
   std::vector<Landscape> redo_;  // the next redo last
 };
-
-// The `edgeland demo` world (cli/demo_world.hpp: layers, bands, caves, pools) built in `box`
-// from `seed`, recording its log from the start so that the log replays bit for bit.
-Landscape demo_landscape(const Box64& box, std::uint64_t seed);
 
 }  // namespace edgeland::play
