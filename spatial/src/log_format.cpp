@@ -2,6 +2,7 @@
 #include "edgeland/spatial/log_format.hpp"
 
 #include "edgeland/kernel/wkt_writer.hpp"
+#include "edit_form.hpp"
 
 namespace edgeland::log {
 namespace {
@@ -40,6 +41,15 @@ std::string relabel_line(const PolygonSet& shape, const MaterialMap& map) {
     if (map[from] != from) line += number(from) + " " + number(map[from]) + " ";
   }
   return line + to_wkt(shape) + "\n";
+}
+
+std::string edit_line(const Edit& edit) {
+  const PolygonSet& shape = edit.shape.polygons();
+  if (!detail::has_its_form(edit) || edit.kind == LandscapeEditKind::kRelabel)
+    return relabel_line(shape, edit.map);
+  const auto [from, to] = detail::replaced(edit.map);
+  const Material material = edit.kind == LandscapeEditKind::kReplace ? to : edit.map[kEmpty];
+  return edit_line(edit.kind, shape, material, from);
 }
 
 }  // namespace edgeland::log

@@ -10,11 +10,14 @@
 #include <set>
 #include <string>
 #include <tuple>
+#include <variant>
 
 #include "edgeland/clip/clip.hpp"
 #include "edgeland/demo/integer_trig.hpp"
 #include "edgeland/demo/splitmix64.hpp"
 #include "edgeland/io/log_kind.hpp"
+#include "edgeland/spatial/delta.hpp"
+#include "edgeland/spatial/log_format.hpp"
 
 namespace edgeland::log {
 namespace {
@@ -184,6 +187,28 @@ TEST(LandscapeLogParser, EveryErrorKindHasItsDocumentedStableName) {
   EXPECT_EQ(name_of(world + "fill 256 " + kBox), "bad-argument");
   EXPECT_EQ(name_of(world + "fill 1"), "missing-shape");
   EXPECT_EQ(name_of(world + "carve POLYGON ((0 0, 1.5 0, 1 1, 0 0))"), "bad-shape");
+}
+
+TEST(LandscapeLogFormat, AnEditsLineIsTheLineTheLandscapeRecordsForIt) {
+  // log_format.hpp's writer of a batch's Edit and the landscape's own recorder write one
+  // format: applying each edit to a recording landscape appends exactly edit_line(edit), and
+  // the reader takes it back as the same kind.
+  const ValidSet box(PolygonSet{{{10, 10}, {20, 10}, {20, 30}, {10, 30}}});
+  const Edit edits[] = {Edit::carve(box), Edit::fill(box, 3), Edit::fill_empty(box, 5),
+                        Edit::replace(box, 3, 7),
+                        Edit::relabel(box, MaterialMap().set(7, 2).set(2, 7))};
+  Landscape world({{0, 0}, {100, 50}}, 1);
+  world.start_log();
+  for (const Edit& edit : edits) {
+    const std::string before = world.log();
+    edgeland::apply_edit(world, edit);
+    const std::string line = edit_line(edit);
+    EXPECT_EQ(world.log(), before + line);
+    const std::optional<LandscapeCommand> read =
+        parse_landscape_line(line.substr(0, line.size() - 1), 1);
+    ASSERT_TRUE(read && std::holds_alternative<LandscapeEdit>(*read)) << line;
+    EXPECT_EQ(std::get<LandscapeEdit>(*read).kind, edit.kind) << line;
+  }
 }
 
 TEST(LandscapeLogParser, StopsAtTheFirstBadLineKeepingTheEditsBefore) {

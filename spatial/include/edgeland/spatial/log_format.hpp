@@ -4,7 +4,7 @@
 // its log with it (Landscape::start_log, spatial/src/edit_log.cpp) and edgeland::io reads logs
 // through the same table (io/landscape_log.hpp), so the recorder and the reader cannot drift
 // apart. The format is io's; this part of it sits in spatial because the landscape writes it and
-// spatial cannot include io.
+// spatial cannot include io. An edit's kind is Edit::Kind (types.hpp): the kinds a log writes.
 #include <array>
 #include <cstdint>
 #include <string>
@@ -14,10 +14,12 @@
 #include "edgeland/kernel/export.hpp"
 #include "edgeland/kernel/polygon.hpp"
 #include "edgeland/spatial/material.hpp"
+#include "edgeland/spatial/types.hpp"
 
 namespace edgeland::log {
 
-enum class LandscapeEditKind : std::uint8_t { kCarve, kFill, kFillEmpty, kReplace, kRelabel };
+// The edits a log line can hold (carve, fill, fill_empty, replace, relabel): Edit's kinds.
+using LandscapeEditKind = Edit::Kind;
 
 // The first line's keyword: `world X0 Y0 X1 Y1 [MATERIAL]`.
 inline constexpr std::string_view kWorldKeyword = "world";
@@ -62,5 +64,10 @@ EDGELAND_EXPORT std::string edit_line(LandscapeEditKind kind, const PolygonSet& 
 
 // "relabel [FROM TO]... WKT\n": the pairs where the map changes a material, ascending.
 EDGELAND_EXPORT std::string relabel_line(const PolygonSet& shape, const MaterialMap& map);
+
+// The line of an Edit (a batch's edit): its kind's line with the materials its map gives, or
+// the relabel line when the map is not of its kind's form (what apply_edit then does too,
+// delta.hpp). A replace that changes nothing is "replace 0 0".
+EDGELAND_EXPORT std::string edit_line(const Edit& edit);
 
 }  // namespace edgeland::log
