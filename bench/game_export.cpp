@@ -1,5 +1,5 @@
 // The whole world at once (issue 26, "Speed"; bench/README.md, "Game layer"): the 8192 x 8192
-// world of `edgeland demo` (cli/demo_world.hpp, through tests/support/demo_landscape.hpp) after
+// world of `edgeland demo` (demo/: edgeland/demo/landscape.hpp) after
 // EDGELAND_GAME_DEMO_EDITS of its players' actions (default 6000, the demo's own default),
 // exported as a game loading it would: surface_chains, surface_loops, all_meshes, find_islands,
 // and a box2d::Terrain built from scratch; beside it, the same world rasterised into a bitmap
@@ -10,9 +10,8 @@
 #include <memory>
 #include <string>
 
-#include "demo_editor.hpp"
-#include "demo_landscape.hpp"
 #include "edgeland/box2d/terrain.hpp"
+#include "edgeland/demo/landscape.hpp"
 #include "edgeland/game/islands.hpp"
 #include "edgeland/game/render_meshes.hpp"
 #include "edgeland/game/surface_chains.hpp"
@@ -26,7 +25,7 @@ std::size_t demo_edits() { return env_count("EDGELAND_GAME_DEMO_EDITS", 6000); }
 
 SurfaceOptions demo_surface() {
   SurfaceOptions o;
-  o.materials.set_solid(cli::demo::kWater, false).set_anchored(cli::demo::kBedrock);
+  o.materials.set_solid(demo::kWater, false).set_anchored(demo::kBedrock);
   return o;
 }
 
@@ -64,7 +63,7 @@ double fastest_build(Make&& make) {
 }
 
 void run_game_export(benchmark::State& state) {
-  const Landscape world = testing::demo_landscape(demo_edits());
+  const Landscape world = demo::demo_landscape(demo::kDemoWorld, 1, demo_edits());
   const SurfaceOptions surface = demo_surface();
   const BitmapWorld bitmap = rasterise(world);
   box2d::TerrainOptions terrain_options;

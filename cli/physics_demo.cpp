@@ -6,7 +6,7 @@
 #include <iostream>
 #include <sstream>
 
-#include "command.hpp"
+#include "commands.hpp"
 #include "edgeland/io/landscape_replay.hpp"
 #include "landscape_picture.hpp"
 #include "physics_scene.hpp"

@@ -1,7 +1,7 @@
 // The game layer's fuzz target (issues 26, 35): an edit sequence decoded as edit_sequence decodes
 // it (landscape_decoding.hpp), with a material table and a border mode, and after every edit the
 // game layer checked against references that share no code with it (the tests' oracles:
-// tests/game/surface_oracle, island_oracle, chain_rules.hpp; tests/support/piece_checks): the
+// tests/support/surface_oracle, island_oracle, chain_rules.hpp; tests/support/piece_checks): the
 // standalone trackers edit by edit, and a GameDriver taking the same edits in frames (the input
 // says where a frame ends), its updates mirrored and checked after every frame.
 // Declared in decoders.hpp.

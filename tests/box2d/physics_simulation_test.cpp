@@ -45,7 +45,7 @@ std::vector<FixtureShape> fixtures_of(const box2d::Terrain& terrain) {
   return out;
 }
 
-// The scene of `edgeland demo --physics` (adapters/box2d/scene): 200 balls and boxes on a
+// The scene of `edgeland demo --physics` (demo/physics): 200 balls and boxes on a
 // layered world with hills, 3 blasts or fills near them per frame for 1,200 frames.
 TEST(PhysicsSimulation, BodiesStayOutOfSolidWhileTheTerrainChangesUnderThem) {
   box2d::PhysicsScene scene;

@@ -2,14 +2,13 @@
 
 #include <utility>
 
-#include "edgeland/clip/clip.hpp"
-
 namespace edgeland::play {
 
 Session::Session(Landscape world, const GameOptions& options, std::size_t max_undo)
     : game_(std::move(world), options), max_undo_(max_undo) {}
 
-Edit tool_edit(const ToolEdit& edit, ValidSet shape) {
+Edit tool_edit(const ToolEdit& edit) {
+  ValidSet shape(PolygonSet{tool_shape(edit)}, Operand::kClip);
   switch (edit.tool) {
     case ToolKind::kExplosion:
     case ToolKind::kDigger:
@@ -24,12 +23,9 @@ Edit tool_edit(const ToolEdit& edit, ValidSet shape) {
   return Edit::replace(std::move(shape), edit.from_material, edit.material);
 }
 
-std::optional<GameUpdate> Session::apply(const ToolEdit& edit) {
-  const ClipOptions options{.checked = world().checked()};
-  ValidClipResult shape = import_to_valid_set({{tool_ring(edit)}}, options);
-  if (shape.set.polygons().empty()) return std::nullopt;
+GameUpdate Session::apply(const ToolEdit& edit) {
   Landscape before = world();
-  GameUpdate update = game_.apply(tool_edit(edit, std::move(shape.set)));
+  GameUpdate update = game_.apply(tool_edit(edit));
   if (max_undo_ > 0) {
     if (undo_.size() == max_undo_) undo_.erase(undo_.begin());
     undo_.push_back(std::move(before));

@@ -7,12 +7,13 @@
 #include <fstream>
 #include <optional>
 
+#include "edgeland/demo/landscape.hpp"
 #include "picture.hpp"
 
 namespace edgeland::play {
 namespace {
 
-constexpr Material kWater = 5;
+using demo::kWater;
 
 bool solid(Material m) { return m != kEmpty && m != kWater; }
 
@@ -48,7 +49,7 @@ App::App(SDL_Renderer* renderer, const AppOptions& options)
     : renderer_(renderer),
       options_(options),
       view_{options.world, options.width, options.height},
-      session_(demo_landscape(options.world, options.seed), game_options()),
+      session_(demo::demo_landscape(options.world, options.seed), game_options()),
       mesh_(view_),
       physics_(session_.game(), options.units_per_metre) {
   mesh_.reset(session_.world());
@@ -133,18 +134,21 @@ void App::use_tool(Point64 from, Point64 to) {
   }
   last_edit_ms_ = ms_since(start);
   report_.edit_ms_total += last_edit_ms_;
-  if (!update) return;
   ++report_.edits;
   take(*update, *kind != ToolKind::kExplosion && *kind != ToolKind::kDigger);
 }
 
 void App::press_key(const std::string& key) {
-  if (key == "ctrl+z" && session_.can_undo()) {
-    ++report_.undos;
-    take_world(*session_.undo());
-  } else if (key == "ctrl+y" && session_.can_redo()) {
-    ++report_.redos;
-    take_world(*session_.redo());
+  if (key == "ctrl+z") {
+    if (const std::optional<GameUpdate> u = session_.undo()) {
+      ++report_.undos;
+      take_world(*u);
+    }
+  } else if (key == "ctrl+y") {
+    if (const std::optional<GameUpdate> u = session_.redo()) {
+      ++report_.redos;
+      take_world(*u);
+    }
   } else if (key == "f5") {
     save();
   } else if (key == "f9") {

@@ -1,13 +1,13 @@
 #include "terrain_mesh.hpp"
 
+#include "edgeland/demo/palette.hpp"
 #include "edgeland/game/render_meshes.hpp"
-#include "material_palette.hpp"
 
 namespace edgeland::play {
 
 void TerrainMesh::add(const PolygonMesh& from) {
   if (from.material == kEmpty) return;
-  const cli::Rgb c = cli::material_colour(from.material);
+  const demo::Rgb c = demo::material_colour(from.material);
   Mesh mesh;
   for (const Point64& p : from.vertices) {
     const SDL_FPoint at{view_.x(static_cast<double>(p.x)), view_.y(static_cast<double>(p.y))};

@@ -3,13 +3,14 @@
 #include <algorithm>
 #include <chrono>
 
+#include "edgeland/demo/landscape.hpp"
 #include "edgeland/io/landscape_log.hpp"
 #include "edgeland/io/landscape_replay.hpp"
 
 namespace edgeland::play {
 namespace {
 
-constexpr Material kWater = 5;
+using demo::kWater;
 
 // Water is no obstacle; the world's border is a wall, so that nothing rolls out of the world.
 // The page draws polygons and debris from its own triangulation.
@@ -22,7 +23,7 @@ GameOptions game_options() {
 }
 
 Landscape starting_world(const Box64& box, Material fill, std::uint64_t seed) {
-  if (seed > 0) return demo_landscape(box, seed);
+  if (seed > 0) return demo::demo_landscape(box, seed);
   Landscape world(box, fill);
   world.start_log();
   return world;
@@ -114,11 +115,10 @@ WebUpdate WebWorld::apply(const ToolEdit& edit) {
   const auto start = std::chrono::steady_clock::now();
   WebUpdate update;
   try {
-    if (const std::optional<GameUpdate> u = session_.apply(edit)) {
-      update = to_update(*u);
-      islands_detached_ += u->debris.size();
-      ++edits_;
-    }
+    const GameUpdate u = session_.apply(edit);
+    update = to_update(u);
+    islands_detached_ += u.debris.size();
+    ++edits_;
   } catch (const Error& error) {
     update.error = error.what();
   }

@@ -21,13 +21,10 @@ class Session {
   // `max_undo` snapshots to go back to.
   Session(Landscape world, const GameOptions& options, std::size_t max_undo = 256);
 
-  // Applies the tool's edit (its shape imported as an OGC polygon: tool_ring's integer rounding
-  // may leave a ring that is not strictly simple). Nothing when the shape has no area. Throws
-  // what the landscape's edits throw, the world then unchanged (strong guarantee).
-  std::optional<GameUpdate> apply(const ToolEdit& edit);
+  // Applies the tool's edit (tool_shape: valid by construction). Throws what the landscape's
+  // edits throw, the world then unchanged (strong guarantee).
+  GameUpdate apply(const ToolEdit& edit);
 
-  bool can_undo() const noexcept { return !undo_.empty(); }
-  bool can_redo() const noexcept { return !redo_.empty(); }
   // Back to the world before the last edit (or forward again); nothing when there is none.
   std::optional<GameUpdate> undo();
   std::optional<GameUpdate> redo();
@@ -47,11 +44,7 @@ class Session {
   std::vector<Landscape> redo_;  // the next redo last
 };
 
-// The tool's edit as one edit of a frame (the shape already imported).
-Edit tool_edit(const ToolEdit& edit, ValidSet shape);
-
-// The `edgeland demo` world (cli/demo_world.hpp: layers, bands, caves, pools) built in `box`
-// from `seed`, recording its log from the start so that the log replays bit for bit.
-Landscape demo_landscape(const Box64& box, std::uint64_t seed);
+// The tool's edit as one edit of a frame.
+Edit tool_edit(const ToolEdit& edit);
 
 }  // namespace edgeland::play

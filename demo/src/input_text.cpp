@@ -1,11 +1,11 @@
-#include "input_text.hpp"
+#include "edgeland/demo/input_text.hpp"
 
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <memory>
 
-namespace edgeland::cli {
+namespace edgeland::demo {
 namespace {
 
 struct FileCloser {
@@ -35,4 +35,4 @@ std::string read_input_text(const std::string& path) {
   return read_all(file.get(), "'" + path + "'");
 }
 
-}  // namespace edgeland::cli
+}  // namespace edgeland::demo

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "edgeland/box2d/terrain.hpp"
+#include "edgeland/demo/splitmix64.hpp"
 
 namespace edgeland::box2d {
 
@@ -67,11 +68,11 @@ class PhysicsScene {
  private:
   class Random {
    public:
-    explicit Random(std::uint64_t seed) : state_(seed) {}
+    explicit Random(std::uint64_t seed) : source_(seed) {}
     std::int64_t in(std::int64_t lo, std::int64_t hi);  // [lo, hi]
 
    private:
-    std::uint64_t state_;
+    demo::SplitMix64 source_;
   };
 
   void drop_bodies(int count);

@@ -3,7 +3,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace edgeland::cli {
+namespace edgeland::demo {
 
 // The file could not be opened or read (missing, a directory, an I/O error).
 class InputError : public std::runtime_error {
@@ -15,4 +15,4 @@ class InputError : public std::runtime_error {
 // one-line message naming the path and the system's reason.
 std::string read_input_text(const std::string& path);
 
-}  // namespace edgeland::cli
+}  // namespace edgeland::demo

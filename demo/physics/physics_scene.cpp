@@ -37,11 +37,7 @@ PolygonSet hills(std::int64_t size) {
 }  // namespace
 
 std::int64_t PhysicsScene::Random::in(std::int64_t lo, std::int64_t hi) {
-  std::uint64_t z = (state_ += 0x9E3779B97F4A7C15ull);
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  z ^= z >> 31;
-  return lo + static_cast<std::int64_t>(z % static_cast<std::uint64_t>(hi - lo + 1));
+  return lo + static_cast<std::int64_t>(source_.below(static_cast<std::uint64_t>(hi - lo + 1)));
 }
 
 // Materials as in `edgeland demo`: 1 bedrock, 2 rock, 3 dirt.

@@ -1,10 +1,10 @@
-#include "demo_shapes.hpp"
+#include "edgeland/demo/shapes.hpp"
 
 #include <algorithm>
 
-#include "integer_trig.hpp"
+#include "edgeland/demo/integer_trig.hpp"
 
-namespace edgeland::cli::demo {
+namespace edgeland::demo {
 namespace {
 
 // The line's sample points x0, x0 + step, ..., x1 (the last one always x1).
@@ -24,16 +24,6 @@ Ring rough_ngon(Point64 c, std::int64_t r, int n, int roughness, SplitMix64& ran
     const std::int64_t radius = r * random.between(100 - roughness, 100) / 100;
     ring.push_back(polar(c, radius, phase + i * kFullTurn / n));
   }
-  return ring;
-}
-
-Ring capsule(Point64 a, Point64 b, int angle, std::int64_t r) {
-  constexpr int kCapSteps = 8;  // 9 points on each half circle
-  Ring ring;
-  for (int k = 0; k <= kCapSteps; ++k)
-    ring.push_back(polar(b, r, angle - 64 + k * 128 / kCapSteps));
-  for (int k = 0; k <= kCapSteps; ++k)
-    ring.push_back(polar(a, r, angle + 64 + k * 128 / kCapSteps));
   return ring;
 }
 
@@ -82,4 +72,4 @@ Ring band_along(const WavyLine& line, std::int64_t offset, std::int64_t thicknes
   return ring;
 }
 
-}  // namespace edgeland::cli::demo
+}  // namespace edgeland::demo

@@ -7,7 +7,7 @@
 #include "edgeland/kernel/polygon.hpp"
 #include "edgeland/spatial/landscape.hpp"
 
-namespace edgeland::cli::demo {
+namespace edgeland::demo {
 
 // The demo's materials; material_palette.hpp colours them.
 inline constexpr Material kBedrock = 1;
@@ -46,4 +46,4 @@ class DemoEditor {
   std::size_t edits_ = 0;
 };
 
-}  // namespace edgeland::cli::demo
+}  // namespace edgeland::demo

@@ -5,25 +5,14 @@
 #include <limits>
 #include <utility>
 
+#include "edgeland/demo/splitmix64.hpp"
 #include "save_file.hpp"
 
 namespace edgeland::fuzz {
 namespace {
 
-class Rng {
- public:
-  explicit Rng(std::uint64_t seed) : s_(seed) {}
-  std::uint64_t next() {
-    std::uint64_t z = (s_ += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-  }
-  std::size_t below(std::size_t n) { return n == 0 ? 0 : static_cast<std::size_t>(next() % n); }
-
- private:
-  std::uint64_t s_;
-};
+// The project's one seeded generator (demo/: splitmix64.hpp); below(n) draws in [0, n).
+using Rng = demo::SplitMix64;
 
 // Values where the rules change: 0, 1, the ends of the ranges, off by one.
 std::int64_t edge_value(Rng& rng, std::int64_t around) {

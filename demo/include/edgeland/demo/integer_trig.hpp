@@ -7,7 +7,7 @@
 
 #include "edgeland/kernel/point.hpp"
 
-namespace edgeland::cli {
+namespace edgeland::demo {
 
 inline constexpr std::int64_t kTrigOne = 16384;  // 2^14: sin of a quarter turn
 inline constexpr int kFullTurn = 256;
@@ -39,4 +39,4 @@ constexpr Point64 polar(Point64 c, std::int64_t r, int angle) noexcept {
   return {c.x + unscale(r * cosine(angle)), c.y + unscale(r * sine(angle))};
 }
 
-}  // namespace edgeland::cli
+}  // namespace edgeland::demo

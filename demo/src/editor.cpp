@@ -1,8 +1,8 @@
-#include "demo_editor.hpp"
+#include "edgeland/demo/editor.hpp"
 
 #include "edgeland/clip/clip.hpp"
 
-namespace edgeland::cli::demo {
+namespace edgeland::demo {
 
 void DemoEditor::edit(log::LandscapeEditKind kind, const Ring& ring, Material material,
                       Material from) {
@@ -13,4 +13,4 @@ void DemoEditor::edit(log::LandscapeEditKind kind, const Ring& ring, Material ma
   ++edits_;
 }
 
-}  // namespace edgeland::cli::demo
+}  // namespace edgeland::demo

@@ -5,11 +5,11 @@
 // (fill_empty sand), until `edits` more edits have been made.
 #include <cstddef>
 
-#include "demo_editor.hpp"
-#include "demo_world.hpp"
-#include "splitmix64.hpp"
+#include "edgeland/demo/editor.hpp"
+#include "edgeland/demo/splitmix64.hpp"
+#include "edgeland/demo/world.hpp"
 
-namespace edgeland::cli::demo {
+namespace edgeland::demo {
 
 // How many edits of each kind were made (a tunnel or a vein counts once per step).
 struct ActionCounts {
@@ -20,4 +20,4 @@ struct ActionCounts {
 ActionCounts run_actions(DemoEditor& editor, const Box64& world, const Terrain& terrain,
                          std::size_t edits, SplitMix64& random);
 
-}  // namespace edgeland::cli::demo
+}  // namespace edgeland::demo

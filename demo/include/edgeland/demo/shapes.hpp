@@ -1,23 +1,20 @@
 #pragma once
-// The shapes of the landscape demo (demo_command.cpp), as rings with integer vertices from the
-// integer trigonometry table: rough n-gons (explosions, caves, pools), capsules (one step of a
-// tunnel or a vein), and regions under or along wavy lines (layers and bands).
+// The shapes of the landscape demo, as rings with integer vertices from the integer
+// trigonometry table: rough n-gons (explosions, caves, pools) and regions under or along wavy
+// lines (layers and bands). A step of a tunnel or a vein is the kernel's capsule()
+// (kernel/shapes.hpp).
 #include <array>
 #include <cstdint>
 
+#include "edgeland/demo/splitmix64.hpp"
 #include "edgeland/kernel/bbox.hpp"
 #include "edgeland/kernel/polygon.hpp"
-#include "splitmix64.hpp"
 
-namespace edgeland::cli::demo {
+namespace edgeland::demo {
 
 // An n-gon of radius r around c whose vertices lie at r * (100 - roughness .. 100) / 100 from
 // c, each drawn from `random`: a star-shaped, counter-clockwise ring.
 Ring rough_ngon(Point64 c, std::int64_t r, int n, int roughness, SplitMix64& random);
-
-// The stadium around the segment a -> b of direction `angle` (1/256 turns) and radius r: a
-// half circle around b, then one around a, counter-clockwise.
-Ring capsule(Point64 a, Point64 b, int angle, std::int64_t r);
 
 // y = base + sum of amplitude * sin(cycles turns across the world + phase): a wavy line over
 // the world's width.
@@ -41,4 +38,4 @@ Ring region_below(const WavyLine& line, const Box64& world, std::int64_t step);
 Ring band_along(const WavyLine& line, std::int64_t offset, std::int64_t thickness,
                 const Box64& world, std::int64_t step);
 
-}  // namespace edgeland::cli::demo
+}  // namespace edgeland::demo

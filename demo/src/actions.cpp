@@ -1,11 +1,12 @@
-#include "demo_actions.hpp"
+#include "edgeland/demo/actions.hpp"
 
 #include <algorithm>
 
-#include "demo_shapes.hpp"
-#include "integer_trig.hpp"
+#include "edgeland/demo/integer_trig.hpp"
+#include "edgeland/demo/shapes.hpp"
+#include "edgeland/kernel/shapes.hpp"
 
-namespace edgeland::cli::demo {
+namespace edgeland::demo {
 namespace {
 
 // Sizes are in 1/8192 of the world's width, so the demo looks the same at any world size.
@@ -40,8 +41,8 @@ class Actions {
   void dig_tunnel(Point64 at, int max_steps) {
     const std::int64_t r = s_(random_.between(10, 24));
     const auto steps = std::min(max_steps, static_cast<int>(random_.between(4, 10)));
-    walk(at, steps, s_(random_.between(40, 80)), [&](Point64 a, Point64 b, int heading) {
-      editor_.carve(capsule(a, b, heading, r));
+    walk(at, steps, s_(random_.between(40, 80)), [&](Point64 a, Point64 b) {
+      editor_.carve(capsule(a, b, r));
       ++counts_.tunnel_steps;
     });
   }
@@ -53,8 +54,8 @@ class Actions {
   void lay_vein(Point64 at, int max_steps) {
     const std::int64_t r = s_(random_.between(6, 14));
     const auto steps = std::min(max_steps, static_cast<int>(random_.between(3, 7)));
-    walk(at, steps, s_(random_.between(30, 60)), [&](Point64 a, Point64 b, int heading) {
-      editor_.replace(capsule(a, b, heading, r), kRock, kOre);
+    walk(at, steps, s_(random_.between(30, 60)), [&](Point64 a, Point64 b) {
+      editor_.replace(capsule(a, b, r), kRock, kOre);
       ++counts_.vein_steps;
     });
   }
@@ -73,7 +74,7 @@ class Actions {
 
  private:
   // A random walk of `steps` steps of `length` from `start`, its heading drifting a little each
-  // step; step(from, to, heading) is called for each.
+  // step; step(from, to) is called for each.
   template <class Step>
   void walk(Point64 start, int steps, std::int64_t length, Step&& step) {
     int heading = static_cast<int>(random_.between(0, kFullTurn - 1));
@@ -81,7 +82,7 @@ class Actions {
     for (int i = 0; i < steps; ++i) {
       heading += static_cast<int>(random_.between(-14, 14));
       const Point64 next = polar(at, length, heading);
-      step(at, next, heading);
+      step(at, next);
       at = next;
     }
   }
@@ -119,4 +120,4 @@ ActionCounts run_actions(DemoEditor& editor, const Box64& world, const Terrain& 
   return actions.counts();
 }
 
-}  // namespace edgeland::cli::demo
+}  // namespace edgeland::demo

@@ -2,11 +2,11 @@
 // The demo's starting world: layers of bedrock, rock and dirt under wavy lines, a grass skin,
 // sand pockets and ore bands made by `replace`, caves carved into the rock and pools of water
 // in the lowest of them (`fill_empty`). About 50 edits, all from one seeded generator.
-#include "demo_editor.hpp"
-#include "demo_shapes.hpp"
-#include "splitmix64.hpp"
+#include "edgeland/demo/editor.hpp"
+#include "edgeland/demo/shapes.hpp"
+#include "edgeland/demo/splitmix64.hpp"
 
-namespace edgeland::cli::demo {
+namespace edgeland::demo {
 
 // Where the layers ended up: the actions aim at the ground below the surface.
 struct Terrain {
@@ -16,4 +16,4 @@ struct Terrain {
 
 Terrain build_world(DemoEditor& editor, const Box64& world, SplitMix64& random);
 
-}  // namespace edgeland::cli::demo
+}  // namespace edgeland::demo

@@ -5,10 +5,10 @@
 #include <array>
 #include <cstdint>
 
+#include "edgeland/demo/splitmix64.hpp"
 #include "edgeland/spatial/landscape.hpp"
-#include "splitmix64.hpp"
 
-namespace edgeland::cli {
+namespace edgeland::demo {
 
 struct Rgb {
   std::uint8_t r = 0, g = 0, b = 0;
@@ -49,4 +49,4 @@ inline Rgb material_colour(Material m) {
   return {channel(0), channel(8), channel(16)};
 }
 
-}  // namespace edgeland::cli
+}  // namespace edgeland::demo

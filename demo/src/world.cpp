@@ -1,6 +1,6 @@
-#include "demo_world.hpp"
+#include "edgeland/demo/world.hpp"
 
-namespace edgeland::cli::demo {
+namespace edgeland::demo {
 namespace {
 
 // Waves are sampled every kStep units: 129 points across an 8192 world.
@@ -30,23 +30,28 @@ Terrain lay_layers(DemoEditor& editor, const Box64& world, SplitMix64& random) {
   return t;
 }
 
-// Thin wavy bands turn rock into ore and dirt into sand where they cross it.
-void lay_bands(DemoEditor& editor, const Box64& world, SplitMix64& random) {
+// Per mille of the world's height: [lo, hi] for each random draw of a band.
+struct BandRanges {
+  std::int64_t base_lo, base_hi, amplitude_lo, amplitude_hi, thickness_lo, thickness_hi;
+};
+
+// One thin wavy band turning `from` into `to` where it crosses it.
+void lay_band(DemoEditor& editor, const Box64& world, SplitMix64& random, const BandRanges& r,
+              Material from, Material to) {
   // Each random number in its own statement: argument evaluation order is unspecified.
-  for (int i = 0; i < 5; ++i) {
-    const std::int64_t base = height(world, random.between(140, 540));
-    const std::int64_t amplitude = scaled(world, random.between(10, 30));
-    const WavyLine vein = random_wavy_line(base, amplitude, random);
-    const std::int64_t thickness = scaled(world, random.between(3, 8));
-    editor.replace(band_along(vein, 0, thickness, world, kStep), kRock, kOre);
-  }
-  for (int i = 0; i < 2; ++i) {
-    const std::int64_t base = height(world, random.between(600, 660));
-    const std::int64_t amplitude = scaled(world, random.between(10, 20));
-    const WavyLine pocket = random_wavy_line(base, amplitude, random);
-    const std::int64_t thickness = scaled(world, random.between(6, 12));
-    editor.replace(band_along(pocket, 0, thickness, world, kStep), kDirt, kSand);
-  }
+  const std::int64_t base = height(world, random.between(r.base_lo, r.base_hi));
+  const std::int64_t amplitude = scaled(world, random.between(r.amplitude_lo, r.amplitude_hi));
+  const WavyLine line = random_wavy_line(base, amplitude, random);
+  const std::int64_t thickness = scaled(world, random.between(r.thickness_lo, r.thickness_hi));
+  editor.replace(band_along(line, 0, thickness, world, kStep), from, to);
+}
+
+// Thin wavy bands turn rock into ore (veins) and dirt into sand (pockets) where they cross it.
+void lay_bands(DemoEditor& editor, const Box64& world, SplitMix64& random) {
+  for (int i = 0; i < 5; ++i)
+    lay_band(editor, world, random, {140, 540, 10, 30, 3, 8}, kRock, kOre);
+  for (int i = 0; i < 2; ++i)
+    lay_band(editor, world, random, {600, 660, 10, 20, 6, 12}, kDirt, kSand);
 }
 
 // Caves in the rock, the lower part of every third one flooded (only its empty space fills).
@@ -77,4 +82,4 @@ Terrain build_world(DemoEditor& editor, const Box64& world, SplitMix64& random) 
   return terrain;
 }
 
-}  // namespace edgeland::cli::demo
+}  // namespace edgeland::demo
