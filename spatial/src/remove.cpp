@@ -5,8 +5,8 @@
 #include <unordered_map>
 
 #include "edgeland/spatial/landscape.hpp"
+#include "edgeland/spatial/log_format.hpp"
 #include "edit.hpp"
-#include "edit_log.hpp"
 
 namespace edgeland {
 namespace {
@@ -67,7 +67,7 @@ ChangeSet Landscape::remove(std::span<const PolygonRef> polygons) {
     for (const auto& [cell, indices] : members)
       for (std::size_t i : indices) all.push_back(cell->polygon_set()[i]);
     std::sort(all.begin(), all.end());
-    return detail::carve_line(all);
+    return log::edit_line(log::LandscapeEditKind::kCarve, all);
   };
   const auto build = [&] {
     return detail::EditBuilder(s_, detail::EditTable::carve()).build(std::move(cut), box, vertices);
