@@ -1,4 +1,4 @@
-// The errors of deltas and paths (errors.hpp).
+// The errors of deltas, tree paths and regions (errors.hpp).
 #include <string>
 
 #include "edgeland/spatial/errors.hpp"
@@ -46,6 +46,13 @@ DeltaMismatch::DeltaMismatch(Field f, std::uint64_t e, std::uint64_t a)
       field(f),
       expected(e),
       actual(a) {}
+
+RegionNotLoaded::RegionNotLoaded(TreePath p, const Box64& b)
+    : LandscapeError("region " + path_text(p) + " (" + std::to_string(b.min.x) + " " +
+                     std::to_string(b.min.y) + ", " + std::to_string(b.max.x) + " " +
+                     std::to_string(b.max.y) + ") is not loaded"),
+      path(std::move(p)),
+      box(b) {}
 
 InvalidPath::InvalidPath(TreePath p)
     : LandscapeError("tree path " + path_text(p) + " names no node"), path(std::move(p)) {}
