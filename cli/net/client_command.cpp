@@ -31,6 +31,7 @@ struct ClientArgs {
   std::uint64_t seed = 1;
   std::string hostile;
   bool diverge = false;
+  bool latencies = false;
 };
 
 net::ClientOptions options_of(const ClientArgs& a) {
@@ -41,7 +42,8 @@ net::ClientOptions options_of(const ClientArgs& a) {
   o.role = a.thin ? net::Role::kThin : net::Role::kFull;
   o.watch_all = a.watch == "all";
   if (!o.watch_all && !a.watch.empty() && a.watch != "none") o.regions = region_list(a.watch);
-  if (a.edit_box.size() == 4) o.edit_box = {{a.edit_box[0], a.edit_box[1]}, {a.edit_box[2], a.edit_box[3]}};
+  if (a.edit_box.size() == 4)
+    o.edit_box = {{a.edit_box[0], a.edit_box[1]}, {a.edit_box[2], a.edit_box[3]}};
   o.edits_per_second = a.rate;
   o.seed = a.seed;
   return o;
@@ -58,7 +60,7 @@ nlohmann::ordered_json latency_json(std::vector<std::uint32_t> us) {
   return out;
 }
 
-nlohmann::ordered_json summary(const net::Client& c) {
+nlohmann::ordered_json summary(const net::Client& c, bool latencies) {
   const net::ClientStats s = c.stats();
   nlohmann::ordered_json out;
   out["client"] = c.id();
@@ -80,6 +82,7 @@ nlohmann::ordered_json summary(const net::Client& c) {
   for (const auto& [reason, n] : s.rejects) rejects[net::reason_name(reason)] = n;
   out["rejects"] = rejects;
   out["latency"] = latency_json(s.latencies_us);
+  if (latencies) out["latencies_us"] = s.latencies_us;
   out["bytes_received"] = s.bytes_received;
   out["bytes_sent"] = s.bytes_sent;
   out["disconnected"] = s.disconnected;
@@ -104,7 +107,8 @@ int run_client(const ClientArgs& a) {
   }
   if (!a.hostile.empty()) return run_hostile(client, a.hostile, a.seconds);
   if (a.diverge) client.diverge(divergence(client));
-  serve_until(client, start + std::chrono::seconds(a.seconds), [&] { return client.stats().disconnected; });
+  serve_until(client, start + std::chrono::seconds(a.seconds),
+              [&] { return client.stats().disconnected; });
   client.stop_editing();
   // Until every edit came back and a later checkpoint found the world in step.
   const std::uint64_t seen = client.stats().checkpoints;
@@ -113,7 +117,7 @@ int run_client(const ClientArgs& a) {
     return s.disconnected || (s.edits_applied + s.edits_rejected == s.edits_sent &&
                               s.checkpoints > seen + 1 && client.in_step());
   });
-  const nlohmann::ordered_json out = summary(client);
+  const nlohmann::ordered_json out = summary(client, a.latencies);
   client.leave();
   std::cout << out.dump() << std::endl;
   return client.in_step() ? kExitOk : kExitInvalid;
@@ -130,8 +134,7 @@ Command add_client_command(CLI::App& parent) {
   app->add_flag("--thin", a->thin, "keep only the polygons (CHANGES deltas), no landscape");
   app->add_option("--watch", a->watch, "the regions watched: all, none, or indices 0,5,...")
       ->default_val("all");
-  app->add_option("--edit-box", a->edit_box, "X0 Y0 X1 Y1: where this client edits")
-      ->expected(4);
+  app->add_option("--edit-box", a->edit_box, "X0 Y0 X1 Y1: where this client edits")->expected(4);
   app->add_option("--edits-per-second", a->rate, "its own edits (0: none)")->default_val(0);
   app->add_option("--seconds", a->seconds, "how long it edits")->default_val(10);
   app->add_option("--linger", a->linger,
@@ -141,12 +144,14 @@ Command add_client_command(CLI::App& parent) {
   app->add_option("--hostile", a->hostile,
                   "garbage, oversized, out-of-range, invalid, outside, flood or all: send that "
                   "instead of edits and report the rejections");
+  app->add_flag("--print-latencies", a->latencies, "every edit's latency in the JSON line");
   app->add_flag("--diverge", a->diverge,
                 "apply one edit to its own world only, so the next checkpoint differs and it "
                 "repairs");
-  app->footer("Prints one JSON line when it stops. Exit status 0 when its world is in step with "
-              "the server's at the end (hostile: when every attack got its rejection or a "
-              "disconnect), 1 otherwise, 2 when the server does not answer.");
+  app->footer(
+      "Prints one JSON line when it stops. Exit status 0 when its world is in step with "
+      "the server's at the end (hostile: when every attack got its rejection or a "
+      "disconnect), 1 otherwise, 2 when the server does not answer.");
   return {app, [a] { return run_client(*a); }};
 }
 

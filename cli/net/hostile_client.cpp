@@ -83,16 +83,18 @@ std::vector<Attack> attacks(const net::Client& c, const std::string& mode) {
   const Box64& box = c.granted();
   std::vector<Attack> all = {
       {"garbage", RejectReason::kMalformed, garbage()},
-      {"oversized", RejectReason::kTooLarge,
-       {edit_message(1, std::string(128 * 1024, 'x'))}},
-      {"out-of-range", RejectReason::kOutOfRange,
+      {"oversized", RejectReason::kTooLarge, {edit_message(1, std::string(128 * 1024, 'x'))}},
+      {"out-of-range",
+       RejectReason::kOutOfRange,
        {edit_message(2, raw_command(world, {{{0, 0}, {kCoordBound + 5, 0}, {0, 10}}}))}},
-      {"invalid", RejectReason::kInvalidShape,
+      {"invalid",
+       RejectReason::kInvalidShape,
        {edit_message(3, raw_command(world, {{{box.min.x, box.min.y},
-                                            {box.min.x + 10, box.min.y + 10},
-                                            {box.min.x + 10, box.min.y},
-                                            {box.min.x, box.min.y + 10}}}))}},
-      {"outside", RejectReason::kNotPermitted,
+                                             {box.min.x + 10, box.min.y + 10},
+                                             {box.min.x + 10, box.min.y},
+                                             {box.min.x, box.min.y + 10}}}))}},
+      {"outside",
+       RejectReason::kNotPermitted,
        {edit_message(4, raw_command(world, {circle({box.max.x + 100, box.max.y + 100}, 20)}))}},
   };
   std::vector<std::string> flood;

@@ -48,7 +48,8 @@ void add_store_options(CLI::App& app, StoreArgs& a) {
 }
 
 std::unique_ptr<store::RegionStore> open_store(const std::string& spec, const std::string& server) {
-  if (spec.rfind("sqlite:", 0) == 0) return std::make_unique<store::SqliteRegionStore>(spec.substr(7));
+  if (spec.rfind("sqlite:", 0) == 0)
+    return std::make_unique<store::SqliteRegionStore>(spec.substr(7));
   if (spec.rfind("postgres:", 0) == 0)
     return std::make_unique<store::PostgresRegionStore>(spec.substr(9), server);
   throw store::StoreError("a store is sqlite:PATH or postgres:CONNINFO, not '" + spec + "'");
@@ -57,7 +58,8 @@ std::unique_ptr<store::RegionStore> open_store(const std::string& spec, const st
 std::vector<std::uint32_t> region_list(const std::string& text) {
   std::vector<std::uint32_t> out;
   std::istringstream in(text);
-  for (std::string item; std::getline(in, item, ',');) out.push_back(static_cast<std::uint32_t>(std::stoul(item)));
+  for (std::string item; std::getline(in, item, ',');)
+    out.push_back(static_cast<std::uint32_t>(std::stoul(item)));
   return out;
 }
 
@@ -71,9 +73,11 @@ StoreSession::StoreSession(const StoreArgs& a, const WorldArgs& w)
   }
   store_ = open_store(a.store, a.server);
   std::vector<TreePath> wanted;
-  const std::vector<std::uint32_t> list = a.own == "all" ? std::vector<std::uint32_t>{} : region_list(a.own);
+  const std::vector<std::uint32_t> list =
+      a.own == "all" ? std::vector<std::uint32_t>{} : region_list(a.own);
   for (const TreePath& p : world_.region_paths())
-    if (a.own == "all" || std::find(list.begin(), list.end(), index_of(p)) != list.end()) wanted.push_back(p);
+    if (a.own == "all" || std::find(list.begin(), list.end(), index_of(p)) != list.end())
+      wanted.push_back(p);
   auto* pg = dynamic_cast<store::PostgresRegionStore*>(store_.get());
   owned_ = pg && !a.server.empty() ? pg->claim(wanted) : wanted;
   for (const TreePath& p : owned_) {

@@ -23,8 +23,8 @@ void add_world_options(CLI::App& app, WorldArgs& a);
 Landscape make_world(const WorldArgs& a);
 
 struct StoreArgs {
-  std::string store;   // "sqlite:PATH" or "postgres:CONNINFO"; empty: no store
-  std::string server;  // this server's name among the owners (postgres)
+  std::string store;        // "sqlite:PATH" or "postgres:CONNINFO"; empty: no store
+  std::string server;       // this server's name among the owners (postgres)
   std::string own = "all";  // the regions this server owns: "all" or indices "0,5,..."
   int commit_ms = 1000;
 };

@@ -67,9 +67,9 @@ int run_serve(const ServeArgs& a) {
   net::ServerOptions options = a.server;
   options.first_sequence = store.sequence();
   net::Server server(store.world(), options);
-  std::cout << nlohmann::ordered_json{{"listening", a.server.address}, {"port", server.port()}}
-                   .dump()
-            << std::endl;
+  std::cout
+      << nlohmann::ordered_json{{"listening", a.server.address}, {"port", server.port()}}.dump()
+      << std::endl;
   const auto start = std::chrono::steady_clock::now();
   const double cpu_start = cpu_seconds();
   const auto end = start + std::chrono::seconds(a.seconds);
@@ -83,7 +83,8 @@ int run_serve(const ServeArgs& a) {
   }
   server.finish();
   store.finish(server);
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double wall =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::cout << summary(server, wall, cpu_seconds() - cpu_start).dump() << std::endl;
   return kExitOk;
 }
@@ -114,16 +115,19 @@ Command add_serve_command(CLI::App& parent) {
   auto checkpoint_ms = std::make_shared<int>(1000);
   app->add_option("--checkpoint-ms", *checkpoint_ms, "milliseconds between checkpoints")
       ->default_val(1000)
-      ->each([a](const std::string& v) { a->server.checkpoint_every = std::chrono::milliseconds(std::stoi(v)); });
+      ->each([a](const std::string& v) {
+        a->server.checkpoint_every = std::chrono::milliseconds(std::stoi(v));
+      });
   app->add_option("--snapshot-every", a->server.snapshot_every,
                   "edits logged before the join snapshot is taken again")
       ->default_val(a->server.snapshot_every);
   app->add_flag("--debris", a->server.debris,
                 "detach debris islands after each edit and broadcast them as commands");
   add_store_options(*app, a->store);
-  app->footer("Prints {\"listening\":..., \"port\":N} when it listens and a JSON summary when it "
-              "stops (on --seconds, --until-idle, SIGTERM or SIGINT). Exit status 0; 2 for a bad "
-              "command line or a store that cannot be opened.");
+  app->footer(
+      "Prints {\"listening\":..., \"port\":N} when it listens and a JSON summary when it "
+      "stops (on --seconds, --until-idle, SIGTERM or SIGINT). Exit status 0; 2 for a bad "
+      "command line or a store that cannot be opened.");
   return {app, [a] { return run_serve(*a); }};
 }
 

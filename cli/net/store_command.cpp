@@ -30,10 +30,15 @@ Landscape stored_world(const std::string& spec) {
   return w;
 }
 
-Landscape replayed(const StoreCommandArgs& a) {
+// The replayed world, and how many of its edits met more than one region.
+Landscape replayed(const StoreCommandArgs& a, std::size_t& across) {
   Landscape w = make_world(a.world);
   net::EditStream edits(a.seed, {{a.box[0], a.box[1]}, {a.box[2], a.box[3]}});
-  for (std::size_t i = 0; i < a.count; ++i) apply_edit(w, edits.next());
+  for (std::size_t i = 0; i < a.count; ++i) {
+    const Edit e = edits.next();
+    across += w.regions_meeting(*bounding_box(e.shape.polygons())).size() > 1 ? 1 : 0;
+    apply_edit(w, e);
+  }
   return w;
 }
 
@@ -55,8 +60,10 @@ int run_store(const StoreCommandArgs& a) {
   out["state_hash"] = log::state_hash_hex(w.state_hash());
   bool same = true;
   if (a.count > 0) {
-    const std::uint64_t single = replayed(a).state_hash();
+    std::size_t across = 0;
+    const std::uint64_t single = replayed(a, across).state_hash();
     out["replayed_hash"] = log::state_hash_hex(single);
+    out["replayed_edits_across_region_lines"] = across;
     same = single == w.state_hash();
     out["same"] = same;
   }
@@ -76,10 +83,10 @@ Command add_store_command(CLI::App& parent) {
       ->default_val(1);
   app->add_option("--replay-count", a->count, "how many of its edits to replay (0: none)")
       ->default_val(0);
-  app->add_option("--replay-box", a->box, "X0 Y0 X1 Y1: the box the client edited in")
-      ->expected(4);
-  app->footer("Exit status 0 when the world passes check() (and, with --replay-count, has the "
-              "replay's hash), 1 otherwise, 2 when the store cannot be read.");
+  app->add_option("--replay-box", a->box, "X0 Y0 X1 Y1: the box the client edited in")->expected(4);
+  app->footer(
+      "Exit status 0 when the world passes check() (and, with --replay-count, has the "
+      "replay's hash), 1 otherwise, 2 when the store cannot be read.");
   return {app, [a] { return run_store(*a); }};
 }
 

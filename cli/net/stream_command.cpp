@@ -127,8 +127,9 @@ int run_stream(const StreamArgs& a) {
 Command add_stream_command(CLI::App& parent) {
   auto a = std::make_shared<StreamArgs>();
   CLI::App* app = parent.add_subcommand(
-      "stream", "Build a big world region by region, in memory or through a region store under "
-                "a memory budget (store/README.md), and print its hash and memory.");
+      "stream",
+      "Build a big world region by region, in memory or through a region store under "
+      "a memory budget (store/README.md), and print its hash and memory.");
   app->add_option("--store", a->store, "sqlite:PATH or postgres:CONNINFO (none: in memory)");
   app->add_option("--budget", a->budget, "bytes the loaded regions may take")
       ->default_val(a->budget);
@@ -139,8 +140,9 @@ Command add_stream_command(CLI::App& parent) {
   app->add_option("--max-edits", a->max_edits, "stop after this many edits of the sweep (0: all)")
       ->default_val(0);
   app->add_flag("--trace-commits", a->trace, "print commit-begin / commit-end lines");
-  app->footer("A store that already holds the sweep's world goes on from its sequence number "
-              "(a run resumed after a crash). Exit status 0; 2 for a store that cannot be used.");
+  app->footer(
+      "A store that already holds the sweep's world goes on from its sequence number "
+      "(a run resumed after a crash). Exit status 0; 2 for a store that cannot be used.");
   return {app, [a] { return run_stream(*a); }};
 }
 

@@ -21,12 +21,9 @@ std::uint64_t mirror_digest(const DrawMirror& mirror, std::uint32_t region) {
 
 }  // namespace
 
-Client::Client(ClientOptions options)
-    : options_(std::move(options)), start_(Clock::now()) {
-  host_ = std::make_unique<EnetHost>(EnetHost::connect(
-      options_.address, options_.port, options_.max_packet, options_.connect_timeout_ms));
-  ask(Hello{kProtocolVersion, options_.role, options_.watch_all, options_.regions,
-            options_.edit_box});
+Client::Client(ClientOptions options) : options_(std::move(options)), start_(Clock::now()) {
+  host_ = std::make_unique<EnetHost>(
+      EnetHost::connect(options_.address, options_.port, options_.max_packet));
 }
 
 Client::~Client() = default;
@@ -38,16 +35,20 @@ ClientStats Client::stats() const {
   return s;
 }
 
-void Client::ask(const Message& m) { host_->send(1, encode_message(m)); }
+void Client::ask(const Message& m) { host_->send(peer_, encode_message(m)); }
 
 void Client::send_raw(const std::string& bytes) {
-  host_->send(1, bytes);
+  host_->send(peer_, bytes);
   host_->flush();
 }
 
 void Client::step(int timeout_ms) {
   for (EnetHost::Event e = host_->service(timeout_ms); e.kind != EnetHost::Event::Kind::kNone;
        e = host_->service(0)) {
+    if (e.kind == EnetHost::Event::Kind::kConnect) peer_ = e.peer;
+    if (e.kind == EnetHost::Event::Kind::kConnect)
+      ask(Hello{kProtocolVersion, options_.role, options_.watch_all, options_.regions,
+                options_.edit_box});
     if (e.kind == EnetHost::Event::Kind::kDisconnect) stats_.disconnected = true;
     if (e.kind == EnetHost::Event::Kind::kReceive) receive(e.data);
   }
@@ -115,8 +116,8 @@ void Client::command(const Command& m) {
   stats_.sequence = d.header.sequence;
   ++stats_.commands;
   if (m.origin != id_ || !pending_.count(m.number)) return;
-  const auto us = std::chrono::duration_cast<std::chrono::microseconds>(Clock::now() -
-                                                                        pending_[m.number]);
+  const auto us =
+      std::chrono::duration_cast<std::chrono::microseconds>(Clock::now() - pending_[m.number]);
   stats_.latencies_us.push_back(static_cast<std::uint32_t>(us.count()));
   ++stats_.edits_applied;
   pending_.erase(m.number);

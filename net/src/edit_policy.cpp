@@ -14,7 +14,8 @@ RateLimiter::RateLimiter(std::uint32_t per_second, std::uint32_t burst, Clock::t
 bool RateLimiter::take(Clock::time_point now) {
   const auto ms = std::chrono::duration_cast<std::chrono::milliseconds>(now - last_).count();
   if (ms > 0) {
-    milli_tokens_ = std::min(capacity_, milli_tokens_ + static_cast<std::uint64_t>(ms) * per_second_);
+    milli_tokens_ =
+        std::min(capacity_, milli_tokens_ + static_cast<std::uint64_t>(ms) * per_second_);
     last_ = now;
   }
   if (milli_tokens_ < 1000) return false;

@@ -15,7 +15,8 @@ std::uint64_t EditStream::random() {
 Edit EditStream::next() {
   const auto r = static_cast<std::int64_t>(8 + random() % 33);
   const auto at = [&](std::int64_t lo, std::int64_t hi) {
-    return lo + r + static_cast<std::int64_t>(random() % static_cast<std::uint64_t>(hi - lo - 2 * r));
+    return lo + r +
+           static_cast<std::int64_t>(random() % static_cast<std::uint64_t>(hi - lo - 2 * r));
   };
   const std::int64_t x = at(box_.min.x, box_.max.x), y = at(box_.min.y, box_.max.y);
   ValidSet shape(PolygonSet{circle({x, y}, r)});

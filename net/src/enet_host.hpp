@@ -18,9 +18,9 @@ class EnetHost {
   // an incoming message over `max_packet` bytes is refused by ENet. Throws std::runtime_error.
   static EnetHost listen(const std::string& address, std::uint16_t port, std::size_t peers,
                          std::size_t max_packet);
-  // A client connected to address:port within `timeout_ms`. Throws std::runtime_error.
-  static EnetHost connect(const std::string& address, std::uint16_t port, std::size_t max_packet,
-                          int timeout_ms);
+  // A client connecting to address:port: service() reports kConnect once the server answers.
+  // Throws std::runtime_error.
+  static EnetHost connect(const std::string& address, std::uint16_t port, std::size_t max_packet);
   ~EnetHost();
   EnetHost(EnetHost&& other) noexcept;
   EnetHost& operator=(EnetHost&&) = delete;

@@ -144,6 +144,14 @@ void Server::hello(Client& c, const Hello& m) {
     return reject(c, 0, RejectReason::kMalformed, "a second HELLO or another protocol version");
   for (const std::uint32_t r : m.regions)
     if (!region_slot_.count(r)) return reject(c, 0, RejectReason::kMalformed, "no such region");
+  // A server that owns some regions of a world serves only those.
+  const auto held = [&](std::uint32_t r) {
+    return world_.region_loaded(regions_[region_slot_[r]]);
+  };
+  const bool all_held = std::all_of(region_slot_.begin(), region_slot_.end(),
+                                    [&](const auto& r) { return held(r.first); });
+  if ((m.watch_all && !all_held) || !std::all_of(m.regions.begin(), m.regions.end(), held))
+    return reject(c, 0, RejectReason::kNotPermitted, "a region this server does not hold");
   c.greeted = true;
   c.role = m.role;
   c.watch_all = m.watch_all;
@@ -163,7 +171,6 @@ void Server::hello(Client& c, const Hello& m) {
 
 // The snapshot's regions, then the logged COMMANDs after it that reach a watched region.
 void Server::welcome_full(Client& c, Welcome& w) {
-  if (log_.size() >= options_.snapshot_every) refresh_snapshot();
   w.sequence = snapshot_.sequence;
   for (std::size_t i = 0; i < regions_.size(); ++i) {
     std::uint32_t index = 0;
@@ -173,7 +180,8 @@ void Server::welcome_full(Client& c, Welcome& w) {
   }
   send(c, w);
   for (const Logged& l : log_)
-    if (std::any_of(l.regions.begin(), l.regions.end(), [&](std::uint32_t r) { return c.watches(r); }))
+    if (std::any_of(l.regions.begin(), l.regions.end(),
+                    [&](std::uint32_t r) { return c.watches(r); }))
       host_->send(c.peer, l.message);
 }
 
@@ -201,7 +209,13 @@ void Server::refresh_snapshot() {
     const std::uint64_t hash = world_.node_digest(regions_[i])->hash;
     const bool same = i < snapshot_.hashes.size() && snapshot_.hashes[i] == hash;
     next.hashes.push_back(hash);
-    next.records.push_back(same ? snapshot_.records[i] : record_of(world_, regions_[i], true));
+    // A region another server owns has no record here, only its summary.
+    std::string record;
+    if (same)
+      record = snapshot_.records[i];
+    else if (world_.region_loaded(regions_[i]))
+      record = record_of(world_, regions_[i], true);
+    next.records.push_back(std::move(record));
     next.summaries.push_back(same ? snapshot_.summaries[i] : record_of(world_, regions_[i], false));
   }
   snapshot_ = std::move(next);
@@ -226,7 +240,8 @@ void Server::edit(Client& c, const EditRequest& m) {
   }
   if (d.header.kind != DeltaKind::kCommand || d.header.world != world_.world_hash() ||
       d.header.algorithm != kAlgorithmVersion)
-    return reject(c, m.number, RejectReason::kOtherWorld, "not a COMMAND of this world and version");
+    return reject(c, m.number, RejectReason::kOtherWorld,
+                  "not a COMMAND of this world and version");
   const std::optional<Box64> box = bounding_box(d.edits.front().shape.polygons());
   if (box && !permitted(c.granted, *box))
     return reject(c, m.number, RejectReason::kNotPermitted, "outside the box granted");
@@ -278,6 +293,7 @@ void Server::broadcast(std::uint32_t origin, std::uint32_t number, const Landsca
     stats_.command_bytes += logged.message.size();
   }
   log_.push_back(std::move(logged));
+  if (log_.size() >= options_.snapshot_every) refresh_snapshot();
 }
 
 // The change set cut to the client's regions: with per-region ids an id names its region.
@@ -314,8 +330,8 @@ Checkpoint Server::checkpoint_for(const Client& c) {
   for (const auto& [index, slot] : region_slot_) {
     if (!c.watches(index) || (c.watch_all && c.role == Role::kFull)) continue;
     const TreePath& p = regions_[slot];
-    m.regions.emplace_back(index, c.role == Role::kThin ? world_.drawn_digest(p)
-                                                        : world_.node_digest(p)->hash);
+    m.regions.emplace_back(
+        index, c.role == Role::kThin ? world_.drawn_digest(p) : world_.node_digest(p)->hash);
   }
   return m;
 }

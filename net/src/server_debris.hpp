@@ -15,9 +15,9 @@ class ServerDebris {
   // Detaches the islands `changes` (the last edit's) made, and those each detachment makes,
   // calling `detached(before, carve, changes)` after each with the world before it, the carve
   // it was and its change set.
-  void detach_all(Landscape& world, const ChangeSet& changes,
-                  const std::function<void(const Landscape&, const Edit&, const ChangeSet&)>&
-                      detached);
+  void detach_all(
+      Landscape& world, const ChangeSet& changes,
+      const std::function<void(const Landscape&, const Edit&, const ChangeSet&)>& detached);
 
  private:
   IslandTracker islands_;

@@ -5,8 +5,8 @@
 #include <map>
 #include <ostream>
 
-#include "edgeland/spatial/byte_codec.hpp"
 #include "cell_split.hpp"
+#include "edgeland/spatial/byte_codec.hpp"
 #include "edgeland/spatial/landscape.hpp"
 #include "region_record.hpp"
 #include "regions.hpp"
@@ -128,16 +128,16 @@ void Landscape::save_region(const TreePath& path, std::ostream& out) const {
 }
 
 void Landscape::save_region_summary(const TreePath& path, std::ostream& out) const {
-  const std::string bytes =
-      detail::write_summary_record(detail::summarize(region_or_throw(s_, path), path, world_hash()));
+  const std::string bytes = detail::write_summary_record(
+      detail::summarize(region_or_throw(s_, path), path, world_hash()));
   out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
 }
 
 void Landscape::unload_region(const TreePath& path) {
   const NodePtr region = region_or_throw(s_, path);
   if (region->is_stub()) return;
-  NodePtr stub = detail::make_stub(region->box, region->depth,
-                                   detail::summarize(region, path, world_hash()));
+  NodePtr stub =
+      detail::make_stub(region->box, region->depth, detail::summarize(region, path, world_hash()));
   s_.root = detail::replace_node(detail::nodes_on(s_.root, path), path, std::move(stub));
 }
 

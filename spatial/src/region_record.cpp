@@ -17,9 +17,9 @@ void write_summary(ByteWriter& w, const RegionSummary& s) {
   w.varint(s.path.size());
   for (const std::uint8_t i : s.path) w.u8(i);
   w.fixed(s.hash, 8);
-  for (const std::uint64_t v : {std::uint64_t{s.polygons}, std::uint64_t{s.vertices},
-                                std::uint64_t{s.cells}, std::uint64_t{s.deepest}, s.min_id,
-                                s.max_id, s.next_id})
+  for (const std::uint64_t v :
+       {std::uint64_t{s.polygons}, std::uint64_t{s.vertices}, std::uint64_t{s.cells},
+        std::uint64_t{s.deepest}, s.min_id, s.max_id, s.next_id})
     w.varint(v);
   w.varint(s.twice_areas.size());
   for (const auto& [m, a] : s.twice_areas) {

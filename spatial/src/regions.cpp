@@ -39,8 +39,16 @@ std::vector<RegionRef> regions_of(const NodePtr& root, const LandscapeConfig& co
 }
 
 RegionSummary summarize(const NodePtr& region, const TreePath& path, std::uint64_t world_hash) {
-  RegionSummary s{path,           world_hash,       region->hash,        region->polygons,
-                  region->vertices, region->cells, region->deepest, 0, 0, region->region_next,
+  RegionSummary s{path,
+                  world_hash,
+                  region->hash,
+                  region->polygons,
+                  region->vertices,
+                  region->cells,
+                  region->deepest,
+                  0,
+                  0,
+                  region->region_next,
                   {}};
   if (region->is_stub()) {
     s.min_id = region->stub->min_id;

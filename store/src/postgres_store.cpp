@@ -169,8 +169,9 @@ std::optional<StoredRegion> PostgresRegionStore::region(const TreePath& path) {
 void PostgresRegionStore::for_each_region(const std::function<void(const StoredRegion&)>& visit) {
   exec("BEGIN");
   try {
-    exec("DECLARE every_region NO SCROLL CURSOR FOR "
-         "SELECT path, bytes, hash, seq FROM regions ORDER BY path");
+    exec(
+        "DECLARE every_region NO SCROLL CURSOR FOR "
+        "SELECT path, bytes, hash, seq FROM regions ORDER BY path");
     for (;;) {
       const Result r = run(db_, "FETCH 64 FROM every_region", {});
       if (PQntuples(r.get()) == 0) break;

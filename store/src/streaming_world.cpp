@@ -1,13 +1,41 @@
 // StreamingWorld (streaming_world.hpp): regions in on demand, out by least recent use.
 #include "edgeland/store/streaming_world.hpp"
 
+#include <algorithm>
+#include <sstream>
+
 #include "edgeland/spatial/delta.hpp"
 
 namespace edgeland::store {
 
-StreamingWorld::StreamingWorld(RegionStore& store, std::size_t budget, const LandscapeLimits& limits)
-    : store_(store), budget_(budget), world_(open_world(store, limits)) {
-  seq_ = store_.world()->seq;
+namespace {
+
+// The world of stubs, and how many edits each region has seen, from one pass over the rows.
+Landscape opened(RegionStore& store, const LandscapeLimits& limits,
+                 std::map<TreePath, std::uint64_t>& seen) {
+  const std::optional<WorldRecord> w = store.world();
+  if (!w) throw StoreError("the store holds no world");
+  std::vector<RegionSummary> summaries;
+  store.for_each_region([&](const StoredRegion& row) {
+    std::istringstream in(row.record);
+    summaries.push_back(Landscape::read_region_summary(in));
+    seen[row.path] = row.seq;
+  });
+  return Landscape::from_regions(w->world, w->config, w->next_id, summaries, limits);
+}
+
+}  // namespace
+
+StreamingWorld::StreamingWorld(RegionStore& store, std::size_t budget,
+                               const LandscapeLimits& limits)
+    : store_(store), budget_(budget), world_(opened(store, limits, seen_)) {
+  seq_ = seen_.empty()
+             ? 0
+             : std::min_element(seen_.begin(), seen_.end(), [](const auto& a, const auto& b) {
+                 return a.second < b.second;
+               })->second;
+  // Regions that have seen an edit stay unloaded for it, and the edit passes over them.
+  world_.set_unloaded_policy(UnloadedRegions::kSkip);
 }
 
 WorldRecord StreamingWorld::record() const {
@@ -27,13 +55,18 @@ void StreamingWorld::bring_in(const std::vector<TreePath>& paths) {
 
 ChangeSet StreamingWorld::apply(const Edit& edit) {
   const std::optional<Box64> box = bounding_box(edit.shape.polygons());
-  const std::vector<TreePath> paths = box ? world_.regions_meeting(*box) : std::vector<TreePath>{};
+  std::vector<TreePath> paths;
+  // A region that has seen this edit is not loaded for it: every region that is loaded has
+  // seen only earlier edits.
+  for (const TreePath& p : box ? world_.regions_meeting(*box) : std::vector<TreePath>{})
+    if (seen_[p] <= seq_) paths.push_back(p);
   bring_in(paths);
   std::vector<std::uint64_t> before;
   for (const TreePath& p : paths) before.push_back(world_.node_digest(p)->hash);
   ChangeSet changes = apply_edit(world_, edit);
   ++seq_;
   for (std::size_t i = 0; i < paths.size(); ++i) {
+    seen_[paths[i]] = seq_;
     Loaded& l = loaded_[paths[i]];
     lru_.splice(lru_.end(), lru_, l.at);
     if (world_.node_digest(paths[i])->hash == before[i]) continue;
@@ -54,7 +87,7 @@ void StreamingWorld::evict_to_budget() {
   std::size_t bytes = stats_.loaded_bytes;
   for (auto it = lru_.begin(); bytes > budget_ && it != lru_.end(); ++it) {
     const Loaded& l = loaded_[*it];
-    if (l.dirty) rows.push_back(stored_region(world_, *it, seq_));
+    if (l.dirty) rows.push_back(stored_region(world_, *it, seen_[*it]));
     bytes -= l.bytes;
     out.push_back(*it);
   }
@@ -76,7 +109,7 @@ void StreamingWorld::evict_to_budget() {
 void StreamingWorld::flush() {
   std::vector<StoredRegion> rows;
   for (const auto& [p, l] : loaded_)
-    if (l.dirty) rows.push_back(stored_region(world_, p, seq_));
+    if (l.dirty) rows.push_back(stored_region(world_, p, seen_[p]));
   store_.commit(rows, record());
   ++stats_.commits;
   stats_.writes += rows.size();

@@ -49,8 +49,10 @@ Edit SweepEdits::at(std::size_t i) const {
                       static_cast<std::uint8_t>(1 + r % 3));
   }
   const Point64 from = slot((i - slots_) * 4);
-  const Point64 to{std::min(side_ - 20, from.x + 150), std::min(side_ - 20, from.y + 40 + static_cast<std::int64_t>(r % 60))};
-  return Edit::carve(ValidSet(PolygonSet{capsule(from, to, 10 + static_cast<std::int64_t>(r % 8))}));
+  const Point64 to{std::min(side_ - 20, from.x + 150),
+                   std::min(side_ - 20, from.y + 40 + static_cast<std::int64_t>(r % 60))};
+  return Edit::carve(
+      ValidSet(PolygonSet{capsule(from, to, 10 + static_cast<std::int64_t>(r % 8))}));
 }
 
 }  // namespace edgeland::store

@@ -26,7 +26,8 @@ Landscape edited(const LandscapeConfig& config, int edits = 300) {
   for (int i = 0; i < edits; ++i) {
     const Point64 c{static_cast<std::int64_t>(pinned::splitmix64(seed) % 4400) - 150,
                     static_cast<std::int64_t>(pinned::splitmix64(seed) % 4400) - 150};
-    const PolygonSet shape{pinned::blob(c, 20 + static_cast<std::int64_t>(pinned::splitmix64(seed) % 120))};
+    const PolygonSet shape{
+        pinned::blob(c, 20 + static_cast<std::int64_t>(pinned::splitmix64(seed) % 120))};
     if (i % 3 == 0)
       l.fill(shape, 2 + i % 2);
     else
@@ -280,7 +281,8 @@ TEST(Regions, TwoOwnersOfDisjointRegionsTogetherMakeTheOneProcessWorld) {
     // Radius up to 700: many edits cross region lines. Every tenth is a comb across the whole
     // world, cut to the cells of each region apart.
     const std::int64_t r = 40 + static_cast<std::int64_t>(pinned::splitmix64(seed) % 660);
-    const ValidSet shape(PolygonSet{i % 10 == 5 ? comb(c.y % 3900, 30 + r % 60) : pinned::blob(c, r)});
+    const ValidSet shape(
+        PolygonSet{i % 10 == 5 ? comb(c.y % 3900, 30 + r % 60) : pinned::blob(c, r)});
     const Edit e = i % 4 == 0 ? Edit::fill(shape, 2) : Edit::carve(shape);
     apply_edit(single, e);
     apply_edit(even, e);

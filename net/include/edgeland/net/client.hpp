@@ -30,7 +30,6 @@ struct ClientOptions {
   std::uint32_t edits_per_second = 0;  // its own edits (0: none)
   std::uint64_t seed = 1;              // of its edits
   std::size_t max_packet = std::size_t{64} << 20;
-  int connect_timeout_ms = 5000;
 };
 
 struct ClientStats {
@@ -47,7 +46,8 @@ struct ClientStats {
 
 class EDGELAND_EXPORT Client {
  public:
-  // Connects and says HELLO. Throws std::runtime_error when the server does not answer.
+  // Starts to connect; the first steps finish it and say HELLO (welcomed() once the server has
+  // answered). Throws std::runtime_error for an address that is no IP address.
   explicit Client(ClientOptions options);
   ~Client();
   Client(const Client&) = delete;
@@ -95,6 +95,7 @@ class EDGELAND_EXPORT Client {
   std::optional<Landscape> world_;
   DrawMirror mirror_;
   std::uint32_t id_ = 0;
+  std::uint32_t peer_ = 0;  // the server, once connected
   Box64 granted_{{1, 1}, {0, 0}};
   bool editing_ = true, in_step_ = false;
   std::optional<DivergenceSearch> search_;

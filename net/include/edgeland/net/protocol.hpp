@@ -86,7 +86,7 @@ struct Changes {
 };
 struct Checkpoint {
   std::uint64_t sequence = 0;
-  std::uint64_t hash = 0;  // the state hash
+  std::uint64_t hash = 0;                                        // the state hash
   std::vector<std::pair<std::uint32_t, std::uint64_t>> regions;  // index, hash (or digest)
 };
 struct Reject {

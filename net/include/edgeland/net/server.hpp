@@ -33,8 +33,8 @@ struct ServerOptions {
 
 struct ServerStats {
   std::uint64_t sequence = 0, edits = 0, debris = 0, checkpoints = 0, joins = 0, leaves = 0;
-  std::uint64_t dropped = 0;                          // clients disconnected for flooding
-  std::map<RejectReason, std::uint64_t> rejects;      // by reason
+  std::uint64_t dropped = 0;                           // clients disconnected for flooding
+  std::map<RejectReason, std::uint64_t> rejects;       // by reason
   std::uint64_t command_bytes = 0, commands_sent = 0;  // COMMAND messages sent, their bytes
   std::uint64_t bytes_sent = 0, bytes_received = 0;    // ENet's totals (protocol included)
   std::uint64_t repair_bytes = 0;                      // DIGESTS and PATCH messages sent
