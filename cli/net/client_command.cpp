@@ -78,9 +78,7 @@ nlohmann::ordered_json summary(const net::Client& c, bool latencies) {
   out["edits_sent"] = s.edits_sent;
   out["edits_applied"] = s.edits_applied;
   out["edits_rejected"] = s.edits_rejected;
-  nlohmann::ordered_json rejects = nlohmann::ordered_json::object();
-  for (const auto& [reason, n] : s.rejects) rejects[net::reason_name(reason)] = n;
-  out["rejects"] = rejects;
+  out["rejects"] = rejects_json(s.rejects);
   out["latency"] = latency_json(s.latencies_us);
   if (latencies) out["latencies_us"] = s.latencies_us;
   out["bytes_received"] = s.bytes_received;

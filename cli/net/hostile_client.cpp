@@ -10,6 +10,7 @@
 #include "edgeland/kernel/shapes.hpp"
 #include "edgeland/spatial/byte_codec.hpp"
 #include "edgeland/spatial/delta.hpp"
+#include "net_options.hpp"
 
 namespace edgeland::cli {
 namespace {
@@ -129,9 +130,7 @@ int run_hostile(net::Client& client, const std::string& mode, int seconds) {
   nlohmann::ordered_json out;
   out["hostile"] = mode;
   out["verdicts"] = verdicts;
-  nlohmann::ordered_json rejects = nlohmann::ordered_json::object();
-  for (const auto& [reason, n] : s.rejects) rejects[net::reason_name(reason)] = n;
-  out["rejects"] = rejects;
+  out["rejects"] = rejects_json(s.rejects);
   out["disconnected"] = s.disconnected;
   std::cout << out.dump() << std::endl;
   return all_met ? 0 : 1;

@@ -55,6 +55,12 @@ std::unique_ptr<store::RegionStore> open_store(const std::string& spec, const st
   throw store::StoreError("a store is sqlite:PATH or postgres:CONNINFO, not '" + spec + "'");
 }
 
+nlohmann::ordered_json rejects_json(const std::map<net::RejectReason, std::uint64_t>& rejects) {
+  nlohmann::ordered_json out = nlohmann::ordered_json::object();
+  for (const auto& [reason, n] : rejects) out[net::reason_name(reason)] = n;
+  return out;
+}
+
 std::vector<std::uint32_t> region_list(const std::string& text) {
   std::vector<std::uint32_t> out;
   std::istringstream in(text);

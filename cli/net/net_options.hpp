@@ -4,7 +4,9 @@
 #include <CLI/CLI.hpp>
 #include <chrono>
 #include <cstdint>
+#include <map>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -33,6 +35,9 @@ void add_store_options(CLI::App& app, StoreArgs& a);
 // name its commits are checked against). Throws StoreError.
 std::unique_ptr<store::RegionStore> open_store(const std::string& spec,
                                                const std::string& server = {});
+// Rejections by reason name, as the commands print them.
+nlohmann::ordered_json rejects_json(const std::map<net::RejectReason, std::uint64_t>& rejects);
+
 // Region indices from "0,5,12" (InputError-free: throws std::invalid_argument).
 std::vector<std::uint32_t> region_list(const std::string& text);
 

@@ -45,9 +45,7 @@ nlohmann::ordered_json summary(const net::Server& s, double wall, double cpu) {
   out["joins"] = st.joins;
   out["leaves"] = st.leaves;
   out["dropped"] = st.dropped;
-  nlohmann::ordered_json rejects = nlohmann::ordered_json::object();
-  for (const auto& [reason, n] : st.rejects) rejects[net::reason_name(reason)] = n;
-  out["rejects"] = rejects;
+  out["rejects"] = rejects_json(st.rejects);
   out["commands_sent"] = st.commands_sent;
   out["command_bytes"] = st.command_bytes;
   out["bytes_sent"] = st.bytes_sent;

@@ -5,6 +5,7 @@
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "commands.hpp"
 #include "edgeland/io/landscape_replay.hpp"
@@ -43,14 +44,17 @@ Landscape replayed(const StoreCommandArgs& a, std::size_t& across) {
 }
 
 int run_store(const StoreCommandArgs& a) {
-  Landscape w = [&] {
-    try {
-      return stored_world(a.spec);
-    } catch (const store::StoreError& e) {
-      std::cerr << "edgeland store: " << e.what() << '\n';
-      std::exit(kExitUnreadable);
-    }
-  }();
+  std::optional<Landscape> stored;
+  try {
+    stored.emplace(stored_world(a.spec));
+  } catch (const store::StoreError& e) {
+    std::cerr << "edgeland store: " << e.what() << '\n';
+    return kExitUnreadable;
+  } catch (const LoadError& e) {
+    std::cerr << "edgeland store: " << e.what() << '\n';
+    return kExitInvalid;
+  }
+  const Landscape& w = *stored;
   const LandscapeReport report = w.check();
   nlohmann::ordered_json out;
   out["regions"] = w.region_paths().size();

@@ -27,21 +27,10 @@ ChangeSet apply_edit(Landscape& world, const Edit& e) {
   return world.relabel(e.shape, e.map);
 }
 
-std::uint64_t detail::world_hash_of(const Box64& world, const LandscapeConfig& c) noexcept {
-  detail::StateHash h;
-  h.add(world)
-      .add(static_cast<std::uint64_t>(c.tree))
-      .add(static_cast<std::uint64_t>(c.edge_cap))
-      .add(static_cast<std::uint64_t>(c.merge_below))
-      .add(static_cast<std::uint64_t>(c.min_cell_size))
-      .add(static_cast<std::uint64_t>(static_cast<std::int64_t>(c.grid_depth)));
-  if (detail::regions_on(c))
-    h.add(static_cast<std::uint64_t>(c.region_depth)).add(std::uint64_t{c.region_ids});
-  return h.value();
-}
-
 std::uint64_t Landscape::world_hash() const noexcept {
-  return detail::world_hash_of(s_.world, s_.config);
+  detail::StateHash h;
+  detail::add_world(h, s_.world, s_.config);
+  return h.value();
 }
 
 namespace {

@@ -233,16 +233,7 @@ Int128 Landscape::twice_area(Material m) const {
 
 std::uint64_t Landscape::state_hash() const noexcept {
   detail::StateHash h;
-  const LandscapeConfig& c = s_.config;
-  h.add(s_.world)
-      .add(static_cast<std::uint64_t>(c.tree))
-      .add(static_cast<std::uint64_t>(c.edge_cap))
-      .add(static_cast<std::uint64_t>(c.merge_below))
-      .add(static_cast<std::uint64_t>(c.min_cell_size))
-      .add(static_cast<std::uint64_t>(static_cast<std::int64_t>(c.grid_depth)));
-  // Only when regions are on: without them the hash is as it always was (the pins stand).
-  if (detail::regions_on(c))
-    h.add(static_cast<std::uint64_t>(c.region_depth)).add(std::uint64_t{c.region_ids});
+  detail::add_world(h, s_.world, s_.config);
   h.add(static_cast<std::uint64_t>(s_.next_id)).add(s_.root->hash);
   return h.value();
 }

@@ -11,6 +11,7 @@
 #include "region_record.hpp"
 #include "regions.hpp"
 #include "save_load.hpp"
+#include "state_hash.hpp"
 #include "tree_codec.hpp"
 #include "tree_paths.hpp"
 
@@ -239,7 +240,9 @@ Landscape Landscape::from_regions(const Box64& world, const LandscapeConfig& con
   s.limits = limits;
   s.next_id = next_id;
   s.edits = 1;  // its log is not known (as after load)
-  StubWorld stubs(config, detail::world_hash_of(world, config), regions);
+  detail::StateHash world_hash;
+  detail::add_world(world_hash, world, config);
+  StubWorld stubs(config, world_hash.value(), regions);
   TreePath path;
   s.root = stubs.build(world, 0, path);
   stubs.require_all_used();

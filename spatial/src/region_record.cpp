@@ -24,9 +24,8 @@ void write_summary(ByteWriter& w, const RegionSummary& s) {
   w.varint(s.twice_areas.size());
   for (const auto& [m, a] : s.twice_areas) {
     w.u8(m.value());
-    const auto bits = static_cast<UInt128>(a);
-    w.fixed(static_cast<std::uint64_t>(bits), 8);
-    w.fixed(static_cast<std::uint64_t>(bits >> 64), 8);
+    w.fixed(int128_low(a), 8);
+    w.fixed(int128_high(a), 8);
   }
 }
 
@@ -53,8 +52,8 @@ RegionSummary read_summary(ByteReader& in) {
   for (std::size_t k = 0; k < areas; ++k) {
     const auto m = static_cast<int>(in.fixed(1));
     if (m <= previous) in.fail("region areas not by ascending solid material");
-    const UInt128 low = in.fixed(8), high = in.fixed(8);
-    s.twice_areas.emplace_back(static_cast<std::uint8_t>(m), static_cast<Int128>(low | high << 64));
+    const std::uint64_t low = in.fixed(8), high = in.fixed(8);
+    s.twice_areas.emplace_back(static_cast<std::uint8_t>(m), int128_from_words(low, high));
     previous = m;
   }
   return s;

@@ -54,9 +54,6 @@ void check_region_counter(const Node& region, std::uint64_t index, const std::st
 void check_region_ids(const std::vector<PolygonId>& ids, std::uint64_t index, PolygonId counter,
                       const std::string& name, std::vector<std::string>& problems);
 
-// Landscape::world_hash: the world box and the configuration.
-std::uint64_t world_hash_of(const Box64& world, const LandscapeConfig& config) noexcept;
-
 // Throws RegionNotLoaded for a stub.
 void require_loaded(const Node& node);
 

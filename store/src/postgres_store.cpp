@@ -91,33 +91,24 @@ constexpr const char* kPutWorld =
     "seq = GREATEST(world.seq, excluded.seq)";
 
 Params world_params(const WorldRecord& w) {
-  const LandscapeConfig& c = w.config;
   Params p;
-  for (const std::int64_t v :
-       {w.world.min.x, w.world.min.y, w.world.max.x, w.world.max.y,
-        static_cast<std::int64_t>(c.tree), std::int64_t{c.edge_cap}, std::int64_t{c.merge_below},
-        c.min_cell_size, std::int64_t{c.grid_depth}, std::int64_t{c.region_depth},
-        std::int64_t{c.region_ids ? 1 : 0}, static_cast<std::int64_t>(w.next_id),
-        static_cast<std::int64_t>(w.seq)})
-    p.text(v);
+  for (const std::int64_t v : world_columns(w)) p.text(v);
   return p;
 }
 
 WorldRecord world_row(const PGresult* r) {
-  WorldRecord w;
-  const auto at = [&](int column) { return int8_at(r, 0, column); };
-  w.world = {{at(0), at(1)}, {at(2), at(3)}};
-  LandscapeConfig& c = w.config;
-  c.tree = static_cast<TreeKind>(at(4));
-  c.edge_cap = static_cast<std::uint32_t>(at(5));
-  c.merge_below = static_cast<std::uint32_t>(at(6));
-  c.min_cell_size = at(7);
-  c.grid_depth = static_cast<int>(at(8));
-  c.region_depth = static_cast<int>(at(9));
-  c.region_ids = at(10) != 0;
-  w.next_id = static_cast<PolygonId>(at(11));
-  w.seq = static_cast<std::uint64_t>(at(12));
-  return w;
+  std::array<std::int64_t, 13> values{};
+  for (std::size_t i = 0; i < values.size(); ++i) values[i] = int8_at(r, 0, static_cast<int>(i));
+  return world_of_columns(values);
+}
+
+Params region_params(const StoredRegion& row) {
+  Params p;
+  p.binary(bytes_of(row.path));
+  p.binary(row.record);
+  p.text(static_cast<std::int64_t>(row.hash));
+  p.text(static_cast<std::int64_t>(row.seq));
+  return p;
 }
 
 }  // namespace
@@ -201,12 +192,7 @@ void PostgresRegionStore::commit(const std::vector<StoredRegion>& regions,
   try {
     for (const StoredRegion& row : regions) {
       require_owned(row.path);
-      Params p;
-      p.binary(bytes_of(row.path));
-      p.binary(row.record);
-      p.text(static_cast<std::int64_t>(row.hash));
-      p.text(static_cast<std::int64_t>(row.seq));
-      run(db_, kPutRegion, p);
+      run(db_, kPutRegion, region_params(row));
     }
     if (world) run(db_, kPutWorld, world_params(*world));
     exec("COMMIT");
@@ -243,12 +229,7 @@ void PostgresRegionStore::hand_over(const StoredRegion& last, const std::string&
   exec("BEGIN");
   try {
     require_owned(last.path);
-    Params row;
-    row.binary(bytes_of(last.path));
-    row.binary(last.record);
-    row.text(static_cast<std::int64_t>(last.hash));
-    row.text(static_cast<std::int64_t>(last.seq));
-    run(db_, kPutRegion, row);
+    run(db_, kPutRegion, region_params(last));
     Params p;
     p.binary(bytes_of(last.path));
     p.text(to);

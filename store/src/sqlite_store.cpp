@@ -80,37 +80,14 @@ constexpr const char* kPutWorld =
     "?13)";
 
 void bind_world(Statement& s, const WorldRecord& w) {
-  const LandscapeConfig& c = w.config;
-  const std::int64_t values[] = {w.world.min.x,
-                                 w.world.min.y,
-                                 w.world.max.x,
-                                 w.world.max.y,
-                                 static_cast<std::int64_t>(c.tree),
-                                 c.edge_cap,
-                                 c.merge_below,
-                                 c.min_cell_size,
-                                 c.grid_depth,
-                                 c.region_depth,
-                                 c.region_ids ? 1 : 0,
-                                 static_cast<std::int64_t>(w.next_id),
-                                 static_cast<std::int64_t>(w.seq)};
-  for (int i = 0; i < 13; ++i) s.bind(i + 1, values[i]);
+  const std::array<std::int64_t, 13> values = world_columns(w);
+  for (std::size_t i = 0; i < values.size(); ++i) s.bind(static_cast<int>(i + 1), values[i]);
 }
 
 WorldRecord world_row(Statement& s) {
-  WorldRecord w;
-  w.world = {{s.integer(0), s.integer(1)}, {s.integer(2), s.integer(3)}};
-  LandscapeConfig& c = w.config;
-  c.tree = static_cast<TreeKind>(s.integer(4));
-  c.edge_cap = static_cast<std::uint32_t>(s.integer(5));
-  c.merge_below = static_cast<std::uint32_t>(s.integer(6));
-  c.min_cell_size = s.integer(7);
-  c.grid_depth = static_cast<int>(s.integer(8));
-  c.region_depth = static_cast<int>(s.integer(9));
-  c.region_ids = s.integer(10) != 0;
-  w.next_id = static_cast<PolygonId>(s.integer(11));
-  w.seq = static_cast<std::uint64_t>(s.integer(12));
-  return w;
+  std::array<std::int64_t, 13> values{};
+  for (std::size_t i = 0; i < values.size(); ++i) values[i] = s.integer(static_cast<int>(i));
+  return world_of_columns(values);
 }
 
 }  // namespace

@@ -2,33 +2,14 @@
 #include "edgeland/store/streaming_world.hpp"
 
 #include <algorithm>
-#include <sstream>
 
 #include "edgeland/spatial/delta.hpp"
 
 namespace edgeland::store {
 
-namespace {
-
-// The world of stubs, and how many edits each region has seen, from one pass over the rows.
-Landscape opened(RegionStore& store, const LandscapeLimits& limits,
-                 std::map<TreePath, std::uint64_t>& seen) {
-  const std::optional<WorldRecord> w = store.world();
-  if (!w) throw StoreError("the store holds no world");
-  std::vector<RegionSummary> summaries;
-  store.for_each_region([&](const StoredRegion& row) {
-    std::istringstream in(row.record);
-    summaries.push_back(Landscape::read_region_summary(in));
-    seen[row.path] = row.seq;
-  });
-  return Landscape::from_regions(w->world, w->config, w->next_id, summaries, limits);
-}
-
-}  // namespace
-
 StreamingWorld::StreamingWorld(RegionStore& store, std::size_t budget,
                                const LandscapeLimits& limits)
-    : store_(store), budget_(budget), world_(opened(store, limits, seen_)) {
+    : store_(store), budget_(budget), world_(open_world(store, limits, &seen_)) {
   seq_ = seen_.empty()
              ? 0
              : std::min_element(seen_.begin(), seen_.end(), [](const auto& a, const auto& b) {

@@ -30,8 +30,11 @@ Landscape detailed_world() {
   Landscape w = region_world();
   for (std::int64_t i = 0; i < 400; ++i) {
     const Point64 c{(i * 977) % 4000 + 40, (i * 613) % 4000 + 40};
-    const ValidSet blob(PolygonSet{{{c.x - 30, c.y - 20}, {c.x + 25, c.y - 30}, {c.x + 35, c.y + 10},
-                                    {c.x, c.y + 35}, {c.x - 35, c.y + 15}}});
+    const ValidSet blob(PolygonSet{{{c.x - 30, c.y - 20},
+                                    {c.x + 25, c.y - 30},
+                                    {c.x + 35, c.y + 10},
+                                    {c.x, c.y + 35},
+                                    {c.x - 35, c.y + 15}}});
     apply_edit(w, i % 3 ? Edit::carve(blob) : Edit::fill(blob, 2));
   }
   return w;
@@ -230,9 +233,9 @@ TEST(NetHostile, BadMessagesAreRejectedAndTheOthersGoOn) {
   Client hostile(options(server.port(), {{2048, 2048}, {4000, 4000}}));
   Steps run{server, {&honest, &hostile}};
   ASSERT_TRUE(run.until([&] { return honest.welcomed() && hostile.welcomed(); }));
-  hostile.send_raw(std::string("\x02\x01", 2));                        // a truncated EDIT
+  hostile.send_raw(std::string("\x02\x01", 2));                                // a truncated EDIT
   hostile.send_raw(encode_message(EditRequest{1, std::string(100000, 'x')}));  // too large
-  hostile.send_raw(encode_message(Hello{}));                           // a second HELLO
+  hostile.send_raw(encode_message(Hello{}));                                   // a second HELLO
   hostile.request(Edit::carve(ValidSet(PolygonSet{{{10, 10}, {50, 10}, {30, 40}}})));  // outside
   run.for_ms(1500);
   honest.stop_editing();
@@ -245,6 +248,21 @@ TEST(NetHostile, BadMessagesAreRejectedAndTheOthersGoOn) {
   EXPECT_EQ(honest.stats().mismatched, 0u);
 }
 
+// A message over ENet's packet limit never reaches the server's code: ENet refuses its fragments,
+// and the sender's connection times out.
+TEST(NetHostile, AMessageOverTheENetLimitNeverReachesTheServer) {
+  ServerOptions o = fast_checkpoints();
+  o.policy.max_packet = 1 << 20;
+  Server server(region_world(), o);
+  Client hostile(options(server.port()));
+  Steps run{server, {&hostile}};
+  ASSERT_TRUE(run.until([&] { return hostile.welcomed(); }));
+  hostile.send_raw(encode_message(EditRequest{1, std::string(2 << 20, 'x')}));
+  ASSERT_TRUE(run.until([&] { return hostile.stats().disconnected; }));
+  EXPECT_EQ(server.stats().edits, 0u);
+  EXPECT_TRUE(server.stats().rejects.empty());
+}
+
 TEST(NetProtocol, EveryMessageRoundTripsAndEveryPrefixIsRefused) {
   NodeDigest d;
   d.hash = 42;
@@ -254,7 +272,8 @@ TEST(NetProtocol, EveryMessageRoundTripsAndEveryPrefixIsRefused) {
       EditRequest{7, "delta"},
       HashesRequest{1, {{}, {0, 3}}},
       PatchRequest{2, {{1}}},
-      Welcome{5, {{0, 0}, {64, 64}}, LandscapeConfig{}, 9, 10, {{0, 0}, {5, 5}}, {{true, "r"}}, "c"},
+      Welcome{
+          5, {{0, 0}, {64, 64}}, LandscapeConfig{}, 9, 10, {{0, 0}, {5, 5}}, {{true, "r"}}, "c"},
       Command{1, 2, "x"},
       Changes{"y"},
       Checkpoint{3, 4, {{0, 5}}},

@@ -1,16 +1,17 @@
 // The PostgreSQL store's rules (issue 37, item 6; store/README.md "How a region changes owner"),
 // against the server tests/net/scenarios.py two-servers starts (EDGELAND_TEST_POSTGRES is its
-// libpq conninfo, a database of its own; this executable is run only by that scenario): a server commits only the
-// regions it owns; claims give each region to the first server that asks; a hand-over moves a
-// region with its last record in one transaction, after which the old owner cannot write it; a
-// row never goes back; every row comes back through the cursor.
+// libpq conninfo, a database of its own; this executable is run only by that scenario): a server
+// commits only the regions it owns; claims give each region to the first server that asks; a
+// hand-over moves a region with its last record in one transaction, after which the old owner
+// cannot write it; a row never goes back; every row comes back through the cursor.
+#include "edgeland/store/postgres_store.hpp"
+
 #include <gtest/gtest.h>
 #include <libpq-fe.h>
 
 #include <cstdlib>
 
 #include "edgeland/spatial/delta.hpp"
-#include "edgeland/store/postgres_store.hpp"
 
 namespace edgeland::store {
 namespace {
@@ -57,8 +58,9 @@ TEST_F(PostgresStore, AServerCommitsOnlyWhatItOwnsAndAHandOverMovesARegion) {
   EXPECT_EQ(a.owner(paths[0]), "test-a");
   EXPECT_EQ(a.owner(paths[15]), "test-b");
   // A commit with one region A does not own is refused whole.
-  EXPECT_THROW(a.commit({stored_region(w, paths[0], 1), stored_region(w, paths[15], 1)}, std::nullopt),
-               StoreError);
+  EXPECT_THROW(
+      a.commit({stored_region(w, paths[0], 1), stored_region(w, paths[15], 1)}, std::nullopt),
+      StoreError);
   EXPECT_FALSE(a.region(paths[0]).has_value());
   a.commit({stored_region(w, paths[0], 1)}, std::nullopt);
   EXPECT_EQ(a.region(paths[0])->hash, w.node_digest(paths[0])->hash);

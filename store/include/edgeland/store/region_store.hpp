@@ -1,8 +1,10 @@
 #pragma once
 // The interface every region store keeps (store/README.md): a table of region records keyed by
 // region path, and the world's own row, written only in transactions.
+#include <array>
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -50,9 +52,15 @@ EDGELAND_EXPORT StoredRegion stored_region(const Landscape& world, const TreePat
                                            std::uint64_t seq);
 // Writes a whole world (every region loaded) at `seq`, with its world row, in one transaction.
 EDGELAND_EXPORT void write_world(RegionStore& store, const Landscape& world, std::uint64_t seq);
-// The world a store holds, every region a stub (Landscape::from_regions). Throws StoreError (no
-// world row), LoadError (a damaged record, a region missing) or LimitExceeded.
-EDGELAND_EXPORT Landscape open_world(RegionStore& store, const LandscapeLimits& limits = {});
+// The world a store holds, every region a stub (Landscape::from_regions), in one pass over the
+// rows; `seqs`, when given, receives each region's sequence number. Throws StoreError (no world
+// row), LoadError (a damaged record, a region missing) or LimitExceeded.
+EDGELAND_EXPORT Landscape open_world(RegionStore& store, const LandscapeLimits& limits = {},
+                                     std::map<TreePath, std::uint64_t>* seqs = nullptr);
+
+// The world row's columns, in the order of both stores' tables, and back.
+EDGELAND_EXPORT std::array<std::int64_t, 13> world_columns(const WorldRecord& record);
+EDGELAND_EXPORT WorldRecord world_of_columns(const std::array<std::int64_t, 13>& columns);
 // Loads one region of `world` from the store. Throws StoreError (no such row) or what
 // Landscape::load_region throws.
 EDGELAND_EXPORT void load_region(RegionStore& store, Landscape& world, const TreePath& path);
