@@ -5,7 +5,10 @@
 #include <vector>
 
 #include "edgeland/clip/relabel.hpp"
-#include "edgeland/spatial/landscape.hpp"
+#include "edgeland/clip/valid_set.hpp"
+#include "edgeland/spatial/landscape_state.hpp"
+#include "edgeland/spatial/material.hpp"
+#include "edgeland/spatial/types.hpp"
 #include "ids.hpp"
 #include "node.hpp"
 #include "shape_cut.hpp"

@@ -4,7 +4,10 @@
 #include <memory>
 #include <string>
 
-#include "edgeland/spatial/landscape.hpp"
+#include "edgeland/kernel/bbox.hpp"
+#include "edgeland/kernel/polygon.hpp"
+#include "edgeland/spatial/landscape_state.hpp"
+#include "edgeland/spatial/material.hpp"
 
 namespace edgeland::detail {
 

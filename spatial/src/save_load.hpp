@@ -4,7 +4,8 @@
 #include <iosfwd>
 #include <string>
 
-#include "edgeland/spatial/landscape.hpp"
+#include "edgeland/spatial/landscape_state.hpp"
+#include "edgeland/spatial/types.hpp"
 
 namespace edgeland::detail {
 

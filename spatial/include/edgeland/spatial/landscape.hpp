@@ -35,7 +35,8 @@
 //
 // HEADERS. This is the front end and the umbrella: it includes material.hpp (Material),
 // types.hpp (the configuration, views, change sets, crossings, reports) and errors.hpp (the
-// landscape's errors), which code that only handles those types can include alone.
+// landscape's errors), which code that only handles those types can include alone, and
+// landscape_state.hpp (the private state, detail::LandscapeState).
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -57,6 +58,7 @@
 #include "edgeland/kernel/predicates.hpp"
 #include "edgeland/kernel/validate.hpp"
 #include "edgeland/spatial/errors.hpp"
+#include "edgeland/spatial/landscape_state.hpp"
 #include "edgeland/spatial/material.hpp"
 #include "edgeland/spatial/types.hpp"
 
@@ -66,31 +68,7 @@ struct Delta;       // delta.hpp
 struct PatchEntry;  // delta.hpp
 
 namespace detail {
-
-struct Node;     // the tree (spatial/src/node.hpp)
-struct LogLine;  // the recorded log, a persistent list shared by copies (spatial/src/edit_log.hpp)
-using AreaTable = std::array<Int128, kMaterialCount>;
-
 struct EditTable;  // an edit's material -> material table (spatial/src/edit.hpp)
-
-// A landscape's whole state, private to Landscape: spatial/src's stages take it as an argument
-// from the Landscape's members. An edit builds the next state from it and Landscape::apply
-// commits that by one assignment, so a throw leaves it as it was.
-struct LandscapeState {
-  Box64 world;
-  LandscapeConfig config;
-  LandscapeLimits limits;
-  std::shared_ptr<const Node> root;
-  std::shared_ptr<const AreaTable> areas;  // twice the area of every solid material
-  PolygonId next_id = 1;
-  std::uint64_t edits = 0;  // successful edits since construction (or load)
-  Material initial_fill = kEmpty;
-  bool checked = false;
-  bool logging = false;
-  UnloadedRegions unloaded = UnloadedRegions::kRefuse;  // what edits do at a stub
-  std::shared_ptr<const LogLine> log;                   // the last line recorded
-};
-
 }  // namespace detail
 
 class EDGELAND_EXPORT Landscape {

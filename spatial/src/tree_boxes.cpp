@@ -1,12 +1,19 @@
-// max_grid_depth (tree_boxes.hpp): how deep a uniform grid over a world can go.
+// The tree's geometry for code outside spatial (tree_boxes.hpp): the boxes of a node's children
+// and how deep a uniform grid over a world can go, from the split the landscape itself uses.
+#include "edgeland/spatial/tree_boxes.hpp"
+
 #include <cstdint>
 #include <set>
 #include <utility>
 
 #include "cell_split.hpp"
-#include "edgeland/spatial/tree_boxes.hpp"
 
 namespace edgeland {
+
+std::vector<Box64> child_boxes(const Box64& node, const LandscapeConfig& config) {
+  if (!detail::can_split(node, config)) return {};
+  return detail::split_boxes(node, config);
+}
 
 int max_grid_depth(const Box64& world, const LandscapeConfig& config) {
   // The boxes of one depth differ only in where they lie; their sizes decide whether they
