@@ -56,6 +56,9 @@ class EditBuilder {
  public:
   EditBuilder(const LandscapeState& state, const EditTable& table);
   EditResult build(const ValidSet& shape);
+  // An edit whose shape comes already cut to the cells it reaches (the pieces within each cell's
+  // box; `box` bounds them all, `vertices` counts them): Landscape::remove.
+  EditResult build(ShapeCut cut, const Box64& box, std::size_t vertices);
 
  private:
   // A part of the new tree before it has ids: an old node kept as it is (`kept`), a new cell
@@ -84,6 +87,9 @@ class EditBuilder {
   };
 
   NodePtr new_root(const ValidSet& shape);
+  NodePtr rebuilt_root();
+  EditResult result(NodePtr root);
+  void require_shape_size(std::size_t vertices) const;
   Draft rebuild(const NodePtr& node);
   Draft rebuild_loaded(const NodePtr& node);
   // A region (LandscapeConfig::region_depth): the shape cut to its cells alone, so its result

@@ -138,4 +138,11 @@ RegionNotLoaded::RegionNotLoaded(TreePath p, const Box64& b)
 InvalidPath::InvalidPath(TreePath p)
     : LandscapeError("tree path " + path_text(p) + " names no node"), path(std::move(p)) {}
 
+UnknownPolygon::UnknownPolygon(PolygonId i, const Box64& c)
+    : LandscapeError("polygon " + std::to_string(i) + " is not in the cell (" +
+                     std::to_string(c.min.x) + " " + std::to_string(c.min.y) + " " +
+                     std::to_string(c.max.x) + " " + std::to_string(c.max.y) + ")"),
+      id(i),
+      cell(c) {}
+
 }  // namespace edgeland

@@ -4,6 +4,7 @@
 #include "cell_split.hpp"
 #include "check.hpp"
 #include "edgeland/kernel/area.hpp"
+#include "edgeland/spatial/log_format.hpp"
 #include "edit.hpp"
 #include "edit_log.hpp"
 #include "regions.hpp"
@@ -97,32 +98,39 @@ Landscape::Landscape(const Box64& world, Material fill, const LandscapeConfig& c
 
 ChangeSet Landscape::carve(const ValidSet& shape) {
   return apply(shape, detail::EditTable::carve(),
-               [&] { return detail::carve_line(shape.polygons()); });
+               [&] { return log::edit_line(log::LandscapeEditKind::kCarve, shape.polygons()); });
 }
 ChangeSet Landscape::fill(const ValidSet& shape, Material m) {
   return apply(shape, detail::EditTable::fill(m),
-               [&] { return detail::fill_line(shape.polygons(), m); });
+               [&] { return log::edit_line(log::LandscapeEditKind::kFill, shape.polygons(), m); });
 }
 ChangeSet Landscape::fill_empty(const ValidSet& shape, Material m) {
-  return apply(shape, detail::EditTable::fill_empty(m),
-               [&] { return detail::fill_empty_line(shape.polygons(), m); });
+  return apply(shape, detail::EditTable::fill_empty(m), [&] {
+    return log::edit_line(log::LandscapeEditKind::kFillEmpty, shape.polygons(), m);
+  });
 }
 ChangeSet Landscape::replace(const ValidSet& shape, Material from, Material to) {
-  return apply(shape, detail::EditTable::replace(from, to),
-               [&] { return detail::replace_line(shape.polygons(), from, to); });
+  return apply(shape, detail::EditTable::replace(from, to), [&] {
+    return log::edit_line(log::LandscapeEditKind::kReplace, shape.polygons(), to, from);
+  });
 }
 ChangeSet Landscape::relabel(const ValidSet& shape, const MaterialMap& map) {
   return apply(shape, detail::EditTable::relabel(map),
-               [&] { return detail::relabel_line(shape.polygons(), map); });
+               [&] { return log::relabel_line(shape.polygons(), map); });
 }
 
 // Every edit: the next state built (edit.cpp; s_ untouched, so a throw leaves the landscape as
 // it was), the edit's line recorded, and the commit, one assignment.
 ChangeSet Landscape::apply(const ValidSet& shape, const detail::EditTable& table,
                            const std::function<std::string()>& log_line) {
+  return apply([&] { return detail::EditBuilder(s_, table).build(shape); }, log_line);
+}
+
+ChangeSet Landscape::apply(const std::function<detail::EditResult()>& build,
+                           const std::function<std::string()>& log_line) {
   detail::EditResult edit = [&] {
     try {
-      return detail::EditBuilder(s_, table).build(shape);
+      return build();
     } catch (const detail::EditFailure& failure) {
       throw detail::internal_error(s_, failure.what, log_line());
     }
