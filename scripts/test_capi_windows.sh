@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The C API as a Windows DLL: libedgeland_c built by mingw-w64 with the portable Int128 (the
 # code MSVC would compile: two 64-bit words, no __builtin_*_overflow), the C test
-# (tests/capi/capi_test.c) built as a Windows program against it, and run under wine64.
+# (tests/capi/capi_test.c and driver_test.c) built as a Windows program against it, and run under wine64.
 # Prints the test's "capi: N checks passed" and the times; exit 0 when it passed.
 # EDGELAND_WINDOWS_BUILD chooses the build folder (default build/windows), EDGELAND_JOBS the jobs.
 set -euo pipefail
@@ -17,7 +17,7 @@ cmake -S . -B "$build" -DCMAKE_TOOLCHAIN_FILE=cmake/mingw-w64.cmake -DCMAKE_BUIL
   -DEDGELAND_BUILD_PROOFS=OFF -DEDGELAND_BUILD_PLAY=OFF "${launcher[@]}" > /dev/null
 cmake --build "$build" -j "$jobs" --target edgeland_c_shared
 x86_64-w64-mingw32-gcc -std=c99 -pedantic -Wall -Wextra -Werror -Icapi/include \
-  tests/capi/capi_test.c -o "$build/capi_test.exe" -L"$build/capi" -ledgeland_c
+  tests/capi/capi_test.c tests/capi/driver_test.c -o "$build/capi_test.exe" -L"$build/capi" -ledgeland_c
 cp "$build/capi/libedgeland_c.dll" "$build/"
 built=$(date +%s)
 

@@ -262,3 +262,78 @@ export function meshUpdate(changes: ChangeSet): {dropped: BigUint64Array; meshes
 export function allMeshes(world: Landscape): Mesh[];
 export function convexPieces(polygon: XY[], maxVertices?: number): XY[][];
 
+
+// --- the game driver: what a game uses ----------------------------------------------------------
+
+export interface EditRecord {
+  kind: 'carve' | 'fill' | 'fill_empty' | 'replace' | 'relabel';
+  shape: ShapeLike;
+  materials: number[];
+}
+/** One edit of a frame's batch (C++ Edit). */
+export const Edit: {
+  carve(shape: ShapeLike): EditRecord;
+  fill(shape: ShapeLike, material: number): EditRecord;
+  fillEmpty(shape: ShapeLike, material: number): EditRecord;
+  replace(shape: ShapeLike, from: number, to: number): EditRecord;
+  relabel(shape: ShapeLike, pairs: Iterable<[number, number]> | Map<number, number>): EditRecord;
+};
+
+export interface GameOptions extends PhysicsMaterials {
+  /** Render meshes in each update (default true). */
+  meshes?: boolean;
+  /** Islands found and detached as debris (default true). */
+  debris?: boolean;
+  /** Debris bodies' convex pieces have at most this many vertices (3 or more; default 8). */
+  maxPieceVertices?: number;
+  /** Island vertices one update may detach (default 4096). */
+  debrisBudget?: number | bigint;
+  /** Updates an island may wait (default 3). */
+  maxDebrisWait?: number;
+}
+
+export interface DebrisPart {
+  material: number;
+  points: XY[];
+}
+/** An island taken out of the landscape, ready to become a dynamic body. */
+export interface Debris {
+  bounds: BoxXY;
+  twiceArea: bigint;
+  centroid: {x: bigint; y: bigint; den: bigint};
+  /** The island's region as maximal polygons per material. */
+  regions: DebrisPart[];
+  /** Their convex pieces: one fixture each. */
+  pieces: DebrisPart[];
+  /** The regions' meshes (with `meshes`), ids 0. */
+  meshes: Mesh[];
+}
+
+export interface GameWork {
+  cellsScanned: number;
+  boundaryPasses: number;
+  cellsTraced: number;
+  islandsFound: number;
+  islandsDetached: number;
+  debrisWaiting: number;
+}
+
+/** What one driver call changed; dispose() frees it (its change set with it). */
+export interface GameUpdate extends Disposable {
+  changes: ChangeSet;
+  chains: Chains;
+  meshes: {dropped: BigUint64Array; meshes: Mesh[]};
+  debris: Debris[];
+  work: GameWork;
+}
+
+export class GameDriver implements Disposable {
+  constructor(world: Landscape, options?: GameOptions);
+  apply(edits?: EditRecord[]): GameUpdate;
+  reset(world: Landscape): GameUpdate;
+  buried(box: BoxXY): boolean;
+  readonly landscape: Landscape;
+  readonly chains: Chains;
+  readonly debrisWaiting: number;
+  dispose(): void;
+}

@@ -681,3 +681,163 @@ export function convexPieces(polygon, maxVertices = 8) {
     }
   });
 }
+
+// --- the game driver (game/README.md, "The game driver") -------------------------------------
+// What a game uses: one driver owns a snapshot of a landscape and everything derived from it.
+// Each frame's edits go in as one batch (apply([Edit.carve(shape), ...])) and an update comes out:
+// the change set, the chains to remove and add (with ghost vertices), the meshes to drop and
+// build, and the islands that broke off as debris bodies.
+
+// One edit of a frame: Edit.carve(shape), fill(shape, m), fillEmpty(shape, m), replace(shape,
+// from, to), relabel(shape, [[from, to], ...] or a Map). The shape is a Shape or polygons.
+export const Edit = {
+  carve: (shape) => ({kind: 'carve', shape, materials: []}),
+  fill: (shape, material) => ({kind: 'fill', shape, materials: [material]}),
+  fillEmpty: (shape, material) => ({kind: 'fill_empty', shape, materials: [material]}),
+  replace: (shape, from, to) => ({kind: 'replace', shape, materials: [from, to]}),
+  relabel: (shape, pairs) => ({kind: 'relabel', shape,
+    materials: [...(pairs instanceof Map ? pairs.entries() : pairs)].flat()}),
+};
+
+const EDIT_FUNCTIONS = {carve: '_el_edits_carve', fill: '_el_edits_fill',
+  fill_empty: '_el_edits_fill_empty', replace: '_el_edits_replace'};
+
+// An el_edits batch of `edits`, made in scratch memory's lifetime by the caller (destroyed by it).
+function editsBatch(allocate, edits) {
+  const batch = made(allocate, M._el_edits_create);
+  try {
+    for (const e of edits) {
+      const s = asShape(e.shape);
+      try {
+        if (e.kind === 'relabel') {
+          const fromTo = allocate(4 * Math.max(1, e.materials.length));
+          e.materials.forEach((m, i) => dv().setInt32(fromTo + 4 * i, m, true));
+          call(allocate, M._el_edits_relabel, batch, s.shape.pointer, fromTo, e.materials.length / 2);
+        } else if (EDIT_FUNCTIONS[e.kind]) {
+          call(allocate, M[EDIT_FUNCTIONS[e.kind]], batch, s.shape.pointer, ...e.materials);
+        } else {
+          throw new TypeError(`unknown edit kind ${e.kind}`);
+        }
+      } finally {
+        if (s.own) s.shape.dispose();
+      }
+    }
+    return batch;
+  } catch (error) {
+    M._el_edits_destroy(batch);
+    throw error;
+  }
+}
+
+// el_game_options: {solid, anchored, borderWall, meshes = true, debris = true,
+// maxPieceVertices = 8, debrisBudget = 4096, maxDebrisWait = 3}.
+function gameOptions(allocate, options = {}) {
+  const known = ['solid', 'anchored', 'borderWall', 'meshes', 'debris', 'maxPieceVertices',
+    'debrisBudget', 'maxDebrisWait'];
+  for (const name of Object.keys(options)) {
+    if (!known.includes(name)) throw new TypeError(`unknown game option ${name}`);
+  }
+  const {solid = null, anchored = [], borderWall = false, meshes = true, debris = true} = options;
+  const o = allocate(536);
+  M._el_game_options_init(o);
+  const d = dv();
+  d.setUint32(o + 4, (meshes ? 1 : 0) | (debris ? 2 : 0) | (borderWall ? 4 : 0), true);
+  if (options.debrisBudget !== undefined) d.setBigUint64(o + 8, BigInt(options.debrisBudget), true);
+  if (options.maxPieceVertices !== undefined) d.setUint32(o + 16, options.maxPieceVertices, true);
+  if (options.maxDebrisWait !== undefined) d.setUint32(o + 20, options.maxDebrisWait, true);
+  const bytes = view(Uint8Array, o + 24, 512);
+  if (solid !== null) {
+    bytes.fill(0, 0, 256);
+    for (const material of solid) bytes[material] = 1;
+  }
+  for (const material of anchored) bytes[256 + material] = 1;
+  return o;
+}
+
+// The debris bodies of an update: [{bounds, twiceArea, centroid: {x, y, den}, regions, pieces
+// (Polygons: material per polygon, ids 0), meshes}].
+function readDebris(allocate, h) {
+  const regions = readPolygons(allocate, M._el_game_update_debris_regions(h));
+  const pieces = readPolygons(allocate, M._el_game_update_debris_pieces(h));
+  const meshes = readMeshes(allocate, M._el_game_update_debris_meshes(h)).meshes;
+  const count = allocate(4);
+  const p = M._el_game_update_debris(h, count);
+  const d = dv();
+  const at = (q) => Number(d.getBigInt64(q, true));
+  const part = (all, first, n) => [...all].slice(first, first + n);
+  return Array.from({length: d.getUint32(count, true)}, (_, i) => {
+    const q = p + 144 * i;
+    const firstRegion = d.getUint32(q + 128, true), regionCount = d.getUint32(q + 132, true);
+    const firstPiece = d.getUint32(q + 136, true), pieceCount = d.getUint32(q + 140, true);
+    return {
+      bounds: [[at(q), at(q + 8)], [at(q + 16), at(q + 24)]],
+      twiceArea: readInt128(q + 32),
+      centroid: {x: readInt128(q + 56), y: readInt128(q + 80), den: readInt128(q + 104)},
+      regions: part(regions, firstRegion, regionCount).map(({material, points}) => ({material, points})),
+      pieces: part(pieces, firstPiece, pieceCount).map(({material, points}) => ({material, points})),
+      meshes: meshes.slice(firstRegion, firstRegion + (meshes.length ? regionCount : 0)),
+    };
+  });
+}
+
+// What one driver call changed: {changes (a ChangeSet, borrowed: dispose() frees the update), chains
+// ({removed, chains, offsets, xy, materials}), meshes ({dropped, meshes}), debris, work}.
+function readUpdate(h) {
+  const owner = new Handle(h, M._el_game_update_destroy);
+  return scratch((a) => {
+    const w = a(56);
+    M._el_game_work_init(w);
+    call(a, M._el_game_update_work, h, w);
+    const d = dv();
+    const at = (k) => Number(d.getBigUint64(w + 8 + 8 * k, true));
+    return {
+      changes: new ChangeSet(M._el_game_update_changes(h), () => {}, owner),
+      chains: readChains(a, M._el_game_update_chains(h)),
+      meshes: readMeshes(a, M._el_game_update_meshes(h)),
+      debris: readDebris(a, h),
+      work: {cellsScanned: at(0), boundaryPasses: at(1), cellsTraced: at(2), islandsFound: at(3),
+        islandsDetached: at(4), debrisWaiting: at(5)},
+      dispose: () => owner.dispose(),
+    };
+  });
+}
+
+// The game driver (C++ GameDriver) over a snapshot of `world` (the Landscape stays the caller's).
+export class GameDriver extends Handle {
+  constructor(world, options = {}) {
+    super(scratch((a) => made(a, M._el_game_driver_create, world.pointer, gameOptions(a, options))),
+      M._el_game_driver_destroy);
+  }
+  // The frame's edits, in order, as one batch. A typed error (InvalidMaterial, LimitExceeded,
+  // ...) leaves the driver and its world as they were. No edits: only the debris queue moves.
+  apply(edits = []) {
+    return readUpdate(scratch((a) => {
+      const batch = editsBatch(a, edits);
+      try {
+        return made(a, M._el_game_driver_apply, this.pointer, batch);
+      } finally {
+        M._el_edits_destroy(batch);
+      }
+    }));
+  }
+  // The world replaced by a snapshot of `world` (an undo, a load): the update names exactly
+  // what changed.
+  reset(world) {
+    return readUpdate(scratch((a) => made(a, M._el_game_driver_reset, this.pointer, world.pointer)));
+  }
+  // Whether the last update's fills buried a body whose bounding box is [[x0, y0], [x1, y1]].
+  buried(region) {
+    return scratch((a) => {
+      const out = a(4);
+      call(a, M._el_game_driver_buried, this.pointer, box(a, region), out);
+      return dv().getInt32(out, true) !== 0;
+    });
+  }
+  // A snapshot of the driver's world (O(1)): queries, saves, the state hash. Dispose it.
+  get landscape() {
+    return scratch((a) => new Landscape(null, 0, {}, made(a, M._el_game_driver_landscape, this.pointer)));
+  }
+  // Every chain now, by ascending id ({chains, offsets, xy, materials}; removed is empty).
+  get chains() { return chainsFrom(M._el_game_driver_chains, this.pointer); }
+  get debrisWaiting() { return M._el_game_driver_debris_waiting(this.pointer); }
+}

@@ -26,7 +26,7 @@ else()
   set_tests_properties(bindings.js_build PROPERTIES FIXTURES_SETUP js_package LABELS bindings
     TIMEOUT 1800)
   add_test(NAME bindings.js COMMAND ${EDGELAND_JS_node} --test ${package}/test/landscape.test.mjs
-    ${package}/test/game.test.mjs)
+    ${package}/test/game.test.mjs ${package}/test/driver.test.mjs)
   add_test(NAME mirror.js COMMAND ${CMAKE_COMMAND} -E env
     EDGELAND_MIRROR_HASHES=${EDGELAND_MIRROR_HASHES}
     ${EDGELAND_JS_node} --test ${package}/test/mirror.test.mjs)

@@ -1,7 +1,5 @@
 // The game layer's functions (game/): trackers, detach, meshes, convex pieces, one translation
 // each.
-#include <cstring>
-#include <limits>
 #include <memory>
 #include <utility>
 
@@ -11,6 +9,7 @@
 #include "edgeland/game/render_meshes.hpp"
 #include "edgeland/game/surface_tracker.hpp"
 #include "edgeland/kernel/convex_pieces.hpp"
+#include "game_translate.hpp"
 #include "handles.hpp"
 #include "translate.hpp"
 
@@ -40,32 +39,9 @@ SurfaceOptions options_of(const el_physics_materials* given) {
   return out;
 }
 
-std::uint32_t checked_count(std::size_t n) {
-  if (n > std::numeric_limits<std::uint32_t>::max()) {
-    throw BorderError(EL_LIMIT_EXCEEDED, "more than 2^32 - 1 entries in one result");
-  }
-  return static_cast<std::uint32_t>(n);
-}
-
-void append(ChainsHandle& out, ChainId id, const SurfaceChain& c) {
-  el_chain_info info{};
-  info.cell = to_c(c.cell);
-  info.ghost_prev = to_c(c.ghost_prev);
-  info.ghost_next = to_c(c.ghost_next);
-  info.id = id;
-  info.closed = c.closed ? 1 : 0;
-  out.info.push_back(info);
-  for (std::size_t k = 0; k < c.points.size(); ++k) {
-    out.points.push_back(to_c(c.points[k]));
-    out.materials.push_back(k < c.materials.size() ? c.materials[k].value() : 0);
-  }
-  out.offsets.push_back(checked_count(out.points.size()));
-}
-
 std::unique_ptr<ChainsHandle> chains_of(const ChainUpdate& update) {
   auto out = std::make_unique<ChainsHandle>();
-  out->removed.assign(update.removed.begin(), update.removed.end());
-  for (const auto& [id, chain] : update.added) append(*out, id, chain);
+  append_chains(*out, update);
   return out;
 }
 
@@ -89,12 +65,7 @@ std::unique_ptr<MeshesHandle> meshes_of(std::vector<PolygonId> dropped,
                                         const std::vector<PolygonMesh>& built) {
   auto out = std::make_unique<MeshesHandle>();
   out->dropped = std::move(dropped);
-  for (const PolygonMesh& mesh : built) {
-    append(out->polygons, mesh.id, mesh.material, Box64{}, mesh.vertices);
-    for (const Triangle& t : mesh.triangles)
-      out->triangles.insert(out->triangles.end(), {t.a, t.b, t.c});
-    out->triangle_offsets.push_back(checked_count(out->triangles.size() / 3));
-  }
+  append_meshes(*out, built);
   return out;
 }
 
@@ -259,7 +230,9 @@ EL_API el_status el_all_meshes(const el_landscape* landscape, el_meshes** out, e
   });
 }
 
-EL_API void el_meshes_destroy(el_meshes* meshes) { delete object(meshes); }
+EL_API void el_meshes_destroy(el_meshes* meshes) {
+  if (meshes != nullptr && !object(meshes)->borrowed) delete object(meshes);
+}
 
 EL_API const el_polygons* el_meshes_polygons(const el_meshes* meshes) {
   return meshes != nullptr ? handle<const el_polygons>(&object(meshes)->polygons) : nullptr;

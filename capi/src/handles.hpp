@@ -10,6 +10,7 @@
 
 #include "edgeland/clip/valid_set.hpp"
 #include "edgeland/edgeland.h"
+#include "edgeland/game/game_driver.hpp"
 #include "edgeland/game/islands.hpp"
 #include "edgeland/game/surface_tracker.hpp"
 #include "edgeland/spatial/landscape.hpp"
@@ -35,11 +36,15 @@ struct PolygonsHandle {
   std::vector<el_point> points;
 };
 
-inline PolygonsHandle borrowed_polygons() {
-  PolygonsHandle p;
-  p.borrowed = true;
-  return p;
+// A result handle that lives inside another (el_*_destroy leaves it alone).
+template <class Handle>
+Handle borrowed() {
+  Handle h;
+  h.borrowed = true;
+  return h;
 }
+
+inline PolygonsHandle borrowed_polygons() { return borrowed<PolygonsHandle>(); }
 
 // A change set: the C++ value (the trackers and mesh_update take it) and its arrays.
 struct ChangesHandle {
@@ -60,7 +65,9 @@ struct IslandTrackerHandle {
 };
 
 // Chains as arrays (offsets has one entry more than the chains), and the ids an update removed.
+// A borrowed one is a member of another handle (el_game_update), as for polygons.
 struct ChainsHandle {
+  bool borrowed = false;
   std::vector<std::uint64_t> removed;
   std::vector<el_chain_info> info;
   std::vector<std::uint32_t> offsets{0};
@@ -82,10 +89,33 @@ struct DetachedHandle {
 };
 
 struct MeshesHandle {
+  bool borrowed = false;
   std::vector<std::uint64_t> dropped;
   PolygonsHandle polygons = borrowed_polygons();
   std::vector<std::uint32_t> triangle_offsets{0};
   std::vector<std::uint32_t> triangles;
+};
+
+// A frame's edits, each with its own copy of the shape (el_edits).
+struct EditsHandle {
+  std::vector<Edit> edits;
+};
+
+struct GameDriverHandle {
+  GameDriver driver;
+};
+
+// An update's arrays, all borrowed by the caller through el_game_update_*; the debris bodies'
+// regions, pieces and meshes in one array each, every body's a run of them (el_debris_info).
+struct GameUpdateHandle {
+  ChangesHandle changes = borrowed<ChangesHandle>();
+  ChainsHandle chains = borrowed<ChainsHandle>();
+  MeshesHandle meshes = borrowed<MeshesHandle>();
+  std::vector<el_debris_info> debris;
+  PolygonsHandle debris_regions = borrowed_polygons();
+  PolygonsHandle debris_pieces = borrowed_polygons();
+  MeshesHandle debris_meshes = borrowed<MeshesHandle>();
+  el_game_work work{};
 };
 
 struct CrossingsHandle {
@@ -152,6 +182,21 @@ struct HandleOf<el_detached> {
 template <>
 struct HandleOf<el_meshes> {
   using type = MeshesHandle;
+};
+
+template <>
+struct HandleOf<el_edits> {
+  using type = EditsHandle;
+};
+
+template <>
+struct HandleOf<el_game_driver> {
+  using type = GameDriverHandle;
+};
+
+template <>
+struct HandleOf<el_game_update> {
+  using type = GameUpdateHandle;
 };
 
 // The object behind a handle (NULL stays NULL), const as the handle is.

@@ -167,11 +167,7 @@ EL_API el_status el_landscape_relabel(el_landscape* landscape, const el_shape* s
                                       const int32_t* from_to, size_t pair_count,
                                       el_changes** changes, el_error* error) {
   return execute(error, [&] {
-    MaterialMap map;
-    if (pair_count > 0) need(from_to, "from_to");
-    for (std::size_t i = 0; i < pair_count; ++i) {
-      map.set(Material(from_to[2 * i]), Material(from_to[2 * i + 1]));
-    }
+    const MaterialMap map = material_map_of(from_to, pair_count);
     edit(landscape, changes, [&](Landscape& world) { return world.relabel(shape_of(shape), map); });
   });
 }

@@ -112,7 +112,9 @@ EL_API el_status el_polygons_copy_points(const el_polygons* h, el_point* buf, si
   return copy(h, &PolygonsHandle::points, buf, cap, needed);
 }
 
-EL_API void el_chains_destroy(el_chains* h) { delete object(h); }
+EL_API void el_chains_destroy(el_chains* h) {
+  if (h != nullptr && !object(h)->borrowed) delete object(h);
+}
 EL_API const uint64_t* el_chains_removed(const el_chains* h, size_t* count) {
   return view(h, &ChainsHandle::removed, count);
 }
@@ -210,6 +212,14 @@ EL_API el_status el_bytes_copy(const el_bytes* h, uint8_t* buf, size_t cap, size
     if (!data.empty())
       std::copy(data.begin(), data.end(), reinterpret_cast<char*>(&need(buf, "buf")));
   });
+}
+
+EL_API const el_debris_info* el_game_update_debris(const el_game_update* h, size_t* count) {
+  return view(h, &GameUpdateHandle::debris, count);
+}
+EL_API el_status el_game_update_copy_debris(const el_game_update* h, el_debris_info* buf,
+                                            size_t cap, size_t* needed) {
+  return copy(h, &GameUpdateHandle::debris, buf, cap, needed);
 }
 
 }  // extern "C"

@@ -55,6 +55,15 @@ PolygonSet polygon_set_of(const std::int64_t* xy, const std::uint32_t* offsets,
   return set;
 }
 
+MaterialMap material_map_of(const std::int32_t* from_to, std::size_t pair_count) {
+  MaterialMap map;
+  if (pair_count > 0) need(from_to, "from_to");
+  for (std::size_t i = 0; i < pair_count; ++i) {
+    map.set(Material(from_to[2 * i]), Material(from_to[2 * i + 1]));
+  }
+  return map;
+}
+
 void append(PolygonsHandle& out, std::uint64_t id, Material material, const Box64& cell,
             const Polygon& polygon) {
   if (polygon.size() > std::numeric_limits<std::uint32_t>::max() - out.points.size()) {

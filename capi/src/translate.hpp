@@ -25,6 +25,10 @@ Box64 box_of(const el_box* b, const char* name);
 PolygonSet polygon_set_of(const std::int64_t* xy, const std::uint32_t* offsets,
                           std::size_t polygon_count);
 
+// A relabel's pairs (from_to[2i] -> from_to[2i + 1], a later pair for one material wins), each
+// material checked (InvalidMaterial).
+MaterialMap material_map_of(const std::int32_t* from_to, std::size_t pair_count);
+
 // Appends one polygon to the arrays (EL_LIMIT_EXCEEDED past 2^32 - 1 points: offsets are 32 bits).
 void append(PolygonsHandle& out, std::uint64_t id, Material material, const Box64& cell,
             const Polygon& polygon);

@@ -89,10 +89,23 @@ ChangeSet changes_between(std::span<const GoneCell> gone, const CellStore& store
   return out;
 }
 
+// The options a later update would trip over, refused before anything is built: debris pieces
+// of fewer than 3 vertices would throw from convex_pieces() in the middle of an update, after its
+// edits were kept.
+const GameOptions& checked(const GameOptions& options) {
+  if (options.max_piece_vertices < 3) {
+    throw InvalidArgument("max_piece_vertices", options.max_piece_vertices, 3);
+  }
+  return options;
+}
+
 }  // namespace
 
 GameState::GameState(Landscape world, const GameOptions& options)
-    : options_(options), land_(std::move(world)), filled_(land_), surface_(options.surface) {
+    : options_(checked(options)),
+      land_(std::move(world)),
+      filled_(land_),
+      surface_(options.surface) {
   const std::vector<Box64> cells = all_cells(land_);
   store_.scan(land_, cells, options_.surface.materials);
   surface_.update(land_, store_, {}, cells);

@@ -221,6 +221,22 @@ TEST(GameDriver, ABadEditChangesNothing) {
   EXPECT_EQ(game.chains(), chains);
 }
 
+// Options an update could not honour are refused when the driver is made, not in the middle of
+// an update whose edits were already kept.
+TEST(GameDriver, PiecesOfFewerThanThreeVerticesAreRefusedUpFront) {
+  GameOptions options;
+  options.max_piece_vertices = 2;
+  try {
+    GameDriver game(layered_world(256), options);
+    FAIL() << "max_piece_vertices 2 was taken";
+  } catch (const InvalidArgument& e) {
+    EXPECT_EQ(e.value, 2u);
+    EXPECT_EQ(e.minimum, 3u);
+  }
+  options.max_piece_vertices = 3;
+  EXPECT_NO_THROW(GameDriver(layered_world(256), options));
+}
+
 TEST(GameDriver, AFillBuriesTheBodiesUnderIt) {
   GameDriver game(layered_world(1024));
   // A pillar of dirt from the ground (dirt ends at y = 640) up through a body in the air.

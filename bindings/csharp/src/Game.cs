@@ -217,31 +217,34 @@ namespace Edgeland
         }
     }
 
-    internal static unsafe class GameResults
+    internal static unsafe partial class GameResults
     {
         public static ChainUpdate Chains(ChainsHandle h)
         {
-            using (h)
+            using (h) return Chains(h.DangerousGetHandle());
+        }
+
+        // The chains behind a pointer (owned by a handle the caller keeps alive).
+        public static ChainUpdate Chains(IntPtr h)
+        {
+            UIntPtr n;
+            ulong* removed = (ulong*)Native.el_chains_removed(h, out n);
+            var r = new ulong[(int)n];
+            for (int i = 0; i < r.Length; ++i) r[i] = removed[i];
+            ChainInfo* info = (ChainInfo*)Native.el_chains_info(h, out n);
+            int count = (int)n;
+            uint* offsets = (uint*)Native.el_chains_offsets(h, out n);
+            Point* points = (Point*)Native.el_chains_points(h, out n);
+            byte* materials = (byte*)Native.el_chains_materials(h, out n);
+            var chains = new Chain[count];
+            for (int i = 0; i < count; ++i)
             {
-                UIntPtr n;
-                ulong* removed = (ulong*)Native.el_chains_removed(h, out n);
-                var r = new ulong[(int)n];
-                for (int i = 0; i < r.Length; ++i) r[i] = removed[i];
-                ChainInfo* info = (ChainInfo*)Native.el_chains_info(h, out n);
-                int count = (int)n;
-                uint* offsets = (uint*)Native.el_chains_offsets(h, out n);
-                Point* points = (Point*)Native.el_chains_points(h, out n);
-                byte* materials = (byte*)Native.el_chains_materials(h, out n);
-                var chains = new Chain[count];
-                for (int i = 0; i < count; ++i)
-                {
-                    int size = (int)(offsets[i + 1] - offsets[i]);
-                    var c = new Chain { Info = info[i], Points = new Point[size], Materials = new byte[size] };
-                    for (int k = 0; k < size; ++k) { c.Points[k] = points[offsets[i] + k]; c.Materials[k] = materials[offsets[i] + k]; }
-                    chains[i] = c;
-                }
-                return new ChainUpdate { Removed = r, Added = chains };
+                int size = (int)(offsets[i + 1] - offsets[i]);
+                var c = new Chain { Info = info[i], Points = new Point[size], Materials = new byte[size] };
+                for (int k = 0; k < size; ++k) { c.Points[k] = points[offsets[i] + k]; c.Materials[k] = materials[offsets[i] + k]; }
+                chains[i] = c;
             }
+            return new ChainUpdate { Removed = r, Added = chains };
         }
 
         public static Islands Islands(IslandsHandle h)
@@ -261,24 +264,27 @@ namespace Edgeland
 
         public static Mesh[] Meshes(MeshesHandle h, out ulong[] dropped)
         {
-            using (h)
+            using (h) return Meshes(h.DangerousGetHandle(), out dropped);
+        }
+
+        // The meshes behind a pointer (owned by a handle the caller keeps alive).
+        public static Mesh[] Meshes(IntPtr h, out ulong[] dropped)
+        {
+            UIntPtr n;
+            ulong* d = (ulong*)Native.el_meshes_dropped(h, out n);
+            dropped = new ulong[(int)n];
+            for (int i = 0; i < dropped.Length; ++i) dropped[i] = d[i];
+            Polygon[] polygons = Results.Polygons(Native.el_meshes_polygons(h));
+            uint* offsets = (uint*)Native.el_meshes_triangle_offsets(h, out n);
+            uint* triangles = (uint*)Native.el_meshes_triangles(h, out n);
+            var meshes = new Mesh[polygons.Length];
+            for (int i = 0; i < meshes.Length; ++i)
             {
-                UIntPtr n;
-                ulong* d = (ulong*)Native.el_meshes_dropped(h, out n);
-                dropped = new ulong[(int)n];
-                for (int i = 0; i < dropped.Length; ++i) dropped[i] = d[i];
-                Polygon[] polygons = Results.Polygons(Native.el_meshes_polygons(h));
-                uint* offsets = (uint*)Native.el_meshes_triangle_offsets(h, out n);
-                uint* triangles = (uint*)Native.el_meshes_triangles(h, out n);
-                var meshes = new Mesh[polygons.Length];
-                for (int i = 0; i < meshes.Length; ++i)
-                {
-                    var t = new uint[3 * (offsets[i + 1] - offsets[i])];
-                    for (int k = 0; k < t.Length; ++k) t[k] = triangles[3 * offsets[i] + k];
-                    meshes[i] = new Mesh { Id = polygons[i].Id, Material = polygons[i].Material, Vertices = polygons[i].Points, Triangles = t };
-                }
-                return meshes;
+                var t = new uint[3 * (offsets[i + 1] - offsets[i])];
+                for (int k = 0; k < t.Length; ++k) t[k] = triangles[3 * offsets[i] + k];
+                meshes[i] = new Mesh { Id = polygons[i].Id, Material = polygons[i].Material, Vertices = polygons[i].Points, Triangles = t };
             }
+            return meshes;
         }
     }
 }

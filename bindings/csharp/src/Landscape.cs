@@ -127,6 +127,7 @@ namespace Edgeland
         internal LandscapeHandle Raw { get { return handle; } }
 
         Landscape(LandscapeHandle h) { handle = h; }
+        internal static Landscape Own(LandscapeHandle h) { return new Landscape(h); }
 
         // The library's defaults (edge cap 64, ...), to change before passing to the constructor.
         public static LandscapeConfig DefaultConfig()

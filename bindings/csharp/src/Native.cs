@@ -91,6 +91,36 @@ namespace Edgeland
         public fixed byte Anchored[256];
     }
 
+    // C++ GameOptions (el_game_options); GameOptions is the public side.
+    [StructLayout(LayoutKind.Sequential)]
+    internal unsafe struct NativeGameOptions
+    {
+        public uint StructSize;
+        public uint Flags;  // 1 meshes, 2 debris, 4 border wall
+        public ulong DebrisBudget;
+        public uint MaxPieceVertices, MaxDebrisWait;
+        public fixed byte Solid[256];
+        public fixed byte Anchored[256];
+    }
+
+    // One debris body (el_debris_info): runs of the update's regions and pieces.
+    [StructLayout(LayoutKind.Sequential)]
+    internal struct DebrisInfo
+    {
+        public Box Bounds;
+        public Int128Value TwiceArea, CentroidXNum, CentroidYNum, CentroidDen;
+        public uint FirstRegion, RegionCount, FirstPiece, PieceCount;
+    }
+
+    // What one update did (C++ GameWork) and the islands still waiting (el_game_work).
+    [StructLayout(LayoutKind.Sequential)]
+    public struct GameWork
+    {
+        public uint StructSize;
+        uint reserved;
+        public ulong CellsScanned, BoundaryPasses, CellsTraced, IslandsFound, IslandsDetached, DebrisWaiting;
+    }
+
     [StructLayout(LayoutKind.Sequential)]
     internal unsafe struct NativeError
     {
@@ -179,6 +209,19 @@ namespace Edgeland
         protected override bool ReleaseHandle() { Native.el_meshes_destroy(handle); return true; }
     }
 
+    internal sealed class EditsHandle : NativeHandle
+    {
+        protected override bool ReleaseHandle() { Native.el_edits_destroy(handle); return true; }
+    }
+    internal sealed class GameDriverHandle : NativeHandle
+    {
+        protected override bool ReleaseHandle() { Native.el_game_driver_destroy(handle); return true; }
+    }
+    internal sealed class GameUpdateHandle : NativeHandle
+    {
+        protected override bool ReleaseHandle() { Native.el_game_update_destroy(handle); return true; }
+    }
+
     internal static class Native
     {
         // libedgeland_c.so / edgeland_c.dll / libedgeland_c.dylib; on iOS (static library)
@@ -251,11 +294,11 @@ namespace Edgeland
         [DllImport(Lib)] public static extern int el_surface_tracker_resync(SurfaceTrackerHandle tracker, LandscapeHandle landscape, out ChainsHandle update, ref NativeError error);
         [DllImport(Lib)] public static extern int el_surface_tracker_chains(SurfaceTrackerHandle tracker, out ChainsHandle all, ref NativeError error);
         [DllImport(Lib)] public static extern void el_chains_destroy(IntPtr chains);
-        [DllImport(Lib)] public static extern IntPtr el_chains_removed(ChainsHandle chains, out UIntPtr count);
-        [DllImport(Lib)] public static extern IntPtr el_chains_info(ChainsHandle chains, out UIntPtr count);
-        [DllImport(Lib)] public static extern IntPtr el_chains_offsets(ChainsHandle chains, out UIntPtr count);
-        [DllImport(Lib)] public static extern IntPtr el_chains_points(ChainsHandle chains, out UIntPtr count);
-        [DllImport(Lib)] public static extern IntPtr el_chains_materials(ChainsHandle chains, out UIntPtr count);
+        [DllImport(Lib)] public static extern IntPtr el_chains_removed(IntPtr chains, out UIntPtr count);
+        [DllImport(Lib)] public static extern IntPtr el_chains_info(IntPtr chains, out UIntPtr count);
+        [DllImport(Lib)] public static extern IntPtr el_chains_offsets(IntPtr chains, out UIntPtr count);
+        [DllImport(Lib)] public static extern IntPtr el_chains_points(IntPtr chains, out UIntPtr count);
+        [DllImport(Lib)] public static extern IntPtr el_chains_materials(IntPtr chains, out UIntPtr count);
         [DllImport(Lib)] public static extern int el_island_tracker_create(LandscapeHandle landscape, ref NativePhysicsMaterials materials, out IslandTrackerHandle tracker, ref NativeError error);
         [DllImport(Lib)] public static extern void el_island_tracker_destroy(IntPtr tracker);
         [DllImport(Lib)] public static extern int el_island_tracker_update(IslandTrackerHandle tracker, LandscapeHandle landscape, IntPtr changes, out IslandsHandle found, ref NativeError error);
@@ -272,11 +315,38 @@ namespace Edgeland
         [DllImport(Lib)] public static extern int el_mesh_update(IntPtr changes, out MeshesHandle meshes, ref NativeError error);
         [DllImport(Lib)] public static extern int el_all_meshes(LandscapeHandle landscape, out MeshesHandle meshes, ref NativeError error);
         [DllImport(Lib)] public static extern void el_meshes_destroy(IntPtr meshes);
-        [DllImport(Lib)] public static extern IntPtr el_meshes_dropped(MeshesHandle meshes, out UIntPtr count);
-        [DllImport(Lib)] public static extern IntPtr el_meshes_polygons(MeshesHandle meshes);
-        [DllImport(Lib)] public static extern IntPtr el_meshes_triangle_offsets(MeshesHandle meshes, out UIntPtr count);
-        [DllImport(Lib)] public static extern IntPtr el_meshes_triangles(MeshesHandle meshes, out UIntPtr count);
+        [DllImport(Lib)] public static extern IntPtr el_meshes_dropped(IntPtr meshes, out UIntPtr count);
+        [DllImport(Lib)] public static extern IntPtr el_meshes_polygons(IntPtr meshes);
+        [DllImport(Lib)] public static extern IntPtr el_meshes_triangle_offsets(IntPtr meshes, out UIntPtr count);
+        [DllImport(Lib)] public static extern IntPtr el_meshes_triangles(IntPtr meshes, out UIntPtr count);
         [DllImport(Lib)] public static extern int el_convex_pieces(Point[] points, UIntPtr count, uint maxVertices, out PolygonsHandle pieces, ref NativeError error);
+
+        [DllImport(Lib)] public static extern int el_edits_create(out EditsHandle edits, ref NativeError error);
+        [DllImport(Lib)] public static extern void el_edits_destroy(IntPtr edits);
+        [DllImport(Lib)] public static extern int el_edits_carve(EditsHandle edits, ShapeHandle shape, ref NativeError error);
+        [DllImport(Lib)] public static extern int el_edits_fill(EditsHandle edits, ShapeHandle shape, int material, ref NativeError error);
+        [DllImport(Lib)] public static extern int el_edits_fill_empty(EditsHandle edits, ShapeHandle shape, int material, ref NativeError error);
+        [DllImport(Lib)] public static extern int el_edits_replace(EditsHandle edits, ShapeHandle shape, int from, int to, ref NativeError error);
+        [DllImport(Lib)] public static extern int el_edits_relabel(EditsHandle edits, ShapeHandle shape, int[] fromTo, UIntPtr pairs, ref NativeError error);
+        [DllImport(Lib)] public static extern void el_game_options_init(ref NativeGameOptions options);
+        [DllImport(Lib)] public static extern int el_game_driver_create(LandscapeHandle world, ref NativeGameOptions options, out GameDriverHandle driver, ref NativeError error);
+        [DllImport(Lib)] public static extern void el_game_driver_destroy(IntPtr driver);
+        [DllImport(Lib)] public static extern int el_game_driver_apply(GameDriverHandle driver, EditsHandle edits, out GameUpdateHandle update, ref NativeError error);
+        [DllImport(Lib)] public static extern int el_game_driver_reset(GameDriverHandle driver, LandscapeHandle world, out GameUpdateHandle update, ref NativeError error);
+        [DllImport(Lib)] public static extern int el_game_driver_buried(GameDriverHandle driver, ref Box box, out int buried, ref NativeError error);
+        [DllImport(Lib)] public static extern int el_game_driver_landscape(GameDriverHandle driver, out LandscapeHandle world, ref NativeError error);
+        [DllImport(Lib)] public static extern int el_game_driver_chains(GameDriverHandle driver, out ChainsHandle all, ref NativeError error);
+        [DllImport(Lib)] public static extern UIntPtr el_game_driver_debris_waiting(GameDriverHandle driver);
+        [DllImport(Lib)] public static extern void el_game_work_init(ref GameWork work);
+        [DllImport(Lib)] public static extern void el_game_update_destroy(IntPtr update);
+        [DllImport(Lib)] public static extern IntPtr el_game_update_changes(GameUpdateHandle update);
+        [DllImport(Lib)] public static extern IntPtr el_game_update_chains(GameUpdateHandle update);
+        [DllImport(Lib)] public static extern IntPtr el_game_update_meshes(GameUpdateHandle update);
+        [DllImport(Lib)] public static extern IntPtr el_game_update_debris(GameUpdateHandle update, out UIntPtr count);
+        [DllImport(Lib)] public static extern IntPtr el_game_update_debris_regions(GameUpdateHandle update);
+        [DllImport(Lib)] public static extern IntPtr el_game_update_debris_meshes(GameUpdateHandle update);
+        [DllImport(Lib)] public static extern IntPtr el_game_update_debris_pieces(GameUpdateHandle update);
+        [DllImport(Lib)] public static extern int el_game_update_work(GameUpdateHandle update, ref GameWork work, ref NativeError error);
 
         [DllImport(Lib)] public static extern void el_bytes_destroy(IntPtr bytes);
         [DllImport(Lib)] public static extern IntPtr el_bytes_data(BytesHandle bytes, out UIntPtr size);
@@ -295,6 +365,9 @@ namespace Edgeland
             Require(Marshal.SizeOf(typeof(AreaDelta)) == 32 && Marshal.SizeOf(typeof(Int128Value)) == 24, "el_area_delta");
             Require(Marshal.SizeOf(typeof(ChainInfo)) == 80 && Marshal.SizeOf(typeof(IslandInfo)) == 64, "el_chain_info");
             Require(Marshal.SizeOf(typeof(DetachedInfo)) == 96 && Marshal.SizeOf(typeof(NativePhysicsMaterials)) == 520, "el_detached_info");
+            Require(Marshal.SizeOf(typeof(NativeGameOptions)) == 536 && Marshal.OffsetOf(typeof(NativeGameOptions), "Solid").ToInt32() == 24, "el_game_options");
+            Require(Marshal.SizeOf(typeof(DebrisInfo)) == 144 && Marshal.OffsetOf(typeof(DebrisInfo), "FirstRegion").ToInt32() == 128, "el_debris_info");
+            Require(Marshal.SizeOf(typeof(GameWork)) == 56, "el_game_work");
         }
         static void Require(bool ok, string what)
         {

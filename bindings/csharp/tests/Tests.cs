@@ -140,6 +140,103 @@ static class Tests
         }
     }
 
+    // An empty world of 8 x 8 cells, so the ground's surface crosses cell lines.
+    static Landscape CellWorld(ulong maxShapeVertices = 1 << 20)
+    {
+        LandscapeConfig c = Landscape.DefaultConfig();
+        c.GridDepth = 3;
+        c.Flags = 1;
+        c.MaxShapeVertices = maxShapeVertices;
+        return new Landscape(new Box(0, 0, 1024, 512), 0, c);
+    }
+
+    // The chains a game holds, kept from the updates alone.
+    static void Follow(Dictionary<ulong, Chain> mirror, ChainUpdate update)
+    {
+        foreach (ulong id in update.Removed) Check(mirror.Remove(id), "an update removed chain " + id + ", which the game holds");
+        foreach (Chain c in update.Added) mirror.Add(c.Info.Id, c);
+    }
+
+    static bool Holds(Dictionary<ulong, Chain> mirror, GameDriver game)
+    {
+        Chain[] all = game.Chains;
+        return all.Length == mirror.Count && all.All(c => mirror.ContainsKey(c.Info.Id) &&
+            mirror[c.Info.Id].Info.Equals(c.Info) && mirror[c.Info.Id].Points.SequenceEqual(c.Points));
+    }
+
+    static void GameDriverFrames()
+    {
+        using (var world = CellWorld())
+        using (var game = new GameDriver(world))
+        using (var ground = Shape.Rectangle(new Box(0, 0, 1024, 100)))
+        using (var rock = Shape.Rectangle(new Box(400, 300, 440, 340)))
+        using (var pillar = Shape.Rectangle(new Box(600, 60, 650, 250)))
+        using (var crater = Shape.Circle(new Point(300, 100), 60))
+        {
+            var mirror = new Dictionary<ulong, Chain>();
+            using (GameUpdate u = game.Apply(Edit.Fill(ground, 1), Edit.Fill(rock, 2)))
+            {
+                Follow(mirror, u.Chains);
+                Check(u.Debris.Length == 1, "the rock fell");
+                Debris d = u.Debris[0];
+                Check(d.TwiceArea == 3200 && d.CentroidXNum == 420 * d.CentroidDen && d.CentroidYNum == 320 * d.CentroidDen, "its area and centroid");
+                Check(d.Regions.Length == 1 && d.Pieces.Length == 1 && d.Pieces[0].Material == 2 && d.Pieces[0].Points.Length == 4, "its region and piece");
+                Check(d.Meshes.Length == 1 && d.Meshes[0].Triangles.Length == 6, "its mesh");
+                Check(u.MeshesBuilt.Select(m => m.Id).OrderBy(i => i).SequenceEqual(u.Changes.Added.Select(p => p.Id).OrderBy(i => i)), "a mesh per new polygon");
+                Check(u.Work.IslandsDetached == 1 && u.Work.CellsScanned >= 1, "the work");
+            }
+            Check(Holds(mirror, game), "the mirror holds the driver's chains");
+            int joints = 0;
+            Chain[] open = game.Chains.Where(c => c.Info.Closed == 0).ToArray();
+            foreach (Chain a in open)
+                foreach (Chain b in open)
+                    if (a != b && a.Points[a.Points.Length - 1].Equals(b.Points[0]))
+                    {
+                        Check(a.Info.GhostNext.Equals(b.Points[1]) && b.Info.GhostPrev.Equals(a.Points[a.Points.Length - 2]), "ghosts across a cell line");
+                        ++joints;
+                    }
+            Check(joints == 7, "the ground's top crosses 7 cell lines");
+            using (Landscape now = game.Landscape) Check(now.MaterialAt(new Point(420, 320)) == 0 && world.MaterialAt(new Point(10, 10)) == 0, "the driver's world and the caller's");
+
+            using (GameUpdate u = game.Apply(Edit.Fill(pillar, 3))) Follow(mirror, u.Chains);
+            Check(game.Buried(new Box(610, 210, 620, 220)) && !game.Buried(new Box(100, 400, 110, 410)), "buried bodies");
+
+            using (Landscape before = game.Landscape)
+            {
+                using (GameUpdate u = game.Apply(Edit.Carve(crater))) Follow(mirror, u.Chains);
+                using (Landscape after = game.Landscape) Check(after.StateHash != before.StateHash && Holds(mirror, game), "a carve");
+                using (GameUpdate u = game.Reset(before)) Follow(mirror, u.Chains);
+                using (Landscape now = game.Landscape) Check(now.StateHash == before.StateHash && Holds(mirror, game), "reset to the snapshot");
+            }
+        }
+    }
+
+    static void GameDriverErrors()
+    {
+        using (var world = CellWorld(16))
+        using (var small = Shape.Rectangle(new Box(10, 10, 50, 50)))
+        using (var round = Shape.Circle(new Point(500, 300), 100))
+        {
+            var e = Throws<InvalidArgumentException>(() => new GameDriver(world, new GameOptions { MaxPieceVertices = 2 }), "pieces of 2 vertices");
+            Check(e.Value == 2 && e.Minimum == 3, "the argument's value and minimum");
+            using (var game = new GameDriver(world))
+            {
+                ulong hash;
+                using (Landscape now = game.Landscape) hash = now.StateHash;
+                int chains = game.Chains.Length;
+                Check(Throws<InvalidMaterialException>(() => game.Apply(Edit.Carve(small), Edit.Fill(small, 300)), "material 300").Value == 300, "its value");
+                var limit = Throws<LimitExceededException>(() => game.Apply(Edit.Carve(small), Edit.Fill(round, 1)), "a shape past the limit");
+                Check(limit.Limit == 16, "the limit");
+                using (Landscape now = game.Landscape) Check(now.StateHash == hash && game.Chains.Length == chains, "the driver as it was");
+            }
+            var options = new GameOptions { MaxPieceVertices = 3, Meshes = false };
+            using (var game = new GameDriver(world, options))
+            using (var rock = Shape.Rectangle(new Box(400, 300, 440, 340)))
+            using (GameUpdate u = game.Apply(Edit.Fill(rock, 4)))
+                Check(u.Debris.Length == 1 && u.Debris[0].Pieces.Length == 2 && u.Debris[0].Meshes.Length == 0 && u.MeshesBuilt.Length == 0, "triangles, no meshes");
+        }
+    }
+
     static void DisposedObjectsRefuseUse()
     {
         using (var world = new Landscape(new Box(0, 0, 100, 100), 1))
@@ -272,6 +369,8 @@ static class Tests
         Queries();
         SnapshotsAndSaves();
         GameLayer();
+        GameDriverFrames();
+        GameDriverErrors();
         DisposedObjectsRefuseUse();
         Console.WriteLine("csharp: " + checks + " checks passed");
         return 0;

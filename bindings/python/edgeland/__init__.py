@@ -7,6 +7,9 @@ optional (Landscape.polygon_arrays, Shape from arrays). bindings/python/README.m
     world = edgeland.Landscape(((0, 0), (1024, 512)), fill=1)
     changes = world.carve(edgeland.Shape.circle((512, 256), 100))
     assert world.material_at((512, 256)) == 0
+
+    game = edgeland.GameDriver(world)                   # what a game uses: chains, meshes, debris
+    update = game.apply([edgeland.Edit.fill(edgeland.Shape.circle((512, 400), 20), 2)])
 """
 from . import _native
 from .errors import (ArgumentOutOfRange, BufferTooSmall, CoordinateOutOfRange, EdgelandError,
@@ -14,8 +17,9 @@ from .errors import (ArgumentOutOfRange, BufferTooSmall, CoordinateOutOfRange, E
                      InvalidInput, InvalidMaterial, InvalidOverlay, LimitExceeded, LoadError,
                      NonPositiveArea, NullArgument, OutOfMemory, StaleIsland, TooManyVertices,
                      VersionMismatch, BY_STATUS)
-from .game import (IslandTracker, SurfaceTracker, all_meshes, convex_pieces, detach,
-                   mesh_update)
+from .driver import Debris, Edit, GameDriver, GameUpdate, MeshUpdate, Work
+from .game import (Chain, ChainUpdate, IslandTracker, Mesh, SurfaceTracker, all_meshes,
+                   convex_pieces, detach, mesh_update)
 from .landscape import Landscape
 from .results import ChangeSet, Crossing, Polygon
 from .shapes import Shape

@@ -67,6 +67,25 @@ class PhysicsMaterials(Structure):
                 ("anchored", c_uint8 * 256)]
 
 
+class GameOptions(Structure):
+    _fields_ = [("struct_size", c_uint32), ("flags", c_uint32), ("debris_budget", c_uint64),
+                ("max_piece_vertices", c_uint32), ("max_debris_wait", c_uint32),
+                ("solid", c_uint8 * 256), ("anchored", c_uint8 * 256)]
+
+
+class DebrisInfo(Structure):
+    _fields_ = [("bounds", Box), ("twice_area", Int128), ("centroid_x_num", Int128),
+                ("centroid_y_num", Int128), ("centroid_den", Int128), ("first_region", c_uint32),
+                ("region_count", c_uint32), ("first_piece", c_uint32), ("piece_count", c_uint32)]
+
+
+class GameWork(Structure):
+    _fields_ = [("struct_size", c_uint32), ("reserved", c_uint32), ("cells_scanned", c_uint64),
+                ("boundary_passes", c_uint64), ("cells_traced", c_uint64),
+                ("islands_found", c_uint64), ("islands_detached", c_uint64),
+                ("debris_waiting", c_uint64)]
+
+
 class LandscapeConfig(Structure):
     _fields_ = [("struct_size", c_uint32), ("tree", c_uint32), ("edge_cap", c_uint32),
                 ("merge_below", c_uint32), ("min_cell_size", c_int64), ("grid_depth", c_int32),
@@ -87,6 +106,9 @@ assert ctypes.sizeof(LandscapeConfig) == 56 and ctypes.sizeof(Stats) == 48
 assert ctypes.sizeof(AreaDelta) == 32 and ctypes.sizeof(Int128) == 24
 assert ctypes.sizeof(ChainInfo) == 80 and ctypes.sizeof(IslandInfo) == 64
 assert ctypes.sizeof(DetachedInfo) == 96 and ctypes.sizeof(PhysicsMaterials) == 520
+assert ctypes.sizeof(GameOptions) == 536 and GameOptions.solid.offset == 24
+assert ctypes.sizeof(DebrisInfo) == 144 and DebrisInfo.first_region.offset == 128
+assert ctypes.sizeof(GameWork) == 56
 
 
 def _load():
@@ -203,6 +225,32 @@ _PROTOTYPES = {
     "el_meshes_triangles": (POINTER(c_uint32), [_handle, _count]),
     "el_convex_pieces": (_status, [POINTER(Point), c_size_t, c_uint32, _out, _err]),
     "el_bytes_data": (POINTER(c_uint8), [_handle, _count]),
+    "el_edits_create": (_status, [_out, _err]),
+    "el_edits_destroy": (None, [_handle]),
+    "el_edits_carve": (_status, [_handle, _handle, _err]),
+    "el_edits_fill": (_status, [_handle, _handle, c_int32, _err]),
+    "el_edits_fill_empty": (_status, [_handle, _handle, c_int32, _err]),
+    "el_edits_replace": (_status, [_handle, _handle, c_int32, c_int32, _err]),
+    "el_edits_relabel": (_status, [_handle, _handle, POINTER(c_int32), c_size_t, _err]),
+    "el_game_options_init": (None, [POINTER(GameOptions)]),
+    "el_game_driver_create": (_status, [_handle, POINTER(GameOptions), _out, _err]),
+    "el_game_driver_destroy": (None, [_handle]),
+    "el_game_driver_apply": (_status, [_handle, _handle, _out, _err]),
+    "el_game_driver_reset": (_status, [_handle, _handle, _out, _err]),
+    "el_game_driver_buried": (_status, [_handle, POINTER(Box), POINTER(c_int32), _err]),
+    "el_game_driver_landscape": (_status, [_handle, _out, _err]),
+    "el_game_driver_chains": (_status, [_handle, _out, _err]),
+    "el_game_driver_debris_waiting": (c_size_t, [_handle]),
+    "el_game_work_init": (None, [POINTER(GameWork)]),
+    "el_game_update_destroy": (None, [_handle]),
+    "el_game_update_changes": (_handle, [_handle]),
+    "el_game_update_chains": (_handle, [_handle]),
+    "el_game_update_meshes": (_handle, [_handle]),
+    "el_game_update_debris": (POINTER(DebrisInfo), [_handle, _count]),
+    "el_game_update_debris_regions": (_handle, [_handle]),
+    "el_game_update_debris_meshes": (_handle, [_handle]),
+    "el_game_update_debris_pieces": (_handle, [_handle]),
+    "el_game_update_work": (_status, [_handle, POINTER(GameWork), _err]),
 }
 
 for _name, (_restype, _argtypes) in _PROTOTYPES.items():

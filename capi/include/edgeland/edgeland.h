@@ -523,6 +523,122 @@ EL_API el_status el_meshes_copy_triangles(const el_meshes* meshes, uint32_t* buf
 EL_API el_status el_convex_pieces(const el_point* points, size_t count, uint32_t max_vertices,
                                   el_polygons** out, el_error* error);
 
+/* ---- the game driver (game/include/edgeland/game/game_driver.hpp) ----------------------------
+ * What a game uses: one driver owns a landscape and everything derived from it. Each frame, the
+ * frame's edits (an el_edits batch) go in as one batch and an el_game_update comes out: the
+ * change set, the collision chains to remove and add (with ghost vertices), the render meshes
+ * to drop and build, and the islands that broke off as debris (regions, convex pieces, meshes,
+ * exact area and centroid); el_game_driver_buried asks whether a fill buried a body.
+ *
+ * Errors: an edit's typed error (EL_INVALID_INPUT, EL_INVALID_MATERIAL, EL_LIMIT_EXCEEDED, ...)
+ * leaves the driver and its landscape exactly as they were. EL_OUT_OF_MEMORY from apply or reset
+ * leaves the driver as the C++ one does: reset it (el_game_driver_reset) before the next apply. */
+
+typedef struct el_edits el_edits;             /* a frame's edits, in order (C++ Edit) */
+typedef struct el_game_driver el_game_driver; /* C++ GameDriver */
+typedef struct el_game_update el_game_update; /* C++ GameUpdate */
+
+/* A batch of edits, each holding its own copy of the shape: the materials are checked when an
+ * edit is added (EL_INVALID_MATERIAL, the batch unchanged). */
+EL_API el_status el_edits_create(el_edits** out, el_error* error);
+EL_API void el_edits_destroy(el_edits* edits);
+EL_API void el_edits_clear(el_edits* edits);
+EL_API size_t el_edits_count(const el_edits* edits);
+EL_API el_status el_edits_carve(el_edits* edits, const el_shape* shape, el_error* error);
+EL_API el_status el_edits_fill(el_edits* edits, const el_shape* shape, int32_t material,
+                               el_error* error);
+EL_API el_status el_edits_fill_empty(el_edits* edits, const el_shape* shape, int32_t material,
+                                     el_error* error);
+EL_API el_status el_edits_replace(el_edits* edits, const el_shape* shape, int32_t from, int32_t to,
+                                  el_error* error);
+EL_API el_status el_edits_relabel(el_edits* edits, const el_shape* shape, const int32_t* from_to,
+                                  size_t pair_count, el_error* error);
+
+enum {
+  EL_GAME_MESHES = 1,
+  EL_GAME_DEBRIS = 2,
+  EL_GAME_BORDER_WALL = 4
+}; /* el_game_options.flags */
+
+/* C++ GameOptions. Defaults (el_game_options_init): EL_GAME_MESHES | EL_GAME_DEBRIS, every
+ * material but 0 solid, none anchored, convex pieces of at most 8 vertices (3 or more), a debris
+ * budget of 4096 island vertices per update, no island waiting more than 3 updates. */
+typedef struct el_game_options {
+  uint32_t struct_size;
+  uint32_t flags;
+  uint64_t debris_budget;
+  uint32_t max_piece_vertices;
+  uint32_t max_debris_wait;
+  uint8_t solid[256];
+  uint8_t anchored[256];
+} el_game_options;
+EL_API void el_game_options_init(el_game_options* options);
+
+/* A driver over a snapshot of `world` (O(1); the caller's landscape stays its own). Islands
+ * already in the world wait in the debris queue: the first update detaches them. */
+EL_API el_status el_game_driver_create(const el_landscape* world, const el_game_options* options,
+                                       el_game_driver** out, el_error* error);
+EL_API void el_game_driver_destroy(el_game_driver* driver);
+/* The batch's edits in order, as one; then the chains, meshes and islands kept in step and
+ * debris detached within the budget. `edits` NULL or empty: only the debris queue moves.
+ * `update` may be NULL (not wanted); else *update gets a new update. */
+EL_API el_status el_game_driver_apply(el_game_driver* driver, const el_edits* edits,
+                                      el_game_update** update, el_error* error);
+/* The landscape replaced by a snapshot of `world` (an undo to a snapshot, a load): the update
+ * names exactly the cells whose polygons differ from the last seen. */
+EL_API el_status el_game_driver_reset(el_game_driver* driver, const el_landscape* world,
+                                      el_game_update** update, el_error* error);
+/* *buried = 1 when the last update's fills buried a body whose bounding box is `box`. */
+EL_API el_status el_game_driver_buried(const el_game_driver* driver, const el_box* box,
+                                       int32_t* buried, el_error* error);
+/* A snapshot of the driver's landscape (O(1)): queries, save, state hash. */
+EL_API el_status el_game_driver_landscape(const el_game_driver* driver, el_landscape** out,
+                                          el_error* error);
+/* Every chain now, by ascending id (what the updates so far add up to; none removed). */
+EL_API el_status el_game_driver_chains(const el_game_driver* driver, el_chains** all,
+                                       el_error* error);
+EL_API size_t el_game_driver_debris_waiting(const el_game_driver* driver);
+
+/* One debris body (C++ Debris): its bounds, exact twice area and centroid (x_num / den,
+ * y_num / den); its region polygons (maximal, per material, ascending material) are
+ * first_region .. first_region + region_count - 1 of el_game_update_debris_regions, each
+ * region polygon's mesh the same index of el_game_update_debris_meshes (when EL_GAME_MESHES),
+ * and its convex pieces (one fixture each, the material in el_polygons_materials) first_piece ..
+ * of el_game_update_debris_pieces. */
+typedef struct el_debris_info {
+  el_box bounds;
+  el_int128 twice_area;
+  el_int128 centroid_x_num, centroid_y_num, centroid_den;
+  uint32_t first_region, region_count;
+  uint32_t first_piece, piece_count;
+} el_debris_info;
+
+/* What one update did (C++ GameWork) and the islands still waiting. */
+typedef struct el_game_work {
+  uint32_t struct_size;
+  uint32_t reserved;
+  uint64_t cells_scanned, boundary_passes, cells_traced, islands_found, islands_detached;
+  uint64_t debris_waiting;
+} el_game_work;
+EL_API void el_game_work_init(el_game_work* work);
+
+/* The parts of an update, borrowed (they live as long as the update and need no destroy): the
+ * change set (every polygon the edits and the detaches removed and added), the chains (ids
+ * removed, chains added with their ghosts), the meshes (ids dropped, meshes built; empty without
+ * EL_GAME_MESHES), the debris. */
+EL_API void el_game_update_destroy(el_game_update* update);
+EL_API const el_changes* el_game_update_changes(const el_game_update* update);
+EL_API const el_chains* el_game_update_chains(const el_game_update* update);
+EL_API const el_meshes* el_game_update_meshes(const el_game_update* update);
+EL_API const el_debris_info* el_game_update_debris(const el_game_update* update, size_t* count);
+EL_API el_status el_game_update_copy_debris(const el_game_update* update, el_debris_info* buf,
+                                            size_t cap, size_t* needed);
+EL_API const el_polygons* el_game_update_debris_regions(const el_game_update* update);
+EL_API const el_meshes* el_game_update_debris_meshes(const el_game_update* update);
+EL_API const el_polygons* el_game_update_debris_pieces(const el_game_update* update);
+EL_API el_status el_game_update_work(const el_game_update* update, el_game_work* out,
+                                     el_error* error);
+
 /* ---- layout ------------------------------------------------------------------------------------
  * The same on every target: 8-byte fields first, explicit padding, no pointers or size_t in
  * structs (i686's 4-byte alignment of int64_t would move a field after a 4-byte one). C99 has
@@ -550,6 +666,16 @@ EL_LAYOUT_ASSERT(chain_info, sizeof(el_chain_info) == 80 && offsetof(el_chain_in
 EL_LAYOUT_ASSERT(island_info,
                  sizeof(el_island_info) == 64 && offsetof(el_island_info, first_piece) == 56);
 EL_LAYOUT_ASSERT(detached_info, sizeof(el_detached_info) == 96);
+EL_LAYOUT_ASSERT(game_options, sizeof(el_game_options) == 536 &&
+                                   offsetof(el_game_options, max_piece_vertices) == 16 &&
+                                   offsetof(el_game_options, solid) == 24 &&
+                                   offsetof(el_game_options, anchored) == 280);
+EL_LAYOUT_ASSERT(debris_info, sizeof(el_debris_info) == 144 &&
+                                  offsetof(el_debris_info, centroid_den) == 104 &&
+                                  offsetof(el_debris_info, first_region) == 128 &&
+                                  offsetof(el_debris_info, piece_count) == 140);
+EL_LAYOUT_ASSERT(game_work,
+                 sizeof(el_game_work) == 56 && offsetof(el_game_work, debris_waiting) == 48);
 
 #ifdef __cplusplus
 }

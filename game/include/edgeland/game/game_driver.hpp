@@ -43,7 +43,8 @@ class GameState;
 class EDGELAND_EXPORT GameDriver {
  public:
   // Everything of `world` derived at once: chains, island summaries (islands already in the
-  // world wait in the debris queue: the first update detaches them). O(N log N).
+  // world wait in the debris queue: the first update detaches them). O(N log N). Throws
+  // InvalidArgument for options an update could not honour (max_piece_vertices below 3).
   explicit GameDriver(Landscape world, const GameOptions& options = {});
   ~GameDriver();
   GameDriver(GameDriver&&) noexcept;

@@ -106,8 +106,8 @@ struct GameOptions {
   bool meshes = true;  // GameUpdate::meshes is filled
   // Islands are found and detached as debris (on by default). Off: no island work at all.
   bool debris = true;
-  // Debris bodies' convex pieces have at most this many vertices (3..kMaxPieceVertices; Box2D
-  // 2.4's b2_maxPolygonVertices is 8).
+  // Debris bodies' convex pieces have at most this many vertices (3 or more, else the driver
+  // refuses the options with InvalidArgument; Box2D 2.4's b2_maxPolygonVertices is 8).
   std::size_t max_piece_vertices = 8;
   // The island work one update may do, in island vertices: islands found wait in a queue and
   // are detached oldest first while the budget lasts (the first one always goes). No island
