@@ -190,6 +190,18 @@ TEST(PhysicsSimulation, DebrisOfAFarWorldLandsWhereItsIslandWas) {
   EXPECT_FLOAT_EQ(body->GetPosition().x, 2038.0f / kUnitsPerMetre);
   EXPECT_FLOAT_EQ(body->GetPosition().y, 758.0f / kUnitsPerMetre);
   EXPECT_NEAR(body->GetMass(), 180.0f * 180.0f / (kUnitsPerMetre * kUnitsPerMetre), 1e-3f);
+
+  // An explicit origin (0, 0) is taken as given, not as "unset": the same debris then lies at the
+  // landscape's own coordinates.
+  b2World far_world(b2Vec2(0, -10));
+  box2d::TerrainOptions at_zero = options;
+  at_zero.origin = Point64{0, 0};
+  box2d::Terrain zero_terrain(far_world, game, at_zero);
+  EXPECT_EQ(zero_terrain.units().origin, (Point64{0, 0}));
+  const b2Body* far_body =
+      box2d::make_debris_body(far_world, u.debris.front(), zero_terrain.units());
+  EXPECT_FLOAT_EQ(far_body->GetPosition().x, static_cast<float>(x + 90) / kUnitsPerMetre);
+  EXPECT_FLOAT_EQ(far_body->GetPosition().y, static_cast<float>(y + 90) / kUnitsPerMetre);
 }
 
 // A world reaching past 2^24 units from the origin is refused, naming the corner.
