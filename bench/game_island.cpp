@@ -2,11 +2,11 @@
 // (issue 35: a 335-polygon island cost 43-57 ms in one frame, 1,601 fixtures in its body).
 // A 4096 x 4096 world: anchored bedrock below, a rock shelf of 2048 x 256 held by one pillar,
 // the shelf's top and bottom bitten and its inside pocked by BITES small circles (radius 6-16 at
-// seeded places), so that its outline is rough and its cells small: the island it becomes is many cells' polygons.
-// One frame cuts the pillar; the frames after it are empty updates until the island has fallen
-// (the driver makes a big island's debris in steps within GameOptions::debris_budget, then carves
-// it out). Timed, in thread CPU time, fastest of EDGELAND_GAME_REPEATS (default 5) plays from
-// the same start, summed over those frames:
+// seeded places), so that its outline is rough and its cells small: the island it becomes is many
+// cells' polygons. One frame cuts the pillar; the frames after it are empty updates until the
+// island has fallen (the driver makes a big island's debris in steps within
+// GameOptions::debris_budget, then carves it out). Timed, in thread CPU time, fastest of
+// EDGELAND_GAME_REPEATS (default 5) plays from the same start, summed over those frames:
 //   game_update:    GameDriver::apply (the edit, chains, the island found, its debris steps:
 //                   merged, cut into convex pieces, meshed; then detached);
 //   terrain_update: box2d::Terrain::apply of each update;
@@ -102,7 +102,8 @@ Play play(const Landscape& start) {
   terrain.apply(game.apply(std::span<const edgeland::Edit>{}));  // slivers the bites cut off
   while (game.debris_waiting() > 0) terrain.apply(game.apply(std::span<const edgeland::Edit>{}));
   Play p;
-  const edgeland::Edit cut = edgeland::Edit::carve(ValidSet(PolygonSet{box_shape(kCut)}, Operand::kClip));
+  const edgeland::Edit cut =
+      edgeland::Edit::carve(ValidSet(PolygonSet{box_shape(kCut)}, Operand::kClip));
   for (bool first = true; first || game.debris_waiting() > 0; first = false) {
     ThreadClock clock;
     const GameUpdate u = first ? game.apply(cut) : game.apply(std::span<const edgeland::Edit>{});
@@ -132,7 +133,8 @@ void run_island(benchmark::State& state) {
       Play p;
       if (!guarded(state, [&] { p = play(start); })) return;
       if (p.islands != 1)
-        return fail(state, "the cut detached " + std::to_string(p.islands) + " islands, not the shelf alone");
+        return fail(state, "the cut detached " + std::to_string(p.islands) +
+                               " islands, not the shelf alone");
       for (std::size_t k = 0; k < kStageCount; ++k)
         best.seconds[k] = std::min(best.seconds[k], p.seconds[k]);
       best.islands = p.islands;

@@ -76,7 +76,8 @@ void net_stretches(const LineEdge* first, const LineEdge* last, std::vector<Segm
 std::vector<Segment> boundary_stretches(const PolygonSet& members) {
   std::vector<LineEdge> edges;
   for (const Polygon& p : members)
-    for (std::size_t i = 0; i < p.size(); ++i) edges.push_back(line_edge(p[i], p[(i + 1) % p.size()]));
+    for (std::size_t i = 0; i < p.size(); ++i)
+      edges.push_back(line_edge(p[i], p[(i + 1) % p.size()]));
   std::sort(edges.begin(), edges.end());
   std::vector<Segment> out;
   std::vector<LineEvent> events;

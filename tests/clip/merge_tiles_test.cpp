@@ -49,9 +49,8 @@ void expect_same_region(const ValidSet& tiles) {
 
 RC_GTEST_PROP(MergeTiles, QuadtreeTilesMergeToMergesRegion, ()) {
   const PolygonSet raw = *gen::polygon_set({64, 64}, 60);
-  const ValidSet set = normalize_to_valid_set(std::vector<Ring>(raw.begin(), raw.end()),
-                                              FillRule::kPositive)
-                           .set;
+  const ValidSet set =
+      normalize_to_valid_set(std::vector<Ring>(raw.begin(), raw.end()), FillRule::kPositive).set;
   std::vector<Box64> leaves;
   quadtree_leaves({{0, 0}, {128, 128}}, leaves);
   expect_same_region(tiles_of(set, leaves));
