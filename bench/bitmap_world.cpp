@@ -59,19 +59,33 @@ void BitmapWorld::collect_edges(const PolygonSet& shape) {
 }
 
 // Even-odd spans between the sorted crossings of one row, clipped to the world.
-void BitmapWorld::fill_row(std::int64_t row, Material material) {
+void BitmapWorld::fill_row(std::int64_t row, std::optional<Material> from, Material to) {
   std::sort(crossings_.begin(), crossings_.end());
   std::uint8_t* line = cells_.data() + row * width_;
   for (std::size_t k = 0; k + 1 < crossings_.size(); k += 2) {
-    const std::int64_t from = std::max<std::int64_t>(crossings_[k], 0);
-    const std::int64_t to = std::min(crossings_[k + 1], width_);
-    if (from < to) std::memset(line + from, material.value(), static_cast<std::size_t>(to - from));
+    const std::int64_t first = std::max<std::int64_t>(crossings_[k], 0);
+    const std::int64_t end = std::min(crossings_[k + 1], width_);
+    if (first >= end) continue;
+    if (!from) {
+      std::memset(line + first, to.value(), static_cast<std::size_t>(end - first));
+      continue;
+    }
+    for (std::int64_t x = first; x < end; ++x)
+      if (line[x] == from->value()) line[x] = to.value();
   }
+}
+
+void BitmapWorld::paint(const PolygonSet& shape, Material material) {
+  scan(shape, std::nullopt, material);
+}
+
+void BitmapWorld::replace(const PolygonSet& shape, Material from, Material to) {
+  scan(shape, from, to);
 }
 
 // An active-edge scan: edges enter at their first row (sorted), each row takes the crossing of
 // every active edge, steps it exactly, and drops it after its last row.
-void BitmapWorld::paint(const PolygonSet& shape, Material material) {
+void BitmapWorld::scan(const PolygonSet& shape, std::optional<Material> from, Material to) {
   collect_edges(shape);
   std::size_t next = 0, active_end = 0;  // edges_[0, active_end) : entered, maybe finished
   std::int64_t row = edges_.empty() ? 0 : edges_.front().first_row;
@@ -93,7 +107,7 @@ void BitmapWorld::paint(const PolygonSet& shape, Material material) {
       else
         ++i;
     }
-    fill_row(row, material);
+    fill_row(row, from, to);
     if (active_end == 0 && next < edges_.size())
       row = edges_[next].first_row;
     else

@@ -42,6 +42,8 @@ class BitmapWorld {
   void paint(const PolygonSet& shape, Material material);
   void carve(const PolygonSet& shape) { paint(shape, kEmpty); }
   void fill(const PolygonSet& shape, Material material) { paint(shape, material); }
+  // Every square of material `from` whose centre lies in the shape becomes `to`.
+  void replace(const PolygonSet& shape, Material from, Material to);
 
   // Copies the squares of the box (clipped to the world) from `source`, a world of the same
   // box: how the benchmarks undo an edit without copying the whole array.
@@ -75,7 +77,10 @@ class BitmapWorld {
     std::int64_t q, r, den, step_q, step_r;
   };
   void collect_edges(const PolygonSet& shape);
-  void fill_row(std::int64_t row, Material material);
+  // The rows of the shape: each square in it of material `from` (any material when nullopt)
+  // becomes `to`.
+  void scan(const PolygonSet& shape, std::optional<Material> from, Material to);
+  void fill_row(std::int64_t row, std::optional<Material> from, Material to);
   Material at_local(std::int64_t x, std::int64_t y) const {
     if (x < 0 || y < 0 || x >= width_ || y >= height_) return kEmpty;
     return cells_[static_cast<std::size_t>(y * width_ + x)];

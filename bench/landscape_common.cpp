@@ -53,16 +53,21 @@ World make_world(Rival rival, const Box64& box, Material fill) {
                landscape_config(rival, box.max.x - box.min.x));
 }
 
-void apply(World& world, EditKind kind, const ValidSet& shape, Material material) {
+void apply(World& world, EditKind kind, const ValidSet& shape, Material material, Material from) {
   if (auto* l = std::get_if<Landscape>(&world)) {
     if (kind == EditKind::kCarve)
       l->carve(shape);
-    else
+    else if (kind == EditKind::kFill)
       l->fill(shape, material);
+    else
+      l->replace(shape, from, material);
     return;
   }
   auto& b = std::get<BitmapWorld>(world);
-  b.paint(shape.polygons(), kind == EditKind::kCarve ? kEmpty : material);
+  if (kind == EditKind::kReplace)
+    b.replace(shape.polygons(), from, material);
+  else
+    b.paint(shape.polygons(), kind == EditKind::kCarve ? kEmpty : material);
 }
 
 Material material_at(const World& world, Point64 p) {

@@ -35,15 +35,20 @@ LandscapeConfig landscape_config(Rival rival, std::int64_t world_side);
 using World = std::variant<Landscape, BitmapWorld>;
 World make_world(Rival rival, const Box64& box, Material fill);
 
-enum class EditKind : std::uint8_t { kCarve, kFill };
-void apply(World& world, EditKind kind, const ValidSet& shape, Material material);
-// One edit of a workload: carve the shape, or fill it with the material.
+enum class EditKind : std::uint8_t { kCarve, kFill, kReplace };
+// Carve the shape, fill it with `material`, or replace `from` by `material` in it.
+void apply(World& world, EditKind kind, const ValidSet& shape, Material material,
+           Material from = kEmpty);
+// One edit of a workload.
 struct Edit {
   ValidSet shape;
   EditKind kind = EditKind::kCarve;
   Material material = kEmpty;
+  Material from = kEmpty;  // kReplace's
 };
-inline void apply_edit(World& world, const Edit& e) { apply(world, e.kind, e.shape, e.material); }
+inline void apply_edit(World& world, const Edit& e) {
+  apply(world, e.kind, e.shape, e.material, e.from);
+}
 // The shapes as edits of one kind.
 std::vector<Edit> edits_of(EditKind kind, const std::vector<ValidSet>& shapes, Material material);
 Material material_at(const World& world, Point64 p);

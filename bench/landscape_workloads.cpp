@@ -24,6 +24,32 @@ std::vector<Edit> repeated_at(Point64 centre, double min_radius, double max_radi
   return out;
 }
 
+// n mixed edits around `centre` (within 8 units): 7-32-gons of radius 5-60, each carved,
+// filled with material 2, or replaced from 2 to 1, a third each in a seeded order.
+std::vector<Edit> mixed_at(Point64 centre, std::size_t n) {
+  SplitMix64 random(0x4075);
+  std::vector<Edit> out;
+  out.reserve(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Point64 c{centre.x - 8 + static_cast<std::int64_t>(random.next() % 17),
+                    centre.y - 8 + static_cast<std::int64_t>(random.next() % 17)};
+    const double radius = 5.0 + 55.0 * random.unit();
+    const std::size_t sides = 7 + random.next() % 26;
+    ValidSet shape(PolygonSet{ngon(c, radius, sides)}, Operand::kClip);
+    switch (random.next() % 3) {
+      case 0:
+        out.push_back({std::move(shape), EditKind::kCarve, kEmpty});
+        break;
+      case 1:
+        out.push_back({std::move(shape), EditKind::kFill, Material(2)});
+        break;
+      default:
+        out.push_back({std::move(shape), EditKind::kReplace, Material(1), Material(2)});
+    }
+  }
+  return out;
+}
+
 }  // namespace
 
 const char* workload_name(Workload w) {
@@ -38,6 +64,8 @@ const char* workload_name(Workload w) {
       return "spot";
     case Workload::kPit:
       return "pit";
+    case Workload::kHotSpot:
+      return "hotspot";
   }
   return "?";
 }
@@ -60,6 +88,8 @@ std::vector<Edit> workload_edits(Workload w, std::size_t n) {
       return repeated_at({kEditWorldSide / 2, kEditWorldSide / 2}, 3.0, 200.0, n);
     case Workload::kPit:
       return repeated_at({3001, 2717}, 3.0, 30.0, n);
+    case Workload::kHotSpot:
+      return mixed_at({kEditWorldSide / 2, kEditWorldSide / 2}, n);
   }
   return {};
 }

@@ -14,6 +14,10 @@
 //   pit:   the same at an arbitrary spot (3001, 2717) with small shapes, radius 3-30: the
 //          held-out logs of issue 28 ("edits repeated at one spot", a world of a few hundred
 //          vertices), where the cost is not the world's size (bench/README.md says what it is).
+//   hotspot: mixed edits at one spot (issue 35's held-out hot spot): 7-32-gons of radius 5-60
+//          around centres within 8 units of the world's centre (a quadtree corner at every
+//          depth), in turn carved, filled with material 2, and replaced from 2 back to 1, in a
+//          seeded order.
 #include <cstddef>
 #include <optional>
 #include <string>
@@ -26,9 +30,9 @@ namespace edgeland::bench {
 inline constexpr std::int64_t kEditWorldSide = 8192;
 inline constexpr Box64 kEditWorld{{0, 0}, {kEditWorldSide, kEditWorldSide}};
 
-enum class Workload : std::uint8_t { kCarve, kDig, kFill, kSpot, kPit };
+enum class Workload : std::uint8_t { kCarve, kDig, kFill, kSpot, kPit, kHotSpot };
 inline constexpr Workload kWorkloads[] = {Workload::kCarve, Workload::kDig, Workload::kFill,
-                                          Workload::kSpot, Workload::kPit};
+                                          Workload::kSpot,  Workload::kPit, Workload::kHotSpot};
 const char* workload_name(Workload w);
 std::optional<Workload> workload_named(const std::string& name);
 
