@@ -35,5 +35,7 @@ void report_series(benchmark::State& state, const std::string& name, const Serie
 // game_export/demo/EDITS (game_export.cpp).
 void register_game_edit_benchmarks();
 void register_game_export_benchmarks();
+// game_frame/new_user/FRAMES (frame_benchmark.cpp).
+void register_frame_benchmarks();
 
 }  // namespace edgeland::bench

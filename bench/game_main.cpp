@@ -11,6 +11,7 @@ int main(int argc, char** argv) {
   cv::setNumThreads(1);  // every stage single-threaded on both sides, as the timing assumes
   edgeland::bench::register_game_edit_benchmarks();
   edgeland::bench::register_game_export_benchmarks();
+  edgeland::bench::register_frame_benchmarks();
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   benchmark::RunSpecifiedBenchmarks();

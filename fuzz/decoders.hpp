@@ -13,6 +13,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace edgeland::fuzz {
 
@@ -85,6 +86,17 @@ std::optional<Finding> run_polygon_pieces(const std::uint8_t* data, std::size_t 
 // then the new islands are detached from the landscape itself and those change sets are checked
 // the same way. game_decoders.cpp.
 std::optional<Finding> run_game_sequence(const std::uint8_t* data, std::size_t size);
+
+// Arbitrary bytes as a delta (issue 37; after the first byte, whose bit 0 asks for the checksum to
+// be made right, bits 1-2 pick the world it is applied to and bits 3-4 turn on the base and result
+// checks): decode_delta gives a DeltaError (or a shape's InvalidInput) or a delta whose bytes
+// decode to the same bytes again, having held at most a constant times its size; applied in checked
+// mode to a fixed world (a CHANGES delta to an empty DrawMirror), it is refused with a typed error
+// leaving the world's state hash as it was, or gives a world that passes check() and survives save
+// -> load. delta_decoders.cpp.
+std::optional<Finding> run_delta(const std::uint8_t* data, std::size_t size);
+// Inputs of run_delta built from real deltas of its worlds (regress_replay delta --write-seeds).
+std::vector<std::string> delta_seeds();
 
 // The logs the inputs of clip_pair (its four operations) and clip_sequence (the steps as
 // recorded) decode to, as continuous-clip logs.

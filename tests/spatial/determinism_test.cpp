@@ -3,6 +3,7 @@
 // built at -O0 and -O3 (tests/CMakeLists.txt, spatial.determinism_*).
 #include <gtest/gtest.h>
 
+#include "edgeland/spatial/delta.hpp"
 #include "pinned_sequence.hpp"
 
 namespace edgeland::test {
@@ -11,6 +12,10 @@ namespace {
 TEST(LandscapeDeterminism, PinnedSequenceGivesThePinnedHash) {
   EXPECT_EQ(pinned::run({}).state_hash(), pinned::kQuadtreeHash);
   EXPECT_EQ(pinned::run(pinned::kd_tree_config()).state_hash(), pinned::kKdTreeHash);
+}
+
+TEST(LandscapeDeterminism, PinsBelongToTheAlgorithmVersion) {
+  EXPECT_EQ(kAlgorithmVersion, pinned::kPinnedAlgorithmVersion);
 }
 
 TEST(LandscapeDeterminism, CheckedModeChangesNothingButTheChecks) {

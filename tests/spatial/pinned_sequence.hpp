@@ -70,5 +70,10 @@ inline LandscapeConfig kd_tree_config() {
 // next id differ.
 inline constexpr std::uint64_t kQuadtreeHash = 0xeaeb4f50cafef240ull;
 inline constexpr std::uint64_t kKdTreeHash = 0x88c6cb00a6c83cd3ull;
+// The algorithm version (delta.hpp) these hashes belong to: a change of the pins is a change of
+// how edits round, so kAlgorithmVersion goes up with it (peers of different versions must not
+// exchange COMMAND deltas). LandscapeDeterminism.PinsBelongToTheAlgorithmVersion checks both
+// move together.
+inline constexpr std::uint32_t kPinnedAlgorithmVersion = 1;
 
 }  // namespace edgeland::pinned

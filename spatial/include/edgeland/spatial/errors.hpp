@@ -83,4 +83,38 @@ class EDGELAND_EXPORT LoadError : public LandscapeError {
   std::size_t offset;
 };
 
+// A delta's bytes could not be read (delta.hpp): truncated, corrupt, of another format, or
+// malformed; or a PATCH's subtree breaks a rule of the world it is applied to. `offset` is where
+// reading stopped (bytes from the start of the delta).
+class EDGELAND_EXPORT DeltaError : public LandscapeError {
+ public:
+  DeltaError(const std::string& what, std::size_t offset);
+  std::size_t offset;
+};
+
+// A well-formed delta that does not fit this landscape: `field` says which value differs,
+// `expected` is the delta's and `actual` the landscape's.
+class EDGELAND_EXPORT DeltaMismatch : public LandscapeError {
+ public:
+  enum class Field : std::uint8_t {
+    kWorld,      // another world box or configuration (world_hash)
+    kAlgorithm,  // a COMMAND written by another algorithm version
+    kBase,       // the state hash before is not the delta's base hash
+    kResult,     // the result's state hash is not the delta's result hash
+    kNodeHash,   // a patched node's hash is not the one the PATCH names
+  };
+  DeltaMismatch(Field field, std::uint64_t expected, std::uint64_t actual);
+  Field field;
+  std::uint64_t expected;
+  std::uint64_t actual;
+};
+
+// A tree path names no node of this landscape (an index past a node's children, or a path
+// through a cell). `path` is the path given.
+class EDGELAND_EXPORT InvalidPath : public LandscapeError {
+ public:
+  explicit InvalidPath(TreePath path);
+  TreePath path;
+};
+
 }  // namespace edgeland

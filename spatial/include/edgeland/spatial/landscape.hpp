@@ -62,6 +62,9 @@
 
 namespace edgeland {
 
+struct Delta;       // delta.hpp
+struct PatchEntry;  // delta.hpp
+
 namespace detail {
 
 struct Node;     // the tree (spatial/src/node.hpp)
@@ -158,6 +161,8 @@ class EDGELAND_EXPORT Landscape {
   const Box64& world() const noexcept { return s_.world; }
   const LandscapeConfig& config() const noexcept { return s_.config; }
   const LandscapeLimits& limits() const noexcept { return s_.limits; }
+  // The id the next new polygon takes (ids are never reused: every id in the world is below it).
+  PolygonId next_id() const noexcept { return s_.next_id; }
 
   // --- state -----------------------------------------------------------------------------
   // FNV-style 64-bit hash of the whole state (world, configuration, tree, every polygon with
@@ -189,6 +194,27 @@ class EDGELAND_EXPORT Landscape {
   // own bytes are bounded by them first). O(n log n) for n vertices: each cell is validated once.
   void save(std::ostream& out) const;
   static Landscape load(std::istream& in, const LandscapeLimits& limits = {});
+
+  // --- deltas and divergence (delta.hpp; spatial/README.md "Deltas, divergence and repair") --
+  // The hash of the world box and the configuration: a delta names the world it belongs to.
+  std::uint64_t world_hash() const noexcept;
+  // The node at `path`: its box, its hash and its children's hashes; nullopt when the path names
+  // no node. O(depth).
+  std::optional<NodeDigest> node_digest(const TreePath& path) const;
+  // The subtree at `path` as a PATCH carries it (patch_delta). Throws InvalidPath. O(subtree).
+  PatchEntry patch_entry(const TreePath& path) const;
+  // Applies a COMMAND (the edit, as apply_edit) or a PATCH (its subtrees, ids and counters),
+  // after checking that it belongs to this world (DeltaMismatch kWorld; a COMMAND also kAlgorithm)
+  // and, as `checks` asks, that this landscape is its base (kBase) and that the result is its
+  // result (kResult). Returns what changed, as an edit does. Throws DeltaError (a CHANGES delta,
+  // or a PATCH whose subtree breaks a rule of this world: the offset is within that subtree),
+  // DeltaMismatch, LimitExceeded, or what the COMMAND's edit throws; then the landscape is as
+  // it was. O(edit) for a COMMAND; O(patched subtrees + the polygons outside them) for a PATCH,
+  // which checks its ids against every other polygon.
+  ChangeSet apply_delta(const Delta& delta, const DeltaChecks& checks = {});
+  // Sum of polygon_digest (delta.hpp) over every polygon below `path`: what a thin client's
+  // DrawMirror holding that part of the world has as its digest. Throws InvalidPath. O(subtree).
+  std::uint64_t drawn_digest(const TreePath& path = {}) const;
 
  private:
   explicit Landscape(detail::LandscapeState state) : s_(std::move(state)) {}

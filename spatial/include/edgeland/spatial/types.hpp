@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "edgeland/clip/valid_set.hpp"
 #include "edgeland/kernel/bbox.hpp"
 #include "edgeland/kernel/fraction.hpp"
 #include "edgeland/kernel/int128.hpp"
@@ -71,6 +72,33 @@ struct CellView {
   std::size_t polygons = 0, vertices = 0;
 };
 
+// One edit of a batch (Landscape::apply_batch, a frame's edits): inside `shape` every material m
+// becomes map[m]. `kind` says how it was asked for (what an edit log writes); the map alone
+// says what it does. carve, fill, fill_empty and replace are relabels with these maps, as on
+// Landscape.
+struct Edit {
+  enum class Kind : std::uint8_t { kCarve, kFill, kFillEmpty, kReplace, kRelabel };
+  Kind kind = Kind::kRelabel;
+  ValidSet shape;
+  MaterialMap map;
+
+  static Edit carve(ValidSet shape) {
+    return {Kind::kCarve, std::move(shape), MaterialMap::uniform(kEmpty)};
+  }
+  static Edit fill(ValidSet shape, Material m) {
+    return {Kind::kFill, std::move(shape), MaterialMap::uniform(m)};
+  }
+  static Edit fill_empty(ValidSet shape, Material m) {
+    return {Kind::kFillEmpty, std::move(shape), MaterialMap().set(kEmpty, m)};
+  }
+  static Edit replace(ValidSet shape, Material from, Material to) {
+    return {Kind::kReplace, std::move(shape), MaterialMap().set(from, to)};
+  }
+  static Edit relabel(ValidSet shape, const MaterialMap& map) {
+    return {Kind::kRelabel, std::move(shape), map};
+  }
+};
+
 // What an edit changed.
 struct ChangeSet {
   std::vector<PolygonId> removed;  // ids that no longer exist, ascending
@@ -102,6 +130,27 @@ struct MaterialCrossing {
 struct LandscapeReport {
   std::vector<std::string> problems;  // one line each, e.g. "cell (0 0 64 64): polygon 3 outside"
   bool ok() const noexcept { return problems.empty(); }
+};
+
+// A node of the tree by the child indices from the root down (each below the node's child
+// count, split_boxes order): {} is the root. Deltas and region records name nodes so.
+using TreePath = std::vector<std::uint8_t>;
+
+// One node as two worlds compare it (Landscape::node_digest, DivergenceSearch).
+struct NodeDigest {
+  Box64 box;
+  std::uint64_t hash = 0;  // the node's hash: its box and its cell's polygons or children's hashes
+  bool cell = false;       // a leaf
+  bool loaded = true;      // false: an unloaded region, whose hash is known but not its children
+  std::vector<std::uint64_t> children;  // the children's hashes (inner nodes)
+  friend bool operator==(const NodeDigest&, const NodeDigest&) = default;
+};
+
+// Which hashes Landscape::apply_delta compares. A client that knows it has diverged turns them
+// off to keep applying what it receives while it repairs.
+struct DeltaChecks {
+  bool base = true;    // the landscape's state hash must be the delta's base hash
+  bool result = true;  // the result must come out with the delta's result hash
 };
 
 struct LandscapeStats {

@@ -1,0 +1,11 @@
+// libFuzzer target `delta`: see run_delta in decoders.hpp for what is decoded and checked.
+#include <cstddef>
+#include <cstdint>
+
+#include "decoders.hpp"
+#include "report.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  edgeland::fuzz::abort_on(edgeland::fuzz::run_delta(data, size));
+  return 0;
+}
