@@ -10,20 +10,6 @@
 namespace edgeland::log {
 namespace {
 
-constexpr std::string_view kWorldKeyword = "world";
-
-struct EditKeyword {
-  std::string_view word;
-  LandscapeEditKind kind;
-  int materials;  // how many material numbers stand between the keyword and the WKT (-1: pairs)
-};
-constexpr std::array<EditKeyword, 5> kEditKeywords{
-    {{"carve", LandscapeEditKind::kCarve, 0},
-     {"fill", LandscapeEditKind::kFill, 1},
-     {"fill_empty", LandscapeEditKind::kFillEmpty, 1},
-     {"replace", LandscapeEditKind::kReplace, 2},
-     {"relabel", LandscapeEditKind::kRelabel, -1}}};
-
 LandscapeLogError bad_argument(std::size_t line, const std::string& reason) {
   return LandscapeLogError(LandscapeLogErrorKind::kBadArgument, line, reason);
 }
@@ -127,13 +113,6 @@ LandscapeEdit parse_edit(const EditKeyword& keyword, std::string_view raw, std::
   return edit;
 }
 
-const EditKeyword* edit_keyword(std::string_view word) {
-  for (const EditKeyword& k : kEditKeywords) {
-    if (k.word == word) return &k;
-  }
-  return nullptr;
-}
-
 // The first command word of the text, or empty when it has no command.
 std::string_view first_command(std::string_view text) {
   while (!text.empty()) {
@@ -166,10 +145,7 @@ void add_command(ParsedLandscapeLog& parsed, LandscapeCommand command, std::size
 }  // namespace
 
 const char* landscape_edit_keyword(LandscapeEditKind kind) noexcept {
-  for (const EditKeyword& k : kEditKeywords) {
-    if (k.kind == kind) return k.word.data();
-  }
-  return "?";
+  return edit_keyword(kind).word.data();  // the table's words are string literals
 }
 
 const char* landscape_log_error_kind_name(LandscapeLogErrorKind kind) noexcept {
@@ -203,7 +179,7 @@ std::optional<LandscapeCommand> parse_landscape_line(std::string_view raw,
   if (is_skipped_line(rest)) return std::nullopt;
   const std::string_view word = take_word(rest);
   if (word == kWorldKeyword) return parse_world(rest, line_number);
-  if (const EditKeyword* keyword = edit_keyword(word)) {
+  if (const EditKeyword* keyword = find_edit_keyword(word)) {
     return parse_edit(*keyword, raw, rest, line_number);
   }
   throw LandscapeLogError(LandscapeLogErrorKind::kUnknownCommand, line_number,

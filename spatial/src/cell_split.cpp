@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "edgeland/spatial/tree_boxes.hpp"
+#include "edgeland/spatial/tree_boxes.hpp"  // max_grid_depth
 
 namespace edgeland::detail {
 namespace {
@@ -50,12 +50,3 @@ std::vector<Box64> split_boxes(const Box64& box, const LandscapeConfig& config) 
 }
 
 }  // namespace edgeland::detail
-
-namespace edgeland {
-
-std::vector<Box64> child_boxes(const Box64& node, const LandscapeConfig& config) {
-  if (!detail::can_split(node, config)) return {};
-  return detail::split_boxes(node, config);
-}
-
-}  // namespace edgeland

@@ -36,11 +36,25 @@ EditBuilder::EditBuilder(const LandscapeState& state, const EditTable& table)
 // Steps 1 and 2-7 of the README: the shape's size against the limits, the new tree, its limits,
 // what changed (checked in checked mode), and the next state.
 EditResult EditBuilder::build(const ValidSet& shape) {
-  const std::size_t shape_vertices = vertices_of(shape);
-  if (shape_vertices > s_.limits.max_shape_vertices)
+  require_shape_size(vertices_of(shape));
+  return result(new_root(shape));
+}
+
+EditResult EditBuilder::build(ShapeCut cut, const Box64& box, std::size_t vertices) {
+  static const ValidSet kNothingElse;  // cells the cut does not reach take no shape
+  require_shape_size(vertices);
+  reach_ = Reach{&kNothingElse, box, std::move(cut)};
+  return result(rebuilt_root());
+}
+
+void EditBuilder::require_shape_size(std::size_t vertices) const {
+  if (vertices > s_.limits.max_shape_vertices)
     throw LimitExceeded(LimitExceeded::Limit::kShapeVertices, s_.limits.max_shape_vertices,
-                        shape_vertices);
-  NodePtr root = new_root(shape);
+                        vertices);
+}
+
+// Steps 5-7 of the README on the new tree.
+EditResult EditBuilder::result(NodePtr root) {
   if (root->vertices > s_.limits.max_vertices)
     throw LimitExceeded(LimitExceeded::Limit::kVertices, s_.limits.max_vertices, root->vertices);
   if (root->cells > s_.limits.max_cells)
@@ -61,6 +75,17 @@ NodePtr EditBuilder::new_root(const ValidSet& shape) {
   if (shape.polygons().empty() || !s_.world.overlaps_open(reach_.box)) return s_.root;
   try {
     reach_.cut = cut_shape_to_cells(s_.root, shape, reach_.box, clip_options());
+  } catch (const InternalError& e) {
+    throw EditFailure{std::string(e.what()) + "\n  subject = " + e.subject_wkt +
+                      "\n  clip = " + e.clip_wkt};
+  }
+  return rebuilt_root();
+}
+
+// Steps 3-6 over the reach set up: overlays, splits and merges, ids. The clipper's internal
+// failures become EditFailure.
+NodePtr EditBuilder::rebuilt_root() {
+  try {
     Draft draft = rebuild(s_.root);
     return finish(draft, s_.root);
   } catch (const InternalError& e) {

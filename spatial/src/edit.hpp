@@ -5,7 +5,10 @@
 #include <vector>
 
 #include "edgeland/clip/relabel.hpp"
-#include "edgeland/spatial/landscape.hpp"
+#include "edgeland/clip/valid_set.hpp"
+#include "edgeland/spatial/landscape_state.hpp"
+#include "edgeland/spatial/material.hpp"
+#include "edgeland/spatial/types.hpp"
 #include "ids.hpp"
 #include "node.hpp"
 #include "shape_cut.hpp"
@@ -53,6 +56,9 @@ class EditBuilder {
  public:
   EditBuilder(const LandscapeState& state, const EditTable& table);
   EditResult build(const ValidSet& shape);
+  // An edit whose shape comes already cut to the cells it reaches (the pieces within each cell's
+  // box; `box` bounds them all, `vertices` counts them): Landscape::remove.
+  EditResult build(ShapeCut cut, const Box64& box, std::size_t vertices);
 
  private:
   // A part of the new tree before it has ids: an old node kept as it is (`kept`), a new cell
@@ -81,6 +87,9 @@ class EditBuilder {
   };
 
   NodePtr new_root(const ValidSet& shape);
+  NodePtr rebuilt_root();
+  EditResult result(NodePtr root);
+  void require_shape_size(std::size_t vertices) const;
   Draft rebuild(const NodePtr& node);
   Draft edit_cell(const NodePtr& cell);
   // What of the shape a cell's overlay takes: its pieces when the shape was cut to the cells

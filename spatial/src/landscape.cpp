@@ -4,7 +4,7 @@
 #include "cell_split.hpp"
 #include "check.hpp"
 #include "edgeland/kernel/area.hpp"
-#include "edgeland/spatial/tree_boxes.hpp"
+#include "edgeland/spatial/log_format.hpp"
 #include "edit.hpp"
 #include "edit_log.hpp"
 #include "state_hash.hpp"
@@ -42,78 +42,7 @@ detail::NodePtr grid(const Box64& box, std::uint32_t depth, int grid_depth, Labe
   return detail::make_inner(box, depth, children);
 }
 
-std::string config_problem(InvalidConfig::Setting setting, const Box64& w,
-                           const LandscapeConfig& c) {
-  using Setting = InvalidConfig::Setting;
-  const auto n = [](auto v) { return std::to_string(v); };
-  const std::string box =
-      "world box (" + n(w.min.x) + " " + n(w.min.y) + ", " + n(w.max.x) + " " + n(w.max.y) + ")";
-  switch (setting) {
-    case Setting::kWorldOutOfRange:
-      return box + " beyond the coordinate bound";
-    case Setting::kWorldEmpty:
-      return box + " without positive width and height";
-    case Setting::kEdgeCap:
-      return "edge_cap " + n(c.edge_cap) + " below " + n(detail::kMinEdgeCap);
-    case Setting::kMergeBelow:
-      return "merge_below " + n(c.merge_below) + " not below edge_cap " + n(c.edge_cap);
-    case Setting::kMinCellSize:
-      return "min_cell_size " + n(c.min_cell_size) + " below 1";
-    case Setting::kGridDepth:
-      return "grid_depth " + n(c.grid_depth) + " outside -1.." + n(detail::kMaxGridDepth);
-    case Setting::kGridDepthBeyondCells:
-      return "grid_depth " + n(c.grid_depth) + " deeper than min_cell_size " + n(c.min_cell_size) +
-             " lets the " + box + " split (at most " + n(max_grid_depth(w, c)) + ")";
-    case Setting::kTree:
-      return "unknown tree kind " + n(static_cast<int>(c.tree));
-  }
-  return "unusable configuration";
-}
-
 }  // namespace
-
-InvalidConfig::InvalidConfig(Setting s, const Box64& w, const LandscapeConfig& c)
-    : LandscapeError(config_problem(s, w, c)), setting(s), world(w), config(c) {}
-
-namespace {
-
-const char* limit_name(LimitExceeded::Limit limit) {
-  switch (limit) {
-    case LimitExceeded::Limit::kVertices:
-      return "landscape vertex";
-    case LimitExceeded::Limit::kShapeVertices:
-      return "shape vertex";
-    case LimitExceeded::Limit::kCells:
-      return "cell";
-    case LimitExceeded::Limit::kPolygonIds:
-      return "polygon id";
-  }
-  return "unknown";  // not reached: every limit is named above
-}
-
-}  // namespace
-
-LimitExceeded::LimitExceeded(Limit l, std::size_t max, std::size_t req)
-    : LandscapeError(std::string(limit_name(l)) + " limit exceeded: " + std::to_string(req) +
-                     " > " + std::to_string(max)),
-      limit(l),
-      maximum(max),
-      requested(req) {}
-
-LandscapeInternalError::LandscapeInternalError(const std::string& what, std::string s,
-                                               std::string lg)
-    : LandscapeError("edgeland landscape internal error (please report with the log): " + what),
-      state(std::move(s)),
-      log(std::move(lg)) {}
-
-LoadError::LoadError(const std::string& what, std::size_t at)
-    : LandscapeError("cannot load landscape at byte " + std::to_string(at) + ": " + what),
-      offset(at) {}
-
-InvalidMaterial::InvalidMaterial(std::int64_t n)
-    : LandscapeError("material " + std::to_string(n) + " outside 0..255"), number(n) {}
-
-void detail::throw_invalid_material(std::int64_t number) { throw InvalidMaterial(number); }
 
 Landscape::Landscape(const Box64& world, Material fill, const LandscapeConfig& config,
                      const LandscapeLimits& limits) {
@@ -138,32 +67,39 @@ Landscape::Landscape(const Box64& world, Material fill, const LandscapeConfig& c
 
 ChangeSet Landscape::carve(const ValidSet& shape) {
   return apply(shape, detail::EditTable::carve(),
-               [&] { return detail::carve_line(shape.polygons()); });
+               [&] { return log::edit_line(log::LandscapeEditKind::kCarve, shape.polygons()); });
 }
 ChangeSet Landscape::fill(const ValidSet& shape, Material m) {
   return apply(shape, detail::EditTable::fill(m),
-               [&] { return detail::fill_line(shape.polygons(), m); });
+               [&] { return log::edit_line(log::LandscapeEditKind::kFill, shape.polygons(), m); });
 }
 ChangeSet Landscape::fill_empty(const ValidSet& shape, Material m) {
-  return apply(shape, detail::EditTable::fill_empty(m),
-               [&] { return detail::fill_empty_line(shape.polygons(), m); });
+  return apply(shape, detail::EditTable::fill_empty(m), [&] {
+    return log::edit_line(log::LandscapeEditKind::kFillEmpty, shape.polygons(), m);
+  });
 }
 ChangeSet Landscape::replace(const ValidSet& shape, Material from, Material to) {
-  return apply(shape, detail::EditTable::replace(from, to),
-               [&] { return detail::replace_line(shape.polygons(), from, to); });
+  return apply(shape, detail::EditTable::replace(from, to), [&] {
+    return log::edit_line(log::LandscapeEditKind::kReplace, shape.polygons(), to, from);
+  });
 }
 ChangeSet Landscape::relabel(const ValidSet& shape, const MaterialMap& map) {
   return apply(shape, detail::EditTable::relabel(map),
-               [&] { return detail::relabel_line(shape.polygons(), map); });
+               [&] { return log::relabel_line(shape.polygons(), map); });
 }
 
 // Every edit: the next state built (edit.cpp; s_ untouched, so a throw leaves the landscape as
 // it was), the edit's line recorded, and the commit, one assignment.
 ChangeSet Landscape::apply(const ValidSet& shape, const detail::EditTable& table,
                            const std::function<std::string()>& log_line) {
+  return apply([&] { return detail::EditBuilder(s_, table).build(shape); }, log_line);
+}
+
+ChangeSet Landscape::apply(const std::function<detail::EditResult()>& build,
+                           const std::function<std::string()>& log_line) {
   detail::EditResult edit = [&] {
     try {
-      return detail::EditBuilder(s_, table).build(shape);
+      return build();
     } catch (const detail::EditFailure& failure) {
       throw detail::internal_error(s_, failure.what, log_line());
     }

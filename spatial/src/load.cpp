@@ -17,6 +17,7 @@
 #include "byte_codec.hpp"
 #include "cell_split.hpp"
 #include "edgeland/kernel/area.hpp"
+#include "edgeland/spatial/landscape.hpp"
 #include "node.hpp"
 #include "save_format.hpp"
 #include "save_load.hpp"

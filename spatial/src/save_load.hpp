@@ -3,7 +3,8 @@
 // these, and an internal error carries the state before the failed edit as a save file.
 #include <iosfwd>
 
-#include "edgeland/spatial/landscape.hpp"
+#include "edgeland/spatial/landscape_state.hpp"
+#include "edgeland/spatial/types.hpp"
 
 namespace edgeland::detail {
 

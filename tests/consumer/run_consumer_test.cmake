@@ -22,7 +22,7 @@ foreach(expected include/edgeland/kernel/validate.hpp include/edgeland/clip/clip
   endif()
 endforeach()
 file(GLOB_RECURSE configs ${prefix}/*/edgelandConfig.cmake)
-file(GLOB_RECURSE private_headers ${prefix}/include/*wkt_tokens.hpp ${prefix}/include/*log_text.hpp ${prefix}/include/*command.hpp
+file(GLOB_RECURSE private_headers ${prefix}/include/*wkt_tokens.hpp ${prefix}/include/*log_text.hpp ${prefix}/include/*commands.hpp
   ${prefix}/include/*scratch.hpp ${prefix}/include/*assert.hpp ${prefix}/include/*point_text.hpp)
 if(NOT configs OR private_headers)
   message(FATAL_ERROR "config files: '${configs}'; private headers installed: '${private_headers}'")

@@ -22,7 +22,7 @@
 namespace edgeland {
 
 namespace game_detail {
-class IslandTree;
+struct IslandTrackerState;
 }
 
 struct IslandPiece {
@@ -67,7 +67,7 @@ class EDGELAND_EXPORT IslandTracker {
   Work last_work() const;
 
  private:
-  std::unique_ptr<game_detail::IslandTree> tree_;
+  std::unique_ptr<game_detail::IslandTrackerState> state_;
 };
 
 // Every island of a landscape. O(N).

@@ -2,7 +2,8 @@
 // Landscape edit logs: a plain-text record of the edits applied to one Landscape
 // (spatial/include/edgeland/spatial/landscape.hpp), so that any world seen in a game can be
 // rebuilt and replayed (`edgeland replay`). Landscape::start_log() / log() write exactly this
-// format (spatial/src/edit_log.cpp); this is its reader.
+// format; this is its reader. Both go through one keyword table and one writer of each line,
+// edgeland/spatial/log_format.hpp (the landscape records its log, and spatial is below io).
 //
 // FORMAT (one command per line; README.md "Landscape edit logs"):
 //   world X0 Y0 X1 Y1 [MATERIAL]   the world box [X0, X1] x [Y0, Y1], empty or filled with
@@ -44,6 +45,7 @@
 #include "edgeland/kernel/errors.hpp"
 #include "edgeland/kernel/export.hpp"
 #include "edgeland/spatial/landscape.hpp"
+#include "edgeland/spatial/log_format.hpp"
 
 namespace edgeland::log {
 
@@ -54,10 +56,10 @@ struct WorldCommand {
   std::size_t line = 0;  // 1-based line number in the log
 };
 
-enum class LandscapeEditKind : std::uint8_t { kCarve, kFill, kFillEmpty, kReplace, kRelabel };
+// LandscapeEditKind and the keywords: log_format.hpp.
 
 // The keyword of an edit as written in a log ("carve", "fill", "fill_empty", "replace",
-// "relabel").
+// "relabel"): log_format.hpp's table.
 EDGELAND_EXPORT const char* landscape_edit_keyword(LandscapeEditKind kind) noexcept;
 
 // One edit line.

@@ -63,6 +63,15 @@ class EDGELAND_EXPORT LimitExceeded : public LandscapeError {
   std::size_t requested;
 };
 
+// Landscape::remove named a polygon the landscape does not hold: no cell with the box `cell`,
+// or none with the id `id` in it (it changed since it was named).
+class EDGELAND_EXPORT UnknownPolygon : public LandscapeError {
+ public:
+  UnknownPolygon(PolygonId id, const Box64& cell);
+  PolygonId id;
+  Box64 cell;
+};
+
 // A checked-mode invariant failed: a bug in edgeland. `state` is the landscape before the
 // edit as a save file (Landscape::load reads it), `log` an edit log that replays to it (exactly
 // when the landscape recorded its log from the start, else approximately: the world and one

@@ -35,7 +35,8 @@
 //
 // HEADERS. This is the front end and the umbrella: it includes material.hpp (Material),
 // types.hpp (the configuration, views, change sets, crossings, reports) and errors.hpp (the
-// landscape's errors), which code that only handles those types can include alone.
+// landscape's errors), which code that only handles those types can include alone, and
+// landscape_state.hpp (the private state, detail::LandscapeState).
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -43,6 +44,7 @@
 #include <iosfwd>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -57,6 +59,7 @@
 #include "edgeland/kernel/predicates.hpp"
 #include "edgeland/kernel/validate.hpp"
 #include "edgeland/spatial/errors.hpp"
+#include "edgeland/spatial/landscape_state.hpp"
 #include "edgeland/spatial/material.hpp"
 #include "edgeland/spatial/types.hpp"
 
@@ -66,31 +69,28 @@ struct Delta;       // delta.hpp
 struct PatchEntry;  // delta.hpp
 
 namespace detail {
-
-struct Node;     // the tree (spatial/src/node.hpp)
-struct LogLine;  // the recorded log, a persistent list shared by copies (spatial/src/edit_log.hpp)
-using AreaTable = std::array<Int128, kMaterialCount>;
-
-struct EditTable;  // an edit's material -> material table (spatial/src/edit.hpp)
-
-// A landscape's whole state, private to Landscape: spatial/src's stages take it as an argument
-// from the Landscape's members. An edit builds the next state from it and Landscape::apply
-// commits that by one assignment, so a throw leaves it as it was.
-struct LandscapeState {
-  Box64 world;
-  LandscapeConfig config;
-  LandscapeLimits limits;
-  std::shared_ptr<const Node> root;
-  std::shared_ptr<const AreaTable> areas;  // twice the area of every solid material
-  PolygonId next_id = 1;
-  std::uint64_t edits = 0;  // successful edits since construction (or load)
-  Material initial_fill = kEmpty;
-  bool checked = false;
-  bool logging = false;
-  std::shared_ptr<const LogLine> log;  // the last line recorded
-};
-
+struct EditTable;   // an edit's material -> material table (spatial/src/edit.hpp)
+struct EditResult;  // what an edit builds (spatial/src/edit.hpp)
 }  // namespace detail
+
+// One cell's polygons as arrays, for code that reads whole cells (the game layer): what
+// polygons_in hands out one view at a time, without a visitor or a reference count per polygon.
+// It shares the cell, so the arrays stay valid as long as it lives, whatever happens to the
+// landscape meanwhile (as PolygonView). Canonical order within the cell.
+class EDGELAND_EXPORT CellContents {
+ public:
+  const Box64& box() const noexcept;
+  std::size_t size() const noexcept;
+  std::span<const Polygon> polygons() const noexcept;
+  std::span<const PolygonId> ids() const noexcept;
+  std::span<const Box64> bounds() const noexcept;  // each polygon's bounding box
+  Material material(std::size_t i) const noexcept;
+
+ private:
+  friend class Landscape;
+  explicit CellContents(std::shared_ptr<const detail::Node> cell) : cell_(std::move(cell)) {}
+  std::shared_ptr<const detail::Node> cell_;
+};
 
 class EDGELAND_EXPORT Landscape {
  public:
@@ -116,6 +116,12 @@ class EDGELAND_EXPORT Landscape {
   ChangeSet fill_empty(const PolygonSet& shape, Material material);
   ChangeSet replace(const PolygonSet& shape, Material from, Material to);
   ChangeSet relabel(const PolygonSet& shape, const MaterialMap& map);
+  // Removes these polygons (each at most once): a carve of exactly their region, recorded as one
+  // in the log. Its edges are the landscape's own, so it meets no crossing, rounds nothing and
+  // leaves every other polygon's region as it was; no shape is validated (each cell's polygons
+  // are a valid set). What a game detaching debris calls. Throws UnknownPolygon (nothing
+  // changed), LimitExceeded, LandscapeInternalError. O(depth per polygon + the cells' overlays).
+  ChangeSet remove(std::span<const PolygonRef> polygons);
 
   // --- queries -------------------------------------------------------------------------------
   // Queries check their coordinates as edits check their shapes: a point, a segment end or a
@@ -154,6 +160,9 @@ class EDGELAND_EXPORT Landscape {
   // Calls visit for every cell whose closed box meets the closed box (empty cells included),
   // in tree order; stop by returning false.
   void cells_in(const Box64& box, const std::function<bool(const CellView&)>& visit) const;
+  // The cell whose box is exactly `box`, if the landscape has one. O(depth). (A box that is not a
+  // cell's, an inner node's included, gives nullopt: no error.)
+  std::optional<CellContents> cell(const Box64& box) const;
   // Twice the area of a material (exact), over the whole world (material 0: the empty area).
   Int128 twice_area(Material m) const;
   LandscapeStats stats() const;
@@ -221,6 +230,9 @@ class EDGELAND_EXPORT Landscape {
   // The one edit driver (spatial/README.md, "An edit"): builds the next state from s_ with the
   // shape and the table, appends `log_line` to the log when recording, then commits.
   ChangeSet apply(const ValidSet& shape, const detail::EditTable& table,
+                  const std::function<std::string()>& log_line);
+  // The same for any way of building the next state (Landscape::remove's cut shape).
+  ChangeSet apply(const std::function<detail::EditResult()>& build,
                   const std::function<std::string()>& log_line);
 
   detail::LandscapeState s_;

@@ -53,6 +53,13 @@ struct LandscapeLimits {
   std::size_t max_cells = std::size_t{1} << 22;
 };
 
+// A polygon of the landscape named by its id and the closed box of its cell, as PolygonView and
+// ChangeSet::Added give them (Landscape::remove).
+struct PolygonRef {
+  PolygonId id = 0;
+  Box64 cell;
+};
+
 // One polygon of the landscape as polygons_in shows it. The view shares ownership of the cell
 // holding the polygon (the tree is immutable and shared, so this costs a reference count, no
 // copy): `polygon` stays valid for as long as the view or a copy of it lives, whatever happens

@@ -1,0 +1,240 @@
+#include "game_state.hpp"
+
+#include <algorithm>
+
+#include "debris.hpp"
+#include "edgeland/clip/clip.hpp"
+#include "edgeland/game/render_meshes.hpp"
+#include "island_walk.hpp"
+#include "update_merge.hpp"
+
+namespace edgeland::game_detail {
+namespace {
+
+std::size_t vertices_of(const Island& island) {
+  std::size_t n = 0;
+  for (const IslandPiece& p : island.pieces) n += p.polygon.size();
+  return n;
+}
+
+// An edit that turns some non-solid material solid (a fill, in the game's terms).
+bool fills(const Edit& e, const PhysicsMaterials& materials) {
+  for (std::size_t m = 0; m < kMaterialCount; ++m) {
+    const Material from = static_cast<std::uint8_t>(m);
+    if (!materials.is_solid(from) && materials.is_solid(e.map[from])) return true;
+  }
+  return false;
+}
+
+// One edit by its kind, so the landscape's log records it as asked for.
+ChangeSet apply_one(Landscape& land, const Edit& e) {
+  switch (e.kind) {
+    case Edit::Kind::kCarve:
+      return land.carve(e.shape);
+    case Edit::Kind::kFill:
+      return land.fill(e.shape, e.map[kEmpty]);
+    case Edit::Kind::kFillEmpty:
+      return land.fill_empty(e.shape, e.map[kEmpty]);
+    case Edit::Kind::kReplace:
+      for (std::size_t m = 0; m < kMaterialCount; ++m) {
+        const Material from = static_cast<std::uint8_t>(m);
+        if (e.map[from] != from) return land.replace(e.shape, from, e.map[from]);
+      }
+      return land.relabel(e.shape, e.map);
+    case Edit::Kind::kRelabel:
+      break;
+  }
+  return land.relabel(e.shape, e.map);
+}
+
+// One polygon of a cell, for comparing the cells before and after a reset.
+struct Held {
+  PolygonId id;
+  Material material;
+  const Polygon* ring;
+  Box64 cell;
+  bool same(const Held& o) const {
+    return id == o.id && material == o.material && *ring == *o.ring;
+  }
+};
+
+void add_held(const CellContents& c, std::vector<Held>& out) {
+  for (std::size_t i = 0; i < c.size(); ++i)
+    out.push_back({c.ids()[i], c.material(i), &c.polygons()[i], c.box()});
+}
+
+// Whether `list` (ascending by id) holds the same polygon as `h`.
+bool holds(const std::vector<Held>& list, const Held& h) {
+  const auto [lo, hi] = std::equal_range(list.begin(), list.end(), h,
+                                         [](const Held& l, const Held& r) { return l.id < r.id; });
+  return std::any_of(lo, hi, [&](const Held& o) { return o.same(h); });
+}
+
+// The polygons of the cells a reset replaced, as a change set: those gone that the new cells do
+// not hold (same id, ring and material) are removed, the new cells' others added.
+ChangeSet changes_between(std::span<const GoneCell> gone, const CellStore& store,
+                          std::span<const Box64> fresh) {
+  std::vector<Held> before, after;
+  for (const GoneCell& g : gone) add_held(*g.contents, before);
+  for (const Box64& box : fresh) add_held(*store.at(box).scan.contents, after);
+  const auto by_id = [](const Held& l, const Held& r) { return l.id < r.id; };
+  std::sort(before.begin(), before.end(), by_id);
+  std::sort(after.begin(), after.end(), by_id);
+  ChangeSet out;
+  out.cells.assign(fresh.begin(), fresh.end());
+  for (const Held& b : before)
+    if (!holds(after, b)) out.removed.push_back(b.id);
+  for (const Held& a : after)
+    if (!holds(before, a)) out.added.push_back({a.id, a.material, *a.ring, a.cell});
+  return out;
+}
+
+}  // namespace
+
+GameState::GameState(Landscape world, const GameOptions& options)
+    : options_(options), land_(std::move(world)), filled_(land_), surface_(options.surface) {
+  const std::vector<Box64> cells = all_cells(land_);
+  store_.scan(land_, cells, options_.surface.materials);
+  surface_.update(land_, store_, {}, cells);
+  if (!options_.debris) return;
+  islands_ = std::make_unique<IslandTree>(land_, store_, options_.surface.materials);
+  for (Island& island : islands_of(land_, store_, islands_->islands()))
+    queue_.push_back({std::move(island), 0});
+}
+
+// Stage "edit": the edits in order on a copy (O(1)), kept only when all of them succeed.
+ChangeSet GameState::edit(std::span<const Edit> edits) {
+  Landscape next = land_;
+  ChangeSet changes;
+  for (const Edit& e : edits) take_changes(changes, apply_one(next, e));
+  land_ = std::move(next);
+  return changes;
+}
+
+GameUpdate GameState::apply(std::span<const Edit> edits) {
+  const Landscape before = land_;
+  ChangeSet changes = edit(edits);  // the only step that may throw an input error
+  GameUpdate out;
+  start_work();
+  note_fills(edits);
+  filled_ = land_;  // before debris leaves it: a body in a fill that fell is buried too
+  follow(before, changes, out);
+  take_changes(out.changes, std::move(changes));
+  drain_debris(out);
+  finish(out);
+  return out;
+}
+
+GameUpdate GameState::reset(Landscape world) {
+  land_ = std::move(world);
+  fills_.clear();
+  filled_ = land_;
+  queue_.clear();
+  GameUpdate out;
+  start_work();
+  differing_cells(land_, store_, replaced_, fresh_);
+  replace_cells(replaced_, fresh_, out);
+  out.changes = changes_between(gone_, store_, fresh_);
+  if (islands_) {  // summaries made anew: every island of the world waits again
+    islands_ = std::make_unique<IslandTree>(land_, store_, options_.surface.materials);
+    for (Island& island : islands_of(land_, store_, islands_->islands()))
+      queue_.push_back({std::move(island), 0});
+  }
+  drain_debris(out);
+  finish(out);
+  return out;
+}
+
+// Stage "follow": the change's cells replaced in the store (each new one scanned once), then
+// the chains and the island summaries from the records.
+void GameState::follow(const Landscape& before, const ChangeSet& changes, GameUpdate& out) {
+  fresh_.clear();
+  for (const Box64& box : changes.cells)
+    if (land_.cell(box)) fresh_.push_back(box);  // a batch's step may re-cut a cell again
+  std::sort(fresh_.begin(), fresh_.end(), [](const Box64& l, const Box64& r) {
+    return l.min != r.min ? l.min < r.min : l.max < r.max;
+  });
+  fresh_.erase(std::unique(fresh_.begin(), fresh_.end()), fresh_.end());
+  replaced_cells(before, fresh_, replaced_);
+  replace_cells(replaced_, fresh_, out);
+  if (!islands_) return;
+  for (Island& island : islands_of(land_, store_, islands_->update(land_, store_, fresh_))) {
+    queue_.push_back({std::move(island), 0});
+    ++out.work.islands_found;
+  }
+}
+
+void GameState::replace_cells(std::span<const Box64> replaced, std::span<const Box64> fresh,
+                              GameUpdate& out) {
+  gone_.clear();
+  store_.remove(replaced, gone_);
+  store_.scan(land_, fresh, options_.surface.materials);
+  take_chains(out.chains, surface_.update(land_, store_, gone_, fresh));
+  out.work.cells_traced += surface_.last_traced();
+}
+
+// Stage "debris": the islands taken from the queue carved out in one edit, then followed.
+void GameState::drain_debris(GameUpdate& out) {
+  if (queue_.empty()) return;
+  const std::vector<Island> islands = take_from_queue();
+  const Landscape before = land_;
+  DetachedAll detached = detach_islands(land_, islands, options_);
+  if (!detached.changes.cells.empty()) follow(before, detached.changes, out);
+  take_changes(out.changes, std::move(detached.changes));
+  out.work.islands_detached += detached.debris.size();
+  for (Debris& d : detached.debris) out.debris.push_back(std::move(d));
+  for (Waiting& w : queue_) ++w.age;
+}
+
+// Oldest first: the first always, then while the budget lasts; any that waited its limit too.
+std::vector<Island> GameState::take_from_queue() {
+  std::vector<Island> out;
+  std::size_t spent = 0;
+  while (!queue_.empty()) {
+    const std::size_t cost = vertices_of(queue_.front().island);
+    const bool due = queue_.front().age >= options_.max_debris_wait;
+    if (!out.empty() && !due && spent + cost > options_.debris_budget) break;
+    spent += cost;
+    out.push_back(std::move(queue_.front().island));
+    queue_.pop_front();
+  }
+  return out;
+}
+
+// Stage "finish": the merged lists in order, the meshes of what the update added.
+void GameState::finish(GameUpdate& out) const {
+  finish_changes(out.changes, land_);
+  finish_chains(out.chains);
+  if (options_.meshes) out.meshes = mesh_update(out.changes);
+  out.debris_waiting = queue_.size();
+  out.work.cells_scanned = static_cast<std::size_t>(store_.scans() - scans_before_);
+  out.work.boundary_passes = static_cast<std::size_t>(solid_boundary_runs() - passes_before_);
+}
+
+void GameState::start_work() {
+  scans_before_ = store_.scans();
+  passes_before_ = solid_boundary_runs();
+}
+
+void GameState::note_fills(std::span<const Edit> edits) {
+  fills_.clear();
+  for (const Edit& e : edits)
+    if (fills(e, options_.surface.materials)) fills_.push_back(e.shape);
+}
+
+// The box meets a filling shape's interior where the edits left solid (before any of it fell as
+// debris): the shape cut to the box (the clipper's one rounding), then overlaps().
+bool GameState::buried(const Box64& box) const {
+  if (box.min.x >= box.max.x || box.min.y >= box.max.y) return false;
+  for (const ValidSet& shape : fills_) {
+    const std::optional<Box64> bounds = bounding_box(shape.polygons());
+    if (!bounds || !bounds->overlaps_open(box)) continue;
+    const ValidClipResult inside = clip_to_box(shape, box);
+    if (inside.set.polygons().empty()) continue;
+    for (Material m : filled_.overlaps(inside.set))
+      if (options_.surface.materials.is_solid(m)) return true;
+  }
+  return false;
+}
+
+}  // namespace edgeland::game_detail

@@ -1,0 +1,78 @@
+// Landscape::remove (landscape.hpp): polygons named by id and cell, carved out with each cell's
+// own polygons as its piece of the shape (shape_cut.hpp): no shape to validate, no crossing to
+// round.
+#include <algorithm>
+#include <unordered_map>
+
+#include "edgeland/spatial/landscape.hpp"
+#include "edgeland/spatial/log_format.hpp"
+#include "edit.hpp"
+
+namespace edgeland {
+namespace {
+
+using detail::Node;
+using detail::NodePtr;
+
+// The cell with exactly this box, or null.
+const Node* cell_with_box(const NodePtr& root, const Box64& box) {
+  const Node* n = root.get();
+  while (!(n->box == box)) {
+    if (n->is_cell() || !n->box.contains(box.min)) return nullptr;
+    n = &n->child_at(box.min);
+  }
+  return n->is_cell() ? n : nullptr;
+}
+
+// Each named polygon's index in its cell, per cell (ascending, once each).
+std::unordered_map<const Node*, std::vector<std::size_t>> locate(
+    const NodePtr& root, std::span<const PolygonRef> polygons) {
+  std::unordered_map<const Node*, std::vector<std::size_t>> out;
+  for (const PolygonRef& p : polygons) {
+    const Node* cell = cell_with_box(root, p.cell);
+    if (cell == nullptr) throw UnknownPolygon(p.id, p.cell);
+    const auto at = std::find(cell->ids.begin(), cell->ids.end(), p.id);
+    if (at == cell->ids.end()) throw UnknownPolygon(p.id, p.cell);
+    out[cell].push_back(static_cast<std::size_t>(at - cell->ids.begin()));
+  }
+  for (auto& [cell, members] : out) {
+    std::sort(members.begin(), members.end());
+    members.erase(std::unique(members.begin(), members.end()), members.end());
+  }
+  return out;
+}
+
+}  // namespace
+
+ChangeSet Landscape::remove(std::span<const PolygonRef> polygons) {
+  const auto members = locate(s_.root, polygons);
+  detail::ShapeCut cut;
+  Box64 box;
+  std::size_t vertices = 0;
+  for (const auto& [cell, indices] : members) {
+    ValidSet piece = subset(cell->content.set, indices);
+    for (const Polygon& p : piece.polygons()) {
+      if (vertices == 0)
+        box = *bounding_box(p);
+      else
+        box.expand(*bounding_box(p));
+      vertices += p.size();
+    }
+    cut.pieces.emplace(cell, std::move(piece));
+  }
+  if (vertices == 0) return {};
+  // The log line: a carve of the removed polygons, in a fixed order.
+  const auto line = [&] {
+    PolygonSet all;
+    for (const auto& [cell, indices] : members)
+      for (std::size_t i : indices) all.push_back(cell->polygon_set()[i]);
+    std::sort(all.begin(), all.end());
+    return log::edit_line(log::LandscapeEditKind::kCarve, all);
+  };
+  const auto build = [&] {
+    return detail::EditBuilder(s_, detail::EditTable::carve()).build(std::move(cut), box, vertices);
+  };
+  return apply(build, line);
+}
+
+}  // namespace edgeland
