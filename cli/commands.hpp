@@ -16,7 +16,18 @@
   X(replay) \
   X(render) \
   X(demo) \
-  X(export)
+  X(export) \
+  EDGELAND_CLI_NET_COMMANDS(X)
+// The shared world's commands, when store/ and net/ are built (cli/CMakeLists.txt).
+#ifdef EDGELAND_HAVE_NET
+#define EDGELAND_CLI_NET_COMMANDS(X) \
+  X(serve) \
+  X(client) \
+  X(store) \
+  X(stream)
+#else
+#define EDGELAND_CLI_NET_COMMANDS(X)
+#endif
 // clang-format on
 
 namespace edgeland::cli {

@@ -24,6 +24,11 @@ void require_config(const Box64& world, const LandscapeConfig& c) {
   if (c.grid_depth < -1 || c.grid_depth > kMaxGridDepth) refuse(Setting::kGridDepth);
   if (c.tree != TreeKind::kQuadtree && c.tree != TreeKind::kKdTree) refuse(Setting::kTree);
   if (c.grid_depth > max_grid_depth(world, c)) refuse(Setting::kGridDepthBeyondCells);
+  if (c.region_depth < -1 || c.region_depth > kMaxGridDepth ||
+      c.region_depth > max_grid_depth(world, c) ||
+      (c.grid_depth >= 0 && c.region_depth > c.grid_depth))
+    refuse(Setting::kRegionDepth);
+  if (c.region_ids && c.region_depth < 0) refuse(Setting::kRegionIds);
 }
 
 bool can_split(const Box64& box, const LandscapeConfig& config) noexcept {

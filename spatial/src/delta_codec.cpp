@@ -2,8 +2,8 @@
 // payload. The reader bounds every count by the bytes left before allocating for it.
 #include <string>
 
-#include "byte_codec.hpp"
 #include "delta_format.hpp"
+#include "edgeland/spatial/byte_codec.hpp"
 #include "edgeland/spatial/delta.hpp"
 #include "edit_form.hpp"
 #include "save_format.hpp"
@@ -12,8 +12,6 @@ namespace edgeland {
 namespace {
 
 namespace format = detail::delta_format;
-using detail::ByteReader;
-using detail::ByteWriter;
 using Kind = Edit::Kind;
 
 // --- writing -----------------------------------------------------------------------------------
@@ -304,7 +302,7 @@ std::string encode_delta(const Delta& d) {
 Delta decode_delta(std::string_view bytes) {
   try {
     return DeltaReader(bytes).read();
-  } catch (const detail::ReadFailure& failure) {
+  } catch (const ReadFailure& failure) {
     throw DeltaError(failure.what, failure.offset);
   }
 }

@@ -5,11 +5,13 @@
 #include "edit.hpp"
 
 #include <algorithm>
+#include <limits>
 
 #include "cell_split.hpp"
 #include "changes.hpp"
 #include "check.hpp"
 #include "ids.hpp"
+#include "regions.hpp"
 #include "shape_cut.hpp"
 #include "split_content.hpp"
 
@@ -31,7 +33,10 @@ std::size_t vertices_of(const ValidSet& s) {
 }  // namespace
 
 EditBuilder::EditBuilder(const LandscapeState& state, const EditTable& table)
-    : s_(state), table_(table), next_id_(state.next_id) {}
+    : s_(state),
+      table_(table),
+      next_id_(state.next_id),
+      id_end_(std::numeric_limits<PolygonId>::max()) {}
 
 // Steps 1 and 2-7 of the README: the shape's size against the limits, the new tree, its limits,
 // what changed (checked in checked mode), and the next state.
@@ -74,7 +79,9 @@ NodePtr EditBuilder::new_root(const ValidSet& shape) {
   reach_ = Reach{&shape, bounding_box(shape.polygons()).value_or(Box64{}), std::nullopt};
   if (shape.polygons().empty() || !s_.world.overlaps_open(reach_.box)) return s_.root;
   try {
-    reach_.cut = cut_shape_to_cells(s_.root, shape, reach_.box, clip_options());
+    // With regions, each region cuts the shape to its own cells (rebuild_region).
+    if (!regions_on(s_.config))
+      reach_.cut = cut_shape_to_cells(s_.root, shape, reach_.box, clip_options());
   } catch (const InternalError& e) {
     throw EditFailure{std::string(e.what()) + "\n  subject = " + e.subject_wkt +
                       "\n  clip = " + e.clip_wkt};
@@ -187,7 +194,10 @@ EditBuilder::Draft EditBuilder::merge_if_small(const NodePtr& old, std::vector<D
   Draft inner = Draft::inner(old->box, old->depth, std::move(children));
   const bool all_cells = std::all_of(inner.children.begin(), inner.children.end(),
                                      [](const Draft& c) { return c.is_cell(); });
-  if (s_.config.grid_depth >= 0 || inner.vertices > s_.config.merge_below || !all_cells)
+  // Never above the region depth: regions stay nodes of their own.
+  const bool above_regions = static_cast<int>(old->depth) < s_.config.region_depth;
+  if (s_.config.grid_depth >= 0 || inner.vertices > s_.config.merge_below || !all_cells ||
+      above_regions)
     return inner;
   PolygonSet all;
   std::vector<RegionLabel> labels;
@@ -205,6 +215,26 @@ EditBuilder::Draft EditBuilder::merge_if_small(const NodePtr& old, std::vector<D
 
 EditBuilder::Draft EditBuilder::rebuild(const NodePtr& node) {
   if (!node->box.overlaps_open(reach_.box)) return Draft::keep(node);
+  if (node->is_stub()) return unloaded(node);
+  if (is_region(s_.config, node->depth)) return rebuild_region(node);
+  return rebuild_loaded(node);
+}
+
+EditBuilder::Draft EditBuilder::unloaded(const NodePtr& stub) const {
+  if (s_.unloaded != UnloadedRegions::kSkip) require_loaded(*stub);
+  return Draft::keep(stub);
+}
+
+EditBuilder::Draft EditBuilder::rebuild_region(const NodePtr& region) {
+  // A cut handed in whole (build(ShapeCut, ...): Landscape::remove) already keeps to cells.
+  if (reach_.cut) return rebuild_loaded(region);
+  reach_.cut = cut_shape_to_cells(region, *reach_.shape, reach_.box, clip_options());
+  Draft draft = rebuild_loaded(region);
+  reach_.cut.reset();
+  return draft;
+}
+
+EditBuilder::Draft EditBuilder::rebuild_loaded(const NodePtr& node) {
   if (node->is_cell()) return edit_cell(node);
   std::vector<Draft> children(node->child_count);
   bool changed = false;
@@ -221,22 +251,43 @@ EditBuilder::Draft EditBuilder::rebuild(const NodePtr& node) {
 // keeps its id however the cells around it split or merged. Fresh ids go out in tree order.
 NodePtr EditBuilder::finish(Draft& draft, const NodePtr& old) {
   if (draft.kept) return draft.kept;
+  if (s_.config.region_ids && is_region(s_.config, old->depth)) return finish_region(draft, old);
+  return finish_node(draft, old);
+}
+
+NodePtr EditBuilder::finish_node(Draft& draft, const NodePtr& old) {
   if (old->is_cell() || draft.is_cell()) return finish_within(draft, IdSource(old));
   std::vector<NodePtr> children;
   for (std::size_t i = 0; i < draft.children.size(); ++i)
     children.push_back(finish(draft.children[i], old->children[i]));
-  return make_inner(draft.box, draft.depth, children);
+  return make_inner(draft.box, draft.depth, children, counter_at(draft.depth));
+}
+
+NodePtr EditBuilder::finish_region(Draft& draft, const NodePtr& old) {
+  const PolygonId saved = next_id_, saved_end = id_end_;
+  next_id_ = old->region_next;
+  id_end_ = region_id_end(region_of_id(old->region_next));
+  NodePtr node = finish_node(draft, old);
+  next_id_ = saved;
+  id_end_ = saved_end;
+  return node;
+}
+
+// The counter a node made at this depth keeps: the region's, at the region depth.
+PolygonId EditBuilder::counter_at(std::uint32_t depth) const {
+  return s_.config.region_ids && is_region(s_.config, depth) ? next_id_ : 0;
 }
 
 // A draft lying within the old cells of `previous`, with its ids.
 NodePtr EditBuilder::finish_within(Draft& draft, const IdSource& previous) {
   if (draft.is_cell()) {
-    std::vector<PolygonId> ids = match_ids(previous, draft.content, next_id_);
-    return make_cell(draft.box, draft.depth, std::move(draft.content), std::move(ids));
+    std::vector<PolygonId> ids = match_ids(previous, draft.content, next_id_, id_end_);
+    return make_cell(draft.box, draft.depth, std::move(draft.content), std::move(ids),
+                     counter_at(draft.depth));
   }
   std::vector<NodePtr> children;
   for (Draft& c : draft.children) children.push_back(finish_within(c, previous));
-  return make_inner(draft.box, draft.depth, children);
+  return make_inner(draft.box, draft.depth, children, counter_at(draft.depth));
 }
 
 }  // namespace edgeland::detail

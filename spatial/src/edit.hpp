@@ -91,6 +91,11 @@ class EditBuilder {
   EditResult result(NodePtr root);
   void require_shape_size(std::size_t vertices) const;
   Draft rebuild(const NodePtr& node);
+  Draft rebuild_loaded(const NodePtr& node);
+  // A region (LandscapeConfig::region_depth): the shape cut to its cells alone, so its result
+  // depends on nothing outside it. An unloaded one is refused or kept, as the policy says.
+  Draft rebuild_region(const NodePtr& region);
+  Draft unloaded(const NodePtr& stub) const;
   Draft edit_cell(const NodePtr& cell);
   // What of the shape a cell's overlay takes: its pieces when the shape was cut to the cells
   // (shape_cut.hpp), else the whole shape.
@@ -98,7 +103,11 @@ class EditBuilder {
   Draft split_if_needed(Draft cell);
   Draft merge_if_small(const NodePtr& old, std::vector<Draft> children);
   NodePtr finish(Draft& draft, const NodePtr& old);
+  NodePtr finish_node(Draft& draft, const NodePtr& old);
   NodePtr finish_within(Draft& draft, const IdSource& previous);
+  // A region with its own ids takes fresh ones from its counter, which its node keeps.
+  NodePtr finish_region(Draft& draft, const NodePtr& old);
+  PolygonId counter_at(std::uint32_t depth) const;
   LandscapeState next_state(NodePtr root, const ChangeSet& changes) const;
   ClipOptions clip_options() const { return ClipOptions{.checked = s_.checked}; }
   // Counts the vertices a new cell adds over what it replaces (and the cells a split adds), and
@@ -111,6 +120,7 @@ class EditBuilder {
   const EditTable& table_;
   Reach reach_;
   PolygonId next_id_;
+  PolygonId id_end_;  // the end of the id space next_id_ counts in
   std::size_t growth_ = 0;
   std::size_t cell_growth_ = 0;
 };

@@ -2,6 +2,7 @@
 // the data it keeps.
 #include "edgeland/spatial/errors.hpp"
 
+#include <algorithm>
 #include <string>
 #include <utility>
 
@@ -36,6 +37,13 @@ std::string config_problem(InvalidConfig::Setting setting, const Box64& w,
              " lets the " + box + " split (at most " + n(max_grid_depth(w, c)) + ")";
     case Setting::kTree:
       return "unknown tree kind " + n(static_cast<int>(c.tree));
+    case Setting::kRegionDepth:
+      return "region_depth " + n(c.region_depth) + " outside -1.." +
+             n(std::min({detail::kMaxGridDepth, max_grid_depth(w, c),
+                         c.grid_depth >= 0 ? c.grid_depth : detail::kMaxGridDepth})) +
+             " for the " + box;
+    case Setting::kRegionIds:
+      return "region_ids without a region_depth";
   }
   return "unusable configuration";
 }
@@ -52,6 +60,35 @@ const char* limit_name(LimitExceeded::Limit limit) {
       return "polygon id";
   }
   return "unknown";  // not reached: every limit is named above
+}
+
+const char* field_name(DeltaMismatch::Field field) {
+  switch (field) {
+    case DeltaMismatch::Field::kWorld:
+      return "world hash";
+    case DeltaMismatch::Field::kAlgorithm:
+      return "algorithm version";
+    case DeltaMismatch::Field::kBase:
+      return "base hash";
+    case DeltaMismatch::Field::kResult:
+      return "result hash";
+    case DeltaMismatch::Field::kNodeHash:
+      return "patched node hash";
+  }
+  return "field";  // not reached: every field is named above
+}
+
+std::string hex(std::uint64_t v) {
+  static const char digits[] = "0123456789abcdef";
+  std::string s(16, '0');
+  for (int i = 15; i >= 0; --i, v >>= 4) s[static_cast<std::size_t>(i)] = digits[v & 15];
+  return s;
+}
+
+std::string path_text(const TreePath& path) {
+  std::string s = "{";
+  for (std::size_t i = 0; i < path.size(); ++i) s += (i ? " " : "") + std::to_string(path[i]);
+  return s + "}";
 }
 
 }  // namespace
@@ -80,6 +117,26 @@ InvalidMaterial::InvalidMaterial(std::int64_t n)
     : LandscapeError("material " + std::to_string(n) + " outside 0..255"), number(n) {}
 
 void detail::throw_invalid_material(std::int64_t number) { throw InvalidMaterial(number); }
+
+DeltaError::DeltaError(const std::string& what, std::size_t at)
+    : LandscapeError("cannot read delta at byte " + std::to_string(at) + ": " + what), offset(at) {}
+
+DeltaMismatch::DeltaMismatch(Field f, std::uint64_t e, std::uint64_t a)
+    : LandscapeError(std::string("delta does not fit: ") + field_name(f) + " " + hex(e) +
+                     ", the landscape's " + hex(a)),
+      field(f),
+      expected(e),
+      actual(a) {}
+
+RegionNotLoaded::RegionNotLoaded(TreePath p, const Box64& b)
+    : LandscapeError("region " + path_text(p) + " (" + std::to_string(b.min.x) + " " +
+                     std::to_string(b.min.y) + ", " + std::to_string(b.max.x) + " " +
+                     std::to_string(b.max.y) + ") is not loaded"),
+      path(std::move(p)),
+      box(b) {}
+
+InvalidPath::InvalidPath(TreePath p)
+    : LandscapeError("tree path " + path_text(p) + " names no node"), path(std::move(p)) {}
 
 UnknownPolygon::UnknownPolygon(PolygonId i, const Box64& c)
     : LandscapeError("polygon " + std::to_string(i) + " is not in the cell (" +

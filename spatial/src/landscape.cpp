@@ -7,6 +7,7 @@
 #include "edgeland/spatial/log_format.hpp"
 #include "edit.hpp"
 #include "edit_log.hpp"
+#include "regions.hpp"
 #include "state_hash.hpp"
 
 namespace edgeland {
@@ -21,26 +22,58 @@ ValidSet shape_of(const PolygonSet& shape) {
   return ValidSet(shape, Operand::kClip);
 }
 
-// The grid of thesis 4.4: the world cut to `depth` levels at once (one arrangement per level).
-// `cells` counts the cells made, against the limit.
-detail::NodePtr grid(const Box64& box, std::uint32_t depth, int grid_depth, LabeledSet content,
-                     const LandscapeConfig& config, const LandscapeLimits& limits,
-                     PolygonId& next_id, std::size_t& cells) {
-  if (static_cast<int>(depth) >= grid_depth || !detail::can_split(box, config)) {
-    if (++cells > limits.max_cells)
-      throw LimitExceeded(LimitExceeded::Limit::kCells, limits.max_cells, cells);
-    std::vector<PolygonId> ids(content.labels.size());
-    for (PolygonId& id : ids) id = next_id++;
-    return detail::make_cell(box, depth, std::move(content), std::move(ids));
+// The grid of thesis 4.4 (and the tree down to the region depth): the world cut to `depth`
+// levels at once (one arrangement per level). `cells` counts the cells made, against the limit.
+class GridBuilder {
+ public:
+  GridBuilder(const LandscapeConfig& config, const LandscapeLimits& limits, PolygonId& next_id)
+      : config_(config), limits_(limits), next_id_(next_id) {}
+
+  detail::NodePtr build(const Box64& box, LabeledSet content) {
+    const int depth = std::max({config_.grid_depth, config_.region_depth, 0});
+    return node(box, 0, depth, std::move(content), 0);
   }
-  const std::vector<Box64> boxes = detail::split_boxes(box, config);
-  std::vector<LabeledSet> parts = cut_to_windows(content.set, content.labels, boxes);
-  std::vector<detail::NodePtr> children;
-  for (std::size_t i = 0; i < boxes.size(); ++i)
-    children.push_back(
-        grid(boxes[i], depth + 1, grid_depth, std::move(parts[i]), config, limits, next_id, cells));
-  return detail::make_inner(box, depth, children);
-}
+
+ private:
+  // `index`: the node's path as base-4 digits (the region's index at the region depth).
+  detail::NodePtr node(const Box64& box, std::uint32_t depth, int grid_depth, LabeledSet content,
+                       std::uint64_t index) {
+    if (config_.region_ids && detail::is_region(config_, depth)) {
+      PolygonId counter = detail::region_first_id(index);
+      std::swap(counter, next_id_);
+      detail::NodePtr region = node_within(box, depth, grid_depth, std::move(content), index);
+      std::swap(counter, next_id_);
+      return region;
+    }
+    return node_within(box, depth, grid_depth, std::move(content), index);
+  }
+
+  detail::NodePtr node_within(const Box64& box, std::uint32_t depth, int grid_depth,
+                              LabeledSet content, std::uint64_t index) {
+    if (static_cast<int>(depth) >= grid_depth || !detail::can_split(box, config_)) {
+      if (++cells_ > limits_.max_cells)
+        throw LimitExceeded(LimitExceeded::Limit::kCells, limits_.max_cells, cells_);
+      std::vector<PolygonId> ids(content.labels.size());
+      for (PolygonId& id : ids) id = next_id_++;
+      return detail::make_cell(box, depth, std::move(content), std::move(ids), counter_at(depth));
+    }
+    const std::vector<Box64> boxes = detail::split_boxes(box, config_);
+    std::vector<LabeledSet> parts = cut_to_windows(content.set, content.labels, boxes);
+    std::vector<detail::NodePtr> children;
+    for (std::size_t i = 0; i < boxes.size(); ++i)
+      children.push_back(node(boxes[i], depth + 1, grid_depth, std::move(parts[i]), index * 4 + i));
+    return detail::make_inner(box, depth, children, counter_at(depth));
+  }
+
+  PolygonId counter_at(std::uint32_t depth) const {
+    return config_.region_ids && detail::is_region(config_, depth) ? next_id_ : 0;
+  }
+
+  const LandscapeConfig& config_;
+  const LandscapeLimits& limits_;
+  PolygonId& next_id_;
+  std::size_t cells_ = 0;
+};
 
 }  // namespace
 
@@ -60,9 +93,7 @@ Landscape::Landscape(const Box64& world, Material fill, const LandscapeConfig& c
   s_.limits = limits;
   s_.initial_fill = fill;
   s_.areas = std::move(areas);
-  std::size_t cells = 0;
-  s_.root = grid(world, 0, std::max(config.grid_depth, 0), std::move(content), config, limits,
-                 s_.next_id, cells);
+  s_.root = GridBuilder(config, limits, s_.next_id).build(world, std::move(content));
 }
 
 ChangeSet Landscape::carve(const ValidSet& shape) {
@@ -131,15 +162,8 @@ Int128 Landscape::twice_area(Material m) const {
 
 std::uint64_t Landscape::state_hash() const noexcept {
   detail::StateHash h;
-  const LandscapeConfig& c = s_.config;
-  h.add(s_.world)
-      .add(static_cast<std::uint64_t>(c.tree))
-      .add(static_cast<std::uint64_t>(c.edge_cap))
-      .add(static_cast<std::uint64_t>(c.merge_below))
-      .add(static_cast<std::uint64_t>(c.min_cell_size))
-      .add(static_cast<std::uint64_t>(static_cast<std::int64_t>(c.grid_depth)))
-      .add(static_cast<std::uint64_t>(s_.next_id))
-      .add(s_.root->hash);
+  detail::add_world(h, s_.world, s_.config);
+  h.add(static_cast<std::uint64_t>(s_.next_id)).add(s_.root->hash);
   return h.value();
 }
 

@@ -12,6 +12,7 @@ namespace {
 TEST(LandscapeDeterminism, PinnedSequenceGivesThePinnedHash) {
   EXPECT_EQ(pinned::run({}).state_hash(), pinned::kQuadtreeHash);
   EXPECT_EQ(pinned::run(pinned::kd_tree_config()).state_hash(), pinned::kKdTreeHash);
+  EXPECT_EQ(pinned::run(pinned::regions_config()).state_hash(), pinned::kRegionsHash);
 }
 
 TEST(LandscapeDeterminism, PinsBelongToTheAlgorithmVersion) {

@@ -64,12 +64,23 @@ inline LandscapeConfig kd_tree_config() {
   return c;
 }
 
+// Regions with their own ids (spatial/README.md, "Regions"): the same edits, each region's ids
+// and cut of its own.
+inline LandscapeConfig regions_config() {
+  LandscapeConfig c;
+  c.region_depth = 3;
+  c.region_ids = true;
+  return c;
+}
+
 // Pinned on gcc 12 -O2; every other build must agree. Last changed when ids began to be given
 // once per edit, after its splits and merges (spatial/README.md, "Ids"): the same cells and
 // polygons as before, but no fresh id goes to a cell the edit replaced again, so ids and the
 // next id differ.
 inline constexpr std::uint64_t kQuadtreeHash = 0xeaeb4f50cafef240ull;
 inline constexpr std::uint64_t kKdTreeHash = 0x88c6cb00a6c83cd3ull;
+// Pinned when regions came (issue 37); the two above are the same with them off.
+inline constexpr std::uint64_t kRegionsHash = 0x1cadce143d958fc8ull;
 // The algorithm version (delta.hpp) these hashes belong to: a change of the pins is a change of
 // how edits round, so kAlgorithmVersion goes up with it (peers of different versions must not
 // exchange COMMAND deltas). LandscapeDeterminism.PinsBelongToTheAlgorithmVersion checks both

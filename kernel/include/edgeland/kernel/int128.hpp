@@ -21,6 +21,18 @@ using UInt128 = unsigned __int128;
 // Decimal text of an Int128 (neither iostreams nor std::to_string know the type).
 EDGELAND_EXPORT std::string to_string(Int128 value);
 
+// An Int128's two's-complement bits as two 64-bit words, low first, and back: how a binary format
+// stores one (spatial's region records). The bits as they are: no arithmetic, no overflow.
+constexpr std::uint64_t int128_low(Int128 value) noexcept {
+  return static_cast<std::uint64_t>(static_cast<UInt128>(value));
+}
+constexpr std::uint64_t int128_high(Int128 value) noexcept {
+  return static_cast<std::uint64_t>(static_cast<UInt128>(value) >> 64);
+}
+constexpr Int128 int128_from_words(std::uint64_t low, std::uint64_t high) noexcept {
+  return static_cast<Int128>(static_cast<UInt128>(high) << 64 | low);
+}
+
 // |value| as an unsigned 128-bit number; defined for every value including the minimum.
 constexpr UInt128 unsigned_abs(Int128 value) noexcept {
   return value < 0 ? UInt128{0} - static_cast<UInt128>(value) : static_cast<UInt128>(value);

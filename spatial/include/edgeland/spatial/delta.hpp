@@ -137,6 +137,8 @@ class EDGELAND_EXPORT DrawMirror {
 class EDGELAND_EXPORT DivergenceSearch {
  public:
   explicit DivergenceSearch(TreePath start = {});
+  // Several starts (regions a client watches); none may lie within another.
+  explicit DivergenceSearch(std::vector<TreePath> starts);
   const std::vector<TreePath>& questions() const noexcept { return questions_; }
   // The remote digests of questions(), in order (nullopt: no such node there), compared with
   // `local` as it is now. Throws std::invalid_argument when the count differs.

@@ -225,6 +225,53 @@ class EDGELAND_EXPORT Landscape {
   // DrawMirror holding that part of the world has as its digest. Throws InvalidPath. O(subtree).
   std::uint64_t drawn_digest(const TreePath& path = {}) const;
 
+  // --- regions (LandscapeConfig::region_depth; spatial/README.md "Regions") ---------------
+  // A region is a node at the region depth. An unloaded region is a stub that keeps its hash,
+  // areas and counts: state_hash(), twice_area() and stats() stay exact, and an edit or a query
+  // that reaches it throws RegionNotLoaded (an edit changes nothing then), as save() does.
+  //
+  // Every region's path, in tree order (none without regions). O(regions).
+  std::vector<TreePath> region_paths() const;
+  // The regions whose box interior meets `box`: those an edit whose shape has this bounding box
+  // reaches. O(regions met x depth).
+  std::vector<TreePath> regions_meeting(const Box64& box) const;
+  // A region's hash, counts, areas and ids, loaded or not. Throws InvalidPath (no region there).
+  // O(region) when loaded.
+  RegionSummary region_summary(const TreePath& path) const;
+  bool region_loaded(const TreePath& path) const;
+  // The memory of a loaded region's nodes (stats().bytes of it); a stub's own for an unloaded
+  // one. Throws InvalidPath. O(region).
+  std::size_t region_bytes(const TreePath& path) const;
+  // Writes the region as a region record (its summary and its subtree, with a checksum).
+  // Throws InvalidPath, RegionNotLoaded. O(region).
+  void save_region(const TreePath& path, std::ostream& out) const;
+  // Writes the region's summary alone, as a record without its content (loaded or not): what
+  // another world needs to hold it as a stub (from_regions with read_region_summary). Throws
+  // InvalidPath. O(region) when loaded.
+  void save_region_summary(const TreePath& path, std::ostream& out) const;
+  // Replaces the region by its stub; nothing else changes (not the state hash). Throws
+  // InvalidPath. O(region) (its summary).
+  void unload_region(const TreePath& path);
+  // Reads a region record into its stub: the record must be of this world, at a stub whose
+  // hash and summary it has, and is read as load() reads a file (every node checked, counts
+  // against the limits). Throws LoadError (offset within the record) or LimitExceeded, and then
+  // changes nothing. O(region).
+  void load_region(std::istream& in);
+  // What an edit does where it reaches an unloaded region: refuse (the default) or skip.
+  void set_unloaded_policy(UnloadedRegions policy) noexcept { s_.unloaded = policy; }
+  UnloadedRegions unloaded_policy() const noexcept { return s_.unloaded; }
+  // A world of stubs only, from the summaries of its regions (each region exactly once, of this
+  // world): what a store opens before it loads any region. `next_id` is the landscape's next id
+  // (1 with region_ids). Throws InvalidConfig (regions off or a bad configuration), LoadError
+  // (a region missing, twice, of another world, or with a counter outside its id space; offset 0)
+  // or LimitExceeded.
+  static Landscape from_regions(const Box64& world, const LandscapeConfig& config,
+                                PolygonId next_id, const std::vector<RegionSummary>& regions,
+                                const LandscapeLimits& limits = {});
+  // The summary at the head of a region record (or of a summary record), its checksum checked.
+  // Throws LoadError.
+  static RegionSummary read_region_summary(std::istream& in);
+
  private:
   explicit Landscape(detail::LandscapeState state) : s_(std::move(state)) {}
   // The one edit driver (spatial/README.md, "An edit"): builds the next state from s_ with the

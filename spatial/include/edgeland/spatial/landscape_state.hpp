@@ -30,7 +30,8 @@ struct LandscapeState {
   Material initial_fill = kEmpty;
   bool checked = false;
   bool logging = false;
-  std::shared_ptr<const LogLine> log;  // the last line recorded
+  UnloadedRegions unloaded = UnloadedRegions::kRefuse;  // what edits do at a stub
+  std::shared_ptr<const LogLine> log;                   // the last line recorded
 };
 
 }  // namespace edgeland::detail

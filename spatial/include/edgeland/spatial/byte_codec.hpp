@@ -1,16 +1,17 @@
 #pragma once
-// The bytes of the landscape's binary formats (save files, deltas, region records): fixed-width
-// little-endian integers, LEB128 varints and zigzag varints, written by ByteWriter and read by
-// ByteReader. The reader is for untrusted bytes: it never reads past its end, refuses a varint
-// longer than 64 bits, and bounds every count by the bytes left before anything is allocated
-// for it. A refusal is a ReadFailure (what and where), which each format turns into its own
-// typed error (LoadError, DeltaError).
+// The bytes of the landscape's binary formats (save files, deltas, region records) and of the
+// messages that carry them (net/'s protocol): fixed-width little-endian integers, LEB128 varints
+// and zigzag varints, written by ByteWriter and read by ByteReader. The reader is for untrusted
+// bytes: it never reads past its end, refuses a varint longer than 64 bits, and bounds every
+// count by the bytes left before anything is allocated for it. A refusal is a ReadFailure (what
+// and where), which each format turns into its own typed error (LoadError, DeltaError,
+// net::ProtocolError). Header-only plain C++20.
 #include <cstddef>
 #include <cstdint>
 #include <string>
 #include <string_view>
 
-namespace edgeland::detail {
+namespace edgeland {
 
 class ByteWriter {
  public:
@@ -98,4 +99,4 @@ class ByteReader {
   std::size_t at_, end_;
 };
 
-}  // namespace edgeland::detail
+}  // namespace edgeland
