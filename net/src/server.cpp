@@ -285,8 +285,9 @@ void Server::broadcast(std::uint32_t origin, std::uint32_t number, const Landsca
       continue;
     }
     // The origin hears of its own edit (applied to its stubs, that changes nothing there).
+    const Client& client = *c;  // clang 14 cannot capture a structured binding
     if (c->id != origin && !std::any_of(logged.regions.begin(), logged.regions.end(),
-                                        [&](std::uint32_t r) { return c->watches(r); }))
+                                        [&](std::uint32_t r) { return client.watches(r); }))
       continue;
     host_->send(peer, logged.message);
     ++stats_.commands_sent;

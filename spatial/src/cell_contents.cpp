@@ -4,6 +4,7 @@
 
 #include "edgeland/spatial/landscape.hpp"
 #include "node.hpp"
+#include "regions.hpp"
 
 namespace edgeland {
 
@@ -22,11 +23,14 @@ std::optional<CellContents> Landscape::cell(const Box64& box) const {
   const detail::NodePtr* n = &s_.root;
   while (!((*n)->box == box)) {
     const detail::Node& node = **n;
-    if (node.is_cell() || !node.box.contains(box.min)) return std::nullopt;
+    if (!node.box.contains(box.min)) return std::nullopt;
+    detail::require_loaded(node);
+    if (node.is_cell()) return std::nullopt;
     const detail::Node& child = node.child_at(box.min);
     n = &*std::find_if(node.children.begin(), node.children.end(),
                        [&](const detail::NodePtr& c) { return c.get() == &child; });
   }
+  detail::require_loaded(**n);
   if (!(*n)->is_cell()) return std::nullopt;
   return CellContents(*n);
 }

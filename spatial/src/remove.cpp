@@ -7,6 +7,7 @@
 #include "edgeland/spatial/landscape.hpp"
 #include "edgeland/spatial/log_format.hpp"
 #include "edit.hpp"
+#include "regions.hpp"
 
 namespace edgeland {
 namespace {
@@ -14,23 +15,28 @@ namespace {
 using detail::Node;
 using detail::NodePtr;
 
-// The cell with exactly this box, or null.
+// Where the descent to the cell with exactly this box stops: that cell, the stub of an unloaded
+// region on the way, or null (no cell has this box).
 const Node* cell_with_box(const NodePtr& root, const Box64& box) {
   const Node* n = root.get();
-  while (!(n->box == box)) {
+  while (!(n->box == box) && !n->is_stub()) {
     if (n->is_cell() || !n->box.contains(box.min)) return nullptr;
     n = &n->child_at(box.min);
   }
-  return n->is_cell() ? n : nullptr;
+  return n->is_cell() || n->is_stub() ? n : nullptr;
 }
 
-// Each named polygon's index in its cell, per cell (ascending, once each).
+// Each named polygon's index in its cell, per cell (ascending, once each). A name in an unloaded
+// region is refused (RegionNotLoaded), or left out under UnloadedRegions::kSkip as an edit
+// leaves a stub.
 std::unordered_map<const Node*, std::vector<std::size_t>> locate(
-    const NodePtr& root, std::span<const PolygonRef> polygons) {
+    const NodePtr& root, std::span<const PolygonRef> polygons, UnloadedRegions unloaded) {
   std::unordered_map<const Node*, std::vector<std::size_t>> out;
   for (const PolygonRef& p : polygons) {
     const Node* cell = cell_with_box(root, p.cell);
     if (cell == nullptr) throw UnknownPolygon(p.id, p.cell);
+    if (cell->is_stub() && unloaded == UnloadedRegions::kSkip) continue;
+    detail::require_loaded(*cell);
     const auto at = std::find(cell->ids.begin(), cell->ids.end(), p.id);
     if (at == cell->ids.end()) throw UnknownPolygon(p.id, p.cell);
     out[cell].push_back(static_cast<std::size_t>(at - cell->ids.begin()));
@@ -45,7 +51,7 @@ std::unordered_map<const Node*, std::vector<std::size_t>> locate(
 }  // namespace
 
 ChangeSet Landscape::remove(std::span<const PolygonRef> polygons) {
-  const auto members = locate(s_.root, polygons);
+  const auto members = locate(s_.root, polygons, s_.unloaded);
   detail::ShapeCut cut;
   Box64 box;
   std::size_t vertices = 0;

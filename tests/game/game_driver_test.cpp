@@ -172,6 +172,37 @@ RC_GTEST_PROP(GameDriverProperty, NoIslandWaitsLongerThanItsLimit, ()) {
   RC_ASSERT(find_islands(game.landscape(), options.surface.materials).empty());
 }
 
+// A networked game (net/README.md, "Debris"): the server's driver detaches debris, and a
+// client whose driver never does (debris off) reaches the server's state by applying the frame's
+// edits and then the carve of every debris polygon of the update, the COMMAND the server sends.
+RC_GTEST_PROP(GameDriverProperty, ADetachmentIsTheCarveOfItsDebrisOnAClientWithoutDebris, ()) {
+  const LandscapeCase c = *landscape_case(12);
+  const GameOptions options = random_options();
+  GameOptions client_options = options;
+  client_options.debris = false;
+  GameDriver server(Landscape(c.world, c.fill, c.config), options);
+  GameDriver client(Landscape(c.world, c.fill, c.config), client_options);
+  const auto follow = [&](const GameUpdate& u) {
+    PolygonSet carved;
+    for (const Debris& d : u.debris)
+      for (const Debris::Region& r : d.regions)
+        carved.insert(carved.end(), r.polygons.begin(), r.polygons.end());
+    if (!carved.empty()) client.apply(Edit::carve(ValidSet(std::move(carved))));
+    RC_ASSERT(client.landscape().state_hash() == server.landscape().state_hash());
+  };
+  bool debris = false;
+  const GameUpdate first = server.apply(std::span<const Edit>{});  // the islands it starts with
+  follow(first);
+  debris = !first.debris.empty();
+  for (const std::vector<Edit>& frame : frames_of(c.edits)) {
+    const GameUpdate u = server.apply(frame);
+    client.apply(frame);
+    follow(u);
+    debris = debris || !u.debris.empty();
+  }
+  RC_CLASSIFY(debris, "debris detached");
+}
+
 // Each cell an update replaced is read and cut once (stage 1), whatever it feeds.
 RC_GTEST_PROP(GameDriverProperty, OneBoundaryPassPerChangedCell, ()) {
   const LandscapeCase c = *landscape_case(10);

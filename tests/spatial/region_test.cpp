@@ -178,6 +178,64 @@ TEST(Regions, AnEditOrAQueryThatReachesAStubIsRefusedAndChangesNothing) {
   EXPECT_TRUE(l.check().ok());
 }
 
+// Every polygon of the world with a bit of `pick` (by its index mod 64) set, named as remove takes
+// them, and their rings.
+std::vector<PolygonView> picked(const Landscape& l, std::uint64_t pick) {
+  std::vector<PolygonView> out;
+  std::uint64_t k = 0;
+  l.polygons_in(l.world(), [&](const PolygonView& v) {
+    if ((pick >> (k++ % 64)) & 1u) out.push_back(v);
+    return true;
+  });
+  return out;
+}
+
+std::vector<PolygonRef> refs_of(const std::vector<PolygonView>& views) {
+  std::vector<PolygonRef> out;
+  for (const PolygonView& v : views) out.push_back({v.id, v.cell});
+  return out;
+}
+
+// Landscape::remove (what the game driver detaches debris with) on a world with regions: the
+// carve of the polygons' own region, region by region with their own ids, and a name in an
+// unloaded region refused, or left out under kSkip, as an edit treats a stub. Landscape::cell
+// refuses a box in an unloaded region as the queries do.
+TEST(Regions, RemoveIsTheCarveOfItsPolygonsAndStopsAtAStub) {
+  Landscape l = edited(region_config(3), 150);
+  const std::vector<PolygonView> views = picked(l, 0x9249249249249249u);  // every third
+  PolygonSet rings;
+  for (const PolygonView& v : views) rings.push_back(*v.polygon);
+  ASSERT_GT(l.regions_meeting(*bounding_box(rings)).size(), 20u);
+  Landscape carved = l;
+  const ChangeSet by_carve = carved.carve(ValidSet(rings));
+  Landscape removed = l;
+  const ChangeSet by_remove = removed.remove(refs_of(views));
+  EXPECT_EQ(removed.state_hash(), carved.state_hash());
+  EXPECT_EQ(by_remove.removed, by_carve.removed);
+  EXPECT_TRUE(removed.check().ok());
+
+  const TreePath gone = l.regions_meeting({{100, 100}, {101, 101}}).front();
+  Landscape partial = l;
+  partial.unload_region(gone);
+  const std::uint64_t hash = partial.state_hash();
+  EXPECT_THROW(partial.remove(refs_of(views)), RegionNotLoaded);
+  EXPECT_EQ(partial.state_hash(), hash);
+  const Box64 stub_box = partial.node_digest(gone)->box;
+  EXPECT_THROW((void)partial.cell(stub_box), RegionNotLoaded);
+  // Under kSkip the names in the stub are left out: every other region ends as the carve left it.
+  std::vector<PolygonView> elsewhere;
+  for (const PolygonView& v : views)
+    if (!stub_box.contains(v.cell)) elsewhere.push_back(v);
+  ASSERT_LT(elsewhere.size(), views.size());
+  partial.set_unloaded_policy(UnloadedRegions::kSkip);
+  partial.remove(refs_of(views));
+  for (const TreePath& path : l.region_paths()) {
+    if (path == gone) continue;
+    EXPECT_EQ(partial.node_digest(path)->hash, carved.node_digest(path)->hash);
+  }
+  EXPECT_EQ(partial.node_digest(gone)->hash, l.node_digest(gone)->hash);
+}
+
 TEST(Regions, ARegionSavedUnloadedAndLoadedIsTheSameRegion) {
   Landscape l = edited(region_config(3));
   const Landscape before = l;

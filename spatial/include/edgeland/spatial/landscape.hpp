@@ -120,7 +120,9 @@ class EDGELAND_EXPORT Landscape {
   // in the log. Its edges are the landscape's own, so it meets no crossing, rounds nothing and
   // leaves every other polygon's region as it was; no shape is validated (each cell's polygons
   // are a valid set). What a game detaching debris calls. Throws UnknownPolygon (nothing
-  // changed), LimitExceeded, LandscapeInternalError. O(depth per polygon + the cells' overlays).
+  // changed), LimitExceeded, LandscapeInternalError, and RegionNotLoaded for a polygon named in
+  // an unloaded region (under UnloadedRegions::kSkip such names are left out, as an edit leaves
+  // a stub). O(depth per polygon + the cells' overlays).
   ChangeSet remove(std::span<const PolygonRef> polygons);
 
   // --- queries -------------------------------------------------------------------------------
@@ -161,7 +163,8 @@ class EDGELAND_EXPORT Landscape {
   // in tree order; stop by returning false.
   void cells_in(const Box64& box, const std::function<bool(const CellView&)>& visit) const;
   // The cell whose box is exactly `box`, if the landscape has one. O(depth). (A box that is not a
-  // cell's, an inner node's included, gives nullopt: no error.)
+  // cell's, an inner node's included, gives nullopt: no error.) Throws RegionNotLoaded when the
+  // box lies in an unloaded region.
   std::optional<CellContents> cell(const Box64& box) const;
   // Twice the area of a material (exact), over the whole world (material 0: the empty area).
   Int128 twice_area(Material m) const;
