@@ -19,7 +19,8 @@ export class EdgelandError extends Error {
   /** The rule broken, the configuration setting or the limit (edgeland.h's EL_RULE_* ...). */
   readonly kind: number;
   readonly operand: number;
-  /** The polygon (input errors), the byte offset (LoadError), ...; null when none. */
+  /** The polygon (input errors), the byte offset (LoadError of a save; a replay's: the line),
+   * ...; null when none. */
   readonly index: number | null;
   /** The vertex or edge of an input error; null when none. */
   readonly vertex: number | null;
@@ -46,7 +47,7 @@ export class InvalidMaterial extends EdgelandError {}
 export class InvalidConfig extends EdgelandError {}
 /** A landscape limit (`kind`: which, `value` requested, `limit` the maximum). */
 export class LimitExceeded extends EdgelandError {}
-/** A save that cannot be read (`index`: the byte offset). */
+/** A save that cannot be read (`index`: the byte offset), or the line a replay stopped at. */
 export class LoadError extends EdgelandError {}
 /** The island changed since it was found (`index`: the first polygon id missing). */
 export class StaleIsland extends EdgelandError {}
@@ -149,6 +150,10 @@ export class Shape implements Disposable {
   static box(lo: XY, hi: XY): Shape;
   static rotatedBox(center: XY, halfWidth: number, halfHeight: number,
                     angle?: [number, number]): Shape;
+  /** Any polygons read with OGC semantics (el_shape_import): each polygon its exterior ring,
+   * then its holes, clockwise or self-intersecting as drawn; the shape is the valid hole-free
+   * pieces of the region they enclose (none for rings of no area). */
+  static import(polygons: XY[][][]): Shape;
   readonly polygons: PolygonList;
   dispose(): void;
 }
@@ -173,6 +178,9 @@ export class Landscape implements Disposable {
   raycast(from: XY, to: XY): Crossing | null;
   overlaps(region: BoxXY | ShapeLike): number[];
   polygonsIn(box?: BoxXY): Polygons;
+  /** The boxes of the cells (empty ones too) that meet the box (default: the world), 4 numbers
+   * each (x0, y0, x1, y1). */
+  cellsIn(box?: BoxXY): Int32Array;
   twiceArea(material: number): bigint;
   readonly world: BoxXY;
   readonly stats: LandscapeStats;
@@ -184,6 +192,22 @@ export class Landscape implements Disposable {
   readonly log: string;
   dispose(): void;
 }
+
+/** A replayed edit log (replayLog). */
+export interface Replay {
+  /** The replayed world, recording its own log; null when the log has no good world line. */
+  landscape: Landscape | null;
+  /** The edits applied. */
+  edits: number;
+  /** Why the replay stopped before the log's end (`index`: the line), or null. */
+  stopped: EdgelandError | null;
+  /** The JSON text `edgeland replay` prints for the log. */
+  report: string;
+}
+
+/** Replays a landscape edit log (Landscape.log's text) as `edgeland replay` does: the edits in
+ * order up to the first bad line or refused edit, those before it kept. */
+export function replayLog(text: string): Replay;
 
 // --- the game layer ---------------------------------------------------------------------------
 

@@ -113,12 +113,18 @@ function readError(p) {
   };
 }
 
-// Calls an el_* function whose last argument is an el_error*: throws its error on failure.
-function call(allocate, fn, ...args) {
+// Calls an el_* function whose last argument is an el_error*: its error, or null on success.
+function failure(allocate, fn, ...args) {
   const e = allocate(ERROR_SIZE);
   M._el_error_init(e);
   const status = fn(...args, e);
-  if (status !== 0) throw new (CLASSES[status] ?? EdgelandError)(status, readError(e));
+  return status === 0 ? null : new (CLASSES[status] ?? EdgelandError)(status, readError(e));
+}
+
+// The same, throwing the error.
+function call(allocate, fn, ...args) {
+  const error = failure(allocate, fn, ...args);
+  if (error) throw error;
 }
 
 // A new handle through an out-parameter.
@@ -242,6 +248,19 @@ function readBytes(allocate, h) {
 }
 
 // --- shapes -----------------------------------------------------------------------------------
+// Point lists ([[x, y], ...] each) as CSR in scratch memory: xy and offsets[0 .. lists.length].
+function csr(allocate, lists) {
+  const n = lists.reduce((sum, list) => sum + list.length, 0);
+  const xy = allocate(16 * n), offsets = allocate(4 * (lists.length + 1));
+  let k = 0;
+  dv().setUint32(offsets, 0, true);
+  lists.forEach((list, i) => {
+    for (const p of list) writePoint(xy + 16 * k++, p);
+    dv().setUint32(offsets + 4 * (i + 1), k, true);
+  });
+  return {xy, offsets};
+}
+
 // A polygon set validated once (strictly simple, counter-clockwise, hole-free, disjoint
 // interiors): new Shape([[[x, y], ...], ...]) or a builder. InvalidInput names the polygon and
 // vertex of a broken rule.
@@ -249,23 +268,24 @@ export class Shape extends Handle {
   constructor(polygons, pointer = 0) {
     if (!pointer) {
       pointer = scratch((allocate) => {
-        const n = polygons.reduce((sum, p) => sum + p.length, 0);
-        const xy = allocate(16 * n), offsets = allocate(4 * (polygons.length + 1));
-        let k = 0;
-        const d = dv();
-        d.setUint32(offsets, 0, true);
-        polygons.forEach((polygon, i) => {
-          for (const [x, y] of polygon) {
-            d.setBigInt64(xy + 16 * k, BigInt(x), true);
-            d.setBigInt64(xy + 16 * k + 8, BigInt(y), true);
-            ++k;
-          }
-          d.setUint32(offsets + 4 * (i + 1), k, true);
-        });
+        const {xy, offsets} = csr(allocate, polygons);
         return made(allocate, M._el_shape_create, xy, offsets, polygons.length);
       });
     }
     super(pointer, M._el_shape_destroy);
+  }
+  // Any polygons read with OGC semantics (el_shape_import): [[exterior, hole, ...], ...], each
+  // ring [[x, y], ...], clockwise or self-intersecting as drawn; the shape is the valid,
+  // hole-free pieces of the region they enclose (none for rings of no area).
+  static import(polygons) {
+    return scratch((a) => {
+      const {xy, offsets} = csr(a, polygons.flat(1));
+      const rings = a(4 * (polygons.length + 1));
+      let r = 0;
+      dv().setUint32(rings, 0, true);
+      polygons.forEach((polygon, i) => dv().setUint32(rings + 4 * (i + 1), (r += polygon.length), true));
+      return new Shape(null, made(a, M._el_shape_import, xy, offsets, rings, polygons.length));
+    });
   }
   static circle(center, radius) {
     return scratch((a) => new Shape(null, made(a, M._el_shape_circle, point(a, center), BigInt(radius))));
@@ -443,6 +463,16 @@ export class Landscape extends Handle {
       }
     });
   }
+  // The boxes of the cells (the tree's leaves, empty ones too) that meet the box (default: the
+  // world), x0, y0, x1, y1 each, as a change set's cells.
+  cellsIn(region = this.world) {
+    const cap = this.stats.cells;  // every cell of the world: enough for any box
+    return scratch((a) => {
+      const cells = a(32 * cap), needed = a(4);
+      call(a, M._el_landscape_cells_in, this.pointer, box(a, region), cells, cap, needed);
+      return int32s(view(BigInt64Array, cells, 4 * dv().getUint32(needed, true)));
+    });
+  }
   // Twice the area of a material, exact (a BigInt).
   twiceArea(material) {
     return scratch((a) => {
@@ -494,6 +524,32 @@ export class Landscape extends Handle {
   get log() {
     return scratch((a) => new TextDecoder().decode(readBytes(a, made(a, M._el_landscape_log, this.pointer))));
   }
+}
+
+// --- edit logs --------------------------------------------------------------------------------
+// Replays a landscape edit log (Landscape.log's text) as `edgeland replay` does (el_replay_log):
+// the edits in order up to the first bad line or refused edit, those before it kept. Returns
+// {landscape (recording its own log; null when the log has no good world line: dispose() it
+// otherwise), edits (applied), stopped (null, or the LoadError / InternalError that stopped it,
+// `index` its line), report (the JSON text `edgeland replay` prints)}.
+export function replayLog(text) {
+  const bytes = new TextEncoder().encode(text);
+  return scratch((a) => {
+    const data = a(bytes.length);
+    view(Uint8Array, data, bytes.length).set(bytes);
+    const h = made(a, M._el_replay_log, data, bytes.length);
+    try {
+      const stopped = failure(a, M._el_replay_stopped, h);
+      const report = new TextDecoder().decode(readBytes(a, made(a, M._el_replay_report, h)));
+      const out = a(4);
+      const noWorld = failure(a, M._el_replay_landscape, h, out);
+      if (noWorld && !(noWorld instanceof LoadError)) throw noWorld;
+      const landscape = noWorld ? null : new Landscape(null, 0, {}, dv().getUint32(out, true));
+      return {landscape, edits: M._el_replay_edits(h) >>> 0, stopped, report};
+    } finally {
+      M._el_replay_destroy(h);
+    }
+  });
 }
 
 // The C library's version as [major, minor, patch].

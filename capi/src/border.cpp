@@ -85,7 +85,9 @@ el_error describe_current() {
   try {
     throw;
   } catch (const BorderError& x) {
-    return base(x.status, x.what());
+    el_error e = base(x.status, x.what());
+    e.index = x.index;
+    return e;
   } catch (const std::bad_alloc& x) {
     return base(EL_OUT_OF_MEMORY, x.what());
   } catch (const CoordinateOutOfRange& x) {

@@ -3,6 +3,7 @@
 // through execute(), which catches everything and turns it into an el_status and, when the
 // caller asked for one, an el_error with the error's fields. Nothing else in capi/ catches.
 #include <cstddef>
+#include <cstdint>
 #include <cstring>
 #include <stdexcept>
 #include <string>
@@ -14,11 +15,14 @@
 namespace edgeland::capi {
 
 // An error of the border itself (a NULL argument, an index past the end, an unknown
-// struct_size, a buffer too small): a status without a C++ class behind it.
+// struct_size, a buffer too small), or one a result reports (why a replay stopped, and at which
+// line: `index`): a status without a C++ class behind it.
 class BorderError : public std::runtime_error {
  public:
-  BorderError(el_status code, const std::string& what) : std::runtime_error(what), status(code) {}
+  BorderError(el_status code, const std::string& what, std::uint64_t at = EL_NONE)
+      : std::runtime_error(what), status(code), index(at) {}
   el_status status;
+  std::uint64_t index;
 };
 
 // The status of the exception being handled, its fields written to *error (if not NULL).

@@ -13,6 +13,7 @@
 #include "edgeland/game/game_driver.hpp"
 #include "edgeland/game/islands.hpp"
 #include "edgeland/game/surface_tracker.hpp"
+#include "edgeland/io/landscape_replay.hpp"
 #include "edgeland/spatial/landscape.hpp"
 
 namespace edgeland::capi {
@@ -126,6 +127,11 @@ struct BytesHandle {
   std::string data;
 };
 
+// A replayed edit log: its landscape (recording its log), the edits applied, why it stopped.
+struct ReplayHandle {
+  log::LandscapeReplay replay;
+};
+
 // Which C++ object each C handle type stands for.
 template <class C>
 struct HandleOf;
@@ -152,6 +158,11 @@ struct HandleOf<el_crossings> {
 template <>
 struct HandleOf<el_bytes> {
   using type = BytesHandle;
+};
+
+template <>
+struct HandleOf<el_replay> {
+  using type = ReplayHandle;
 };
 
 template <>

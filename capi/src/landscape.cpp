@@ -7,6 +7,7 @@
 #include <streambuf>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "border.hpp"
 #include "edgeland/edgeland.h"
@@ -78,12 +79,6 @@ class BytesIn : public std::streambuf {
     setg(begin, begin, begin + size);
   }
 };
-
-std::unique_ptr<BytesHandle> bytes_of(std::string text) {
-  auto out = std::make_unique<BytesHandle>();
-  out->data = std::move(text);
-  return out;
-}
 
 // The materials list of overlaps() into the caller's 256 bytes.
 void materials_out(const std::vector<Material>& found, std::uint8_t* materials,
@@ -235,6 +230,18 @@ EL_API el_status el_landscape_polygons_in(const el_landscape* landscape, const e
           return true;
         });
     hand_out(std::move(made), out);
+  });
+}
+
+EL_API el_status el_landscape_cells_in(const el_landscape* landscape, const el_box* box,
+                                       el_box* buf, size_t cap, size_t* needed, el_error* error) {
+  return execute(error, [&] {
+    std::vector<el_box> cells;
+    object_of(landscape, "landscape").world.cells_in(box_of(box, "box"), [&](const CellView& c) {
+      cells.push_back(to_c(c.box));
+      return true;
+    });
+    copy_out(cells, buf, cap, &need(needed, "needed"));
   });
 }
 

@@ -7,6 +7,7 @@
 #include "border.hpp"
 #include "edgeland/edgeland.h"
 #include "handles.hpp"
+#include "translate.hpp"
 
 namespace edgeland::capi {
 namespace {
@@ -17,16 +18,6 @@ const T* view(const C* h, const std::vector<T> Object::*field, size_t* count) no
   const std::vector<T>* v = h != nullptr ? &(object(h)->*field) : nullptr;
   if (count != nullptr) *count = v != nullptr ? v->size() : 0;
   return v != nullptr && !v->empty() ? v->data() : nullptr;
-}
-
-template <class T>
-void copy_out(const std::vector<T>& v, T* buf, size_t cap, size_t* needed) {
-  if (needed != nullptr) *needed = v.size();
-  if (cap < v.size()) {
-    throw BorderError(EL_BUFFER_TOO_SMALL, "buffer of " + std::to_string(cap) + " for " +
-                                               std::to_string(v.size()) + " elements");
-  }
-  if (!v.empty()) std::copy(v.begin(), v.end(), &need(buf, "buf"));
 }
 
 template <class C, class Object, class T>

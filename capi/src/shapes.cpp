@@ -1,9 +1,11 @@
-// el_shape_*: a validated polygon set, from CSR arrays or kernel/shapes.hpp's builders.
+// el_shape_*: a validated polygon set, from CSR arrays, kernel/shapes.hpp's builders or clip's
+// OGC import.
 #include "edgeland/kernel/shapes.hpp"
 
 #include <memory>
 
 #include "border.hpp"
+#include "edgeland/clip/clip.hpp"
 #include "edgeland/edgeland.h"
 #include "handles.hpp"
 #include "translate.hpp"
@@ -69,6 +71,17 @@ EL_API el_status el_shape_rotated_box(const el_point* center, int64_t half_width
   return built(out, error, [&] {
     return rotated_box(point_of(center, "center"), half_width, half_height,
                        Turn{angle_num, angle_den});
+  });
+}
+
+EL_API el_status el_shape_import(const int64_t* xy, const uint32_t* ring_offsets,
+                                 const uint32_t* polygon_rings, size_t polygon_count,
+                                 el_shape** out, el_error* error) {
+  return execute(error, [&] {
+    need(out, "out");
+    ValidClipResult imported =
+        import_to_valid_set(ogc_polygons_of(xy, ring_offsets, polygon_rings, polygon_count));
+    hand_out(std::make_unique<ShapeHandle>(ShapeHandle{std::move(imported.set)}), out);
   });
 }
 

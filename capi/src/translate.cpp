@@ -39,20 +39,47 @@ Box64 box_of(const el_box* b, const char* name) {
 }
 
 PolygonSet polygon_set_of(const std::int64_t* xy, const std::uint32_t* offsets,
-                          std::size_t polygon_count) {
-  need(offsets, "offsets");
+                          std::size_t polygon_count, const char* offsets_name) {
+  need(offsets, offsets_name);
   if (offsets[polygon_count] > 0) need(xy, "xy");
   PolygonSet set(polygon_count);
+  const std::string name = offsets_name;
   for (std::size_t i = 0; i < polygon_count; ++i) {
     if (offsets[i + 1] < offsets[i]) {
-      throw BorderError(EL_INVALID_ARGUMENT, "offsets[" + std::to_string(i + 1) +
-                                                 "] is below offsets[" + std::to_string(i) + "]");
+      throw BorderError(EL_INVALID_ARGUMENT, name + "[" + std::to_string(i + 1) + "] is below " +
+                                                 name + "[" + std::to_string(i) + "]");
     }
     for (std::uint32_t k = offsets[i]; k < offsets[i + 1]; ++k) {
       set[i].push_back({xy[2 * std::size_t{k}], xy[2 * std::size_t{k} + 1]});
     }
   }
   return set;
+}
+
+std::vector<std::vector<Ring>> ogc_polygons_of(const std::int64_t* xy,
+                                               const std::uint32_t* ring_offsets,
+                                               const std::uint32_t* polygon_rings,
+                                               std::size_t polygon_count) {
+  need(polygon_rings, "polygon_rings");
+  const std::size_t ring_count = polygon_rings[polygon_count];
+  const PolygonSet rings =
+      ring_count > 0 ? polygon_set_of(xy, ring_offsets, ring_count, "ring_offsets") : PolygonSet{};
+  std::vector<std::vector<Ring>> polygons(polygon_count);
+  for (std::size_t i = 0; i < polygon_count; ++i) {
+    if (polygon_rings[i + 1] < polygon_rings[i] || polygon_rings[i + 1] > ring_count) {
+      throw BorderError(EL_INVALID_ARGUMENT, "polygon_rings[" + std::to_string(i + 1) +
+                                                 "] is below polygon_rings[" + std::to_string(i) +
+                                                 "] or past the last ring");
+    }
+    polygons[i].assign(rings.begin() + polygon_rings[i], rings.begin() + polygon_rings[i + 1]);
+  }
+  return polygons;
+}
+
+std::unique_ptr<BytesHandle> bytes_of(std::string text) {
+  auto out = std::make_unique<BytesHandle>();
+  out->data = std::move(text);
+  return out;
 }
 
 MaterialMap material_map_of(const std::int32_t* from_to, std::size_t pair_count) {

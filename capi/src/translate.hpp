@@ -1,7 +1,10 @@
 #pragma once
 // C++ values to the C structs of edgeland.h and back: field for field, nothing computed.
+#include <algorithm>
+#include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "border.hpp"
@@ -23,7 +26,18 @@ Point64 point_of(const el_point* p, const char* name);
 Box64 box_of(const el_box* b, const char* name);
 // A CSR polygon set as the C++ value (copied; the shape is validated where it is used).
 PolygonSet polygon_set_of(const std::int64_t* xy, const std::uint32_t* offsets,
-                          std::size_t polygon_count);
+                          std::size_t polygon_count, const char* offsets_name = "offsets");
+
+// OGC polygons (each its exterior ring, then its holes) from CSR twice: polygon i is the rings
+// polygon_rings[i] .. polygon_rings[i + 1] - 1, ring r the points ring_offsets[r] ..
+// ring_offsets[r + 1] - 1 (copied; the import reads them).
+std::vector<std::vector<Ring>> ogc_polygons_of(const std::int64_t* xy,
+                                               const std::uint32_t* ring_offsets,
+                                               const std::uint32_t* polygon_rings,
+                                               std::size_t polygon_count);
+
+// Text or bytes as a new el_bytes.
+std::unique_ptr<BytesHandle> bytes_of(std::string text);
 
 // A relabel's pairs (from_to[2i] -> from_to[2i + 1], a later pair for one material wins), each
 // material checked (InvalidMaterial).
@@ -35,6 +49,18 @@ void append(PolygonsHandle& out, std::uint64_t id, Material material, const Box6
 // The arrays of a change set, which then keeps the C++ value too.
 std::unique_ptr<ChangesHandle> to_c(ChangeSet changes);
 void fill(ChangesHandle& out, ChangeSet changes);
+
+// An array into the caller's buffer (copy_to): *needed = its size, EL_BUFFER_TOO_SMALL when cap
+// is less (buf may then be NULL).
+template <class T>
+void copy_out(const std::vector<T>& v, T* buf, std::size_t cap, std::size_t* needed) {
+  if (needed != nullptr) *needed = v.size();
+  if (cap < v.size()) {
+    throw BorderError(EL_BUFFER_TOO_SMALL, "buffer of " + std::to_string(cap) + " for " +
+                                               std::to_string(v.size()) + " elements");
+  }
+  if (!v.empty()) std::copy(v.begin(), v.end(), &need(buf, "buf"));
+}
 
 // The handle made and owned here, released to the caller's out-parameter only when everything
 // succeeded (so a failure leaves *out as it was).

@@ -4,8 +4,8 @@
 
 namespace edgeland::demo {
 
-void DemoEditor::edit(log::LandscapeEditKind kind, const Ring& ring, Material material,
-                      Material from) {
+void LandscapeEditor::edit(log::LandscapeEditKind kind, const Ring& ring, Material material,
+                           Material from) {
   const ClipOptions options{.checked = landscape_.checked()};
   const PolygonSet shape = import_polygons({{ring}}, options).polygons;
   if (shape.empty()) return;

@@ -5,7 +5,7 @@
 namespace edgeland::demo {
 
 DemoBuild build_demo(Landscape& landscape, std::uint64_t seed, std::size_t actions) {
-  DemoEditor editor(landscape);
+  LandscapeEditor editor(landscape);
   SplitMix64 random(seed);
   DemoBuild build;
   const Terrain terrain = build_world(editor, landscape.world(), random);

@@ -104,6 +104,7 @@ LandscapeReplay replay_landscape_log(std::string_view text, const LandscapeRepla
   }
   replay.landscape = make_landscape(*parsed.world);
   replay.landscape->set_checked(options.check);
+  if (options.record_log) replay.landscape->start_log();
   apply_edits(replay, parsed.edits);
   if (!replay.failure && parsed.error) {
     replay.failure = ReplayFailure{Kind::kUnreadable, parsed.error->line, parsed.error->what()};

@@ -1,10 +1,12 @@
-# The browser test (play/web/test/browser_test.py) in ctest: play.web_build builds the page into
-# the build tree with scripts/build_web.sh, play.web_browser loads it in headless Chromium. Both
-# need Emscripten, npm, Chromium, its driver and python3-selenium; without them one test stands
-# in and is reported as skipped, naming what is missing. Not under the sanitizers: the page is
-# WebAssembly built by Emscripten, which that build's flags do not reach.
+# The browser test (play/web/test/browser_test.py) in ctest: play.web_build puts the page together
+# in the build tree with scripts/build_web.sh, from the JavaScript package that bindings.js_build
+# built there (the fixture js_package: the library is built once for both), and play.web_browser
+# loads it in headless Chromium. Both need Emscripten, Node.js with npm, Chromium, its driver and
+# python3-selenium; without them one test stands in and is reported as skipped, naming what is
+# missing. Not under the sanitizers: the page is WebAssembly built by Emscripten, which that
+# build's flags do not reach.
 set(EDGELAND_WEB_MISSING "")
-foreach(tool emcmake npm chromium chromedriver)
+foreach(tool emcmake node npm chromium chromedriver)
   find_program(EDGELAND_${tool}_PROGRAM ${tool})
   if(NOT EDGELAND_${tool}_PROGRAM)
     list(APPEND EDGELAND_WEB_MISSING ${tool})
@@ -34,8 +36,10 @@ elseif(EDGELAND_WEB_MISSING)
 else()
   set(web_dir ${CMAKE_BINARY_DIR}/web)
   add_test(NAME play.web_build COMMAND ${CMAKE_COMMAND} -E env EDGELAND_WEB_DIR=${web_dir}
-    EDGELAND_WEB_OBJ=${CMAKE_BINARY_DIR}/web-obj ${PROJECT_SOURCE_DIR}/scripts/build_web.sh)
-  set_tests_properties(play.web_build PROPERTIES FIXTURES_SETUP web_page LABELS web TIMEOUT 1200)
+    EDGELAND_WEB_OBJ=${CMAKE_BINARY_DIR}/web-obj EDGELAND_JS_DIR=${CMAKE_BINARY_DIR}/js
+    ${PROJECT_SOURCE_DIR}/scripts/build_web.sh)
+  set_tests_properties(play.web_build PROPERTIES FIXTURES_SETUP web_page FIXTURES_REQUIRED
+    js_package LABELS web TIMEOUT 1200)
   add_test(NAME play.web_browser COMMAND ${EDGELAND_WEB_PYTHON}
     ${CMAKE_CURRENT_SOURCE_DIR}/web/test/browser_test.py --web-dir ${web_dir}
     --edgeland $<TARGET_FILE:edgeland_cli> --screenshot ${web_dir}/screenshot.png)

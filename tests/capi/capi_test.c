@@ -1,7 +1,8 @@
 /* The C API from C99 (edgeland.h): every call's status and results, the errors' fields, the
- * strong guarantee across the border, snapshots, save/load, copy_to, NULL handles; the game
- * driver's part is driver_test.c. Built twice, against the shared and the static library, and a
- * third time by mingw-w64 as a Windows program against the DLL (scripts/test_capi_windows.sh).
+ * strong guarantee across the border, snapshots, save/load, the OGC import, log replay, copy_to,
+ * NULL handles; the game driver's part is driver_test.c. Built twice, against the shared and the
+ * static library, and a third time by mingw-w64 as a Windows program against the DLL
+ * (scripts/test_capi_windows.sh).
  * Prints "capi: N checks passed" and exits 0, or names the first failed check and exits 1. */
 #include <stdint.h>
 #include <stdio.h>
@@ -333,6 +334,209 @@ static void test_shape_builders(void) {
   CHECK(error.value == 0 && error.minimum == 1 && error.limit == (int64_t)1 << 33);
 }
 
+static el_polygons* polygons_of(const el_shape* shape) {
+  el_polygons* p = NULL;
+  OK(el_shape_polygons(shape, &p, NULL));
+  return p;
+}
+
+/* The cells: every leaf, empty ones too, as many as the statistics count, tiling the world. */
+static void test_cells(void) {
+  el_landscape* world = new_world();
+  el_shape* hole = NULL;
+  const el_box all = {{0, 0}, {1024, 512}};
+  el_box cells[512];
+  el_stats stats;
+  size_t needed = 0, i;
+  int64_t area = 0;
+
+  for (i = 0; i < 12; ++i) { /* enough edges to split the root */
+    const el_point at = {40 + 80 * (int64_t)i, 100 + 25 * (int64_t)i};
+    OK(el_shape_circle(&at, 30, &hole, NULL));
+    OK(el_landscape_carve(world, hole, NULL, NULL));
+    el_shape_destroy(hole);
+  }
+  el_stats_init(&stats);
+  OK(el_landscape_stats(world, &stats, NULL));
+  CHECK(el_landscape_cells_in(world, &all, NULL, 0, &needed, NULL) == EL_BUFFER_TOO_SMALL);
+  CHECK(needed == stats.cells && needed > 1 && needed <= 512);
+  OK(el_landscape_cells_in(world, &all, cells, 512, &needed, NULL));
+  for (i = 0; i < needed; ++i) {
+    CHECK(cells[i].min.x >= 0 && cells[i].max.x <= 1024 && cells[i].min.y >= 0 &&
+          cells[i].max.y <= 512);
+    area += (cells[i].max.x - cells[i].min.x) * (cells[i].max.y - cells[i].min.y);
+  }
+  CHECK(area == 1024 * 512);
+  CHECK(el_landscape_cells_in(world, &all, cells, 512, NULL, NULL) == EL_NULL_ARGUMENT);
+  el_landscape_destroy(world);
+}
+
+/* The shape el_shape_import makes of one polygon's rings (the exterior, then its holes). */
+static el_shape* imported(const int64_t* xy, const uint32_t* ring_offsets, uint32_t rings) {
+  const uint32_t polygon_rings[2] = {0, rings};
+  el_shape* s = NULL;
+  OK(el_shape_import(xy, ring_offsets, polygon_rings, 1, &s, NULL));
+  return s;
+}
+
+static size_t polygon_count(const el_shape* s) {
+  el_polygons* p = polygons_of(s);
+  const size_t n = el_polygons_count(p);
+  el_polygons_destroy(p);
+  return n;
+}
+
+/* The OGC import: a bow tie becomes its two triangles, a clockwise ring its counter-clockwise
+ * polygon, a square with a hole hole-free pieces of the right area, a ring of no area nothing;
+ * a coordinate beyond the bound names its polygon and vertex. */
+static void test_shape_import(void) {
+  const int64_t bow_tie[] = {0, 0, 100, 100, 100, 0, 0, 100};
+  const int64_t clockwise[] = {0, 0, 0, 10, 10, 10, 10, 0};
+  const int64_t holed[] = {0, 0, 30, 0, 30, 30, 0, 30, 10, 10, 20, 10, 20, 20, 10, 20};
+  const int64_t flat[] = {0, 0, 10, 0, 20, 0};
+  const uint32_t one[] = {0, 4}, two[] = {0, 4, 8}, three[] = {0, 3};
+  const int64_t far[] = {0, 0, 10, 0, 10, 10, 0, 0, (int64_t)1 << 40, 0, 0, 10};
+  const uint32_t far_rings[] = {0, 3, 6}, far_polygons[] = {0, 1, 2}, descending[] = {0, 2, 1};
+  const el_box box = {{0, 0}, {64, 64}};
+  el_landscape* world = NULL;
+  el_shape* s = imported(bow_tie, one, 1);
+  el_polygons* p = NULL;
+  el_int128 area;
+  size_t n = 0;
+  el_error error;
+  el_error_init(&error);
+
+  CHECK(polygon_count(s) == 2);
+  el_shape_destroy(s);
+  s = imported(clockwise, one, 1);
+  p = polygons_of(s);
+  CHECK(el_polygons_count(p) == 1 && el_polygons_points(p, &n)[1].x == 10 && n == 4);
+  el_polygons_destroy(p);
+  el_shape_destroy(s);
+  OK(el_landscape_create(&box, 0, NULL, &world, NULL));
+  s = imported(holed, two, 2);
+  CHECK(polygon_count(s) >= 2);
+  OK(el_landscape_fill(world, s, 2, NULL, NULL));
+  OK(el_landscape_twice_area(world, 2, &area, NULL));
+  CHECK(area.lo == 2 * (900 - 100) && area.hi == 0);
+  el_shape_destroy(s);
+  s = imported(flat, three, 1);
+  CHECK(polygon_count(s) == 0);
+  el_shape_destroy(s);
+  s = NULL;
+  CHECK(el_shape_import(far, far_rings, far_polygons, 2, &s, &error) ==
+            EL_COORDINATE_OUT_OF_RANGE &&
+        s == NULL);
+  CHECK(error.operand == EL_OPERAND_RINGS && error.index == 1 && error.vertex == 1);
+  CHECK(el_shape_import(far, far_rings, descending, 2, &s, NULL) == EL_INVALID_ARGUMENT);
+  CHECK(el_shape_import(far, far_rings, NULL, 1, &s, NULL) == EL_NULL_ARGUMENT && s == NULL);
+  el_landscape_destroy(world);
+}
+
+/* text contains what, as a C string. */
+static int contains(const el_bytes* bytes, const char* what) {
+  size_t size = 0, i, n = strlen(what);
+  const uint8_t* text = el_bytes_data(bytes, &size);
+  for (i = 0; i + n <= size; ++i) {
+    if (memcmp(text + i, what, n) == 0) return 1;
+  }
+  return 0;
+}
+
+static el_bytes* report_of(const el_replay* replay) {
+  el_bytes* report = NULL;
+  OK(el_replay_report(replay, &report, NULL));
+  return report;
+}
+
+/* A recorded log replays to the same state and records itself again, byte for byte. */
+static void test_replay_of_a_recorded_log(el_landscape* world, el_bytes* log) {
+  size_t size = 0, again_size = 0;
+  const char* text = (const char*)el_bytes_data(log, &size);
+  el_replay* replay = NULL;
+  el_landscape* replayed = NULL;
+  el_bytes *again = NULL, *report = NULL;
+  char hash[40];
+
+  OK(el_replay_log(text, size, &replay, NULL));
+  OK(el_replay_stopped(replay, NULL));
+  CHECK(el_replay_edits(replay) == 2);
+  OK(el_replay_landscape(replay, &replayed, NULL));
+  CHECK(hash_of(replayed) == hash_of(world));
+  OK(el_landscape_log(replayed, &again, NULL));
+  CHECK(memcmp(el_bytes_data(again, &again_size), text, size) == 0 && again_size == size);
+  report = report_of(replay);
+  sprintf(hash, "\"state_hash\":\"%016llx\"", (unsigned long long)hash_of(world));
+  CHECK(contains(report, "{\"edits\":2,") && contains(report, hash));
+  CHECK(!contains(report, "stopped_at_line"));
+  el_bytes_destroy(report);
+  el_bytes_destroy(again);
+  el_landscape_destroy(replayed);
+  el_replay_destroy(replay);
+}
+
+/* A bad line stops the replay there, the edits before it kept; a log without a world line has
+ * no landscape. */
+static void test_replay_that_stops(el_landscape* world, el_bytes* log) {
+  const char* no_world = "carve POLYGON((0 0,1 0,1 1,0 1))\n";
+  char text[4096];
+  size_t size = 0;
+  el_replay* replay = NULL;
+  el_landscape* replayed = NULL;
+  el_bytes* report = NULL;
+  const uint8_t* recorded = el_bytes_data(log, &size);
+  el_error error;
+  el_error_init(&error);
+
+  CHECK(size + 64 < sizeof text);
+  memcpy(text, recorded, size);
+  strcpy(text + size, "fill 300 POLYGON((0 0,10 0,10 10,0 10))\n");
+  OK(el_replay_log(text, strlen(text), &replay, NULL));
+  CHECK(el_replay_stopped(replay, &error) == EL_LOAD_ERROR && error.index == 4);
+  CHECK(strncmp(error.message, "line 4", 6) == 0);
+  CHECK(el_replay_edits(replay) == 2);
+  OK(el_replay_landscape(replay, &replayed, NULL));
+  CHECK(hash_of(replayed) == hash_of(world));
+  report = report_of(replay);
+  CHECK(contains(report, "\"stopped_at_line\":4"));
+  el_bytes_destroy(report);
+  el_landscape_destroy(replayed);
+  el_replay_destroy(replay);
+
+  OK(el_replay_log(no_world, strlen(no_world), &replay, NULL));
+  replayed = NULL;
+  CHECK(el_replay_landscape(replay, &replayed, &error) == EL_LOAD_ERROR && replayed == NULL);
+  CHECK(error.index == 1 && el_replay_edits(replay) == 0);
+  report = report_of(replay);
+  CHECK(contains(report, "{\"edits\":0,\"stopped_at_line\":1,"));
+  el_bytes_destroy(report);
+  el_replay_destroy(replay);
+  CHECK(el_replay_log(NULL, 5, &replay, NULL) == EL_NULL_ARGUMENT);
+}
+
+/* el_replay_*: a log recorded through the C API, replayed. */
+static void test_replay_log(void) {
+  const el_box box = {{0, 0}, {1024, 512}};
+  const el_point center = {512, 256};
+  el_landscape* world = NULL;
+  el_shape* blast = NULL;
+  el_shape* ore = square(100, 100, 50);
+  el_bytes* log = NULL;
+
+  OK(el_landscape_create(&box, 1, NULL, &world, NULL));
+  OK(el_landscape_start_log(world, NULL));
+  OK(el_shape_circle(&center, 100, &blast, NULL));
+  OK(el_landscape_carve(world, blast, NULL, NULL));
+  OK(el_landscape_fill(world, ore, 3, NULL, NULL));
+  OK(el_landscape_log(world, &log, NULL));
+  test_replay_of_a_recorded_log(world, log);
+  test_replay_that_stops(world, log);
+  el_bytes_destroy(log);
+  el_shape_destroy(ore);
+  el_shape_destroy(blast);
+  el_landscape_destroy(world);
+}
+
 /* The game layer: chains and islands kept in step from change sets, detach, meshes, pieces. */
 static void test_game_layer(void) {
   const el_box box = {{0, 0}, {1024, 512}};
@@ -440,9 +644,10 @@ static void test_null_is_harmless(void) {
   el_islands_destroy(NULL);
   el_detached_destroy(NULL);
   el_meshes_destroy(NULL);
+  el_replay_destroy(NULL);
   el_error_init(NULL);
   CHECK(el_changes_removed(NULL, &count) == NULL && count == 0);
-  CHECK(el_polygons_count(NULL) == 0);
+  CHECK(el_polygons_count(NULL) == 0 && el_replay_edits(NULL) == 0);
   CHECK(el_changes_copy_removed(NULL, NULL, 0, NULL) == EL_NULL_ARGUMENT);
 }
 
@@ -455,6 +660,9 @@ int main(void) {
   test_snapshots_and_saves();
   test_relabel_and_log();
   test_shape_builders();
+  test_shape_import();
+  test_cells();
+  test_replay_log();
   test_game_layer();
   test_game_driver();
   test_null_is_harmless();

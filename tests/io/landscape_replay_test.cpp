@@ -68,6 +68,24 @@ TEST(LandscapeReplay, ARecordedLogReplaysToTheSameState) {
   EXPECT_TRUE(replay.landscape->checked());
 }
 
+// A replay asked to record its log (a log loaded to be edited further and shared again) gives
+// back a log that replays bit for bit, its own edits and the later ones too; without the option
+// it records nothing.
+TEST(LandscapeReplay, RecordsItsOwnLogWhenAsked) {
+  const LandscapeReplay plain = replay_landscape_log(kLog);
+  ASSERT_TRUE(plain.landscape.has_value());
+  EXPECT_FALSE(plain.landscape->logging());
+  LandscapeReplay recorded = replay_landscape_log(kLog, {.record_log = true});
+  ASSERT_FALSE(recorded.failure.has_value()) << recorded.failure->message;
+  Landscape& world = *recorded.landscape;
+  EXPECT_TRUE(world.logging());
+  world.carve(PolygonSet{{{5, 5}, {95, 5}, {95, 8}, {5, 8}}});
+  const LandscapeReplay again = replay_landscape_log(world.log());
+  ASSERT_FALSE(again.failure.has_value()) << again.failure->message;
+  EXPECT_EQ(again.edits, recorded.edits + 1);
+  EXPECT_EQ(again.landscape->state_hash(), world.state_hash());
+}
+
 TEST(LandscapeReplay, ABadLineKeepsTheEditsBeforeIt) {
   const LandscapeReplay replay = replay_landscape_log(
       "world 0 0 100 100\nfill 1 POLYGON ((0 0, 10 0, 10 10, 0 0))\n"

@@ -62,6 +62,17 @@ test('queries are exact', () => withWorld((world) => {
   assert.deepEqual(world.overlaps(square(100, 100, 50)), []);
 }));
 
+test('the cells tile the world, empty ones too', () => withWorld((world) => {
+  for (let k = 0; k < 12; ++k) world.carve(Shape.circle([40 + 80 * k, 100 + 25 * k], 30));
+  const cells = world.cellsIn();
+  assert.equal(cells.length / 4, world.stats.cells);
+  assert.ok(world.stats.cells > 1);
+  let area = 0;
+  for (let k = 0; k < cells.length; k += 4) area += (cells[k + 2] - cells[k]) * (cells[k + 3] - cells[k + 1]);
+  assert.equal(area, 1024 * 512);
+  assert.ok(world.cellsIn([[0, 0], [10, 10]]).length >= 4);
+}));
+
 test('snapshots, saves and loads', () => withWorld((world) => {
   const snapshot = world.clone();
   world.carve(Shape.box([100, 100], [150, 150]));
@@ -94,3 +105,49 @@ test('shape builders and disposed objects', () => {
   s.dispose();
   withWorld((world) => assert.throws(() => world.carve(s), (e) => e.status === 1));
 });
+
+test('the OGC import takes rings as drawn', () => {
+  const bowTie = Shape.import([[[[0, 0], [100, 100], [100, 0], [0, 100]]]]);
+  assert.equal(bowTie.polygons.length, 2);
+  const clockwise = Shape.import([[[[0, 0], [0, 10], [10, 10], [10, 0]]]]);
+  assert.deepEqual(clockwise.polygons, square(0, 0, 10));
+  const holed = Shape.import([[square(0, 0, 30)[0], square(10, 10, 10)[0]]]);
+  const world = new Landscape([[0, 0], [64, 64]]);
+  world.fill(holed, 2);
+  assert.equal(world.twiceArea(2), 2n * (900n - 100n));
+  assert.equal(Shape.import([[[[0, 0], [10, 0], [20, 0]]]]).polygons.length, 0);
+  assert.throws(() => Shape.import([square(0, 0, 5), [[[0, 0], [2 ** 40, 0], [0, 10]]]]), (e) =>
+    e instanceof edgeland.CoordinateOutOfRange && e.index === 1 && e.vertex === 1);
+  for (const s of [bowTie, clockwise, holed, world]) s.dispose();
+});
+
+test('a recorded log replays to the same world, which records itself again', () => withWorld((world) => {
+  world.startLog();
+  world.carve(Shape.circle([512, 256], 100));
+  world.fill(square(100, 100, 50), 3);
+  const replay = edgeland.replayLog(world.log);
+  assert.equal(replay.stopped, null);
+  assert.equal(replay.edits, 2);
+  assert.equal(replay.landscape.stateHash, world.stateHash);
+  assert.equal(replay.landscape.log, world.log);
+  const report = JSON.parse(replay.report);
+  assert.equal(report.edits, 2);
+  assert.equal(report.state_hash, world.stateHash.toString(16).padStart(16, '0'));
+  assert.equal(report.polygons, world.stats.polygons);
+  replay.landscape.dispose();
+}));
+
+test('a replay stops at a bad line and keeps the edits before it', () => withWorld((world) => {
+  world.startLog();
+  world.carve(square(100, 100, 50));
+  const bad = edgeland.replayLog(world.log + 'fill 300 POLYGON((0 0,10 0,10 10,0 10))\n');
+  assert.ok(bad.stopped instanceof edgeland.LoadError && bad.stopped.index === 3);
+  assert.equal(bad.edits, 1);
+  assert.equal(bad.landscape.stateHash, world.stateHash);
+  assert.equal(JSON.parse(bad.report).stopped_at_line, 3);
+  bad.landscape.dispose();
+  const none = edgeland.replayLog('carve POLYGON((0 0,1 0,1 1,0 1))\n');
+  assert.equal(none.landscape, null);
+  assert.equal(none.stopped.index, 1);
+  assert.deepEqual(Object.keys(JSON.parse(none.report)), ['edits', 'stopped_at_line', 'error']);
+}));

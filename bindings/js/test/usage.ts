@@ -1,7 +1,7 @@
 // The TypeScript declarations (index.d.ts) against typical use: `tsc --noEmit --strict` must
 // accept this file (ctest bindings.js_types).
-import {CoordinateOutOfRange, Edit, EdgelandError, GameDriver, Landscape, Shape, type ChangeSet,
-  type Crossing, type Debris, type GameUpdate} from '../index.js';
+import {CoordinateOutOfRange, Edit, EdgelandError, GameDriver, Landscape, Shape, replayLog,
+  type ChangeSet, type Crossing, type Debris, type GameUpdate, type Replay} from '../index.js';
 
 const world = new Landscape([[0, 0], [1024, 512]], 1, {tree: 'kd', checked: true});
 const changes: ChangeSet = world.carve(Shape.circle([512, 256], 100));
@@ -30,6 +30,14 @@ for (const id of update.chains.removed) console.log(id + 1n);
 const fell: Debris[] = update.debris;
 if (fell.length > 0) console.log(fell[0].pieces[0].points[0][0], fell[0].centroid.den);
 console.log(game.buried([[500, 250], [510, 260]]), update.work.cellsScanned, game.debrisWaiting);
+const drawn: Shape = Shape.import([[[[0, 0], [0, 10], [10, 10], [10, 0]]]]);
+world.startLog();
+world.fill(drawn, 4);
+const replay: Replay = replayLog(world.log);
+if (replay.stopped !== null) console.log(replay.stopped.index, replay.stopped.message);
+console.log(replay.edits, JSON.parse(replay.report).state_hash, replay.landscape?.stateHash);
+replay.landscape?.dispose();
+drawn.dispose();
 update.dispose();
 game.dispose();
 copy.dispose();

@@ -151,7 +151,8 @@ typedef struct el_error {
   el_status status;
   uint32_t kind;     /* EL_RULE_*, EL_SETTING_*, EL_LIMIT_* or the overlay reason (above) */
   uint32_t operand;  /* EL_OPERAND_* for input errors */
-  uint64_t index;    /* input: the polygon; load: the byte offset; stale island: the polygon id;
+  uint64_t index;    /* input: the polygon; load: the byte offset (a replay: the log's line);
+                        stale island: the polygon id;
                         overlay: the member or window; argument errors: the argument's position */
   uint64_t vertex;   /* input: the vertex or edge (EL_NONE if none) */
   int64_t value;     /* the value given: a material number, a count requested, an argument */
@@ -227,6 +228,16 @@ EL_API el_status el_shape_box(const el_box* box, el_shape** out, el_error* error
 EL_API el_status el_shape_rotated_box(const el_point* center, int64_t half_width,
                                       int64_t half_height, int64_t angle_num, int64_t angle_den,
                                       el_shape** out, el_error* error);
+/* A shape from any polygons, read with OGC semantics (clip.hpp import_polygons): the region a
+ * polygon of another library or of an editor encloses, with clockwise or self-intersecting
+ * rings and holes, as valid hole-free polygons (none for rings of no area). Polygon i is the
+ * rings polygon_rings[i] .. polygon_rings[i + 1] - 1 (its exterior, then its holes), ring r the
+ * points ring_offsets[r] .. ring_offsets[r + 1] - 1 of xy (CSR twice: polygon_rings[0] = 0,
+ * ring_offsets[0] = 0). A coordinate beyond the bound is EL_COORDINATE_OUT_OF_RANGE (operand
+ * EL_OPERAND_RINGS, index the polygon, vertex the vertex within its ring). */
+EL_API el_status el_shape_import(const int64_t* xy, const uint32_t* ring_offsets,
+                                 const uint32_t* polygon_rings, size_t polygon_count,
+                                 el_shape** out, el_error* error);
 /* The shape's polygons (ids, materials and cells 0). */
 EL_API el_status el_shape_polygons(const el_shape* shape, el_polygons** out, el_error* error);
 EL_API void el_shape_destroy(el_shape* shape);
@@ -297,6 +308,11 @@ EL_API el_status el_landscape_overlaps_shape(const el_landscape* landscape, cons
 /* Every polygon whose bounding box meets the closed box, cell by cell in tree order. */
 EL_API el_status el_landscape_polygons_in(const el_landscape* landscape, const el_box* box,
                                           el_polygons** out, el_error* error);
+/* The boxes of the cells (the tree's leaves, empty ones too) that meet the closed box, in tree
+ * order, copied into buf (copy_to: EL_BUFFER_TOO_SMALL with *needed set when cap is less; the
+ * world's cells number el_stats.cells). */
+EL_API el_status el_landscape_cells_in(const el_landscape* landscape, const el_box* box,
+                                       el_box* buf, size_t cap, size_t* needed, el_error* error);
 EL_API el_status el_landscape_twice_area(const el_landscape* landscape, int32_t material,
                                          el_int128* out, el_error* error);
 EL_API el_status el_landscape_world(const el_landscape* landscape, el_box* out, el_error* error);
@@ -328,6 +344,34 @@ EL_API el_status el_landscape_save(const el_landscape* landscape, el_bytes** out
 EL_API el_status el_landscape_load(const uint8_t* data, size_t size,
                                    const el_landscape_config* config, el_landscape** out,
                                    el_error* error);
+
+/* ---- edit logs --------------------------------------------------------------------------------
+ */
+
+typedef struct el_replay el_replay; /* a replayed edit log (C++ log::LandscapeReplay) */
+
+/* Replays a landscape edit log (README.md "Landscape edit logs": what el_landscape_log records
+ * and `edgeland replay` reads) as `edgeland replay` does: the world of its world line, in the
+ * default configuration, then its edits in order up to the first line that cannot be read or the
+ * first edit the landscape refuses; the edits before it are kept. The text is untrusted: a bad
+ * log is a replay that stopped (el_replay_stopped), not a failure of this call, which fails only
+ * for a NULL argument or memory. The replayed landscape records its own log from the start, so
+ * its el_landscape_log replays to it bit for bit. */
+EL_API el_status el_replay_log(const char* text, size_t size, el_replay** out, el_error* error);
+EL_API void el_replay_destroy(el_replay* replay);
+/* A snapshot of the replayed landscape (O(1)); EL_LOAD_ERROR (index: the line) when the log has
+ * no good world line, and so no world. */
+EL_API el_status el_replay_landscape(const el_replay* replay, el_landscape** out, el_error* error);
+/* The edits applied (0 for NULL). */
+EL_API size_t el_replay_edits(const el_replay* replay);
+/* Why the replay stopped before the log's end, in `error`: EL_OK when it did not; EL_LOAD_ERROR
+ * for a line that cannot be read or an edit the landscape refused (index: the line, 1-based; the
+ * message "line N: ..."), EL_INTERNAL for a bug of edgeland's that the edit met. */
+EL_API el_status el_replay_stopped(const el_replay* replay, el_error* error);
+/* The JSON object `edgeland replay` prints for the log, on one line (io/.../landscape_replay.hpp:
+ * edits, polygons, vertices, cells, depth, area, state_hash, edits_per_second, and
+ * stopped_at_line and error when it stopped). */
+EL_API el_status el_replay_report(const el_replay* replay, el_bytes** out, el_error* error);
 
 /* ---- results ----------------------------------------------------------------------------------
  */

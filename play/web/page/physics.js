@@ -27,43 +27,42 @@ class Physics {
       for (const d of this.dynamic) if (d.kind === 'debris') this.world.destroyBody(d.body);
       this.dynamic = this.dynamic.filter(d => d.kind !== 'debris');
     }
-    for (const id of update.chainsRemoved) {
+    const chains = update.chains;
+    for (const id of chains.removed) {
       const fixture = this.terrain.get(id);
       if (fixture) this.ground.destroyFixture(fixture);
       this.terrain.delete(id);
     }
-    for (let k = 0; k < update.chainIds.length; ++k) this.addChain(update, k);
-    for (let k = 0; k + 1 < update.debrisPieces.length; ++k) this.addDebris(update, k);
+    chains.chains.forEach((chain, k) => this.addChain(chains, chain, k));
+    for (const debris of update.debris) this.addDebris(debris);
   }
 
-  addChain(update, k) {
-    const xy = update.chainXy, g = update.chainGhosts, points = [];
-    for (let i = update.chainOffsets[k]; i < update.chainOffsets[k + 1]; ++i) {
+  // Chain k of the package's chains (solid on its left; an open one with its ghost vertices).
+  addChain(chains, {id, closed, ghostPrev, ghostNext}, k) {
+    const xy = chains.xy, points = [];
+    for (let i = chains.offsets[k]; i < chains.offsets[k + 1]; ++i) {
       points.push(this.metres(xy[2 * i], xy[2 * i + 1]));
     }
-    const closed = update.chainClosed[k] === 1;
     const chain = planck.Chain(points, closed);
     if (!closed) {
-      chain.setPrevVertex(this.metres(g[4 * k], g[4 * k + 1]));
-      chain.setNextVertex(this.metres(g[4 * k + 2], g[4 * k + 3]));
+      chain.setPrevVertex(this.metres(...ghostPrev));
+      chain.setNextVertex(this.metres(...ghostNext));
     }
-    this.terrain.set(update.chainIds[k], this.ground.createFixture(chain, {friction: 0.6}));
+    this.terrain.set(id, this.ground.createFixture(chain, {friction: 0.6}));
   }
 
-  // Island k of an update: a body at its centroid, one polygon fixture per convex piece.
-  addDebris(update, k) {
-    const c = update.debrisCentroids;
-    const body = this.world.createDynamicBody({position: this.metres(c[2 * k], c[2 * k + 1])});
-    const pieces = [];
-    for (let j = update.debrisPieces[k]; j < update.debrisPieces[k + 1]; ++j) {
-      const local = [];
-      for (let i = update.pieceOffsets[j]; i < update.pieceOffsets[j + 1]; ++i) {
-        local.push(planck.Vec2(update.pieceXy[2 * i] / this.k, update.pieceXy[2 * i + 1] / this.k));
-      }
+  // A debris island: a body at its exact centroid (rounded to a double here), one polygon
+  // fixture per convex piece (at most 8 vertices: what a planck.js polygon takes).
+  addDebris({centroid, pieces}) {
+    const den = Number(centroid.den);
+    const cx = Number(centroid.x) / den, cy = Number(centroid.y) / den;
+    const body = this.world.createDynamicBody({position: this.metres(cx, cy)});
+    const drawn = pieces.map(({material, points}) => {
+      const local = points.map(([x, y]) => planck.Vec2((x - cx) / this.k, (y - cy) / this.k));
       body.createFixture(planck.Polygon(local), {density: 1, friction: 0.6, restitution: 0.1});
-      pieces.push({material: update.pieceMaterials[j], local});
-    }
-    this.dynamic.push({body, kind: 'debris', size: 0, pieces});
+      return {material, local};
+    });
+    this.dynamic.push({body, kind: 'debris', size: 0, pieces: drawn});
   }
 
   dropBall(x, y, radius) {

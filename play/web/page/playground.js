@@ -1,39 +1,37 @@
-// The playground page: the landscape of the WebAssembly module (play/web/src/bindings.cpp), its
-// tools under the mouse, undo/redo, physics (physics.js), the overlay, the share of the edit
-// log, and window.playground, the page's API for scripts and tests (play/web/README.md).
+// The playground page: the world of the JavaScript package (world.mjs over bindings/js), its
+// tools under the mouse, undo/redo, physics (physics.js), the overlay, the share of the edit log,
+// and window.playground, the page's API for scripts and tests (play/web/README.md).
 'use strict';
 
 const kWorld = {x0: 0, y0: 0, x1: 4096, y1: 2048};
 const kSeed = 1;                  // the `edgeland demo` world generator's seed
 const kUnitsPerMetre = 32;        // engine scale: the world is 128 m x 64 m
-const kWater = 5;
-const kTools = ['explosion', 'digger', 'fill', 'water', 'replace'];  // ToolKind's order
-const kMaterialNames = ['empty', 'bedrock', 'rock', 'dirt', 'ore', 'water', 'sand', 'grass',
-  'crystal', 'lava', 'ice'];
 
 const playground = window.playground = {errors: []};
 window.addEventListener('error', e => playground.errors.push(String(e.message)));
+window.addEventListener('unhandledrejection', e => playground.errors.push(String(e.reason)));
 
-playground.ready = createEdgeland().then(module => {
-  const M = playground.module = module;
+// The package and the demo module are ES modules; this page's scripts are classic ones, so
+// window.playground exists (with its `ready` promise) as soon as the page has loaded.
+playground.ready = import('./world.mjs').then(({PlaygroundWorld, demo, kTools}) => {
+  const kWater = demo.water();
   const colours = new Map();
   const colour = m => {
-    if (!colours.has(m)) colours.set(m, '#' + M.materialColour(m).toString(16).padStart(6, '0'));
+    if (!colours.has(m)) colours.set(m, '#' + demo.materialColour(m).toString(16).padStart(6, '0'));
     return colours.get(m);
   };
   const canvas = document.getElementById('view');
   const context = canvas.getContext('2d');
-  let world = new M.World(kWorld.x0, kWorld.y0, kWorld.x1, kWorld.y1, 0, kSeed);
-  let box = kWorld, view, physics;
+  const world = new PlaygroundWorld([[kWorld.x0, kWorld.y0], [kWorld.x1, kWorld.y1]], 0, kSeed);
+  let box = null, view, physics;
   // The view and the physics follow the world's box (a replayed log brings its own world).
-  function fitWorld() {
-    const b = world.box();
-    if (view && b[0] === box.x0 && b[1] === box.y0 && b[2] === box.x1 && b[3] === box.y1) return;
-    box = {x0: b[0], y0: b[1], x1: b[2], y1: b[3]};
+  function fitWorld(b) {
+    if (box && b[0][0] === box.x0 && b[0][1] === box.y0 && b[1][0] === box.x1 && b[1][1] === box.y1) return;
+    box = {x0: b[0][0], y0: b[0][1], x1: b[1][0], y1: b[1][1]};
     view = new TerrainView(box, canvas.width, canvas.height, colour);
     physics = new Physics(box, kUnitsPerMetre * (box.x1 - box.x0) / (kWorld.x1 - kWorld.x0));
   }
-  fitWorld();
+  fitWorld(world.box);
   const frames = {count: 0, totalMs: 0, maxMs: 0, lastMs: 0};
   let dirtyCells = new Int32Array(0);
   let lastUpdate = {removed: 0, added: 0, ms: 0};
@@ -45,7 +43,7 @@ playground.ready = createEdgeland().then(module => {
       playground.refused = (playground.refused || 0) + 1;
       return update;
     }
-    if (update.reset) fitWorld();
+    if (update.reset) fitWorld(update.box);
     const start = performance.now();
     view.apply(update);
     const drawn = performance.now();
@@ -53,19 +51,20 @@ playground.ready = createEdgeland().then(module => {
     timing.viewMs += drawn - start;
     timing.collidersMs += performance.now() - drawn;
     dirtyCells = update.cells;
-    lastUpdate = {removed: update.removed.length, added: update.ids.length,
+    lastUpdate = {removed: update.removed.length, added: update.added ? update.added.count : 0,
                   ms: performance.now() - start};
     return update;
   }
 
   // --- the API -------------------------------------------------------------------------------
   // apply(tool, fromX, fromY, toX, toY, radius, material, fromMaterial): one tool edit in world
-  // coordinates (integers); returns {removed, added, error}.
+  // coordinates (rounded to integers), the tool by name or number (kTools' order); returns
+  // {removed, added, error}.
   playground.apply = (tool, fx, fy, tx, ty, radius, material = 0, from = 0) => {
-    const kind = typeof tool === 'number' ? tool : kTools.indexOf(tool);
-    const u = take(world.apply(kind, Math.round(fx), Math.round(fy), Math.round(tx),
-                               Math.round(ty), Math.round(radius), material, from));
-    return {removed: u.removed.length, added: u.ids.length, error: u.error};
+    const name = typeof tool === 'number' ? kTools[tool] : tool;
+    const u = take(world.apply(name, [Math.round(fx), Math.round(fy)],
+                               [Math.round(tx), Math.round(ty)], Math.round(radius), material, from));
+    return {removed: u.removed.length, added: u.added ? u.added.count : 0, error: u.error};
   };
   playground.explode = (x, y, r) => playground.apply('explosion', x, y, x, y, r);
   playground.dig = (x0, y0, x1, y1, r) => playground.apply('digger', x0, y0, x1, y1, r);
@@ -81,11 +80,9 @@ playground.ready = createEdgeland().then(module => {
   // replay(logText): replays a landscape edit log into the page's world (the page then shows
   // it) and returns the object `edgeland replay LOG` prints for it.
   playground.replay = text => {
-    const result = M.replay(text);
-    playground.lastReplay = {stderr: result.stderr, status: result.status};
-    const update = world.loadLog(text);
-    if (!update.error) take(update);
-    return JSON.parse(result.json);
+    const {report, update} = world.replay(text);
+    if (update) take(update);
+    return JSON.parse(report);
   };
   playground.dropBall = (x, y, r = bodySize()) => physics.dropBall(x, y, r);
   playground.dropBox = (x, y, h = bodySize() * 0.8) => physics.dropBox(x, y, h);
@@ -125,6 +122,7 @@ playground.ready = createEdgeland().then(module => {
 
   // --- the mouse and the keys ------------------------------------------------------------------
   const control = id => document.getElementById(id);
+  const kMaterialNames = demo.materialNames();
   for (let m = 1; m < kMaterialNames.length; ++m) {
     control('material').add(new Option(`${m} ${kMaterialNames[m]}`, m, m === 3, m === 3));
     control('from').add(new Option(`${m} ${kMaterialNames[m]} →`, m, m === 2, m === 2));

@@ -1,7 +1,7 @@
-// The landscape as the page draws it: every polygon by id, kept up to date from the module's
-// updates (removed ids, added polygons), drawn into an off-screen canvas of which only the part
-// an update touched is redrawn. Floating point here is drawing only; the world stays in the
-// WebAssembly module's integers.
+// The landscape as the page draws it: every polygon by id, kept up to date from the world's
+// updates (removed ids, added polygons: world.mjs), drawn into an off-screen canvas of which only
+// the part an update touched is redrawn. Floating point here is drawing only; the world stays in
+// the package's integers.
 'use strict';
 
 class TerrainView {
@@ -96,12 +96,13 @@ class TerrainView {
   }
 }
 
-// Calls f(id, material, xy) for every added polygon of an update (flat arrays, see
-// play/web/src/web_world.hpp).
+// Calls f(id, material, xy) for every polygon an update added (the package's Polygons: flat
+// arrays, ids as BigInts).
 function forEachAdded(update, f) {
-  for (let k = 0; k < update.ids.length; ++k) {
-    const xy = update.xy.slice(2 * update.offsets[k], 2 * update.offsets[k + 1]);
-    f(update.ids[k], update.materials[k], xy);
+  const p = update.added;
+  if (!p) return;
+  for (let k = 0; k < p.count; ++k) {
+    f(p.ids[k], p.materials[k], p.xy.subarray(2 * p.offsets[k], 2 * p.offsets[k + 1]));
   }
 }
 

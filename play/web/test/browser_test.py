@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """The browser playground in a real browser (play/web/README.md).
 
-Headless Chromium (Debian's chromium, chromium-driver, python3-selenium) loads build/web from a
-local http.server, runs a scripted edit sequence through window.playground, and checks:
+Headless Chromium (Debian's chromium, chromium-driver, python3-selenium) loads build/web (the page
+over the JavaScript package) from a local http.server, runs a scripted edit sequence through
+window.playground, and checks:
   * the page's state hash equals the native library's for the page's own edit log (`edgeland
     replay LOG`), and so do its polygon and vertex counts;
   * playground.replay(log) returns the object `edgeland replay LOG` prints (all keys but the
@@ -207,14 +208,13 @@ def run(args):
         checks.expect(not console and not errors,
                       f"no console errors {[e['message'] for e in console] + errors}")
 
-        wasm = os.path.join(args.web_dir, 'edgeland.wasm')
-        with open(wasm, 'rb') as f:
-            gz = len(gzip.compress(f.read(), 9))
+        modules = {name: os.path.join(args.web_dir, *path) for name, path in
+                   (('the package', ('edgeland', 'edgeland_c.mjs')), ('the demo module', ('demo.mjs',)))}
         page_rate = len(edits) / (result['ms'] / 1000)
         wasm_rate = len(edits) / (result['stats']['totalEditMs'] / 1000)
         print(f"scripted edits in the page: {len(edits)} in {result['ms']:.0f} ms, "
               f"{page_rate:.0f} edits/s with drawing and colliders, {wasm_rate:.0f} edits/s "
-              f"in the module alone")
+              f"in the package's calls alone (the game driver's edit and its update)")
         print(f"  of which the page's view {timing['viewMs']:.0f} ms, its planck.js colliders "
               f"{timing['collidersMs']:.0f} ms; {result['stats']['chains']} surface chains, "
               f"{result['stats']['islandsDetached']} islands detached")
@@ -228,7 +228,11 @@ def run(args):
         frames = shown['frames']
         print(f"frames: {frames['frames']}, mean {frames['meanMs']:.2f} ms, max "
               f"{frames['maxMs']:.2f} ms (physics step and drawing, {shown['bodies']} bodies)")
-        print(f"wasm: {os.path.getsize(wasm)} bytes, {gz} gzipped (-9)")
+        for name, path in modules.items():
+            with open(path, 'rb') as f:
+                data = f.read()
+            print(f"{name}: {os.path.basename(path)} {len(data)} bytes (the wasm inlined), "
+                  f"{len(gzip.compress(data, 9))} gzipped (-9)")
     finally:
         driver.quit()
         server.shutdown()

@@ -1,6 +1,8 @@
 #pragma once
-// The landscape demo's hand on its world: turns each generated ring into a valid shape and
-// applies one edit with it, counting the edits.
+// The demo's hand on its world: the generator (world.hpp, actions.hpp) makes rings and says
+// what each does (carve, fill, fill_empty, replace); an editor takes them. LandscapeEditor
+// imports each ring and applies it to a landscape; the browser playground's demo module hands
+// them to the JavaScript package, which imports and applies them the same way (play/web).
 #include <cstddef>
 
 #include "edgeland/io/landscape_log.hpp"
@@ -21,14 +23,15 @@ inline constexpr Material kCrystal = 8;
 
 class DemoEditor {
  public:
-  explicit DemoEditor(Landscape& landscape) : landscape_(landscape) {}
+  virtual ~DemoEditor() = default;
 
-  // Imports `ring` as an OGC polygon (clip.hpp import_polygons: integer rounding of the
-  // trigonometry may leave a ring that is not strictly simple) and applies the edit of `kind`
-  // (log::apply_edit's arguments); a ring of no area is skipped. Throws what the landscape's
-  // edits throw.
-  void edit(log::LandscapeEditKind kind, const Ring& ring, Material material = kEmpty,
-            Material from = kEmpty);
+  // One generated ring as one edit of `kind` (log::apply_edit's arguments: `material` is fill's
+  // and fill_empty's material and replace's TO, `from` replace's FROM). The ring may not be
+  // strictly simple (integer rounding of the trigonometry): it is read as an OGC polygon.
+  virtual void edit(log::LandscapeEditKind kind, const Ring& ring, Material material = kEmpty,
+                    Material from = kEmpty) = 0;
+  // The edits made so far (the players' actions run until they have made theirs).
+  virtual std::size_t edits() const noexcept = 0;
 
   void carve(const Ring& ring) { edit(log::LandscapeEditKind::kCarve, ring); }
   void fill(const Ring& ring, Material m) { edit(log::LandscapeEditKind::kFill, ring, m); }
@@ -38,8 +41,19 @@ class DemoEditor {
   void replace(const Ring& ring, Material from, Material to) {
     edit(log::LandscapeEditKind::kReplace, ring, to, from);
   }
+};
 
-  std::size_t edits() const noexcept { return edits_; }
+// Each ring imported as an OGC polygon (clip.hpp import_polygons) and applied to the landscape
+// as one edit; a ring of no area is skipped. Counts the edits.
+class LandscapeEditor final : public DemoEditor {
+ public:
+  explicit LandscapeEditor(Landscape& landscape) : landscape_(landscape) {}
+
+  // Throws what the landscape's edits throw.
+  void edit(log::LandscapeEditKind kind, const Ring& ring, Material material = kEmpty,
+            Material from = kEmpty) override;
+
+  std::size_t edits() const noexcept override { return edits_; }
 
  private:
   Landscape& landscape_;

@@ -30,6 +30,9 @@ namespace edgeland::log {
 struct LandscapeReplayOptions {
   // Replay in checked mode (Landscape::set_checked) and run Landscape::check() at the end.
   bool check = false;
+  // The replayed landscape records its own log from its first edit (Landscape::start_log), so
+  // that its log() replays to it bit for bit again: a log loaded to be edited further and shared.
+  bool record_log = false;
 };
 
 // Why a replay stopped.
