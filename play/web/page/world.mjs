@@ -40,7 +40,7 @@ function gameOptions() {
 // A new world over the box recording its log: the demo world of `seed` (> 0), each ring of the
 // generator imported (OGC) and applied as demo::LandscapeEditor does natively, a ring of no
 // area skipped; or the box filled with `fill` (seed 0).
-function startingWorld(box, fill, seed) {
+export function startingWorld(box, fill, seed) {
   const world = new Landscape(box, seed > 0 ? 0 : fill);
   world.startLog();
   if (seed === 0) return world;

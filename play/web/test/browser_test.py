@@ -6,6 +6,8 @@ over the JavaScript package) from a local http.server, runs a scripted edit sequ
 window.playground, and checks:
   * the page's state hash equals the native library's for the page's own edit log (`edgeland
     replay LOG`), and so do its polygon and vertex counts;
+  * the demo world the page builds (the demo module's rings imported and applied through the
+    package) is `edgeland demo`'s, bit for bit;
   * playground.replay(log) returns the object `edgeland replay LOG` prints (all keys but the
     timing);
   * undo and redo move between the states the edits made;
@@ -78,12 +80,12 @@ def browser():
     return driver
 
 
-def demo_log(edgeland, edits):
-    """The log of `edgeland demo --edits N` (its 8192 x 8192 world): the speed comparison's log."""
+def demo_log(edgeland, edits, seed=1):
+    """The log of `edgeland demo --edits N --seed S` (its 8192 x 8192 world)."""
     with tempfile.TemporaryDirectory() as work:
         path = os.path.join(work, 'demo.log')
-        subprocess.run([edgeland, 'demo', '--edits', str(edits), '--unchecked', '--out', work,
-                        '--log', path], capture_output=True, check=True)
+        subprocess.run([edgeland, 'demo', '--edits', str(edits), '--seed', str(seed), '--unchecked',
+                        '--out', work, '--log', path], capture_output=True, check=True)
         with open(path) as f:
             return f.read()
 
@@ -110,6 +112,15 @@ playground.ready.then(p => {
   const ms = performance.now() - start;
   done({ms, refused, hash: p.stateHash(), stats: p.stats(), log: p.log()});
 }).catch(e => done({failed: String(e)}));
+"""
+
+DEMO_WORLD = """
+const [seed, done] = [arguments[0], arguments[arguments.length - 1]];
+import('./world.mjs').then(({startingWorld}) => {
+  const world = startingWorld([[0, 0], [8192, 8192]], 0, seed);
+  done(world.stateHash.toString(16).padStart(16, '0'));
+  world.dispose();
+}).catch(e => done(String(e)));
 """
 
 UNDO_REDO = """
@@ -175,6 +186,12 @@ def run(args):
                       'polygon and vertex counts equal the native replay\'s')
         checks.expect(result['refused'] == 0, f"no scripted edit refused ({result['refused']})")
         timing = driver.execute_script('return playground.timing')
+
+        page_demo = driver.execute_async_script(DEMO_WORLD, 1)
+        native_demo = native_replay(args.edgeland, demo_log(args.edgeland, 0, seed=1))['state_hash']
+        checks.expect(page_demo == native_demo,
+                      f"the demo world built through the package is `edgeland demo`'s "
+                      f"(page {page_demo}, native {native_demo})")
 
         states = driver.execute_script(UNDO_REDO)
         checks.expect(states['undone'] != states['before'] and states['redone'] == states['undone']
