@@ -7,6 +7,7 @@
 
 #include "cell_split.hpp"
 #include "edgeland/spatial/byte_codec.hpp"
+#include "edgeland/spatial/delta.hpp"
 #include "edgeland/spatial/landscape.hpp"
 #include "region_record.hpp"
 #include "regions.hpp"
@@ -169,7 +170,7 @@ namespace edgeland {
 namespace {
 
 struct PathLess {
-  bool operator()(const TreePath& a, const TreePath& b) const { return detail::path_less(a, b); }
+  bool operator()(const TreePath& a, const TreePath& b) const { return path_less(a, b); }
 };
 
 // The tree above the regions, every region a stub made from its summary.
