@@ -2,8 +2,6 @@
 // the two sides that take them.
 #include "frame_game.hpp"
 
-#include <time.h>
-
 #include <algorithm>
 #include <optional>
 
@@ -18,26 +16,6 @@ namespace edgeland::bench {
 namespace {
 
 constexpr Material kBedrock = 1, kRock = 2, kDirt = 3, kBrick = 4;
-
-// This thread's CPU time: the machine is shared, and both sides are single-threaded.
-class ThreadClock {
- public:
-  ThreadClock() : last_(now()) {}
-  double lap() {
-    const double t = now();
-    const double s = t - last_;
-    last_ = t;
-    return s;
-  }
-
- private:
-  static double now() {
-    timespec t{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-    return static_cast<double>(t.tv_sec) + static_cast<double>(t.tv_nsec) * 1e-9;
-  }
-  double last_;
-};
 
 class Random {
  public:

@@ -6,7 +6,9 @@
 //   fill:      EDITS 32-gons of radius 40 of material 2 filled into the world the explosions
 //              left (about half of it carved).
 // Every edit, in one process, both sides one after the other (which one first alternates
-// between repeats), so both see the same machine:
+// between repeats), so both see the same machine; times are this thread's CPU time
+// (game_common.hpp, ThreadClock: the machine is shared, and a preempted edit would otherwise count
+// the wait):
 //   edgeland: GameDriver::apply (the landscape edit, the chains, islands, debris and meshes that
 //             follow from it), then box2d::Terrain::apply (the changed chains' fixtures
 //             destroyed and created) and a debris body per island: the end-to-end time; and, as
@@ -103,21 +105,6 @@ struct Pass {
   std::optional<World2> end;
 };
 
-// The clock between laps (steady_clock, as landscape_common.hpp's seconds_of).
-class Laps {
- public:
-  Laps() : last_(std::chrono::steady_clock::now()) {}
-  double lap() {
-    const auto now = std::chrono::steady_clock::now();
-    const double s = std::chrono::duration<double>(now - last_).count();
-    last_ = now;
-    return s;
-  }
-
- private:
-  std::chrono::steady_clock::time_point last_;
-};
-
 // One side's state during a pass.
 struct EdgelandSide {
   b2World world{b2Vec2(0, -10)};
@@ -154,7 +141,7 @@ struct PixelSide {
 };
 
 void edgeland_edit(EdgelandSide& e, Workload w, const ValidSet& shape, std::size_t i, Pass& p) {
-  Laps laps;
+  ThreadClock laps;
   benchmark::DoNotOptimize(w == Workload::kFill ? e.plain.fill(shape, kFillMaterial)
                                                 : e.plain.carve(shape));
   p.seconds[kEdit][i] = laps.lap();
@@ -180,7 +167,7 @@ void edgeland_edit(EdgelandSide& e, Workload w, const ValidSet& shape, std::size
 }
 
 void pixel_edit(PixelSide& s, Workload w, const ValidSet& shape, std::size_t i, Pass& p) {
-  Laps laps;
+  ThreadClock laps;
   s.bitmap.paint(shape.polygons(), w == Workload::kFill ? kFillMaterial : kEmpty);
   p.seconds[kPaint][i] = laps.lap();
   const auto& traced = s.terrain.trace(s.bitmap, *bounding_box(shape.polygons()));

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <vector>
 
+#include "edgeland/demo/splitmix64.hpp"
 #include "edgeland/kernel/shapes.hpp"
 #include "edgeland/spatial/byte_codec.hpp"
 #include "edgeland/spatial/delta.hpp"
@@ -56,20 +57,13 @@ struct Attack {
   std::vector<std::string> messages;
 };
 
-std::uint64_t splitmix64(std::uint64_t& s) {
-  std::uint64_t z = (s += 0x9E3779B97F4A7C15ull);
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  return z ^ (z >> 31);
-}
-
 std::vector<std::string> garbage() {
   std::vector<std::string> out;
-  std::uint64_t s = 37;
+  demo::SplitMix64 random(37);
   for (int i = 0; i < 20; ++i) {
-    std::string m(1 + splitmix64(s) % 200, '\0');
-    for (char& c : m) c = static_cast<char>(splitmix64(s));
-    m[0] = static_cast<char>(i % 2 ? 2 : splitmix64(s) % 32);  // half claim to be edits
+    std::string m(1 + random.below(200), '\0');
+    for (char& c : m) c = static_cast<char>(random.next());
+    m[0] = static_cast<char>(i % 2 ? 2 : random.below(32));  // half claim to be edits
     out.push_back(std::move(m));
   }
   return out;

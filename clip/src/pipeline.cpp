@@ -3,11 +3,13 @@
 
 #include <limits>
 #include <optional>
+#include <utility>
 
 #include "assembly.hpp"
 #include "canonical.hpp"
 #include "collinear_merge.hpp"
 #include "hole_splitting.hpp"
+#include "small_overlay.hpp"
 #include "snap_rounding.hpp"
 #include "stage_checks.hpp"
 
@@ -45,10 +47,29 @@ std::size_t overlap_budget(const Pipeline& p) {
   return p.overlap_budget.value_or(4 * p.edges.size() + 4096);
 }
 
+// Whether the small overlay's noding and snap rounding take the edge list (small_overlay.hpp):
+// asked for, and few segments of validated rings, each counting once, labeled by owners.
+bool small_arrangement(const Pipeline& p) {
+  return p.small_overlay && p.edges.size() <= kSmallOverlayUpTo && p.mode != LabelMode::kWinding &&
+         !p.screening && p.simple_rings && p.edges.weight.empty();
+}
+
+// The small overlay's noding and snap rounding, if it takes the edge list and its re-check finds
+// nothing the closure left (else the general ones run).
+std::optional<Noded> node_small(const Pipeline& p) {
+  if (!small_arrangement(p)) return std::nullopt;
+  Noded n{find_contacts_small(p.edges), {}};
+  if (!snap_round_small(p.edges, n.contacts, n.snapped)) return std::nullopt;
+  discard(n.contacts.splits);
+  discard(n.contacts.hot);
+  return n;
+}
+
 // Noding with the operands' screen (when not validated yet) and the overlap budget; when the
 // budget runs out, the stacks of collinear edges are merged (`merged`) and the merged edges
 // noded again.
 Noded node_operands(const Pipeline& p, std::optional<MergedEdges>& merged) {
+  if (std::optional<Noded> small = node_small(p)) return std::move(*small);
   Noded n =
       node(p.edges, {p.simple_rings, p.screening ? &p.edges.channel : nullptr, overlap_budget(p)});
   if (!n.contacts.overlap_heavy) return n;

@@ -56,6 +56,10 @@ struct Pipeline {
   // Holes are bridged only at corners of their region and at points where two of its rings
   // touch (assembly.hpp), so the pieces depend on the region alone (relabel.hpp).
   bool corner_bridges = false;
+  // Few segments may take the small overlay's noding and snap rounding (small_overlay.hpp): the
+  // landscape's cell overlays. The result is the same; relabel() keeps the general ones, so that
+  // the two can be compared.
+  bool small_overlay = false;
   Screening* screening = nullptr;  // operands not validated yet (noding then tests all pairs)
   // Checked mode: every stage's result is checked (stage_checks.hpp) before the next stage
   // reads it.

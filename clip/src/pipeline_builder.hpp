@@ -65,6 +65,11 @@ class PipelineBuilder {
     p_.corner_bridges = true;
     return *this;
   }
+  // Few segments take the small overlay's noding and snap rounding (Pipeline::small_overlay).
+  PipelineBuilder& small_overlay(bool on) {
+    p_.small_overlay = on;
+    return *this;
+  }
   // Operands not validated yet, checked while clipped (Screening); null: validated.
   PipelineBuilder& screened_by(Screening* screening) {
     p_.screening = screening;

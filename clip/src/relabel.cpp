@@ -91,10 +91,14 @@ ShapeNearWindow shape_near_window(const ValidSet& shape, const Box64& window) {
   return near;
 }
 
-PipelineResult run_relabel(const ValidSet& regions, std::span<const RegionLabel> labels,
-                           const ValidSet& shape, const ShapeNearWindow& near, const Box64& window,
-                           std::span<const RegionLabel> table, const ClipOptions& options,
-                           const std::vector<std::uint32_t>* in_play, std::vector<Box64>* moved) {
+PipelineResult run_relabel(const RelabelCall& call, const std::vector<std::uint32_t>* in_play,
+                           std::vector<Box64>* moved) {
+  // (Plain references, not a structured binding: clang 14 cannot capture one in a lambda.)
+  const ValidSet &regions = call.regions, &shape = call.shape;
+  const ShapeNearWindow& near = call.near;
+  const Box64& window = call.window;
+  const ClipOptions& options = call.options;
+  const std::span<const RegionLabel> labels = call.labels, table = call.table;
   const PolygonSet& members = regions.polygons();
   // When all the near members lie in the window, being inside one of them is being inside
   // shape ∩ window and the window's own ring is not needed; otherwise it joins them and
@@ -115,6 +119,7 @@ PipelineResult run_relabel(const ValidSet& regions, std::span<const RegionLabel>
             .collinear_free(ValidSetFactory::collinear_free(regions) &&
                             ValidSetFactory::collinear_free(shape))
             .corner_bridges()
+            .small_overlay(call.small)
             .run(moved, true);
       },
       options, "relabel", inputs, shape_wkt);
@@ -137,7 +142,7 @@ LabeledClipResult relabel(const ValidSet& regions, std::span<const RegionLabel> 
   detail::require_relabel_input(regions, labels, window);
   const detail::ShapeNearWindow near = detail::shape_near_window(shape, window);
   detail::PipelineResult r =
-      detail::run_relabel(regions, labels, shape, near, window, table, options, nullptr, nullptr);
+      detail::run_relabel({regions, labels, shape, near, window, table, options}, nullptr, nullptr);
   return detail::relabeled_regions(r);
 }
 

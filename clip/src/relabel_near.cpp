@@ -151,40 +151,48 @@ LabeledClipResult merged(LabeledClipResult computed, const LeftOut& kept) {
 }
 
 // relabel()'s pipeline on every piece.
-LabeledClipResult overlay_all(const ValidSet& regions, std::span<const RegionLabel> labels,
-                              const ValidSet& shape, const detail::ShapeNearWindow& near,
-                              const Box64& window, std::span<const RegionLabel> table,
-                              const ClipOptions& options) {
-  detail::PipelineResult r =
-      detail::run_relabel(regions, labels, shape, near, window, table, options, nullptr, nullptr);
+LabeledClipResult overlay_all(const detail::RelabelCall& call) {
+  detail::PipelineResult r = detail::run_relabel(call, nullptr, nullptr);
   return detail::relabeled_regions(r);
 }
 
 // Runs the pipeline on the groups of pieces marked in `in` and merges the left-out pieces in;
 // if a segment snap rounding moved comes near a left-out piece (it could have met a vertex or
 // an edge of it), runs it again on every piece instead. So an overlay costs at most two runs.
-LabeledClipResult overlay_groups_in_reach(
-    const ValidSet& regions, std::span<const RegionLabel> labels, const ValidSet& shape,
-    const detail::ShapeNearWindow& near, const Box64& window, std::span<const RegionLabel> table,
-    const ClipOptions& options, const std::vector<Box64>& boxes, ScratchVector<std::uint8_t>& in) {
-  whole_groups(groups_of(boxes, labels), in);
-  if (all_in(in)) return overlay_all(regions, labels, shape, near, window, table, options);
+LabeledClipResult overlay_groups_in_reach(const detail::RelabelCall& call,
+                                          const std::vector<Box64>& boxes,
+                                          ScratchVector<std::uint8_t>& in) {
+  whole_groups(groups_of(boxes, call.labels), in);
+  if (all_in(in)) return overlay_all(call);
   ScratchVector<std::uint32_t> in_play;
   for (std::uint32_t i = 0; i < in.size(); ++i)
     if (in[i]) in_play.push_back(i);
   ScratchVector<Box64> moved;
-  detail::PipelineResult r =
-      detail::run_relabel(regions, labels, shape, near, window, table, options, &in_play, &moved);
-  if (bring_in_near(boxes, moved, in))
-    return overlay_all(regions, labels, shape, near, window, table, options);
+  detail::PipelineResult r = detail::run_relabel(call, &in_play, &moved);
+  if (bring_in_near(boxes, moved, in)) return overlay_all(call);
   LeftOut kept;
-  collect_left_out(regions, labels, in, kept);
+  collect_left_out(call.regions, call.labels, in, kept);
   LabeledClipResult out = merged(detail::relabeled_regions(r), kept);
   out.pieces_left_out = kept.size();
   return out;
 }
 
 }  // namespace
+
+namespace detail {
+
+LabeledClipResult relabel_near(const RelabelCall& call, std::span<const Box64> piece_boxes) {
+  const PolygonSet& pieces = call.regions.polygons();
+  ScratchVector<Box64> boxes;
+  boxes.assign(piece_boxes.begin(), piece_boxes.end());
+  ScratchVector<std::uint8_t> in;
+  in.assign(pieces.size(), 0);
+  bring_in_near(boxes, call.near.boxes, in);
+  if (!all_in(in)) return overlay_groups_in_reach(call, boxes, in);
+  return overlay_all(call);  // the shape reaches every piece
+}
+
+}  // namespace detail
 
 LabeledClipResult relabel_near(const ValidSet& regions, std::span<const RegionLabel> labels,
                                const ValidSet& shape, const Box64& window,
@@ -195,12 +203,7 @@ LabeledClipResult relabel_near(const ValidSet& regions, std::span<const RegionLa
   ScratchVector<Box64> boxes;
   boxes.resize(pieces.size());
   for (std::size_t i = 0; i < pieces.size(); ++i) boxes[i] = *bounding_box(pieces[i]);
-  ScratchVector<std::uint8_t> in;
-  in.assign(pieces.size(), 0);
-  bring_in_near(boxes, near.boxes, in);
-  if (!all_in(in))
-    return overlay_groups_in_reach(regions, labels, shape, near, window, table, options, boxes, in);
-  return overlay_all(regions, labels, shape, near, window, table, options);  // reaches every piece
+  return detail::relabel_near({regions, labels, shape, near, window, table, options}, boxes);
 }
 
 }  // namespace edgeland

@@ -25,14 +25,29 @@ struct ShapeNearWindow {
 };
 ShapeNearWindow shape_near_window(const ValidSet& shape, const Box64& window);
 
+// One labeled overlay as relabel() and relabel_near() are asked for it. `small`: few segments take
+// the small overlay's noding and snap rounding (small_overlay.hpp), with the same result.
+struct RelabelCall {
+  const ValidSet& regions;
+  std::span<const RegionLabel> labels;
+  const ValidSet& shape;
+  const ShapeNearWindow& near;
+  const Box64& window;
+  std::span<const RegionLabel> table;
+  const ClipOptions& options;
+  bool small = false;
+};
+
 // The arrangement of the region polygons listed in `in_play` (all of them when null), the
 // shape's near members and, when needed, the window's ring; faces relabeled by `table`, regions
 // cut at their corners (clip/README.md, "Labeled overlays"). `moved` (if not null) receives the
 // boxes of the segments snap rounding moved. Guarded: an internal failure is an InternalError.
-PipelineResult run_relabel(const ValidSet& regions, std::span<const RegionLabel> labels,
-                           const ValidSet& shape, const ShapeNearWindow& near, const Box64& window,
-                           std::span<const RegionLabel> table, const ClipOptions& options,
-                           const std::vector<std::uint32_t>* in_play, std::vector<Box64>* moved);
+PipelineResult run_relabel(const RelabelCall& call, const std::vector<std::uint32_t>* in_play,
+                           std::vector<Box64>* moved);
+
+// relabel_near() (relabel.hpp) of a checked call, the pieces' boxes given (a landscape cell keeps
+// them).
+LabeledClipResult relabel_near(const RelabelCall& call, std::span<const Box64> piece_boxes);
 
 // The labeled regions of a run_relabel() result.
 LabeledClipResult relabeled_regions(PipelineResult& r);

@@ -1,12 +1,11 @@
 #pragma once
-// Islands taken out of the landscape as debris (game_types.hpp, Debris): all the islands of one
-// update in one Landscape::remove (a carve of exactly their polygons, whose edges are the
-// landscape's own, so it meets no crossing and rounds nothing), each island's region merged per
-// material into maximal polygons (the body's outline, not the cells it was cut from) and those cut
-// into convex pieces.
+// Islands taken out of the landscape as debris (game_types.hpp, Debris): all the islands whose
+// debris jobs (debris_job.hpp) finished in one update in one Landscape::remove (a carve of exactly
+// their polygons, whose edges are the landscape's own, so it meets no crossing and rounds nothing).
 #include <span>
 #include <vector>
 
+#include "debris_job.hpp"
 #include "edgeland/game/game_types.hpp"
 #include "edgeland/game/islands.hpp"
 
@@ -22,13 +21,11 @@ struct DetachedAll {
 // now); their references are appended to `refs` when it does.
 bool present(const Landscape& world, const Island& island, std::vector<PolygonRef>& refs);
 
-// The islands still present, carved out of `world` in one edit (strong guarantee: a throw
-// leaves `world` as it was), each made debris (as debris_of).
-DetachedAll detach_islands(Landscape& world, std::span<const Island> islands,
-                           const GameOptions& options);
+// The finished jobs' islands still present carved out of `world` in one edit (strong
+// guarantee: a throw leaves `world` as it was), their debris taken from the jobs.
+DetachedAll detach_finished(Landscape& world, std::span<DebrisJob> jobs);
 
-// An island's debris (without taking it out of the landscape): pieces of at most
-// options.max_piece_vertices, meshes when options.meshes.
-Debris debris_of(const Island& island, const GameOptions& options);
+// Each material's part of the island as maximal polygons (ascending material).
+std::vector<IslandRegion> island_regions(const Island& island, bool checked);
 
 }  // namespace edgeland::game_detail

@@ -11,12 +11,6 @@
 namespace edgeland::game_detail {
 namespace {
 
-std::size_t vertices_of(const Island& island) {
-  std::size_t n = 0;
-  for (const IslandPiece& p : island.pieces) n += p.polygon.size();
-  return n;
-}
-
 // An edit that turns some non-solid material solid (a fill, in the game's terms).
 bool fills(const Edit& e, const PhysicsMaterials& materials) {
   for (std::size_t m = 0; m < kMaterialCount; ++m) {
@@ -98,8 +92,7 @@ GameState::GameState(Landscape world, const GameOptions& options)
   surface_.update(land_, store_, {}, cells);
   if (!options_.debris) return;
   islands_ = std::make_unique<IslandTree>(land_, store_, options_.surface.materials);
-  for (Island& island : islands_of(land_, store_, islands_->islands()))
-    queue_.push_back({std::move(island), 0});
+  queue_islands(islands_of(land_, store_, islands_->islands()));
 }
 
 // Stage "edit": the edits in order on a copy (O(1)), kept only when all of them succeed.
@@ -137,8 +130,7 @@ GameUpdate GameState::reset(Landscape world) {
   out.changes = changes_between(gone_, store_, fresh_);
   if (islands_) {  // summaries made anew: every island of the world waits again
     islands_ = std::make_unique<IslandTree>(land_, store_, options_.surface.materials);
-    for (Island& island : islands_of(land_, store_, islands_->islands()))
-      queue_.push_back({std::move(island), 0});
+    queue_islands(islands_of(land_, store_, islands_->islands()));
   }
   drain_debris(out);
   finish(out);
@@ -158,10 +150,14 @@ void GameState::follow(const Landscape& before, const ChangeSet& changes, GameUp
   replaced_cells(before, fresh_, replaced_);
   replace_cells(replaced_, fresh_, out);
   if (!islands_) return;
-  for (Island& island : islands_of(land_, store_, islands_->update(land_, store_, fresh_))) {
-    queue_.push_back({std::move(island), 0});
-    ++out.work.islands_found;
-  }
+  std::vector<Island> found = islands_of(land_, store_, islands_->update(land_, store_, fresh_));
+  out.work.islands_found += found.size();
+  queue_islands(std::move(found));
+}
+
+void GameState::queue_islands(std::vector<Island> islands) {
+  for (Island& island : islands)
+    queue_.push_back({DebrisJob(std::move(island), land_.checked()), 0});
 }
 
 void GameState::replace_cells(std::span<const Box64> replaced, std::span<const Box64> fresh,
@@ -173,32 +169,34 @@ void GameState::replace_cells(std::span<const Box64> replaced, std::span<const B
   out.work.cells_traced += surface_.last_traced();
 }
 
-// Stage "debris": the islands taken from the queue carved out in one edit, then followed.
+// Stage "debris": the queued islands' jobs advanced, those finished carved out in one edit,
+// then followed.
 void GameState::drain_debris(GameUpdate& out) {
   if (queue_.empty()) return;
-  const std::vector<Island> islands = take_from_queue();
+  std::vector<DebrisJob> finished = advance_jobs();
+  for (Waiting& w : queue_) ++w.age;
+  if (finished.empty()) return;
   const Landscape before = land_;
-  DetachedAll detached = detach_islands(land_, islands, options_);
+  DetachedAll detached = detach_finished(land_, finished);
   if (!detached.changes.cells.empty()) follow(before, detached.changes, out);
   take_changes(out.changes, std::move(detached.changes));
   out.work.islands_detached += detached.debris.size();
   for (Debris& d : detached.debris) out.debris.push_back(std::move(d));
-  for (Waiting& w : queue_) ++w.age;
 }
 
-// Oldest first: the first always, then while the budget lasts; any that waited its limit too.
-std::vector<Island> GameState::take_from_queue() {
-  std::vector<Island> out;
+// Oldest first, while the budget lasts (the first gets a step whatever it costs); a job that
+// has waited options_.max_debris_wait updates is finished whatever the budget. Queued later,
+// a job has waited no longer than those before it, so the first that stops ends the pass.
+std::vector<DebrisJob> GameState::advance_jobs() {
+  std::vector<DebrisJob> finished;
   std::size_t spent = 0;
   while (!queue_.empty()) {
-    const std::size_t cost = vertices_of(queue_.front().island);
-    const bool due = queue_.front().age >= options_.max_debris_wait;
-    if (!out.empty() && !due && spent + cost > options_.debris_budget) break;
-    spent += cost;
-    out.push_back(std::move(queue_.front().island));
+    Waiting& w = queue_.front();
+    if (!w.job.advance(options_, spent, w.age >= options_.max_debris_wait)) break;
+    finished.push_back(std::move(w.job));
     queue_.pop_front();
   }
-  return out;
+  return finished;
 }
 
 // Stage "finish": the merged lists in order, the meshes of what the update added.

@@ -6,8 +6,9 @@
 //   follow   the cells the change replaced leave the store and the new ones are scanned, once
 //            each (cell_scan.hpp); the chains (surface_state.hpp) and the island summaries
 //            (island_tree.hpp) are made from those records; new islands join the debris queue;
-//   debris   queued islands, oldest first within the budget, carved out in one edit and made
-//            debris (debris.hpp); that edit is followed like the first;
+//   debris   queued islands' debris made in steps, oldest first within the budget (debris_job.hpp),
+//            those finished carved out in one edit (debris.hpp); that edit is followed like
+//            the first;
 //   finish   the steps' changes, chains and meshes merged into one GameUpdate (what was added
 //            and removed within the update appears in neither list).
 #include <deque>
@@ -16,6 +17,7 @@
 #include <vector>
 
 #include "cell_store.hpp"
+#include "debris_job.hpp"
 #include "edgeland/game/game_driver.hpp"
 #include "edgeland/game/islands.hpp"
 #include "island_tree.hpp"
@@ -39,7 +41,7 @@ class GameState {
 
  private:
   struct Waiting {
-    Island island;
+    DebrisJob job;
     std::size_t age = 0;  // updates it has waited
   };
 
@@ -48,7 +50,8 @@ class GameState {
   void replace_cells(std::span<const Box64> replaced, std::span<const Box64> fresh,
                      GameUpdate& out);
   void drain_debris(GameUpdate& out);
-  std::vector<Island> take_from_queue();
+  std::vector<DebrisJob> advance_jobs();
+  void queue_islands(std::vector<Island> islands);
   void finish(GameUpdate& out) const;
   void note_fills(std::span<const Edit> edits);
   void start_work();

@@ -13,14 +13,14 @@ namespace game_detail {
 struct SurfaceTrackerState {
   SurfaceTrackerState(const Landscape& world, const SurfaceOptions& options)
       : surface(options), seen(world) {}
-  // `world` after the cells `replaced` (of `seen`) were replaced by `fresh`.
+  // `world` after the cells `replaced_boxes` (of `seen`) were replaced by `fresh_boxes`.
   ChainUpdate change(const Landscape& world, std::span<const Box64> replaced_boxes,
-                     std::span<const Box64> fresh) {
+                     std::span<const Box64> fresh_boxes) {
     gone.clear();
     store.remove(replaced_boxes, gone);
-    store.scan(world, fresh, surface.options().materials);
+    store.scan(world, fresh_boxes, surface.options().materials);
     seen = world;
-    return surface.update(world, store, gone, fresh);
+    return surface.update(world, store, gone, fresh_boxes);
   }
   SurfaceState surface;
   CellStore store;

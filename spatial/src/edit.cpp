@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <limits>
 
-#include "cell_overlay.hpp"
 #include "cell_split.hpp"
 #include "changes.hpp"
 #include "check.hpp"
@@ -167,7 +166,7 @@ const ValidSet& EditBuilder::shape_in(const Node& cell) const {
 
 EditBuilder::Draft EditBuilder::edit_cell(const NodePtr& cell) {
   std::optional<LabeledSet> content =
-      overlay_cell(*cell, shape_in(*cell), table_.table, clip_options());
+      relabel_cell(cell->content, shape_in(*cell), cell->box, table_.table, clip_options()).content;
   if (!content) return Draft::keep(cell);
   Draft edited = Draft::cell(cell->box, cell->depth, std::move(*content));
   grow(cell->vertices, edited.vertices);

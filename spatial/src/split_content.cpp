@@ -5,7 +5,6 @@
 
 #include "edgeland/clip/errors.hpp"
 #include "edgeland/kernel/wkt_writer.hpp"
-#include "same_content.hpp"
 
 namespace edgeland::detail {
 namespace {

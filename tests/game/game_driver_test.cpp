@@ -157,6 +157,21 @@ RC_GTEST_PROP(GameDriverProperty, DebrisHoldsTheAreaItTookOut, ()) {
   }
 }
 
+// However small the budget, no island waits longer than max_debris_wait updates: a big one is
+// made in steps over several updates, then carved out; once the edits stop, the queue is empty
+// after max_debris_wait + 1 updates, and every island has left the landscape.
+RC_GTEST_PROP(GameDriverProperty, NoIslandWaitsLongerThanItsLimit, ()) {
+  const LandscapeCase c = *landscape_case(12);
+  GameOptions options;
+  options.debris_budget = *rc::gen::element<std::size_t>(0, 1, 16);
+  options.max_debris_wait = *rc::gen::inRange<std::size_t>(0, 4);
+  GameDriver game(Landscape(c.world, c.fill, c.config), options);
+  for (const std::vector<Edit>& frame : frames_of(c.edits)) game.apply(frame);
+  for (std::size_t i = 0; i <= options.max_debris_wait; ++i) game.apply(std::span<const Edit>{});
+  RC_ASSERT(game.debris_waiting() == 0u);
+  RC_ASSERT(find_islands(game.landscape(), options.surface.materials).empty());
+}
+
 // A networked game (net/README.md, "Debris"): the server's driver detaches debris, and a
 // client whose driver never does (debris off) reaches the server's state by applying the frame's
 // edits and then the carve of every debris polygon of the update, the COMMAND the server sends.

@@ -20,6 +20,7 @@
 // ACCURACY, LOCALITY, ERRORS, MEMORY, THREADS: as for clip() (clip.hpp), the exact result being
 // the relabeled regions.
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -40,6 +41,11 @@ struct LabeledSet {
   ValidSet set;
   std::vector<RegionLabel> labels;
 };
+
+// The same content: equal polygons in the same order, with equal labels.
+inline bool same_content(const LabeledSet& a, const LabeledSet& b) {
+  return a.labels == b.labels && a.set.polygons() == b.set.polygons();
+}
 
 struct LabeledClipResult {
   LabeledSet regions;
@@ -76,6 +82,36 @@ EDGELAND_EXPORT LabeledClipResult relabel(const ValidSet& regions,
 EDGELAND_EXPORT LabeledClipResult relabel_near(const ValidSet& regions,
                                                std::span<const RegionLabel> labels,
                                                const ValidSet& shape, const Box64& window,
+                                               std::span<const RegionLabel> table,
+                                               const ClipOptions& options = {});
+
+// How relabel_cell() found its answer.
+enum class CellOverlayPath : std::uint8_t {
+  kQuick,    // a quick case: box and point tests, no arrangement
+  kSmall,    // the small overlay's arrangement (clip/README.md, "The small overlay")
+  kGeneral,  // the general pipeline's (more segments than the small overlay takes)
+};
+
+struct CellOverlayResult {
+  // The cell's content after the overlay; nullopt when it is the cell's content as it was.
+  std::optional<LabeledSet> content;
+  CellOverlayPath path = CellOverlayPath::kQuick;
+  std::size_t pieces_left_out = 0;  // as relabel_near()'s
+};
+
+// The overlay of one landscape cell, built for a cell's size: relabel_near() of `cell` (a
+// canonical decomposition lying in `window`, as relabel_near() requires) with the shape, whose
+// result is relabel()'s byte for byte, found the cheapest way there is. First the quick cases:
+// no member near the window, an empty cell kept empty, a member covering the window, a shape
+// clear of every boundary or passing only through regions it keeps; each is answered by box,
+// point and segment tests with relabel()'s result. Else the arrangement of relabel_near(): up to
+// a few hundred segments (a cell of edge_cap edges and a shape of tens) by the small overlay,
+// whose noding and snap rounding compare ring and segment boxes and scan for hot pixels, with
+// no search structure set up and no allocation but the result's once warm; more by the general
+// pipeline. In checked mode every answer that needed an arrangement is compared with relabel()'s
+// (InternalError if they differ). Errors as relabel().
+EDGELAND_EXPORT CellOverlayResult relabel_cell(const LabeledSet& cell, const ValidSet& shape,
+                                               const Box64& window,
                                                std::span<const RegionLabel> table,
                                                const ClipOptions& options = {});
 

@@ -87,11 +87,15 @@ struct DebrisPiece {
 // dynamic body: its region per material as maximal polygons (merged across cell lines: the
 // body's outline, not the cells it was cut from), those polygons' convex pieces, and its exact
 // area and centroid (the body's origin).
+// One material's part of an island as maximal polygons: its polygons merged across the cell
+// lines they were cut at (clip's merge_tiles), holes split as the clipper splits them.
+struct IslandRegion {
+  Material material = kEmpty;
+  PolygonSet polygons;
+};
+
 struct Debris {
-  struct Region {
-    Material material = kEmpty;
-    PolygonSet polygons;
-  };
+  using Region = IslandRegion;
   std::vector<Region> regions;      // ascending material
   std::vector<DebrisPiece> pieces;  // the convex pieces of every region polygon, in order
   std::vector<PolygonMesh> meshes;  // each region polygon's mesh, in order (GameOptions::meshes;

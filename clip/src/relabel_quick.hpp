@@ -1,18 +1,27 @@
 #pragma once
-// Step 3 of an edit (spatial/README.md, "An edit"): one cell's labeled polygons relabeled
-// inside the shape, rounded once. Most cells an edit reaches need no arrangement: an empty cell
-// that stays empty, a cell the shape covers whole, a shape that meets no boundary in the cell
-// and lies in one region it does not change. Those are answered by box tests and exact point and
-// segment tests (kernel/) with the result relabel() would give, bit for bit; the rest go through
-// relabel().
+// The quick cases of a cell's overlay (relabel_cell(), relabel.hpp): most cells an edit reaches
+// need no arrangement: an empty cell that stays empty, a cell the shape covers whole, a shape
+// that meets no boundary in the cell and lies in one region it does not change. Those are
+// answered by box tests and exact point and segment tests (kernel/) with the result relabel()
+// would give, bit for bit (the argument for each is at its function in relabel_quick.cpp).
 #include <cstdint>
 #include <optional>
 #include <span>
 
 #include "edgeland/clip/relabel.hpp"
-#include "node.hpp"
+#include "relabel_pipeline.hpp"
 
 namespace edgeland::detail {
+
+// A cell as the quick cases read it: its content (a canonical decomposition in `box`) and the
+// box of each of its polygons.
+struct CellInput {
+  const LabeledSet& content;
+  std::span<const Box64> boxes;
+  const Box64& box;
+  const PolygonSet& polygons() const { return content.set.polygons(); }
+  const std::vector<RegionLabel>& labels() const { return content.labels; }
+};
 
 // What the table makes of label l inside the shape (relabel.hpp: labels past its end are kept).
 inline RegionLabel relabeled(std::span<const RegionLabel> table, RegionLabel l) {
@@ -40,13 +49,10 @@ struct QuickAnswer {
   std::optional<LabeledSet> content;
 };
 
-// The first quick case that applies, or nullopt. Each answer is relabel()'s, bit for bit.
-std::optional<QuickAnswer> quick_overlay(const Node& cell, const ValidSet& shape,
+// The first quick case that applies, or nullopt. `near`: the shape's members near the cell box
+// (shape_near_window). Each answer is relabel()'s, bit for bit.
+std::optional<QuickAnswer> quick_overlay(const CellInput& cell, const ValidSet& shape,
+                                         const ShapeNearWindow& near,
                                          std::span<const RegionLabel> table);
-
-// The cell's content after the edit, or nullopt when it stays exactly as it is.
-std::optional<LabeledSet> overlay_cell(const Node& cell, const ValidSet& shape,
-                                       std::span<const RegionLabel> table,
-                                       const ClipOptions& options);
 
 }  // namespace edgeland::detail

@@ -1,9 +1,9 @@
-// The overlay of one cell (cell_overlay.hpp). The quick cases are those where relabel()'s
+// The quick cases of a cell's overlay (relabel_quick.hpp). They are those where relabel()'s
 // arrangement would meet no crossing at a non-integer point, so snap rounding moves nothing and
 // relabel() returns the canonical decomposition of the relabeled regions (relabel.hpp); when
-// those regions are the cell's own, that is the cell's content (I3), and when the shape covers
-// the cell they are one region or none.
-#include "cell_overlay.hpp"
+// those regions are the cell's own, that is the cell's content (a canonical decomposition), and
+// when the shape covers the cell they are one region or none.
+#include "relabel_quick.hpp"
 
 #include <algorithm>
 #include <vector>
@@ -13,31 +13,10 @@
 #include "edgeland/kernel/box_queries.hpp"
 #include "edgeland/kernel/point_in_polygon.hpp"
 #include "edgeland/kernel/predicates.hpp"
-#include "edgeland/kernel/wkt_writer.hpp"
-#include "same_content.hpp"
+#include "grown_box.hpp"
 
 namespace edgeland::detail {
 namespace {
-
-// The shape's members whose boxes meet the closed cell box: those relabel() takes part.
-struct NearMembers {
-  std::vector<std::size_t> members;
-  std::vector<Box64> boxes;
-  bool all_inside = true;  // every one lies in the closed cell box (no window ring needed)
-};
-
-NearMembers near_members(const ValidSet& shape, const Box64& cell) {
-  NearMembers near;
-  const PolygonSet& members = shape.polygons();
-  for (std::size_t i = 0; i < members.size(); ++i) {
-    const Box64 b = *bounding_box(members[i]);
-    if (!b.overlaps(cell)) continue;
-    near.members.push_back(i);
-    near.boxes.push_back(b);
-    near.all_inside = near.all_inside && cell.contains(b);
-  }
-  return near;
-}
 
 // The member contains the whole cell: no edge of it meets the cell's open interior, and a point
 // of that interior (the corner min, by the half-open rule) is inside it. Its edges then touch
@@ -50,16 +29,17 @@ bool covers(const Polygon& member, const Box64& cell) {
 }
 
 // Whether the cell's polygons leave some of its box uncovered (material 0 present).
-bool has_empty_space(const Node& cell) {
-  return twice_signed_area(cell.polygon_set()) < twice_signed_area(box_ring(cell.box));
+bool has_empty_space(const CellInput& cell) {
+  return twice_signed_area(cell.polygons()) < twice_signed_area(box_ring(cell.box));
 }
 
 // The shape covers the cell: each label present (0 where the polygons leave space) becomes its
 // relabeled value. kUnchanged: every one stays; kUniform: all become `to` (the content is then
 // the cell box of `to`, or nothing); kMixed: anything else (left to relabel()).
 enum class Covered { kUnchanged, kUniform, kMixed };
-Covered relabel_covered(const Node& cell, std::span<const RegionLabel> table, RegionLabel& to) {
-  std::vector<RegionLabel> present = cell.content.labels;
+Covered relabel_covered(const CellInput& cell, std::span<const RegionLabel> table,
+                        RegionLabel& to) {
+  std::vector<RegionLabel> present = cell.labels();
   if (present.empty() || has_empty_space(cell)) present.push_back(kNoRegion);
   to = relabeled(table, present.front());
   bool all_stay = true, uniform = true;
@@ -76,28 +56,19 @@ LabeledSet uniform_content(const Box64& box, RegionLabel to) {
   return {ValidSet(PolygonSet{box_ring(box)}), {to}};
 }
 
-Box64 grown(const Box64& b, std::int64_t by) {
-  return {{b.min.x - by, b.min.y - by}, {b.max.x + by, b.max.y + by}};
-}
-
-Box64 edge_box(const Segment& e) {
-  return {{std::min(e.a.x, e.b.x), std::min(e.a.y, e.b.y)},
-          {std::max(e.a.x, e.b.x), std::max(e.a.y, e.b.y)}};
-}
-
 // Whether some edge of `member` has a point in common with some edge of the cell's polygons.
-bool meets_a_boundary(const Node& cell, const Polygon& member, const Box64& member_box) {
-  const PolygonSet& polys = cell.polygon_set();
+bool meets_a_boundary(const CellInput& cell, const Polygon& member, const Box64& member_box) {
+  const PolygonSet& polys = cell.polygons();
   for (std::size_t q = 0; q < polys.size(); ++q) {
     if (!cell.boxes[q].overlaps(member_box)) continue;
     const Polygon& poly = polys[q];
     for (std::size_t j = 0; j < poly.size(); ++j) {
       const Segment f = ring_edge(poly, j);
-      const Box64 fb = edge_box(f);
+      const Box64 fb = segment_box(f);
       if (!fb.overlaps(member_box)) continue;
       for (std::size_t i = 0; i < member.size(); ++i) {
         const Segment e = ring_edge(member, i);
-        if (edge_box(e).overlaps(fb) && intersect(e, f).relation != SegmentRelation::kDisjoint)
+        if (segment_box(e).overlaps(fb) && intersect(e, f).relation != SegmentRelation::kDisjoint)
           return true;
       }
     }
@@ -107,15 +78,15 @@ bool meets_a_boundary(const Node& cell, const Polygon& member, const Box64& memb
 
 // A member that meets no boundary of the cell lies in one face of its polygons and may hold
 // whole polygons: the relabel leaves it all as it is when each of those keeps its label.
-bool leaves_all_as_is(const Node& cell, const Polygon& member, const Box64& member_box,
+bool leaves_all_as_is(const CellInput& cell, const Polygon& member, const Box64& member_box,
                       std::span<const RegionLabel> table) {
-  const PolygonSet& polys = cell.polygon_set();
+  const PolygonSet& polys = cell.polygons();
   RegionLabel around = kNoRegion;  // the label of the face the member lies in
   for (std::size_t q = 0; q < polys.size(); ++q) {
     if (!cell.boxes[q].overlaps(member_box)) continue;
-    if (locate(member.front(), polys[q]) == PointLocation::kInside) around = cell.content.labels[q];
+    if (locate(member.front(), polys[q]) == PointLocation::kInside) around = cell.labels()[q];
     if (locate(polys[q].front(), member) == PointLocation::kInside &&
-        relabeled(table, cell.content.labels[q]) != cell.content.labels[q])
+        relabeled(table, cell.labels()[q]) != cell.labels()[q])
       return false;
   }
   return relabeled(table, around) == around;
@@ -126,13 +97,13 @@ bool leaves_all_as_is(const Node& cell, const Polygon& member, const Box64& memb
 // near them (snap rounding moves segments by less than a unit, and only those meeting a hot
 // pixel; the window's edges, on integer lines, pass through the centre of every hot pixel they
 // meet). Each polygon is then wholly inside or wholly outside each member.
-bool clear_of_the_shape(const Node& cell, const ValidSet& shape, const NearMembers& near) {
+bool clear_of_the_shape(const CellInput& cell, const ValidSet& shape, const ShapeNearWindow& near) {
   const Box64 reach = grown(cell.box, 2);
   for (std::size_t k = 0; k < near.members.size(); ++k) {
     const Polygon& member = shape.polygons()[near.members[k]];
     for (std::size_t i = 0; i < member.size(); ++i) {
       const Segment edge = ring_edge(member, i);
-      const Box64 e = grown(edge_box(edge), 2);
+      const Box64 e = grown(segment_box(edge), 2);
       if (!e.overlaps(reach)) continue;
       for (const Box64& b : cell.boxes)
         if (b.overlaps(e) && segment_meets_open_box(edge, grown(b, 2))) return false;
@@ -143,12 +114,12 @@ bool clear_of_the_shape(const Node& cell, const ValidSet& shape, const NearMembe
 
 // With every polygon clear of the shape: no polygon inside a member changes its label, and the
 // uncovered space keeps its own (0).
-bool clear_and_kept(const Node& cell, const ValidSet& shape, const NearMembers& near,
+bool clear_and_kept(const CellInput& cell, const ValidSet& shape, const ShapeNearWindow& near,
                     std::span<const RegionLabel> table) {
   if (relabeled(table, kNoRegion) != kNoRegion) return false;
-  const PolygonSet& polys = cell.polygon_set();
+  const PolygonSet& polys = cell.polygons();
   for (std::size_t q = 0; q < polys.size(); ++q) {
-    const RegionLabel l = cell.content.labels[q];
+    const RegionLabel l = cell.labels()[q];
     if (relabeled(table, l) == l) continue;
     for (std::size_t k = 0; k < near.members.size(); ++k)
       if (near.boxes[k].contains(cell.boxes[q]) &&
@@ -175,19 +146,19 @@ bool in_open_box(Point64 p, const Box64& b) {
 // shape edge (a rounded crossing of a shape edge with a side line, a side edge or the window's
 // ring, or a vertex a moved shape edge's route jumps over), so inner edges meet none, and an
 // edge on a side line meets an integer-centred pixel only through its centre.
-bool inner_edges_clear(const Node& cell, const ValidSet& shape, const NearMembers& near) {
-  const PolygonSet& polys = cell.polygon_set();
-  for (std::size_t member : near.members) {
+bool inner_edges_clear(const CellInput& cell, const ValidSet& shape, const ShapeNearWindow& near) {
+  const PolygonSet& polys = cell.polygons();
+  for (std::uint32_t member : near.members) {
     const Polygon& m = shape.polygons()[member];
     for (std::size_t i = 0; i < m.size(); ++i) {
       const Segment e = ring_edge(m, i);
-      const Box64 eb = edge_box(e);
+      const Box64 eb = segment_box(e);
       if (!grown(eb, 2).overlaps(cell.box)) continue;
       for (std::size_t q = 0; q < polys.size(); ++q) {
         if (!grown(cell.boxes[q], 2).overlaps(eb)) continue;
         for (std::size_t j = 0; j < polys[q].size(); ++j) {
           const Segment f = ring_edge(polys[q], j);
-          const Box64 reach = grown(edge_box(f), 2);
+          const Box64 reach = grown(segment_box(f), 2);
           if (reach.overlaps(eb) && !on_cell_side(f, cell.box) && segment_meets_open_box(e, reach))
             return false;
         }
@@ -199,13 +170,13 @@ bool inner_edges_clear(const Node& cell, const ValidSet& shape, const NearMember
 
 // The label of the region holding p, a point of the open cell box two units or more from every
 // inner edge: the polygon p is inside, or 0 (empty space); nullopt if p is on a boundary.
-std::optional<RegionLabel> region_at(const Node& cell, Point64 p) {
-  const PolygonSet& polys = cell.polygon_set();
+std::optional<RegionLabel> region_at(const CellInput& cell, Point64 p) {
+  const PolygonSet& polys = cell.polygons();
   for (std::size_t q = 0; q < polys.size(); ++q) {
     if (!cell.boxes[q].contains(p)) continue;
     switch (locate(p, polys[q])) {
       case PointLocation::kInside:
-        return cell.content.labels[q];
+        return cell.labels()[q];
       case PointLocation::kOnBoundary:
         return std::nullopt;  // Not reached when the inner edges are clear: kept for safety.
       case PointLocation::kOutside:
@@ -217,8 +188,8 @@ std::optional<RegionLabel> region_at(const Node& cell, Point64 p) {
 
 // The first vertex of every chain of inner edges of polygon q (a maximal run of consecutive
 // inner edges along its ring; the whole ring when no edge lies on a side line).
-void inner_chain_starts(const Node& cell, std::size_t q, std::vector<Point64>& out) {
-  const Polygon& poly = cell.polygon_set()[q];
+void inner_chain_starts(const CellInput& cell, std::size_t q, std::vector<Point64>& out) {
+  const Polygon& poly = cell.polygons()[q];
   const std::size_t n = poly.size();
   bool previous = !on_cell_side(ring_edge(poly, n - 1), cell.box), any_side = !previous;
   const std::size_t before = out.size();
@@ -239,7 +210,7 @@ void inner_chain_starts(const Node& cell, std::size_t q, std::vector<Point64>& o
 // as a vertex of its inner edges says (two units from the member's boundary, and its interior
 // beside it on the same side), and empty space only if one of the inner edges around it is
 // inside the member, each chain of inner edges lying wholly on one side.
-bool member_keeps_what_it_meets(const Node& cell, const Polygon& m,
+bool member_keeps_what_it_meets(const CellInput& cell, const Polygon& m,
                                 std::span<const RegionLabel> table) {
   for (Point64 v : m) {
     if (!in_open_box(v, cell.box)) continue;
@@ -257,8 +228,8 @@ bool member_keeps_what_it_meets(const Node& cell, const Polygon& m,
   const Box64 mb = *bounding_box(m);
   const bool fills_space = relabeled(table, kNoRegion) != kNoRegion;
   std::vector<Point64> starts;
-  for (std::size_t q = 0; q < cell.content.labels.size(); ++q) {
-    const RegionLabel l = cell.content.labels[q];
+  for (std::size_t q = 0; q < cell.labels().size(); ++q) {
+    const RegionLabel l = cell.labels()[q];
     const bool changes = relabeled(table, l) != l;
     if ((!changes && !fills_space) || !cell.boxes[q].overlaps(mb)) continue;
     starts.clear();
@@ -276,10 +247,11 @@ bool member_keeps_what_it_meets(const Node& cell, const Polygon& m,
 // line): the inner edges are clear of the shape, so relabel() moves no polygon edge, and every
 // face inside the shape keeps its label, so the regions and their canonical decomposition (I3)
 // come back unchanged.
-bool passes_only_through_kept_regions(const Node& cell, const ValidSet& shape,
-                                      const NearMembers& near, std::span<const RegionLabel> table) {
+bool passes_only_through_kept_regions(const CellInput& cell, const ValidSet& shape,
+                                      const ShapeNearWindow& near,
+                                      std::span<const RegionLabel> table) {
   // The labels first: they reject most edits that do change the cell after a few point tests.
-  for (std::size_t member : near.members)
+  for (std::uint32_t member : near.members)
     if (!member_keeps_what_it_meets(cell, shape.polygons()[member], table)) return false;
   return inner_edges_clear(cell, shape, near);
 }
@@ -289,8 +261,8 @@ bool passes_only_through_kept_regions(const Node& cell, const ValidSet& shape,
 // and keeps its label, or the shape passes only through regions it keeps with the inner edges
 // clear of it, or every member reaching the cell lies in its closed box (no window ring), meets
 // no boundary there (no contact at all) and changes nothing. The case that applies, if any.
-std::optional<QuickCase> changes_nothing(const Node& cell, const ValidSet& shape,
-                                         const NearMembers& near,
+std::optional<QuickCase> changes_nothing(const CellInput& cell, const ValidSet& shape,
+                                         const ShapeNearWindow& near,
                                          std::span<const RegionLabel> table) {
   if (clear_of_the_shape(cell, shape, near)) {
     if (clear_and_kept(cell, shape, near, table)) return QuickCase::kClearOfTheShape;
@@ -308,8 +280,8 @@ std::optional<QuickCase> changes_nothing(const Node& cell, const ValidSet& shape
 }
 
 // The shape covers the cell (some member contains it): the answer when it is known.
-std::optional<QuickAnswer> covered_answer(const Node& cell, const ValidSet& shape,
-                                          const NearMembers& near,
+std::optional<QuickAnswer> covered_answer(const CellInput& cell, const ValidSet& shape,
+                                          const ShapeNearWindow& near,
                                           std::span<const RegionLabel> table) {
   for (std::size_t k = 0; k < near.members.size(); ++k) {
     if (!near.boxes[k].contains(cell.box) || !covers(shape.polygons()[near.members[k]], cell.box))
@@ -327,41 +299,18 @@ std::optional<QuickAnswer> covered_answer(const Node& cell, const ValidSet& shap
   return std::nullopt;
 }
 
-// Checked mode: an overlay that left regions out is relabel()'s (clip/README.md, "Regions the
-// shape cannot reach", says why it is; the cell is a canonical decomposition, I3).
-void require_relabels(const Node& cell, const ValidSet& shape, std::span<const RegionLabel> table,
-                      const LabeledSet& near) {
-  const LabeledClipResult full =
-      relabel(cell.content.set, cell.content.labels, shape, cell.box, table, {.checked = true});
-  // Not reached by tests: the two agree (an internal error otherwise).
-  if (!same_content(full.regions, near))
-    throw InternalError("cell overlay: relabel_near differs from relabel",
-                        to_wkt(cell.content.set.polygons()), to_wkt(shape.polygons()));
-}
-
 }  // namespace
 
-std::optional<QuickAnswer> quick_overlay(const Node& cell, const ValidSet& shape,
+std::optional<QuickAnswer> quick_overlay(const CellInput& cell, const ValidSet& shape,
+                                         const ShapeNearWindow& near,
                                          std::span<const RegionLabel> table) {
-  const NearMembers near = near_members(shape, cell.box);
   if (near.members.empty()) return QuickAnswer{QuickCase::kNoMemberNear, std::nullopt};
-  if (cell.content.labels.empty() && relabeled(table, kNoRegion) == kNoRegion)
+  if (cell.labels().empty() && relabeled(table, kNoRegion) == kNoRegion)
     return QuickAnswer{QuickCase::kEmptyStaysEmpty, std::nullopt};
   if (auto covered = covered_answer(cell, shape, near, table)) return covered;
   if (const auto unchanged = changes_nothing(cell, shape, near, table))
     return QuickAnswer{*unchanged, std::nullopt};
   return std::nullopt;
-}
-
-std::optional<LabeledSet> overlay_cell(const Node& cell, const ValidSet& shape,
-                                       std::span<const RegionLabel> table,
-                                       const ClipOptions& options) {
-  if (auto quick = quick_overlay(cell, shape, table)) return std::move(quick->content);
-  LabeledClipResult r =
-      relabel_near(cell.content.set, cell.content.labels, shape, cell.box, table, options);
-  if (options.checked && r.pieces_left_out > 0) require_relabels(cell, shape, table, r.regions);
-  if (same_content(r.regions, cell.content)) return std::nullopt;
-  return std::move(r.regions);
 }
 
 }  // namespace edgeland::detail
