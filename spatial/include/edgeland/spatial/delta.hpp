@@ -99,12 +99,18 @@ EDGELAND_EXPORT std::string encode_delta(const Delta& delta);
 // operand kClip). O(size log size): a COMMAND's shape is validated.
 EDGELAND_EXPORT Delta decode_delta(std::string_view bytes);
 
+// Tree order of paths (a parent before its children), and whether `a` is `b` or lies below it:
+// a PATCH's paths, sorted so, must not lie within their predecessors.
+EDGELAND_EXPORT bool path_less(const TreePath& a, const TreePath& b) noexcept;
+EDGELAND_EXPORT bool path_within(const TreePath& a, const TreePath& b) noexcept;
+
 // A COMMAND: `edit` took `before` to `after` (its result), as edit number `sequence`.
 EDGELAND_EXPORT Delta command_delta(const Landscape& before, const Landscape& after,
                                     std::uint64_t sequence, const Edit& edit);
 // A PATCH of `source`'s subtrees at `paths` (each an existing node; none nesting another), as of
 // edit number `sequence`; `base` is the receiver's state hash when known (0 otherwise).
-// Throws std::invalid_argument for a path that is not a loaded node of `source`.
+// Throws InvalidPath for a path that names no node of `source`, RegionNotLoaded for one at or
+// in an unloaded region.
 EDGELAND_EXPORT Delta patch_delta(const Landscape& source, std::uint64_t sequence,
                                   const std::vector<TreePath>& paths, std::uint64_t base = 0);
 // A CHANGES delta from an edit's change set (`after`: the landscape after it).
