@@ -30,17 +30,19 @@ std::size_t vertices_of(const ValidSet& s) {
 
 }  // namespace
 
-EditBuilder::EditBuilder(const LandscapeState& state, const EditTable& table)
-    : s_(state), table_(table), next_id_(state.next_id) {}
+EditBuilder::EditBuilder(const LandscapeState& state, std::span<const EditStep> steps)
+    : s_(state), steps_(steps), next_id_(state.next_id) {}
 
-// Steps 1 and 2-7 of the README: the shape's size against the limits, the new tree, its limits,
+// Steps 1 and 2-7 of the README: each shape's size against the limits, the new tree, its limits,
 // what changed (checked in checked mode), and the next state.
-EditResult EditBuilder::build(const ValidSet& shape) {
-  const std::size_t shape_vertices = vertices_of(shape);
-  if (shape_vertices > s_.limits.max_shape_vertices)
-    throw LimitExceeded(LimitExceeded::Limit::kShapeVertices, s_.limits.max_shape_vertices,
-                        shape_vertices);
-  NodePtr root = new_root(shape);
+EditResult EditBuilder::build() {
+  for (const EditStep& step : steps_) {
+    const std::size_t shape_vertices = vertices_of(*step.shape);
+    if (shape_vertices > s_.limits.max_shape_vertices)
+      throw LimitExceeded(LimitExceeded::Limit::kShapeVertices, s_.limits.max_shape_vertices,
+                          shape_vertices);
+  }
+  NodePtr root = new_root();
   if (root->vertices > s_.limits.max_vertices)
     throw LimitExceeded(LimitExceeded::Limit::kVertices, s_.limits.max_vertices, root->vertices);
   if (root->cells > s_.limits.max_cells)
@@ -54,13 +56,23 @@ EditResult EditBuilder::build(const ValidSet& shape) {
   return {next_state(std::move(root), out), std::move(out)};
 }
 
-// Steps 2-6: the touched cells found, the shape cut to them (big shapes), overlaid, split and
-// merged as a draft, then given ids. The clipper's internal failures become EditFailure.
-NodePtr EditBuilder::new_root(const ValidSet& shape) {
-  reach_ = Reach{&shape, bounding_box(shape.polygons()).value_or(Box64{}), std::nullopt};
-  if (shape.polygons().empty() || !s_.world.overlaps_open(reach_.box)) return s_.root;
+// Steps 2-6: the touched cells found, each big shape cut to them, overlaid, split and merged as a
+// draft, then given ids. The clipper's internal failures become EditFailure.
+NodePtr EditBuilder::new_root() {
+  reach_.clear();
+  bool any = false;
+  for (const EditStep& step : steps_) {
+    const ValidSet& shape = *step.shape;
+    Reach& r = reach_.emplace_back();
+    r.shape = &shape;
+    r.box = bounding_box(shape.polygons()).value_or(Box64{});
+    r.in_world = !shape.polygons().empty() && s_.world.overlaps_open(r.box);
+    any = any || r.in_world;
+  }
+  if (!any) return s_.root;
   try {
-    reach_.cut = cut_shape_to_cells(s_.root, shape, reach_.box, clip_options());
+    for (Reach& r : reach_)
+      if (r.in_world) r.cut = cut_shape_to_cells(s_.root, *r.shape, r.box, clip_options());
     Draft draft = rebuild(s_.root);
     return finish(draft, s_.root);
   } catch (const InternalError& e) {
@@ -127,14 +139,24 @@ EditBuilder::Draft EditBuilder::Draft::inner(const Box64& box, std::uint32_t dep
   return d;
 }
 
-const ValidSet& EditBuilder::shape_in(const Node& cell) const {
-  const ValidSet* pieces = reach_.cut ? reach_.cut->of(cell) : nullptr;
-  return pieces ? *pieces : *reach_.shape;
+const ValidSet& EditBuilder::shape_in(std::size_t k, const Node& cell) const {
+  const ValidSet* pieces = reach_[k].cut ? reach_[k].cut->of(cell) : nullptr;
+  return pieces ? *pieces : *reach_[k].shape;
+}
+
+bool EditBuilder::reaches(const Box64& box) const {
+  for (const Reach& r : reach_)
+    if (r.in_world && box.overlaps_open(r.box)) return true;
+  return false;
 }
 
 EditBuilder::Draft EditBuilder::edit_cell(const NodePtr& cell) {
+  cell_steps_.clear();
+  for (std::size_t k = 0; k < steps_.size(); ++k)
+    if (reach_[k].in_world && cell->box.overlaps_open(reach_[k].box))
+      cell_steps_.push_back({&shape_in(k, *cell), steps_[k].table.table});
   std::optional<LabeledSet> content =
-      relabel_cell(cell->content, shape_in(*cell), cell->box, table_.table, clip_options()).content;
+      relabel_cell(cell->content, cell_steps_, cell->box, clip_options()).content;
   if (!content) return Draft::keep(cell);
   Draft edited = Draft::cell(cell->box, cell->depth, std::move(*content));
   grow(cell->vertices, edited.vertices);
@@ -179,7 +201,7 @@ EditBuilder::Draft EditBuilder::merge_if_small(const NodePtr& old, std::vector<D
 }
 
 EditBuilder::Draft EditBuilder::rebuild(const NodePtr& node) {
-  if (!node->box.overlaps_open(reach_.box)) return Draft::keep(node);
+  if (!reaches(node->box)) return Draft::keep(node);
   if (node->is_cell()) return edit_cell(node);
   std::vector<Draft> children(node->child_count);
   bool changed = false;

@@ -1,6 +1,7 @@
 #pragma once
 // One edit of the landscape as a rebuild of the touched part of the tree (edit.cpp).
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,13 @@ struct EditTable {
   }
 };
 
+// One step of an edit: its shape and its table. An edit has one; a batch (Landscape::apply_batch)
+// several, applied in order in one overlay per touched cell.
+struct EditStep {
+  const ValidSet* shape = nullptr;
+  EditTable table;
+};
+
 // What an edit builds: the next state (its log not yet appended) and its change set.
 struct EditResult {
   LandscapeState next;
@@ -46,13 +54,13 @@ struct EditFailure {
   std::string what;
 };
 
-// Builds the state after one edit from the current one, never changing it: the steps of
-// spatial/README.md "An edit" from finding the cells to the change set. Throws LimitExceeded
-// or EditFailure.
+// Builds the state after one edit (or one batch of them) from the current one, never changing
+// it: the steps of spatial/README.md "An edit" from finding the cells to the change set. Throws
+// LimitExceeded or EditFailure.
 class EditBuilder {
  public:
-  EditBuilder(const LandscapeState& state, const EditTable& table);
-  EditResult build(const ValidSet& shape);
+  EditBuilder(const LandscapeState& state, std::span<const EditStep> steps);
+  EditResult build();
 
  private:
   // A part of the new tree before it has ids: an old node kept as it is (`kept`), a new cell
@@ -73,19 +81,22 @@ class EditBuilder {
     bool is_cell() const { return kept ? kept->is_cell() : children.empty(); }
     const LabeledSet& cell_content() const { return kept ? kept->content : content; }
   };
-  // The shape of the edit being built, and what of it each cell takes.
+  // The shape of one step of the edit being built, and what of it each cell takes.
   struct Reach {
     const ValidSet* shape = nullptr;
     Box64 box;
+    bool in_world = false;        // some of it lies in the world's interior
     std::optional<ShapeCut> cut;  // the shape cut to the touched cells (big shapes only)
   };
 
-  NodePtr new_root(const ValidSet& shape);
+  NodePtr new_root();
+  // Whether some step's shape box meets the node box's interior (the cells an edit descends to).
+  bool reaches(const Box64& box) const;
   Draft rebuild(const NodePtr& node);
   Draft edit_cell(const NodePtr& cell);
-  // What of the shape a cell's overlay takes: its pieces when the shape was cut to the cells
-  // (shape_cut.hpp), else the whole shape.
-  const ValidSet& shape_in(const Node& cell) const;
+  // What of step k's shape a cell's overlay takes: its pieces when the shape was cut to the
+  // cells (shape_cut.hpp), else the whole shape.
+  const ValidSet& shape_in(std::size_t k, const Node& cell) const;
   Draft split_if_needed(Draft cell);
   Draft merge_if_small(const NodePtr& old, std::vector<Draft> children);
   NodePtr finish(Draft& draft, const NodePtr& old);
@@ -99,8 +110,9 @@ class EditBuilder {
   void grow_cells(std::size_t added);
 
   const LandscapeState& s_;
-  const EditTable& table_;
-  Reach reach_;
+  std::span<const EditStep> steps_;
+  std::vector<Reach> reach_;             // per step
+  std::vector<RelabelStep> cell_steps_;  // the steps reaching the cell being overlaid
   PolygonId next_id_;
   std::size_t growth_ = 0;
   std::size_t cell_growth_ = 0;

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "edgeland/kernel/wkt_writer.hpp"
+#include "edit_form.hpp"
 #include "node.hpp"
 
 namespace edgeland::detail {
@@ -31,6 +32,41 @@ std::string relabel_line(const PolygonSet& shape, const MaterialMap& map) {
   }
   return line + to_wkt(shape) + "\n";
 }
+namespace {
+
+// The line an edit alone would write (edit_form.hpp: its kind's, or relabel's for any map).
+std::string edit_line(const Edit& e) {
+  const PolygonSet& shape = e.shape.polygons();
+  if (!has_its_form(e)) return relabel_line(shape, e.map);
+  switch (e.kind) {
+    case Edit::Kind::kCarve:
+      return carve_line(shape);
+    case Edit::Kind::kFill:
+      return fill_line(shape, e.map[kEmpty]);
+    case Edit::Kind::kFillEmpty:
+      return fill_empty_line(shape, e.map[kEmpty]);
+    case Edit::Kind::kReplace: {
+      const auto [from, to] = replaced(e.map);
+      return replace_line(shape, from, to);
+    }
+    case Edit::Kind::kRelabel:
+      break;
+  }
+  return relabel_line(shape, e.map);
+}
+
+}  // namespace
+
+std::string batch_line(std::span<const Edit> edits) {
+  std::string line = "batch";
+  for (std::size_t i = 0; i < edits.size(); ++i) {
+    std::string one = edit_line(edits[i]);
+    one.pop_back();  // its '\n'
+    line.append(i == 0 ? " " : " | ").append(one);
+  }
+  return line + "\n";
+}
+
 std::string world_line(const Box64& w, Material fill) {
   std::string s = "world " + std::to_string(w.min.x) + " " + std::to_string(w.min.y) + " " +
                   std::to_string(w.max.x) + " " + std::to_string(w.max.y);

@@ -2,6 +2,7 @@
 // The edit-log recorder (README.md "Landscape edit logs"): the line each edit writes, and the
 // log kept as a persistent list of lines so that copies of a recording landscape share it.
 #include <memory>
+#include <span>
 #include <string>
 
 #include "edgeland/spatial/landscape.hpp"
@@ -29,6 +30,10 @@ std::string fill_line(const PolygonSet& shape, Material m);
 std::string fill_empty_line(const PolygonSet& shape, Material m);
 std::string replace_line(const PolygonSet& shape, Material from, Material to);
 std::string relabel_line(const PolygonSet& shape, const MaterialMap& map);
+// "batch EDIT | EDIT | ...": every edit of a batch (Landscape::apply_batch) as its own line
+// would say it without the line break (its kind's line when its map has its kind's form, else
+// relabel's), in order, separated by " | " (no WKT holds a '|').
+std::string batch_line(std::span<const Edit> edits);
 // "world X0 Y0 X1 Y1[ M]".
 std::string world_line(const Box64& world, Material fill);
 

@@ -4,6 +4,7 @@
 #include "cell_split.hpp"
 #include "check.hpp"
 #include "edgeland/kernel/area.hpp"
+#include "edgeland/spatial/delta.hpp"
 #include "edgeland/spatial/tree_boxes.hpp"
 #include "edit.hpp"
 #include "edit_log.hpp"
@@ -136,34 +137,55 @@ Landscape::Landscape(const Box64& world, Material fill, const LandscapeConfig& c
                  s_.next_id, cells);
 }
 
+namespace {
+
+// One edit as the steps of an edit (edit.hpp): the shape and the table.
+detail::EditStep step_of(const ValidSet& shape, detail::EditTable table) {
+  return {&shape, std::move(table)};
+}
+
+}  // namespace
+
 ChangeSet Landscape::carve(const ValidSet& shape) {
-  return apply(shape, detail::EditTable::carve(),
-               [&] { return detail::carve_line(shape.polygons()); });
+  const detail::EditStep step = step_of(shape, detail::EditTable::carve());
+  return apply(std::span(&step, 1), [&] { return detail::carve_line(shape.polygons()); });
 }
 ChangeSet Landscape::fill(const ValidSet& shape, Material m) {
-  return apply(shape, detail::EditTable::fill(m),
-               [&] { return detail::fill_line(shape.polygons(), m); });
+  const detail::EditStep step = step_of(shape, detail::EditTable::fill(m));
+  return apply(std::span(&step, 1), [&] { return detail::fill_line(shape.polygons(), m); });
 }
 ChangeSet Landscape::fill_empty(const ValidSet& shape, Material m) {
-  return apply(shape, detail::EditTable::fill_empty(m),
-               [&] { return detail::fill_empty_line(shape.polygons(), m); });
+  const detail::EditStep step = step_of(shape, detail::EditTable::fill_empty(m));
+  return apply(std::span(&step, 1), [&] { return detail::fill_empty_line(shape.polygons(), m); });
 }
 ChangeSet Landscape::replace(const ValidSet& shape, Material from, Material to) {
-  return apply(shape, detail::EditTable::replace(from, to),
+  const detail::EditStep step = step_of(shape, detail::EditTable::replace(from, to));
+  return apply(std::span(&step, 1),
                [&] { return detail::replace_line(shape.polygons(), from, to); });
 }
 ChangeSet Landscape::relabel(const ValidSet& shape, const MaterialMap& map) {
-  return apply(shape, detail::EditTable::relabel(map),
-               [&] { return detail::relabel_line(shape.polygons(), map); });
+  const detail::EditStep step = step_of(shape, detail::EditTable::relabel(map));
+  return apply(std::span(&step, 1), [&] { return detail::relabel_line(shape.polygons(), map); });
+}
+
+// A batch of one is that edit (apply_edit: the same result, and its own log line); more are one
+// edit of several steps, each a relabel by its map (what the kind's table does).
+ChangeSet Landscape::apply_batch(std::span<const Edit> edits) {
+  if (edits.empty()) return {};
+  if (edits.size() == 1) return apply_edit(*this, edits.front());
+  std::vector<detail::EditStep> steps;
+  steps.reserve(edits.size());
+  for (const Edit& e : edits) steps.push_back(step_of(e.shape, detail::EditTable::relabel(e.map)));
+  return apply(steps, [&] { return detail::batch_line(edits); });
 }
 
 // Every edit: the next state built (edit.cpp; s_ untouched, so a throw leaves the landscape as
 // it was), the edit's line recorded, and the commit, one assignment.
-ChangeSet Landscape::apply(const ValidSet& shape, const detail::EditTable& table,
+ChangeSet Landscape::apply(std::span<const detail::EditStep> steps,
                            const std::function<std::string()>& log_line) {
   detail::EditResult edit = [&] {
     try {
-      return detail::EditBuilder(s_, table).build(shape);
+      return detail::EditBuilder(s_, steps).build();
     } catch (const detail::EditFailure& failure) {
       throw detail::internal_error(s_, failure.what, log_line());
     }

@@ -43,6 +43,7 @@
 #include <iosfwd>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -72,6 +73,7 @@ struct LogLine;  // the recorded log, a persistent list shared by copies (spatia
 using AreaTable = std::array<Int128, kMaterialCount>;
 
 struct EditTable;  // an edit's material -> material table (spatial/src/edit.hpp)
+struct EditStep;   // a shape and its table: one step of an edit or a batch (edit.hpp)
 
 // A landscape's whole state, private to Landscape: spatial/src's stages take it as an argument
 // from the Landscape's members. An edit builds the next state from it and Landscape::apply
@@ -116,6 +118,18 @@ class EDGELAND_EXPORT Landscape {
   ChangeSet fill_empty(const PolygonSet& shape, Material material);
   ChangeSet replace(const PolygonSet& shape, Material from, Material to);
   ChangeSet relabel(const PolygonSet& shape, const MaterialMap& map);
+  // A frame's edits (types.hpp Edit) applied in order as ONE edit: one overlay per touched cell
+  // (of kMaxBatchSteps edits at a time: relabel.hpp), rounded once, and one change set. Inside
+  // the cell a point of material m ends as m passed through the map of every edit whose shape
+  // holds it, in order: the materials applying the edits one by one would give before rounding.
+  // Rounding once where the edits one by one round after each, the two results differ only
+  // near the shapes' boundaries, within the rounding bound of spatial/README.md ("Batches"); the
+  // one-by-one edits are still there (apply_edit, or carve ... relabel) for a game that wants
+  // each rounded. A batch of one is that edit (the same result and log line); an empty batch
+  // changes nothing. Deterministic, valid, the strong guarantee and checked mode as every edit;
+  // recorded as one `batch` line. Throws what an edit throws (LimitExceeded: any shape, or the
+  // landscape after the batch, past its limits).
+  ChangeSet apply_batch(std::span<const Edit> edits);
 
   // --- queries -------------------------------------------------------------------------------
   // Queries check their coordinates as edits check their shapes: a point, a segment end or a
@@ -219,8 +233,9 @@ class EDGELAND_EXPORT Landscape {
  private:
   explicit Landscape(detail::LandscapeState state) : s_(std::move(state)) {}
   // The one edit driver (spatial/README.md, "An edit"): builds the next state from s_ with the
-  // shape and the table, appends `log_line` to the log when recording, then commits.
-  ChangeSet apply(const ValidSet& shape, const detail::EditTable& table,
+  // steps (an edit's shape and table, or a batch's), appends `log_line` to the log when
+  // recording, then commits.
+  ChangeSet apply(std::span<const detail::EditStep> steps,
                   const std::function<std::string()>& log_line);
 
   detail::LandscapeState s_;
