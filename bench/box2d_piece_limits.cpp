@@ -22,8 +22,9 @@
 #include <vector>
 
 #include "box2d_piece.hpp"
-#include "demo_landscape.hpp"
+#include "edgeland/demo/landscape.hpp"
 #include "edgeland/kernel/convex_pieces.hpp"
+#include "landscape_polygons.hpp"
 #include "splitmix64.hpp"
 
 namespace edgeland::bench {
@@ -103,7 +104,7 @@ Tally landscape_tally(const std::vector<Polygon>& pieces, const std::vector<Box2
 }
 
 void landscape_table(std::size_t edits) {
-  const Landscape world = testing::demo_landscape(edits);
+  const Landscape world = demo::demo_landscape(demo::kDemoWorld, 1, edits);
   std::vector<Polygon> pieces;
   std::vector<Point64> cells;
   std::size_t polygons = 0;

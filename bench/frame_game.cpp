@@ -2,8 +2,6 @@
 // the two sides that take them.
 #include "frame_game.hpp"
 
-#include <time.h>
-
 #include <algorithm>
 #include <optional>
 
@@ -18,26 +16,6 @@ namespace edgeland::bench {
 namespace {
 
 constexpr Material kBedrock = 1, kRock = 2, kDirt = 3, kBrick = 4;
-
-// This thread's CPU time: the machine is shared, and both sides are single-threaded.
-class ThreadClock {
- public:
-  ThreadClock() : last_(now()) {}
-  double lap() {
-    const double t = now();
-    const double s = t - last_;
-    last_ = t;
-    return s;
-  }
-
- private:
-  static double now() {
-    timespec t{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-    return static_cast<double>(t.tv_sec) + static_cast<double>(t.tv_nsec) * 1e-9;
-  }
-  double last_;
-};
 
 class Random {
  public:
@@ -83,17 +61,16 @@ BitmapWorld as_bitmap(const Landscape& land) {
   return bitmap;
 }
 
-PhysicsMaterials game_materials() {
-  PhysicsMaterials m;
-  m.set_anchored(kBedrock);
-  return m;
+GameOptions game_options() {
+  GameOptions o;
+  o.surface.materials.set_anchored(kBedrock);
+  o.surface.border_wall = true;
+  return o;
 }
 
 box2d::TerrainOptions terrain_options() {
   box2d::TerrainOptions o;
-  o.surface.materials = game_materials();
-  o.surface.border_wall = true;
-  o.units.units_per_engine_unit = kUnitsPerMetre;
+  o.units_per_metre = kUnitsPerMetre;
   return o;
 }
 
@@ -104,85 +81,58 @@ struct Body {
   bool debris = false;
 };
 
-// The edgeland side: the landscape, its terrain, islands and meshes, and the bodies.
+// The edgeland side: the game driver, the terrain and debris it hands Box2D, and the bodies.
+// Edits and colliders are timed apart; "islands" is the debris bodies made.
 class EdgelandGame {
  public:
   explicit EdgelandGame(const Landscape& start)
-      : land_(start),
-        terrain_(world_, land_, terrain_options()),
-        islands_(land_, game_materials()) {}
+      : game_(start, game_options()), terrain_(world_, game_, terrain_options()) {}
 
-  void edit(const FrameEdit& e, std::array<double, kFrameStageCount>& t, FrameGameRun& run) {
-    const ValidSet shape(PolygonSet{e.shape}, Operand::kClip);
+  void frame(const std::vector<FrameEdit>& edits, std::array<double, kFrameStageCount>& t,
+             FrameGameRun& run) {
+    batch_.clear();
+    for (const FrameEdit& e : edits) {
+      ValidSet shape(PolygonSet{e.shape}, Operand::kClip);
+      batch_.push_back(e.kind == FrameEdit::Kind::kCarve
+                           ? edgeland::Edit::carve(std::move(shape))
+                           : edgeland::Edit::fill(std::move(shape), e.material));
+    }
     ThreadClock clock;
-    const ChangeSet changes =
-        e.kind == FrameEdit::Kind::kCarve ? land_.carve(shape) : land_.fill(shape, e.material);
+    const GameUpdate u = game_.apply(batch_);
     t[kFrameEdits] += clock.lap();
-    follow(changes, t, run);
+    terrain_.apply(u);
+    t[kFrameColliders] += clock.lap();
+    for (const Debris& d : u.debris)
+      bodies_.push_back({box2d::make_debris_body(world_, d, units()), true});
+    t[kFrameIslands] += clock.lap();
+    benchmark::DoNotOptimize(u.meshes);
+    note(u, run);
   }
 
   b2World& world() { return world_; }
-  const Landscape& land() const { return land_; }
+  const Landscape& land() const { return game_.landscape(); }
+  const GameDriver& game() const { return game_; }
   std::vector<Body>& bodies() { return bodies_; }
   const std::vector<Body>& bodies() const { return bodies_; }
   const box2d::Terrain& terrain() const { return terrain_; }
   const EngineUnits& units() const { return terrain_.units(); }
 
  private:
-  // Everything a game keeps in step with one edit: colliders, islands, meshes.
-  void follow(const ChangeSet& changes, std::array<double, kFrameStageCount>& t,
-              FrameGameRun& run) {
-    ThreadClock clock;
-    terrain_.update(land_, changes);
-    t[kFrameColliders] += clock.lap();
-    std::vector<Island> found = islands_.update(land_, changes);
-    t[kFrameIslands] += clock.lap();
-    benchmark::DoNotOptimize(mesh_update(changes));
-    t[kFrameMeshes] += clock.lap();
-    detach_all(std::move(found), t, run);
-  }
-
-  // The detach loop of islands.hpp, each island's detach followed like any edit.
-  void detach_all(std::vector<Island> pending, std::array<double, kFrameStageCount>& t,
-                  FrameGameRun& run) {
-    while (!pending.empty()) {
-      const Island island = std::move(pending.back());
-      pending.pop_back();
-      ThreadClock clock;
-      DetachedIsland detached;
-      try {
-        detached = detach(land_, island);
-      } catch (const StaleIsland&) {
-        t[kFrameIslands] += clock.lap();
-        continue;
-      }
-      b2Body* body = box2d::make_debris_body(world_, detached, terrain_.units());
-      t[kFrameIslands] += clock.lap();
-      note_debris(body, island, run);
-      terrain_.update(land_, detached.changes);
-      t[kFrameColliders] += clock.lap();
-      for (Island& again : islands_.update(land_, detached.changes))
-        pending.push_back(std::move(again));
-      t[kFrameIslands] += clock.lap();
-      benchmark::DoNotOptimize(mesh_update(detached.changes));
-      t[kFrameMeshes] += clock.lap();
+  void note(const GameUpdate& u, FrameGameRun& run) {
+    run.detached += u.debris.size();
+    for (const Debris& d : u.debris) {
+      run.debris_fixtures_max = std::max(run.debris_fixtures_max, d.pieces.size());
+      std::size_t polygons = 0;
+      for (const Debris::Region& r : d.regions) polygons += r.polygons.size();
+      run.debris_polygons_max = std::max(run.debris_polygons_max, polygons);
     }
   }
 
-  void note_debris(b2Body* body, const Island& island, FrameGameRun& run) {
-    bodies_.push_back({body, true});
-    ++run.detached;
-    std::size_t fixtures = 0;
-    for (const b2Fixture* f = body->GetFixtureList(); f; f = f->GetNext()) ++fixtures;
-    run.debris_fixtures_max = std::max(run.debris_fixtures_max, fixtures);
-    run.debris_polygons_max = std::max(run.debris_polygons_max, island.pieces.size());
-  }
-
   b2World world_{b2Vec2(0, -10)};
-  Landscape land_;
+  GameDriver game_;
   box2d::Terrain terrain_;
-  IslandTracker islands_;
   std::vector<Body> bodies_;
+  std::vector<edgeland::Edit> batch_;
 };
 
 class PixelGame {
@@ -246,14 +196,13 @@ class FrameGame {
   void frame(bool edgeland_first, FrameGameRun& run) {
     std::array<double, kFrameStageCount> t{};
     const std::int64_t count = random_.in(1, 3);
-    for (std::int64_t k = 0; k < count; ++k) {
-      const FrameEdit e = next_edit();
-      if (edgeland_first) edgeland_.edit(e, t, run);
-      pixel_.edit(e, t);
-      if (!edgeland_first) edgeland_.edit(e, t, run);
-      if (e.kind == FrameEdit::Kind::kFill) bury_under(e.shape, run);
-      ++run.edits;
-    }
+    std::vector<FrameEdit> edits;
+    for (std::int64_t k = 0; k < count; ++k) edits.push_back(next_edit());
+    if (edgeland_first) edgeland_.frame(edits, t, run);
+    for (const FrameEdit& e : edits) pixel_.edit(e, t);
+    if (!edgeland_first) edgeland_.frame(edits, t, run);
+    run.edits += edits.size();
+    bury(run);
     ThreadClock clock;
     step(edgeland_.world());
     t[kFrameEdgelandStep] = clock.lap();
@@ -295,13 +244,11 @@ class FrameGame {
             kDirt};
   }
 
-  // The bodies a fill overlaps are buried: they leave the play.
-  void bury_under(const Polygon& shape, FrameGameRun& run) {
-    Landscape probe(edgeland_.land().world());
-    probe.fill(PolygonSet{shape}, kRock);
+  // The bodies the frame's fills buried (debris too) leave the play.
+  void bury(FrameGameRun& run) {
     std::vector<Body>& bodies = edgeland_.bodies();
     for (Body& b : bodies) {
-      if (probe.overlaps(box_of(b.body)).empty()) continue;
+      if (!edgeland_.game().buried(box_of(b.body))) continue;
       edgeland_.world().DestroyBody(b.body);
       b.body = nullptr;
       ++run.buried;

@@ -2,6 +2,7 @@
 // What the game-layer benchmarks share (bench/README.md, "Game layer"): their sizes from the
 // environment, the Box2D scale, per-edit series and their summaries as counters.
 #include <benchmark/benchmark.h>
+#include <time.h>
 
 #include <cstddef>
 #include <string>
@@ -31,11 +32,33 @@ struct Series {
 // Sets NAME_median_us, NAME_p99_us, NAME_mean_us and NAME_max_us of the fastest times.
 void report_series(benchmark::State& state, const std::string& name, const Series& s);
 
+// This thread's CPU time: the machine is shared, and both sides are single-threaded.
+class ThreadClock {
+ public:
+  ThreadClock() : last_(now()) {}
+  double lap() {
+    const double t = now();
+    const double s = t - last_;
+    last_ = t;
+    return s;
+  }
+
+ private:
+  static double now() {
+    timespec t{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    return static_cast<double>(t.tv_sec) + static_cast<double>(t.tv_nsec) * 1e-9;
+  }
+  double last_;
+};
+
 // Registration of each family: game_edit/WORKLOAD/EDITS (game_edits.cpp) and
 // game_export/demo/EDITS (game_export.cpp).
 void register_game_edit_benchmarks();
 void register_game_export_benchmarks();
 // game_frame/new_user/FRAMES (frame_benchmark.cpp).
 void register_frame_benchmarks();
+// game_island/shelf/BITES (game_island.cpp).
+void register_island_benchmarks();
 
 }  // namespace edgeland::bench

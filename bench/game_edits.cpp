@@ -6,11 +6,13 @@
 //   fill:      EDITS 32-gons of radius 40 of material 2 filled into the world the explosions
 //              left (about half of it carved).
 // Every edit, in one process, both sides one after the other (which one first alternates
-// between repeats), so both see the same machine:
-//   edgeland: the landscape edit, then box2d::Terrain::update (SurfaceTracker::update and the
-//             changed chains' fixtures destroyed and created): the end-to-end time; then, as
-//             rows of their own, SurfaceTracker::update alone (a second tracker),
-//             IslandTracker::update (and its last_work()), mesh_update;
+// between repeats), so both see the same machine; times are this thread's CPU time
+// (game_common.hpp, ThreadClock: the machine is shared, and a preempted edit would otherwise count
+// the wait):
+//   edgeland: GameDriver::apply (the landscape edit, the chains, islands, debris and meshes that
+//             follow from it), then box2d::Terrain::apply (the changed chains' fixtures
+//             destroyed and created) and a debris body per island: the end-to-end time; and, as
+//             a row of its own, the same edit on a plain landscape (the edit's share);
 //   pixel:    BitmapWorld::paint, the 64 x 64 chunks the shape's box meets traced again
 //             (PixelTerrain::trace) and their fixtures rebuilt (PixelTerrain::rebuild): the
 //             end-to-end time.
@@ -63,10 +65,9 @@ const std::vector<ValidSet>& shapes(Workload w) {
 // The stages timed per edit; kEdgeland and kPixel are the end-to-end sums.
 enum Stage : std::size_t {
   kEdit,
+  kGame,
   kTerrain,
-  kTracker,
-  kIslands,
-  kMesh,
+  kDebris,
   kPaint,
   kTrace,
   kRebuild,
@@ -77,9 +78,9 @@ enum Stage : std::size_t {
   kStageCount
 };
 constexpr std::array<const char*, kStageCount> kStageNames{
-    "landscape_edit", "terrain_update", "tracker_update", "islands_update",
-    "mesh_update",    "bitmap_edit",    "chunk_trace",    "chunk_rebuild",
-    "edgeland",       "pixel",          "edgeland_step",  "pixel_step"};
+    "landscape_edit", "game_update",   "terrain_update", "debris_bodies",
+    "bitmap_edit",    "chunk_trace",   "chunk_rebuild",  "edgeland",
+    "pixel",          "edgeland_step", "pixel_step"};
 
 // One frame of a b2World, as a game steps it between edits.
 void step(b2World& world) { world.Step(1.0f / 60.0f, 8, 3); }
@@ -88,8 +89,8 @@ void step(b2World& world) { world.Step(1.0f / 60.0f, 8, 3); }
 struct Counts {
   double cells = 0, chains_removed = 0, chains_added = 0, triangles = 0;  // sums
   double chunks = 0, loops = 0;                                           // sums
-  double islands = 0;                                                     // islands found
-  std::size_t max_summaries = 0, max_ports = 0;  // IslandTracker::last_work(), worst edit
+  double islands = 0;                                                     // islands detached
+  std::size_t max_traced = 0;  // GameUpdate::work.cells_traced, worst edit
   std::size_t terrain_fixtures = 0, pixel_fixtures = 0, pixel_vertices = 0;  // at the end
 };
 
@@ -104,36 +105,20 @@ struct Pass {
   std::optional<World2> end;
 };
 
-// The clock between laps (steady_clock, as landscape_common.hpp's seconds_of).
-class Laps {
- public:
-  Laps() : last_(std::chrono::steady_clock::now()) {}
-  double lap() {
-    const auto now = std::chrono::steady_clock::now();
-    const double s = std::chrono::duration<double>(now - last_).count();
-    last_ = now;
-    return s;
-  }
-
- private:
-  std::chrono::steady_clock::time_point last_;
-};
-
 // One side's state during a pass.
 struct EdgelandSide {
   b2World world{b2Vec2(0, -10)};
-  Landscape land;
+  Landscape plain;  // the same edits on a landscape alone: the edit's share
+  GameDriver game;
   box2d::Terrain terrain;
-  SurfaceTracker tracker;
-  IslandTracker islands;
 
   static box2d::TerrainOptions options() {
     box2d::TerrainOptions o;
-    o.units.units_per_engine_unit = kUnitsPerMetre;
+    o.units_per_metre = kUnitsPerMetre;
     return o;
   }
   explicit EdgelandSide(const Landscape& start)
-      : land(start), terrain(world, land, options()), tracker(land), islands(land) {
+      : plain(start), game(start), terrain(world, game, options()) {
     step(world);
   }
 };
@@ -156,33 +141,33 @@ struct PixelSide {
 };
 
 void edgeland_edit(EdgelandSide& e, Workload w, const ValidSet& shape, std::size_t i, Pass& p) {
-  Laps laps;
-  const ChangeSet changes =
-      w == Workload::kFill ? e.land.fill(shape, kFillMaterial) : e.land.carve(shape);
+  ThreadClock laps;
+  benchmark::DoNotOptimize(w == Workload::kFill ? e.plain.fill(shape, kFillMaterial)
+                                                : e.plain.carve(shape));
   p.seconds[kEdit][i] = laps.lap();
-  const ChainUpdate u = e.terrain.update(e.land, changes);
+  const GameUpdate u =
+      e.game.apply(w == Workload::kFill ? edgeland::Edit::fill(shape, kFillMaterial)
+                                        : edgeland::Edit::carve(shape));
+  p.seconds[kGame][i] = laps.lap();
+  e.terrain.apply(u);
   p.seconds[kTerrain][i] = laps.lap();
-  benchmark::DoNotOptimize(e.tracker.update(e.land, changes));
-  p.seconds[kTracker][i] = laps.lap();
-  const std::vector<Island> found = e.islands.update(e.land, changes);
-  p.seconds[kIslands][i] = laps.lap();
-  const MeshUpdate meshes = mesh_update(changes);
-  p.seconds[kMesh][i] = laps.lap();
+  for (const Debris& d : u.debris) box2d::make_debris_body(e.world, d, e.terrain.units());
+  p.seconds[kDebris][i] = laps.lap();
   step(e.world);
   p.seconds[kEdgelandStep][i] = laps.lap();
-  p.seconds[kEdgeland][i] = p.seconds[kEdit][i] + p.seconds[kTerrain][i];
+  p.seconds[kEdgeland][i] = p.seconds[kGame][i] + p.seconds[kTerrain][i] + p.seconds[kDebris][i];
   Counts& c = p.counts;
-  c.cells += static_cast<double>(changes.cells.size());
-  c.chains_removed += static_cast<double>(u.removed.size());
-  c.chains_added += static_cast<double>(u.added.size());
-  for (const PolygonMesh& m : meshes.built) c.triangles += static_cast<double>(m.triangles.size());
-  c.islands += static_cast<double>(found.size());
-  c.max_summaries = std::max(c.max_summaries, e.islands.last_work().summaries);
-  c.max_ports = std::max(c.max_ports, e.islands.last_work().ports);
+  c.cells += static_cast<double>(u.changes.cells.size());
+  c.chains_removed += static_cast<double>(u.chains.removed.size());
+  c.chains_added += static_cast<double>(u.chains.added.size());
+  for (const PolygonMesh& m : u.meshes.built)
+    c.triangles += static_cast<double>(m.triangles.size());
+  c.islands += static_cast<double>(u.debris.size());
+  c.max_traced = std::max(c.max_traced, u.work.cells_traced);
 }
 
 void pixel_edit(PixelSide& s, Workload w, const ValidSet& shape, std::size_t i, Pass& p) {
-  Laps laps;
+  ThreadClock laps;
   s.bitmap.paint(shape.polygons(), w == Workload::kFill ? kFillMaterial : kEmpty);
   p.seconds[kPaint][i] = laps.lap();
   const auto& traced = s.terrain.trace(s.bitmap, *bounding_box(shape.polygons()));
@@ -214,7 +199,7 @@ Pass run_pass(const World2& start, Workload w, std::size_t repeat, bool keep_end
   p.counts.terrain_fixtures = e.terrain.fixture_count();
   p.counts.pixel_fixtures = s.terrain.fixture_count();
   p.counts.pixel_vertices = s.terrain.vertex_count();
-  if (keep_end) p.end.emplace(World2{e.land, s.bitmap});
+  if (keep_end) p.end.emplace(World2{e.game.landscape(), s.bitmap});
   return p;
 }
 
@@ -260,9 +245,8 @@ void report(benchmark::State& state, const std::array<Series, kStageCount>& seri
   state.counters["triangles_per_edit"] = c.triangles / n;
   state.counters["chunks_per_edit"] = c.chunks / n;
   state.counters["pixel_loops_per_edit"] = c.loops / n;
-  state.counters["islands_found"] = c.islands;
-  state.counters["islands_max_summaries"] = static_cast<double>(c.max_summaries);
-  state.counters["islands_max_ports"] = static_cast<double>(c.max_ports);
+  state.counters["islands_detached"] = c.islands;
+  state.counters["cells_traced_max"] = static_cast<double>(c.max_traced);
   state.counters["terrain_fixtures"] = static_cast<double>(c.terrain_fixtures);
   state.counters["pixel_fixtures"] = static_cast<double>(c.pixel_fixtures);
   state.counters["pixel_vertices"] = static_cast<double>(c.pixel_vertices);

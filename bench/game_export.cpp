@@ -1,5 +1,5 @@
 // The whole world at once (issue 26, "Speed"; bench/README.md, "Game layer"): the 8192 x 8192
-// world of `edgeland demo` (cli/demo_world.hpp, through tests/support/demo_landscape.hpp) after
+// world of `edgeland demo` (demo/: edgeland/demo/landscape.hpp) after
 // EDGELAND_GAME_DEMO_EDITS of its players' actions (default 6000, the demo's own default),
 // exported as a game loading it would: surface_chains, surface_loops, all_meshes, find_islands,
 // and a box2d::Terrain built from scratch; beside it, the same world rasterised into a bitmap
@@ -10,10 +10,11 @@
 #include <memory>
 #include <string>
 
-#include "demo_editor.hpp"
-#include "demo_landscape.hpp"
 #include "edgeland/box2d/terrain.hpp"
+#include "edgeland/demo/landscape.hpp"
+#include "edgeland/game/islands.hpp"
 #include "edgeland/game/render_meshes.hpp"
+#include "edgeland/game/surface_chains.hpp"
 #include "game_common.hpp"
 #include "pixel_terrain.hpp"
 
@@ -24,7 +25,7 @@ std::size_t demo_edits() { return env_count("EDGELAND_GAME_DEMO_EDITS", 6000); }
 
 SurfaceOptions demo_surface() {
   SurfaceOptions o;
-  o.materials.set_solid(cli::demo::kWater, false).set_anchored(cli::demo::kBedrock);
+  o.materials.set_solid(demo::kWater, false).set_anchored(demo::kBedrock);
   return o;
 }
 
@@ -62,12 +63,14 @@ double fastest_build(Make&& make) {
 }
 
 void run_game_export(benchmark::State& state) {
-  const Landscape world = testing::demo_landscape(demo_edits());
+  const Landscape world = demo::demo_landscape(demo::kDemoWorld, 1, demo_edits());
   const SurfaceOptions surface = demo_surface();
   const BitmapWorld bitmap = rasterise(world);
   box2d::TerrainOptions terrain_options;
-  terrain_options.surface = surface;
-  terrain_options.units.units_per_engine_unit = kUnitsPerMetre;
+  terrain_options.units_per_metre = kUnitsPerMetre;
+  GameOptions game_options;
+  game_options.surface = surface;
+  game_options.debris = false;  // the terrain of the world as it is
   PixelTerrain::Options pixel_options;
   for (std::size_t m = 1; m < kMaterialCount; ++m)
     pixel_options.solid[m] = surface.materials.is_solid(static_cast<Material>(m));
@@ -92,9 +95,11 @@ void run_game_export(benchmark::State& state) {
                                       });
     state.counters["find_islands_ms"] =
         1e3 * fastest([&] { islands = find_islands(world, surface.materials).size(); });
+    // The terrain from a game driver made at once: its chains, then Box2D's fixtures.
     state.counters["terrain_build_ms"] =
         1e3 * fastest_build([&](b2World& b2) {
-          auto terrain = std::make_unique<box2d::Terrain>(b2, world, terrain_options);
+          const GameDriver game(world, game_options);
+          auto terrain = std::make_unique<box2d::Terrain>(b2, game, terrain_options);
           terrain_fixtures = terrain->fixture_count();
           return terrain;
         });

@@ -12,6 +12,7 @@ int main(int argc, char** argv) {
   edgeland::bench::register_game_edit_benchmarks();
   edgeland::bench::register_game_export_benchmarks();
   edgeland::bench::register_frame_benchmarks();
+  edgeland::bench::register_island_benchmarks();
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   benchmark::RunSpecifiedBenchmarks();

@@ -37,7 +37,8 @@ def workload_runs(runs):
 
 
 def end_to_end(edits):
-    print("#### End to end per edit: edgeland (edit + Terrain::update) against the pixel pipeline")
+    print("#### End to end per edit: edgeland (GameDriver::apply + Terrain::apply + debris bodies) "
+          "against the pixel pipeline")
     print()
     print("| workload | edits | edgeland median us | pixel median us | median ratio | edgeland p99 us "
           "| pixel p99 us | p99 ratio | median ratio per repeat (min-max) |")
@@ -51,11 +52,10 @@ def end_to_end(edits):
 
 
 STAGES = [
-    ("landscape_edit", "landscape edit"),
-    ("terrain_update", "Terrain::update"),
-    ("tracker_update", "SurfaceTracker::update alone"),
-    ("islands_update", "IslandTracker::update"),
-    ("mesh_update", "mesh_update"),
+    ("landscape_edit", "the edit alone (a plain landscape)"),
+    ("game_update", "GameDriver::apply"),
+    ("terrain_update", "Terrain::apply"),
+    ("debris_bodies", "debris bodies"),
     ("edgeland_step", "Step (edgeland world)"),
     ("bitmap_edit", "bitmap edit"),
     ("chunk_trace", "chunk trace"),
@@ -82,10 +82,9 @@ COUNTS = [
     ("triangles_per_edit", "triangles built per edit"),
     ("chunks_per_edit", "chunks traced per edit"),
     ("pixel_loops_per_edit", "pixel loops created per edit"),
-    ("islands_found", "islands found (all edits)"),
-    ("islands_max_summaries", "IslandTracker::last_work() worst: summaries"),
-    ("islands_max_ports", "IslandTracker::last_work() worst: ports"),
-    ("islands_update_max_us", "IslandTracker::update worst us"),
+    ("islands_detached", "islands detached (all edits)"),
+    ("cells_traced_max", "cells traced, worst edit"),
+    ("game_update_max_us", "GameDriver::apply worst us"),
     ("terrain_fixtures", "edgeland fixtures at the end"),
     ("pixel_fixtures", "pixel fixtures at the end"),
     ("pixel_vertices", "pixel loop vertices at the end"),

@@ -39,6 +39,14 @@ std::optional<Rival> rival_named(const std::string& name) {
 
 LandscapeConfig landscape_config(Rival rival, std::int64_t world_side) {
   LandscapeConfig config;
+  // Cell size experiments (issue 35 point 6): the adaptive trees' split threshold and smallest
+  // cell from the environment, the library's defaults otherwise.
+  config.edge_cap =
+      static_cast<std::uint32_t>(env_count("EDGELAND_LANDSCAPE_EDGE_CAP", config.edge_cap));
+  config.merge_below =
+      static_cast<std::uint32_t>(env_count("EDGELAND_LANDSCAPE_MERGE_BELOW", config.merge_below));
+  config.min_cell_size = static_cast<std::int64_t>(
+      env_count("EDGELAND_LANDSCAPE_MIN_CELL", static_cast<std::size_t>(config.min_cell_size)));
   if (rival == Rival::kKdTree) config.tree = TreeKind::kKdTree;
   if (rival == Rival::kGrid) {
     config.grid_depth = 0;

@@ -3,9 +3,10 @@
 
 #include <stdexcept>
 
-#include "demo_landscape.hpp"
+#include "edgeland/demo/landscape.hpp"
 #include "edgeland/kernel/predicates.hpp"
 #include "edgeland/kernel/validate.hpp"
+#include "landscape_polygons.hpp"
 #include "piece_shapes.hpp"
 #include "validate_generators.hpp"
 
@@ -21,7 +22,7 @@ PiecesWorkload checked(PiecesWorkload w) {
 std::vector<PiecesWorkload> demo_workloads(std::size_t edits) {
   PiecesWorkload all{"demo", {}}, small{"demo_small", {}, true};
   for (const testing::CellPolygon& c :
-       testing::landscape_polygons(testing::demo_landscape(edits))) {
+       testing::landscape_polygons(demo::demo_landscape(demo::kDemoWorld, 1, edits))) {
     if (corners_only(c.polygon).size() <= 24) small.polygons.push_back(c.polygon);
     all.polygons.push_back(c.polygon);
   }

@@ -1,24 +1,18 @@
 #pragma once
-// splitmix64: a fixed, portable generator for the benchmarks' seeded inputs (std::
-// distributions differ between standard libraries; these inputs must not).
+// The benchmarks' seeded inputs come from the project's one generator (demo/: splitmix64.hpp;
+// std:: distributions differ between standard libraries, these inputs must not), with a draw in
+// [0, 1) for the workloads that place points with doubles.
 #include <cstdint>
+
+#include "edgeland/demo/splitmix64.hpp"
 
 namespace edgeland::bench {
 
-class SplitMix64 {
+class SplitMix64 : public demo::SplitMix64 {
  public:
-  explicit SplitMix64(std::uint64_t seed) : state_(seed) {}
-  std::uint64_t next() {
-    std::uint64_t z = (state_ += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-  }
+  using demo::SplitMix64::SplitMix64;
   // Uniform in [0, 1) (bench/ only: the library never sees a double).
-  double unit() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
-
- private:
-  std::uint64_t state_;
+  double unit() noexcept { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
 };
 
 }  // namespace edgeland::bench

@@ -10,9 +10,9 @@
 
 #include "commands.hpp"
 #include "edgeland/clip/clip.hpp"
+#include "edgeland/demo/input_text.hpp"
 #include "edgeland/io/wkt_reader.hpp"
 #include "edgeland/kernel/wkt_writer.hpp"
-#include "input_text.hpp"
 
 namespace edgeland::cli {
 namespace {
@@ -73,8 +73,8 @@ int run_clip(const ClipCommandOptions& o) {
   const std::string* paths[2] = {&o.subject_path, &o.clip_path};
   for (int i = 0; i < 2; ++i) {
     try {
-      geometry[i] = read_wkt(read_input_text(*paths[i]));
-    } catch (const InputError& error) {
+      geometry[i] = read_wkt(demo::read_input_text(*paths[i]));
+    } catch (const demo::InputError& error) {
       std::cerr << "edgeland clip: " << error.what() << '\n';
       return kExitUnreadable;
     } catch (const WktError& error) {

@@ -1,7 +1,7 @@
 // `edgeland demo [--out DIR] [--edits N] [--seed S] [--cells] [--save FILE] [--log FILE]
-// [--unchecked]`: the landscape demo. Builds a deterministic 8192 x 8192 world (demo_world.hpp),
-// lets N edits of explosions, tunnels, floods, veins and landslides loose on it
-// (demo_actions.hpp) in checked mode, runs Landscape::check(), prints a summary as readable
+// [--unchecked]`: the landscape demo. Builds a deterministic 8192 x 8192 world and lets N edits
+// of explosions, tunnels, floods, veins and landslides loose on it (demo/: edgeland/demo/
+// landscape.hpp) in checked mode, runs Landscape::check(), prints a summary as readable
 // lines and draws DIR/landscape.png. --save writes the landscape's save file, --log its recorded
 // edit log (which `edgeland replay` turns back into the same state hash).
 // `edgeland demo --physics [--out DIR] [--frames N] [--frame-every K] [--seed S]`: the physics
@@ -16,20 +16,15 @@
 #include <string>
 
 #include "commands.hpp"
-#include "demo_actions.hpp"
-#include "demo_editor.hpp"
-#include "demo_world.hpp"
+#include "edgeland/demo/landscape.hpp"
 #include "edgeland/io/landscape_replay.hpp"
 #include "landscape_png.hpp"
 #ifdef EDGELAND_HAVE_BOX2D
 #include "physics_demo.hpp"
 #endif
-#include "splitmix64.hpp"
 
 namespace edgeland::cli {
 namespace {
-
-constexpr Box64 kDemoWorld{{0, 0}, {8192, 8192}};
 
 struct DemoOptions {
   std::string out = ".";
@@ -44,19 +39,14 @@ struct DemoOptions {
 };
 
 struct DemoRun {
-  std::size_t world_edits = 0;
-  demo::ActionCounts actions;
+  demo::DemoBuild build;
   double seconds = 0;
 };
 
 DemoRun run_edits(Landscape& landscape, const DemoOptions& options) {
-  demo::DemoEditor editor(landscape);
-  SplitMix64 random(options.seed);
   DemoRun run;
   const auto start = std::chrono::steady_clock::now();
-  const demo::Terrain terrain = demo::build_world(editor, landscape.world(), random);
-  run.world_edits = editor.edits();
-  run.actions = demo::run_actions(editor, landscape.world(), terrain, options.edits, random);
+  run.build = demo::build_demo(landscape, options.seed, options.edits);
   run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return run;
 }
@@ -66,16 +56,16 @@ void print_line(const std::string& label, const std::string& value) {
 }
 
 void print_summary(const Landscape& landscape, const DemoRun& run, const LandscapeReport& report) {
-  const demo::ActionCounts& a = run.actions;
+  const demo::ActionCounts& a = run.build.actions;
   const std::size_t action_edits =
       a.explosions + a.tunnel_steps + a.floods + a.vein_steps + a.landslides + a.drifts;
-  const std::size_t edits = run.world_edits + action_edits;
+  const std::size_t edits = run.build.world_edits + action_edits;
   const LandscapeStats stats = landscape.stats();
   std::ostringstream rate;
   rate << std::fixed << std::setprecision(0)
        << (run.seconds > 0 ? static_cast<double>(edits) / run.seconds : 0.0) << " ("
        << std::setprecision(2) << run.seconds << " s)";
-  print_line("world built", std::to_string(run.world_edits) +
+  print_line("world built", std::to_string(run.build.world_edits) +
                                 " edits (layers, grass, ore and sand bands, caves, pools)");
   print_line("actions", std::to_string(action_edits) + " edits: " + std::to_string(a.explosions) +
                             " explosions, " + std::to_string(a.tunnel_steps) + " tunnel steps, " +
@@ -156,7 +146,7 @@ int run_demo(const DemoOptions& options) {
               << '\n';
     return kExitUnreadable;
   }
-  Landscape landscape(kDemoWorld);
+  Landscape landscape(demo::kDemoWorld);
   landscape.set_checked(!options.unchecked);
   if (!options.log.empty()) landscape.start_log();
   std::cout << "edgeland demo: world 0 0 8192 8192, seed " << options.seed << ", checked mode "

@@ -4,7 +4,8 @@
 //   --chains   one surface chain per line: LINESTRING (...)<TAB>POINT (prev ghost)<TAB>POINT
 //              (next ghost); a closed chain repeats its first point at the end;
 //   --pieces   MATERIAL<TAB>POLYGON (...) per convex piece of every solid polygon;
-//   --mesh     MATERIAL<TAB>POLYGON ((a, b, c, a)) per triangle of every polygon;
+//   --mesh     MATERIAL<TAB>POLYGON ((a, b, c, a)) per triangle of the game layer's render meshes
+//              (all_meshes: every polygon, by ascending id);
 //   --islands  one debris island per line, MULTIPOLYGON (...) of its region (maximal polygons);
 // and prints one JSON line {chains, chain_vertices, pieces, triangles, islands, seconds}.
 // A bad log line exits 2 naming it, as `replay` does; the outputs then describe the world
@@ -18,13 +19,13 @@
 
 #include "commands.hpp"
 #include "edgeland/clip/clip.hpp"
+#include "edgeland/demo/input_text.hpp"
 #include "edgeland/game/islands.hpp"
+#include "edgeland/game/render_meshes.hpp"
 #include "edgeland/game/surface_chains.hpp"
 #include "edgeland/io/landscape_replay.hpp"
 #include "edgeland/kernel/convex_pieces.hpp"
-#include "edgeland/kernel/triangulate.hpp"
 #include "edgeland/kernel/wkt_writer.hpp"
-#include "input_text.hpp"
 #include "landscape_replay.hpp"
 
 namespace edgeland::cli {
@@ -106,12 +107,14 @@ void export_world(const Landscape& world, const ExportOptions& o, Counts& n) {
     for (const SurfaceChain& c : chains) out << chain_line(c) << '\n';
   });
   std::ostringstream pieces, mesh;
-  world.polygons_in(world.world(), [&](const PolygonView& v) {
-    for (const Triangle& t : triangulate(*v.polygon)) {
-      const Polygon& p = *v.polygon;
-      mesh << to_string(v.material) << '\t' << to_wkt(Polygon{p[t.a], p[t.b], p[t.c]}) << '\n';
+  for (const PolygonMesh& m : all_meshes(world)) {
+    for (const Triangle& t : m.triangles) {
+      const Polygon triangle{m.vertices[t.a], m.vertices[t.b], m.vertices[t.c]};
+      mesh << to_string(m.material) << '\t' << to_wkt(triangle) << '\n';
       ++n.triangles;
     }
+  }
+  world.polygons_in(world.world(), [&](const PolygonView& v) {
     if (!surface.materials.is_solid(v.material)) return true;
     for (const Polygon& piece : convex_pieces(*v.polygon, o.max_piece_vertices)) {
       pieces << to_string(v.material) << '\t' << to_wkt(piece) << '\n';
@@ -136,7 +139,7 @@ int run_export(const ExportOptions& o) {
   try {
     if (o.max_piece_vertices < 3) throw ExportError("--max-piece-vertices must be at least 3");
     physics_materials(o);  // refuse a bad list before the replay
-    const log::LandscapeReplay replayed = log::replay_landscape_log(read_input_text(o.path));
+    const log::LandscapeReplay replayed = log::replay_landscape_log(demo::read_input_text(o.path));
     if (!replayed.landscape) throw ExportError(o.path + ": " + replayed.failure->message);
     const auto start = std::chrono::steady_clock::now();
     Counts n;
@@ -156,7 +159,7 @@ int run_export(const ExportOptions& o) {
       return exit_status(*replayed.failure);
     }
     return kExitOk;
-  } catch (const InputError& e) {
+  } catch (const demo::InputError& e) {
     std::cerr << "edgeland export: " << e.what() << '\n';
   } catch (const ExportError& e) {
     std::cerr << "edgeland export: " << e.what() << '\n';

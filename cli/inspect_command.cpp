@@ -8,8 +8,8 @@
 #include <string>
 
 #include "commands.hpp"
+#include "edgeland/demo/input_text.hpp"
 #include "edgeland/io/landscape_replay.hpp"
-#include "input_text.hpp"
 
 namespace edgeland::cli {
 namespace {
@@ -67,8 +67,8 @@ int report_refusal(nlohmann::ordered_json out, const std::string& error) {
 int run_inspect(const std::string& path) {
   std::string bytes;
   try {
-    bytes = read_input_text(path);
-  } catch (const InputError& error) {
+    bytes = demo::read_input_text(path);
+  } catch (const demo::InputError& error) {
     std::cerr << "edgeland inspect: " << error.what() << '\n';
     return kExitUnreadable;
   }

@@ -46,7 +46,7 @@ Frame frame_for(const Box64& world, const PictureOptions& options) {
   return f;
 }
 
-void set_colour(cairo_t* cr, Rgb c, double alpha = 1) {
+void set_colour(cairo_t* cr, demo::Rgb c, double alpha = 1) {
   cairo_set_source_rgba(cr, c.r / 255.0, c.g / 255.0, c.b / 255.0, alpha);
 }
 
@@ -70,7 +70,7 @@ void trace(cairo_t* cr, const Frame& f, const std::vector<Point64>& path, bool c
 // One path per material, filled by the non-zero rule: the pieces of a material cut at cell
 // lines share those edges and are covered as one region, so no seam shows between them.
 void draw_material(cairo_t* cr, const Frame& f, const std::vector<const Polygon*>& polygons,
-                   Rgb c) {
+                   demo::Rgb c) {
   if (polygons.empty()) return;
   cairo_new_path(cr);
   for (const Polygon* p : polygons) trace(cr, f, *p, true);
@@ -107,13 +107,13 @@ void draw_layer(cairo_t* cr, const Frame& f, const PictureLayer& layer) {
 
 void draw_world(cairo_t* cr, const Frame& f, const Landscape& landscape,
                 const PictureOptions& options) {
-  set_colour(cr, material_colour(kEmpty));
+  set_colour(cr, demo::material_colour(kEmpty));
   cairo_rectangle(cr, 0, 0, f.width, f.height);
   cairo_fill(cr);
   const auto by_material = polygons_by_material(landscape);
   for (std::size_t m = 1; m < kMaterialCount; ++m) {
     const auto material = static_cast<Material>(m);
-    draw_material(cr, f, by_material[m], material_colour(material));
+    draw_material(cr, f, by_material[m], demo::material_colour(material));
   }
   if (options.cells) draw_cells(cr, f, landscape);
   for (const PictureLayer& layer : options.layers) draw_layer(cr, f, layer);
@@ -144,7 +144,7 @@ double legend_materials(cairo_t* cr, double x, double y, const Landscape& landsc
     const auto material = static_cast<Material>(m);
     const Int128 twice = landscape.twice_area(material);
     if (twice == 0) continue;
-    set_colour(cr, material_colour(material));
+    set_colour(cr, demo::material_colour(material));
     cairo_rectangle(cr, x, y - 12, 16, 14);
     cairo_fill_preserve(cr);
     cairo_set_source_rgba(cr, 1, 1, 1, 0.5);
@@ -153,14 +153,14 @@ double legend_materials(cairo_t* cr, double x, double y, const Landscape& landsc
     char share[32];
     std::snprintf(share, sizeof share, "%.1f%%",
                   100.0 * static_cast<double>(twice) / 2.0 / world_area);
-    legend_text(cr, x + 24, y, std::to_string(m) + " " + material_name(material));
+    legend_text(cr, x + 24, y, std::to_string(m) + " " + demo::material_name(material));
     legend_text(cr, x + 140, y, share);
     y += kLegendRow;
   }
   return y;
 }
 
-void legend_line(cairo_t* cr, double x, double y, Rgb colour, double opacity, double width,
+void legend_line(cairo_t* cr, double x, double y, demo::Rgb colour, double opacity, double width,
                  const std::string& label) {
   set_colour(cr, colour, opacity);
   cairo_set_line_width(cr, width);
@@ -181,7 +181,7 @@ void draw_legend(cairo_t* cr, const Frame& f, const Landscape& landscape,
   legend_text(cr, x, 24, "material          area");
   double y = legend_materials(cr, x, 24 + kLegendRow, landscape);
   if (options.cells) {
-    legend_line(cr, x, y, Rgb{255, 255, 255}, 0.35, 1, "cell lines");
+    legend_line(cr, x, y, demo::Rgb{255, 255, 255}, 0.35, 1, "cell lines");
     y += kLegendRow;
   }
   for (const PictureLayer& layer : options.layers) {
@@ -203,7 +203,7 @@ Canvas canvas_for(const Frame& f, const Landscape& landscape, const PictureOptio
 
 void draw_picture(cairo_t* cr, const Frame& f, const Canvas& canvas, const Landscape& landscape,
                   const PictureOptions& options) {
-  set_colour(cr, material_colour(kEmpty));
+  set_colour(cr, demo::material_colour(kEmpty));
   cairo_paint(cr);
   draw_world(cr, f, landscape, options);
   if (options.legend) draw_legend(cr, f, landscape, options, canvas.height);

@@ -9,10 +9,10 @@
 #include <string>
 #include <vector>
 
+#include "edgeland/demo/palette.hpp"
 #include "edgeland/kernel/bbox.hpp"
 #include "edgeland/kernel/polygon.hpp"
 #include "edgeland/spatial/landscape.hpp"
-#include "material_palette.hpp"
 
 namespace edgeland::cli {
 
@@ -25,7 +25,7 @@ class PictureError : public std::runtime_error {
 // Paths in world coordinates drawn over the landscape in one style, named in the legend.
 struct PictureLayer {
   std::string label;
-  Rgb colour;
+  demo::Rgb colour;
   double opacity = 1;
   double line_width = 1.5;  // pixels
   bool closed = true;       // close each path (outlines) or not (open chains)

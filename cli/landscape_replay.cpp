@@ -4,7 +4,7 @@
 #include <iostream>
 #include <string>
 
-#include "command.hpp"
+#include "commands.hpp"
 #include "landscape_dump.hpp"
 #include "landscape_png.hpp"
 
@@ -49,7 +49,7 @@ int exit_status(const log::ReplayFailure& failure) {
   return failure.kind == log::ReplayFailure::Kind::kInternal ? kExitInternal : kExitUnreadable;
 }
 
-int replay_landscape_log(std::string_view text, const ReplayOptions& options) {
+int print_landscape_replay(std::string_view text, const ReplayOptions& options) {
   const log::LandscapeReplay replay =
       log::replay_landscape_log(text, log::LandscapeReplayOptions{.check = options.check});
   std::cout << log::replay_json(replay) << '\n';

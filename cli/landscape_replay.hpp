@@ -8,12 +8,12 @@
 
 namespace edgeland::cli {
 
-// The exit status (command.hpp) of a replay that stopped: 2 for a bad line or a shape the kernel
+// The exit status (commands.hpp) of a replay that stopped: 2 for a bad line or a shape the kernel
 // refuses, 3 for an internal error of the landscape or of the OGC import, or a failed check().
 int exit_status(const log::ReplayFailure& failure);
 
-// Returns the exit status (command.hpp): 0, or exit_status of the failure (a one-line message
+// Returns the exit status (commands.hpp): 0, or exit_status of the failure (a one-line message
 // naming the line on stderr).
-int replay_landscape_log(std::string_view text, const ReplayOptions& options);
+int print_landscape_replay(std::string_view text, const ReplayOptions& options);
 
 }  // namespace edgeland::cli

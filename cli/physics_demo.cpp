@@ -6,7 +6,7 @@
 #include <iostream>
 #include <sstream>
 
-#include "command.hpp"
+#include "commands.hpp"
 #include "edgeland/io/landscape_replay.hpp"
 #include "landscape_picture.hpp"
 #include "physics_scene.hpp"
@@ -78,9 +78,10 @@ void print_summary(const box2d::PhysicsScene& scene, int frames_written) {
                                      std::to_string(s.chains_added) + " added");
   print_line("islands detached", std::to_string(s.detached) + " (falling as debris bodies)");
   print_line("bodies buried", std::to_string(s.buried) + " (a fill put solid on them)");
-  print_line("edit time", per(s.edit_seconds, s.edits, "edit"));
-  print_line("collider time", per(s.collider_seconds, s.edits, "edit"));
-  print_line("island time", per(s.island_seconds, s.edits, "edit"));
+  print_line("game time", per(s.game_seconds, s.frames - s.settled, "frame") +
+                              " (edits, chains, islands, meshes: GameDriver::apply)");
+  print_line("collider time", per(s.collider_seconds, s.frames - s.settled, "frame"));
+  print_line("debris time", per(s.debris_seconds, s.frames - s.settled, "frame"));
   print_line("step time", per(s.step_seconds, s.frames, "step"));
   print_line("bodies now", std::to_string(scene.bodies().size()));
   print_line("state hash", log::state_hash_hex(scene.land().state_hash()));

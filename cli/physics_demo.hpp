@@ -1,5 +1,5 @@
 #pragma once
-// `edgeland demo --physics`: the Box2D adapter's physics scene (adapters/box2d/scene), the same
+// `edgeland demo --physics`: the demo's physics scene (demo/physics/physics_scene.hpp), the same
 // one tests/box2d checks, run for a number of frames with PNG frames of the terrain, the bodies
 // and the falling debris, and a summary of what it did and where the time went.
 #include <cstdint>
@@ -14,7 +14,7 @@ struct PhysicsDemoOptions {
   std::uint64_t seed = 1;
 };
 
-// Returns the exit status (command.hpp): 0; 2 when a frame cannot be written.
+// Returns the exit status (commands.hpp): 0; 2 when a frame cannot be written.
 int run_physics_demo(const PhysicsDemoOptions& options);
 
 }  // namespace edgeland::cli

@@ -10,12 +10,12 @@
 #include <string>
 
 #include "commands.hpp"
+#include "edgeland/demo/input_text.hpp"
 #include "edgeland/game/islands.hpp"
 #include "edgeland/game/surface_chains.hpp"
 #include "edgeland/io/landscape_log.hpp"
 #include "edgeland/io/landscape_replay.hpp"
 #include "edgeland/kernel/convex_pieces.hpp"
-#include "input_text.hpp"
 #include "landscape_picture.hpp"
 
 namespace edgeland::cli {
@@ -109,7 +109,7 @@ int run_render(const RenderOptions& options) {
   std::optional<Landscape> landscape;
   try {
     if (const std::optional<Refusal> refusal =
-            read_landscape(read_input_text(options.input), landscape)) {
+            read_landscape(demo::read_input_text(options.input), landscape)) {
       std::cerr << "edgeland render: " << options.input << ": " << refusal->message << '\n';
       return refusal->status;
     }
@@ -119,7 +119,7 @@ int run_render(const RenderOptions& options) {
     } else {
       write_landscape_png(*landscape, options.png, picture);
     }
-  } catch (const InputError& error) {
+  } catch (const demo::InputError& error) {
     std::cerr << "edgeland render: " << error.what() << '\n';
     return kExitUnreadable;
   } catch (const PictureError& error) {

@@ -19,13 +19,13 @@
 #include <string_view>
 
 #include "commands.hpp"
+#include "edgeland/demo/input_text.hpp"
 #include "edgeland/io/clip_log.hpp"
 #include "edgeland/io/landscape_log.hpp"
 #include "edgeland/io/log_kind.hpp"
 #include "edgeland/kernel/area.hpp"
 #include "edgeland/kernel/int128.hpp"
 #include "edgeland/kernel/wkt_writer.hpp"
-#include "input_text.hpp"
 #include "landscape_replay.hpp"
 #include "replay_options.hpp"
 
@@ -107,8 +107,8 @@ int replay_clip_log(std::string_view text, const ReplayOptions& options) {
 int run_replay(const ReplayOptions& options) {
   std::string text;
   try {
-    text = read_input_text(options.path);
-  } catch (const InputError& error) {
+    text = demo::read_input_text(options.path);
+  } catch (const demo::InputError& error) {
     std::cerr << "edgeland replay: " << error.what() << '\n';
     return kExitUnreadable;
   }
@@ -118,7 +118,7 @@ int run_replay(const ReplayOptions& options) {
               << ": " << *problem << '\n';
     return kExitUnreadable;
   }
-  if (start.kind == log::LogKind::kLandscape) return replay_landscape_log(text, options);
+  if (start.kind == log::LogKind::kLandscape) return print_landscape_replay(text, options);
   if (!options.png.empty() || options.cells) {
     std::cerr << "edgeland replay: --png and --cells need a landscape log (one whose first "
                  "command is `world`)\n";

@@ -6,10 +6,10 @@
 #include <string>
 
 #include "commands.hpp"
+#include "edgeland/demo/input_text.hpp"
 #include "edgeland/io/wkt_reader.hpp"
 #include "edgeland/kernel/polygon.hpp"
 #include "edgeland/kernel/validate.hpp"
-#include "input_text.hpp"
 
 namespace edgeland::cli {
 namespace {
@@ -59,8 +59,8 @@ void print_first(const ValidationReport& report) {
 int run_validate(const ValidateOptions& options) {
   WktGeometry geometry;
   try {
-    geometry = read_wkt(read_input_text(options.path));
-  } catch (const InputError& error) {
+    geometry = read_wkt(demo::read_input_text(options.path));
+  } catch (const demo::InputError& error) {
     std::cerr << "edgeland validate: " << error.what() << '\n';
     return kExitUnreadable;
   } catch (const WktError& error) {

@@ -10,6 +10,14 @@ install(TARGETS edgeland_kernel edgeland_clip edgeland_spatial edgeland_io edgel
   INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(DIRECTORY kernel/include/ clip/include/ spatial/include/ io/include/ game/include/
   adapters/engine/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+# The C API (capi/): the shared library (with its SONAME links) and the static one, and edgeland.h.
+if(TARGET edgeland_c_shared)
+  install(TARGETS edgeland_c_shared edgeland_c_static EXPORT edgelandTargets
+    ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+    LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
+    RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+  install(DIRECTORY capi/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+endif()
 install(EXPORT edgelandTargets NAMESPACE edgeland:: DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/edgeland)
 # The Box2D adapter, when built, in an export set of its own: edgelandConfig.cmake loads it only
 # where Box2D is found, so a user without Box2D still finds the rest.

@@ -1,7 +1,7 @@
 // The fuzz targets by name (decoders.hpp): each target's decoding and checks live in its own
 // file (clip_pair_decoders.cpp, clip_sequence_decoders.cpp, normalize_decoders.cpp,
 // parse_decoders.cpp, landscape_decoders.cpp, polygon_decoders.cpp, game_decoders.cpp,
-// delta_decoders.cpp).
+// delta_decoders.cpp, int128_decoders.cpp).
 #include "decoders.hpp"
 
 #include <exception>
@@ -18,6 +18,7 @@ Runner runner_for(std::string_view target) {
   if (target == "polygon_pieces") return run_polygon_pieces;
   if (target == "game_sequence") return run_game_sequence;
   if (target == "delta") return run_delta;
+  if (target == "int128_portable") return run_int128_portable;
   return nullptr;
 }
 

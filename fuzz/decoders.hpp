@@ -98,6 +98,12 @@ std::optional<Finding> run_delta(const std::uint8_t* data, std::size_t size);
 // Inputs of run_delta built from real deltas of its worlds (regress_replay delta --write-seeds).
 std::vector<std::string> delta_seeds();
 
+// Pairs of 128-bit values of every width decoded from bytes, through every operation of the
+// portable Int128 (kernel/.../portable_int128.hpp) and of the compiler's __int128: the results
+// must agree bit for bit (+ - * / % with wrapping, shifts, comparisons, conversions to double,
+// float and narrower integers, from double). int128_decoders.cpp.
+std::optional<Finding> run_int128_portable(const std::uint8_t* data, std::size_t size);
+
 // The logs the inputs of clip_pair (its four operations) and clip_sequence (the steps as
 // recorded) decode to, as continuous-clip logs.
 std::string clip_pair_log(const std::uint8_t* data, std::size_t size);

@@ -26,16 +26,31 @@ Polygon square(Point64 c, std::int64_t r) {
   return {{c.x - r, c.y - r}, {c.x + r, c.y - r}, {c.x + r, c.y + r}, {c.x - r, c.y + r}};
 }
 
-// The worlds deltas are applied to: filled and edited a little, and empty.
+// A world of 1024^2 filled and edited a little; with regions (depth 2, ids per region) when asked.
+Landscape edited_world(bool regions) {
+  LandscapeConfig c;
+  if (regions) {
+    c.region_depth = 2;
+    c.region_ids = true;
+  }
+  Landscape w({{0, 0}, {1024, 1024}}, 1, c, delta_limits());
+  for (std::int64_t i = 0; i < 12; ++i) {
+    w.carve(PolygonSet{square({80 * i + 40, 300 + 37 * i % 400}, 30 + i)});
+    w.fill(PolygonSet{square({60 * i + 100, 700 - 23 * i}, 12 + i)}, 2 + i % 3);
+  }
+  return w;
+}
+
+// The worlds deltas are applied to: filled and edited a little, empty, with regions, and with
+// regions one of which is unloaded (edits skip it: a client watching the others).
 const std::vector<Landscape>& base_worlds() {
   static const std::vector<Landscape> worlds = [] {
-    Landscape filled({{0, 0}, {1024, 1024}}, 1, {}, delta_limits());
-    for (std::int64_t i = 0; i < 12; ++i) {
-      filled.carve(PolygonSet{square({80 * i + 40, 300 + 37 * i % 400}, 30 + i)});
-      filled.fill(PolygonSet{square({60 * i + 100, 700 - 23 * i}, 12 + i)}, 2 + i % 3);
-    }
-    return std::vector<Landscape>{filled,
-                                  Landscape({{0, 0}, {1024, 1024}}, kEmpty, {}, delta_limits())};
+    Landscape partial = edited_world(true);
+    partial.unload_region({1, 2});
+    partial.set_unloaded_policy(UnloadedRegions::kSkip);
+    return std::vector<Landscape>{edited_world(false),
+                                  Landscape({{0, 0}, {1024, 1024}}, kEmpty, {}, delta_limits()),
+                                  edited_world(true), partial};
   }();
   return worlds;
 }
@@ -168,6 +183,18 @@ std::vector<std::string> delta_seeds() {
   add(1 | 8 | 16, patch_delta(after, 1, {{}}, filled.state_hash()));
   add(1 | 16, patch_delta(after, 1, {{0}, {3}}, filled.state_hash()));
   add(1 | 2, patch_delta(filled, 1, {{1}}));
+  // Worlds with regions: a region brought into the partial world, a repair below a region's node
+  // (with its counter), a command.
+  const Landscape& regions = base_worlds()[2];
+  add(1 | 6 | 16, patch_delta(regions, 1, {{1, 2}}));
+  Landscape diverged = regions;
+  diverged.fill(PolygonSet{square({700, 300}, 40)}, 4);
+  TreePath below{1, 2};
+  if (!diverged.node_digest(below)->cell) below.push_back(0);
+  add(1 | 4 | 16, patch_delta(diverged, 1, {below}));
+  Landscape next = regions;
+  apply_edit(next, Edit::carve(shape));
+  add(1 | 4 | 8 | 16, command_delta(regions, next, 1, Edit::carve(shape)));
   return seeds;
 }
 

@@ -1,7 +1,9 @@
-// The game layer's fuzz target (issue 26): an edit sequence decoded as edit_sequence decodes it
-// (landscape_decoding.hpp), with a material table and a border mode, and after every edit the
+// The game layer's fuzz target (issues 26, 35): an edit sequence decoded as edit_sequence decodes
+// it (landscape_decoding.hpp), with a material table and a border mode, and after every edit the
 // game layer checked against references that share no code with it (the tests' oracles:
-// tests/game/surface_oracle, island_oracle, chain_rules.hpp; tests/support/piece_checks).
+// tests/support/surface_oracle, island_oracle, chain_rules.hpp; tests/support/piece_checks): the
+// standalone trackers edit by edit, and a GameDriver taking the same edits in frames (the input
+// says where a frame ends), its updates mirrored and checked after every frame.
 // Declared in decoders.hpp.
 #include <algorithm>
 #include <map>
@@ -10,11 +12,13 @@
 
 #include "chain_rules.hpp"
 #include "decoders.hpp"
+#include "edgeland/game/game_driver.hpp"
 #include "edgeland/game/islands.hpp"
 #include "edgeland/game/render_meshes.hpp"
 #include "edgeland/game/surface_tracker.hpp"
 #include "edgeland/kernel/area.hpp"
 #include "edgeland/kernel/convex_pieces.hpp"
+#include "edgeland/kernel/validate.hpp"
 #include "island_oracle.hpp"
 #include "landscape_decoding.hpp"
 #include "piece_checks.hpp"
@@ -206,6 +210,114 @@ std::optional<std::string> detach_copy(const Landscape& l, const Island& island)
   return std::nullopt;
 }
 
+Edit as_edit(const DecodedEdit& d) {
+  ValidSet shape(d.shape, Operand::kClip);
+  switch (d.kind) {
+    case 0:
+      return Edit::carve(std::move(shape));
+    case 1:
+      return Edit::fill(std::move(shape), d.a);
+    case 2:
+      return Edit::fill_empty(std::move(shape), d.a);
+    case 3:
+      return Edit::replace(std::move(shape), d.a, d.b);
+    default:
+      return Edit::relabel(std::move(shape), d.map);
+  }
+}
+
+// A game driver fed frames of the same edits; after each frame its updates, mirrored, must equal
+// full exports and the brute-force surface, the islands left must be those it says wait, and
+// its debris must hold exactly the area it took, in valid convex pieces.
+class DriverCheck {
+ public:
+  DriverCheck(const Landscape& l, const SurfaceOptions& options, std::size_t budget)
+      : game_(l, game_options(options, budget)), chains_(game_.chains()) {
+    for (PolygonMesh& m : all_meshes(l)) meshes_.emplace(m.id, std::move(m));
+  }
+
+  void add(const DecodedEdit& d) { frame_.push_back(as_edit(d)); }
+
+  std::optional<std::string> end_frame() {
+    GameUpdate u;
+    const std::uint64_t before = game_.landscape().state_hash();
+    const std::size_t chains_before = game_.chains().size();
+    try {
+      u = game_.apply(frame_);
+    } catch (const LimitExceeded&) {  // its landscape differs from the trackers': may be fuller
+      frame_.clear();
+      if (game_.landscape().state_hash() != before || game_.chains().size() != chains_before)
+        return "game driver: a refused frame changed the driver";
+      return std::nullopt;
+    }
+    frame_.clear();
+    if (auto e = mirror(u)) return "game driver: " + *e;
+    if (auto e = check_state()) return "game driver: " + *e;
+    for (const Debris& d : u.debris)
+      if (auto e = check_debris(d)) return "game driver debris: " + *e;
+    return std::nullopt;
+  }
+
+ private:
+  static GameOptions game_options(const SurfaceOptions& surface, std::size_t budget) {
+    GameOptions o;
+    o.surface = surface;
+    o.debris_budget = budget;
+    return o;
+  }
+
+  std::optional<std::string> mirror(const GameUpdate& u) {
+    for (ChainId id : u.chains.removed)
+      if (chains_.erase(id) != 1) return "removed unknown chain " + std::to_string(id);
+    for (const auto& [id, chain] : u.chains.added)
+      if (!chains_.emplace(id, chain).second) return "added known chain " + std::to_string(id);
+    for (PolygonId id : u.meshes.dropped)
+      if (meshes_.erase(id) != 1) return "dropped unknown mesh " + std::to_string(id);
+    for (const PolygonMesh& m : u.meshes.built)
+      if (!meshes_.emplace(m.id, m).second) return "built known mesh " + std::to_string(m.id);
+    return std::nullopt;
+  }
+
+  std::optional<std::string> check_state() const {
+    const Landscape& l = game_.landscape();
+    if (const LandscapeReport r = l.check(); !r.ok()) return "check(): " + r.problems.front();
+    std::vector<SurfaceChain> mirrored;
+    for (const auto& [id, chain] : chains_) mirrored.push_back(chain);
+    const SurfaceOptions& options = game_.options().surface;
+    if (sorted(mirrored) != sorted(surface_chains(l, options)))
+      return "the chain mirror differs from surface_chains()";
+    const std::string diff =
+        test::surface_difference(test::surface_brute(l, options), test::surface_of(mirrored));
+    if (!diff.empty()) return "the chain mirror differs from the brute-force surface: " + diff;
+    std::vector<PolygonMesh> meshes;
+    for (const auto& [id, m] : meshes_) meshes.push_back(m);
+    if (meshes != all_meshes(l)) return "the mesh mirror differs from all_meshes()";
+    if (test::islands_brute(l, options.materials).size() != game_.debris_waiting())
+      return "the islands left are not those waiting";
+    return std::nullopt;
+  }
+
+  std::optional<std::string> check_debris(const Debris& d) const {
+    Int128 regions = 0;
+    for (const Debris::Region& r : d.regions)
+      for (const Polygon& p : r.polygons) regions += twice_signed_area(p);
+    if (regions != d.twice_area) return "regions do not hold the island's area";
+    Int128 pieces = 0;
+    for (const DebrisPiece& p : d.pieces) {
+      if (p.polygon.size() > game_.options().max_piece_vertices) return "a piece too big";
+      if (!validate(PolygonSet{p.polygon}, 1).ok()) return "an invalid piece";
+      pieces += twice_signed_area(p.polygon);
+    }
+    if (pieces != d.twice_area) return "pieces do not hold the island's area";
+    return std::nullopt;
+  }
+
+  GameDriver game_;
+  Mirror chains_;
+  std::map<PolygonId, PolygonMesh> meshes_;
+  std::vector<Edit> frame_;
+};
+
 Finding finding(const std::string& what, const SurfaceOptions& o, const Landscape& l) {
   return {what + "\n  materials: " + options_text(o) + "\n  landscape state hash " +
               std::to_string(l.state_hash()),
@@ -250,8 +362,10 @@ std::optional<Finding> run_game_sequence(const std::uint8_t* data, std::size_t s
   const SurfaceOptions options = decode_options(in);
   l.set_checked(true);
   l.start_log();
+  const std::size_t budget = in.ConsumeIntegralInRange<std::size_t>(0, 256);
   try {
     GameCheck game(l, options);
+    DriverCheck driver(l, options, budget);
     if (auto e = game.start(l)) return finding(*e, options, l);
     for (int i = 0; i < kMaxEdits && in.remaining_bytes() > 0; ++i) {
       const DecodedEdit d = next_edit(in, decode, l);
@@ -270,7 +384,12 @@ std::optional<Finding> run_game_sequence(const std::uint8_t* data, std::size_t s
       }
       if (auto e = check_edit(l, game, changes, for_real))
         return finding(*e + "\n  edit: " + edit_text(d), options, l);
+      driver.add(d);
+      if (in.ConsumeBool())
+        if (auto e = driver.end_frame())
+          return finding(*e + "\n  frame ends at: " + edit_text(d), options, l);
     }
+    if (auto e = driver.end_frame()) return finding(*e + " (the last frame)", options, l);
   } catch (const std::exception& e) {
     return finding(std::string("the game layer threw ") + e.what(), options, l);
   }

@@ -16,8 +16,8 @@
 #include "edgeland/kernel/predicates.hpp"
 #include "edgeland/kernel/shapes.hpp"
 #include "edgeland/kernel/validate.hpp"
-#include "edgeland/kernel/wkt_writer.hpp"
 #include "edgeland/spatial/landscape.hpp"
+#include "edgeland/spatial/log_format.hpp"
 #include "edgeland/spatial/tree_boxes.hpp"
 #include "landscape_decoding.hpp"
 
@@ -291,24 +291,12 @@ Landscape decode_world(Provider& in, EditDecoder& decode) {
 }
 
 std::string edit_text(const DecodedEdit& d) {
-  const std::string wkt = to_wkt(d.shape);
-  switch (d.kind) {
-    case 0:
-      return "carve " + wkt;
-    case 1:
-      return "fill " + std::to_string(d.a.value()) + " " + wkt;
-    case 2:
-      return "fill_empty " + std::to_string(d.a.value()) + " " + wkt;
-    case 3:
-      return "replace " + std::to_string(d.a.value()) + " " + std::to_string(d.b.value()) + " " +
-             wkt;
-    default: {
-      std::string line = "relabel ";
-      for (std::uint8_t m = 0; m <= 4; ++m)
-        if (d.map[m] != m) line += std::to_string(m) + " " + to_string(d.map[m]) + " ";
-      return line + wkt;
-    }
-  }
+  // The landscape log's own writer (log_format.hpp); kind is its LandscapeEditKind's order.
+  std::string line = d.kind >= 4 ? log::relabel_line(d.shape, d.map)
+                                 : log::edit_line(static_cast<log::LandscapeEditKind>(d.kind),
+                                                  d.shape, d.kind == 3 ? d.b : d.a, d.a);
+  line.pop_back();  // its '\n'
+  return line;
 }
 
 ChangeSet apply(Landscape& l, const DecodedEdit& d) {

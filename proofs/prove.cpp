@@ -25,8 +25,9 @@ constexpr unsigned kDefaultRlimit = 50'000'000;
 
 std::vector<Theorem> all_theorems() {
   std::vector<Theorem> all;
-  for (auto group : {predicate_theorems, rounding_theorems, area_theorems, centroid_theorems,
-                     probe_theorems, shape_theorems, refutation_theorems}) {
+  for (auto group :
+       {predicate_theorems, rounding_theorems, area_theorems, centroid_theorems, probe_theorems,
+        shape_theorems, portable_int128_theorems, refutation_theorems}) {
     for (Theorem& t : group()) all.push_back(std::move(t));
   }
   return all;

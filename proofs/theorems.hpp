@@ -31,6 +31,7 @@ std::vector<Theorem> centroid_theorems();    // moment sums and denominator (cen
 std::vector<Theorem> refutation_theorems();  // orient in int64 at the int32 bound
 std::vector<Theorem> probe_theorems();       // rays, exact points, closed pixels, grid sizing
 std::vector<Theorem> shape_theorems();       // the shape builders (shapes.hpp)
+std::vector<Theorem> portable_int128_theorems();  // the portable Int128's multiply
 
 // Input coordinates, declared in this order (braced initialization evaluates left to right,
 // so counterexamples list them in reading order).

@@ -14,6 +14,8 @@
 #include "edgeland/kernel/predicates.hpp"
 #include "edgeland/kernel/ray.hpp"
 #include "edgeland/kernel/scratch.hpp"
+#include "face_tracing.hpp"
+#include "obstacle_rows.hpp"
 #include "offsets.hpp"
 #include "plane_graph.hpp"
 #include "point_key.hpp"
@@ -49,12 +51,29 @@ struct Hit {
   Segment edge;    // otherwise: the edge crossed (framed coordinates)
 };
 
+// What a hole's bridges are searched among: the edges of the outer ring, its holes and the
+// bridges so far, the rings' vertices, and both filed by rows of y.
+struct Obstacles {
+  ScratchVector<Segment> edges;
+  ScratchVector<Point64> vertices;
+  ObstacleRows rows;
+  mutable ScratchVector<std::uint32_t> found;  // a search's matches
+
+  void add_bridge(const Segment& e) {
+    rows.add_bridge(static_cast<std::uint32_t>(edges.size()), e);
+    edges.push_back(e);
+  }
+};
+
 // Nearest hit of the ray from o towards -x (framed coordinates), ignoring edges through o
-// (an obstacle may pass straight through o where a canonical ring dropped a vertex).
-Hit cast_west(Point64 o, const std::vector<Segment>& obstacles, int s) {
+// (an obstacle may pass straight through o where a canonical ring dropped a vertex). Only the
+// edges of o's row can meet the ray.
+Hit cast_west(Point64 o, const Obstacles& obstacles, int s) {
   NearestHit nearest(Ray{o, -1, 0}, NearestHit::Origin::kExcluded);
   Segment best;
-  for (const Segment& raw : obstacles) {
+  obstacles.rows.obstacles_in(s * o.y, s * o.y, obstacles.found);
+  for (std::uint32_t i : obstacles.found) {
+    const Segment& raw = obstacles.edges[i];
     const Segment e{frame(raw.a, s), frame(raw.b, s)};
     // An edge off the ray's row, or wholly east of o, cannot be met: passed over by comparisons
     // (most edges are; the exact test of each was a third of hole splitting).
@@ -77,8 +96,7 @@ bool sign_matches(Orientation want, Orientation got) {
 // A vertex visible from hole vertex o (framed: lexicographically smaller than o), found as in
 // Eberly's hole bridging: nearest hit of the westward ray, then inside the triangle (o, hit,
 // end of the hit edge) the vertex making the smallest angle with the ray.
-std::optional<Point64> ray_candidate(Point64 o, const std::vector<Segment>& obstacles,
-                                     const std::vector<Point64>& vertices, int s) {
+std::optional<Point64> ray_candidate(Point64 o, const Obstacles& obstacles, int s) {
   const Hit hit = cast_west(o, obstacles, s);
   if (!hit.found) return std::nullopt;
   if (hit.at_vertex) return hit.vertex;
@@ -87,8 +105,10 @@ std::optional<Point64> ray_candidate(Point64 o, const std::vector<Segment>& obst
   const Orientation side_of_edge = orientation(hit.edge.a, hit.edge.b, o);
   const Orientation side_of_op = orientation(o, p, {o.x - 1, o.y});
   Point64 best = p;
-  for (Point64 raw : vertices) {
-    const Point64 v = frame(raw, s);
+  obstacles.rows.vertices_in(std::min(s * o.y, s * p.y), std::max(s * o.y, s * p.y),
+                             obstacles.found);
+  for (std::uint32_t i : obstacles.found) {
+    const Point64 v = frame(obstacles.vertices[i], s);
     if (v == o || v == p) continue;
     // Only vertices in the triangle's box: strictly between the rows of o and p, not east of o.
     if (upper ? v.y <= o.y || v.y > p.y : v.y >= o.y || v.y < p.y) continue;
@@ -103,12 +123,14 @@ std::optional<Point64> ray_candidate(Point64 o, const std::vector<Segment>& obst
   return best;
 }
 
-// The open segment o-t touches no obstacle and no obstacle overlaps it. Obstacles whose box
-// misses the bridge's box are passed over by comparisons alone.
-bool visible(Point64 o, Point64 t, const std::vector<Segment>& obstacles) {
+// The open segment o-t touches no obstacle and no obstacle overlaps it. Obstacles of the rows
+// the bridge meets whose box misses the bridge's box are passed over by comparisons alone.
+bool visible(Point64 o, Point64 t, const Obstacles& obstacles) {
   const Segment bridge{o, t};
   const Box64 reach = segment_box(bridge);
-  for (const Segment& e : obstacles) {
+  obstacles.rows.obstacles_in(reach.min.y, reach.max.y, obstacles.found);
+  for (std::uint32_t i : obstacles.found) {
+    const Segment& e = obstacles.edges[i];
     if (!segment_box(e).overlaps(reach)) continue;
     const SegmentIntersection r = intersect(bridge, e);
     if (r.relation == SegmentRelation::kDisjoint) continue;
@@ -120,10 +142,9 @@ bool visible(Point64 o, Point64 t, const std::vector<Segment>& obstacles) {
   return true;
 }
 
-std::optional<Point64> bridge_target(Point64 o, const std::vector<Segment>& obstacles,
-                                     const std::vector<Point64>& vertices, int s) {
+std::optional<Point64> bridge_target(Point64 o, const Obstacles& obstacles, int s) {
   const Point64 fo = frame(o, s);
-  if (auto t = ray_candidate(fo, obstacles, vertices, s)) {
+  if (auto t = ray_candidate(fo, obstacles, s)) {
     const Point64 target = frame(*t, s);
     if (visible(o, target, obstacles)) return target;
   }
@@ -131,124 +152,48 @@ std::optional<Point64> bridge_target(Point64 o, const std::vector<Segment>& obst
   // the replayed fuzz regressions, 10 in the peers' cases, 1 in the landscape's), each time
   // because the open segment to the candidate meets an obstacle. Keep going with the nearest
   // visible smaller vertex.
-  std::vector<Point64> smaller;
-  for (Point64 v : vertices)
-    if (frame(v, s) < fo) smaller.push_back(v);
-  std::sort(smaller.begin(), smaller.end(), [&](Point64 a, Point64 b) {
-    const Int128 da = squared_distance(o, a), db = squared_distance(o, b);
-    return da != db ? da < db : a < b;
-  });
-  for (Point64 v : smaller)
-    if (visible(o, v, obstacles)) return v;
+  // Nearest first, as a heap: the first few are visible, so most of them are never ordered.
+  std::vector<std::pair<Int128, Point64>> smaller;
+  for (Point64 v : obstacles.vertices)
+    if (frame(v, s) < fo) smaller.push_back({squared_distance(o, v), v});
+  const auto farther = [](const auto& a, const auto& b) { return a > b; };
+  std::make_heap(smaller.begin(), smaller.end(), farther);
+  for (auto end = smaller.end(); end != smaller.begin(); --end) {
+    std::pop_heap(smaller.begin(), end, farther);
+    if (visible(o, (end - 1)->second, obstacles)) return (end - 1)->second;
+  }
   return std::nullopt;
-}
-
-// The loops of a closed walk of points split where it revisits a point, each visiting every
-// point once.
-void split_at_repeats(const std::vector<Point64>& walk, std::vector<ScratchRing>& out) {
-  // Most walks visit every point once: one sorted copy tells, and then the walk is the loop.
-  ScratchVector<std::uint64_t> keys;
-  keys.resize(walk.size());
-  for (std::size_t i = 0; i < walk.size(); ++i) keys[i] = point_key(walk[i]);
-  std::sort(keys.begin(), keys.end());
-  if (std::adjacent_find(keys.begin(), keys.end()) == keys.end()) {
-    out.emplace_back().assign(walk.begin(), walk.end());
-    return;
-  }
-  // (Not reached by the kernel, clip and spatial tests: no traced walk there revisits a point.)
-  std::vector<Point64> stack;
-  for (Point64 p : walk) {
-    const auto it = std::find(stack.begin(), stack.end(), p);
-    if (it != stack.end()) {
-      out.emplace_back().assign(it, stack.end());
-      stack.erase(it, stack.end());
-    }
-    stack.push_back(p);
-  }
-  if (!stack.empty()) out.emplace_back().assign(stack.begin(), stack.end());
-}
-
-// The faces left of directed edges that meet only at shared endpoints (ring edges with the
-// inside on their left, bridges both ways), traced by the sharpest-left-turn rule of
-// assembly: at the end of an edge, turn clockwise from its reverse to the first edge leaving
-// there. Each edge is walked once; walks revisiting a point are split there. Appends the faces
-// to `out`. O(n log n).
-void trace_faces(const std::vector<Segment>& edges, std::vector<ScratchRing>& out) {
-  const std::size_t m = edges.size();
-  auto direction = [&](std::uint32_t e) {
-    return Point64{edges[e].b.x - edges[e].a.x, edges[e].b.y - edges[e].a.y};
-  };
-  // Edges grouped by origin (one packed key each), a group of several counter-clockwise by
-  // angle: most points have one edge leaving them, and then there is nothing to choose.
-  ScratchVector<std::pair<std::uint64_t, std::uint32_t>> by_origin;
-  by_origin.resize(m);
-  for (std::uint32_t i = 0; i < m; ++i) by_origin[i] = {point_key(edges[i].a), i};
-  std::sort(by_origin.begin(), by_origin.end());
-  for (std::size_t i = 0; i < m;) {
-    std::size_t j = i + 1;
-    while (j < m && by_origin[j].first == by_origin[i].first) ++j;
-    if (j - i > 1)
-      std::sort(by_origin.begin() + static_cast<std::ptrdiff_t>(i),
-                by_origin.begin() + static_cast<std::ptrdiff_t>(j),
-                [&](const auto& x, const auto& y) {
-                  return angle_less(direction(x.second), direction(y.second));
-                });
-    i = j;
-  }
-  // The edge after e: clockwise from e's reverse at its end, the first edge leaving there.
-  auto next_of = [&](std::uint32_t e) {
-    const std::uint64_t key = point_key(edges[e].b);
-    const auto lo =
-        std::lower_bound(by_origin.begin(), by_origin.end(), std::make_pair(key, std::uint32_t{0}));
-    auto hi = lo;
-    while (hi != by_origin.end() && hi->first == key) ++hi;
-    if (lo == hi) fail_stage("hole splitting", "a face does not close");
-    if (hi - lo == 1) return lo->second;
-    const Point64 reverse{-direction(e).x, -direction(e).y};
-    const auto it = std::lower_bound(lo, hi, reverse, [&](const auto& x, Point64 d) {
-      return angle_less(direction(x.second), d);
-    });
-    return (it == lo ? hi - 1 : it - 1)->second;
-  };
-  ScratchVector<std::uint8_t> used;
-  used.assign(m, 0);
-  ScratchVector<Point64> walk;
-  for (std::uint32_t start = 0; start < m; ++start) {
-    if (used[start]) continue;
-    walk.clear();
-    std::uint32_t e = start;
-    do {
-      used[e] = 1;
-      walk.push_back(edges[e].a);
-      e = next_of(e);
-    } while (e != start && !used[e]);
-    if (e != start) fail_stage("hole splitting", "a face does not close");
-    split_at_repeats(walk, out);
-  }
 }
 
 void split_holes_at_depth(std::vector<ScratchRing>& outers, std::vector<ScratchRing>& holes,
                           int depth, std::vector<Ring>& out);
 
-// Cuts one outer ring with its holes. Two bridges per hole normally leave no hole; when bridges
-// of pinched holes meet at a single vertex a face can still enclose a loop touching it there,
-// and that loop is cut again, with fresh bridges, one level down.
-void split_one(const Ring& outer, std::span<const Ring*> holes, int depth, std::vector<Ring>& out) {
-  ScratchVector<Segment> obstacles;
+// The outer ring's and its holes' edges and vertices, filed by rows of y.
+Obstacles obstacles_of(const Ring& outer, std::span<const Ring*> holes) {
+  ScratchVector<Segment> edges;
   ScratchVector<Point64> vertices;
   auto add_ring = [&](const Ring& r) {
     for (std::size_t i = 0; i < r.size(); ++i) {
-      obstacles.push_back(ring_edge(r, i));
+      edges.push_back(ring_edge(r, i));
       vertices.push_back(r[i]);
     }
   };
   add_ring(outer);
   for (const Ring* h : holes) add_ring(*h);
-  const std::size_t ring_edges = obstacles.size();
+  ObstacleRows rows(edges, vertices);
+  return {std::move(edges), std::move(vertices), std::move(rows), {}};
+}
+
+// Cuts one outer ring with its holes. Two bridges per hole normally leave no hole; when bridges
+// of pinched holes meet at a single vertex a face can still enclose a loop touching it there,
+// and that loop is cut again, with fresh bridges, one level down.
+void split_one(const Ring& outer, std::span<const Ring*> holes, int depth, std::vector<Ring>& out) {
+  Obstacles obstacles = obstacles_of(outer, holes);
+  const std::size_t ring_edges = obstacles.edges.size();
   // Vertices of more than one ring (each ring visits a vertex once): where a hole already
   // touches another ring.
   ScratchVector<Point64> shared;
-  shared.assign(vertices.begin(), vertices.end());
+  shared.assign(obstacles.vertices.begin(), obstacles.vertices.end());
   std::sort(shared.begin(), shared.end());
   auto touches_another_ring = [&](Point64 o) {
     const auto range = std::equal_range(shared.begin(), shared.end(), o);
@@ -264,18 +209,19 @@ void split_one(const Ring& outer, std::span<const Ring*> holes, int depth, std::
       const Point64 o = s == 1 ? *std::min_element(h->begin(), h->end())
                                : *std::max_element(h->begin(), h->end());
       if (touches_another_ring(o)) continue;
-      const auto t = bridge_target(o, obstacles, vertices, s);
+      const auto t = bridge_target(o, obstacles, s);
       if (!t) fail_stage("hole splitting", "no visible vertex for a bridge");
-      obstacles.push_back({o, *t});
+      obstacles.add_bridge({o, *t});
     }
   }
 
   // Trace the faces of rings + bridges (each bridge usable once in each direction).
+  const ScratchVector<Segment>& edges = obstacles.edges;
   ScratchVector<Segment> directed;
-  directed.assign(obstacles.begin(), obstacles.begin() + static_cast<std::ptrdiff_t>(ring_edges));
-  for (std::size_t i = ring_edges; i < obstacles.size(); ++i) {
-    directed.push_back(obstacles[i]);
-    directed.push_back({obstacles[i].b, obstacles[i].a});
+  directed.assign(edges.begin(), edges.begin() + static_cast<std::ptrdiff_t>(ring_edges));
+  for (std::size_t i = ring_edges; i < edges.size(); ++i) {
+    directed.push_back(edges[i]);
+    directed.push_back({edges[i].b, edges[i].a});
   }
   ScratchVector<ScratchRing> faces, pieces, left_holes;
   trace_faces(directed, faces);

@@ -13,7 +13,9 @@ namespace edgeland::detail {
 // Each hole must lie inside one of the outers (a region boundary from assembly). Appends to
 // `out` the outers without holes unchanged and every outer with holes cut into pieces (the
 // rings of `outers` are moved from). Adds the number of holes removed to `holes_split`.
-// O(h * n) for h holes and n vertices of their polygons.
+// O(h * n) for h holes and n vertices of their polygons at worst; each bridge's searches read
+// only the rows of y it reaches (obstacle_rows.hpp), so spread-out holes cost about O(n + h * r)
+// for r edges a row.
 void split_holes(std::vector<ScratchRing>& outers, std::vector<ScratchRing>& holes,
                  std::size_t& holes_split, std::vector<Ring>& out);
 

@@ -23,13 +23,19 @@ constexpr int kSy[4] = {1, 1, -1, -1};
 
 Point64 minus(Point64 a, Point64 b) { return {a.x - b.x, a.y - b.y}; }
 
-// For each segment, the one that follows it in the cell, or kNoSegment. `order` sorts the
-// segments by start point.
-std::vector<std::size_t> successors(const std::vector<SurfaceSegment>& segs,
-                                    const std::vector<std::size_t>& order, const Box64& cell,
-                                    const Box64& world, bool border_wall) {
-  std::vector<std::size_t> next(segs.size(), kNoSegment);
-  std::vector<Point64> dirs;
+// Inside the box and on none of its sides: every quadrant around p is the cell's.
+bool strictly_inside(const Box64& box, Point64 p) {
+  return box.min.x < p.x && p.x < box.max.x && box.min.y < p.y && p.y < box.max.y;
+}
+
+// For each segment, the one that follows it in the cell (scratch.next), or kNoSegment.
+// scratch.order sorts the segments by start point.
+void successors(std::span<const SurfaceSegment> segs, const Box64& cell, const Box64& world,
+                bool border_wall, TraceScratch& scratch) {
+  const std::vector<std::size_t>& order = scratch.order;
+  std::vector<std::size_t>& next = scratch.next;
+  std::vector<Point64>& dirs = scratch.directions;
+  next.assign(segs.size(), kNoSegment);
   for (std::size_t i = 0; i < segs.size(); ++i) {
     const Point64 v = segs[i].b;
     const auto first = std::lower_bound(order.begin(), order.end(), v,
@@ -37,24 +43,27 @@ std::vector<std::size_t> successors(const std::vector<SurfaceSegment>& segs,
     auto last = first;
     while (last != order.end() && segs[*last].a == v) ++last;
     if (first == last) continue;
+    if (last - first == 1 && strictly_inside(cell, v)) {  // nothing blocked: the one way on
+      next[i] = *first;
+      continue;
+    }
     dirs.clear();
     for (auto it = first; it != last; ++it) dirs.push_back(minus(segs[*it].b, v));
     const auto pick = first_clockwise(minus(segs[i].a, v), dirs,
                                       quadrants_not_in_cell(cell, world, border_wall, v));
     if (pick) next[i] = *(first + static_cast<std::ptrdiff_t>(*pick));
   }
-  return next;
 }
 
 // Follows `next` from segment `start`, marking segments used; stops at the end of the chain or
 // back at a used segment (the start of a cycle).
-TracedChain follow(const std::vector<SurfaceSegment>& segs, const std::vector<std::size_t>& next,
-                   std::size_t start, std::vector<bool>& used) {
+TracedChain follow(std::span<const SurfaceSegment> segs, const std::vector<std::size_t>& next,
+                   std::size_t start, std::vector<std::uint8_t>& used) {
   TracedChain chain;
   chain.points.push_back(segs[start].a);
   std::size_t s = start;
   while (s != kNoSegment && !used[s]) {
-    used[s] = true;
+    used[s] = 1;
     chain.points.push_back(segs[s].b);
     chain.materials.push_back(segs[s].material);
     s = next[s];
@@ -100,45 +109,57 @@ BlockedQuadrants quadrants_outside_world(const Box64& world, bool border_wall, P
 
 namespace {
 
+// In place: point i is read (with its neighbours) before anything at or after it is written,
+// except the first point, which the last one of a closed chain reads: it is kept aside.
 void drop_straight_points(TracedChain& chain) {
   const std::size_t n = chain.points.size();
   if (n < 3) return;
-  std::vector<Point64> points;
-  std::vector<Material> materials;
+  std::vector<Point64>& points = chain.points;
+  std::vector<Material>& materials = chain.materials;
+  const Point64 first_point = points[0];
+  const Material last_material = materials[(n - 1) % materials.size()];
+  Point64 before_point = points[n - 1];
+  Material before_material = last_material;
+  std::size_t kept = 0;
   for (std::size_t i = 0; i < n; ++i) {
+    const Point64 at = points[i];
+    const Point64 after = i + 1 < n ? points[i + 1] : first_point;
+    const Material material = i < materials.size() ? materials[i] : last_material;
     const bool end = !chain.closed && (i == 0 || i + 1 == n);
-    const std::size_t before = (i + n - 1) % n;
-    const bool straight = !end && chain.materials[before] == chain.materials[i] &&
-                          orientation(chain.points[before], chain.points[i],
-                                      chain.points[(i + 1) % n]) == Orientation::kCollinear;
+    const bool straight = !end && before_material == material &&
+                          orientation(before_point, at, after) == Orientation::kCollinear;
+    before_point = at;
+    before_material = material;
     if (straight) continue;
-    points.push_back(chain.points[i]);
-    if (i < chain.materials.size()) materials.push_back(chain.materials[i]);
+    points[kept] = at;
+    if (i < materials.size()) materials[kept] = material;
+    ++kept;
   }
-  chain.points = std::move(points);
-  chain.materials = std::move(materials);
+  points.resize(kept);
+  materials.resize(chain.closed ? kept : kept - 1);
 }
 
 }  // namespace
 
-std::vector<TracedChain> trace_chains(std::vector<SurfaceSegment> segs, const Box64& cell,
-                                      const Box64& world, bool border_wall) {
-  std::vector<std::size_t> order(segs.size());
+void trace_chains(std::span<const SurfaceSegment> segs, const Box64& cell, const Box64& world,
+                  bool border_wall, TraceScratch& scratch, std::vector<TracedChain>& out) {
+  std::vector<std::size_t>& order = scratch.order;
+  order.resize(segs.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
   std::sort(order.begin(), order.end(), [&](std::size_t l, std::size_t r) {
     return segs[l].a < segs[r].a || (segs[l].a == segs[r].a && segs[l].b < segs[r].b);
   });
-  const std::vector<std::size_t> next = successors(segs, order, cell, world, border_wall);
-  std::vector<bool> has_previous(segs.size(), false), used(segs.size(), false);
-  for (std::size_t s : next)
-    if (s != kNoSegment) has_previous[s] = true;
-  std::vector<TracedChain> out;
+  successors(segs, cell, world, border_wall, scratch);
+  scratch.has_previous.assign(segs.size(), 0);
+  scratch.used.assign(segs.size(), 0);
+  for (std::size_t s : scratch.next)
+    if (s != kNoSegment) scratch.has_previous[s] = 1;
+  const std::size_t first = out.size();
   for (std::size_t s : order)
-    if (!has_previous[s]) out.push_back(follow(segs, next, s, used));
+    if (!scratch.has_previous[s]) out.push_back(follow(segs, scratch.next, s, scratch.used));
   for (std::size_t s : order)
-    if (!used[s]) out.push_back(follow(segs, next, s, used));
-  for (TracedChain& c : out) make_canonical(c);
-  return out;
+    if (!scratch.used[s]) out.push_back(follow(segs, scratch.next, s, scratch.used));
+  for (std::size_t k = first; k < out.size(); ++k) make_canonical(out[k]);
 }
 
 }  // namespace edgeland::game_detail

@@ -6,6 +6,7 @@
 // sweep stops where the plane around the vertex leaves the cell (around_vertex.hpp): there the
 // chain ends, and the surface goes on in a neighbour cell. Then collinear points are dropped
 // where the material does not change.
+#include <span>
 #include <vector>
 
 #include "edgeland/kernel/around_vertex.hpp"
@@ -28,10 +29,17 @@ BlockedQuadrants quadrants_not_in_cell(const Box64& cell, const Box64& world, bo
 // border is a wall.
 BlockedQuadrants quadrants_outside_world(const Box64& world, bool border_wall, Point64 p);
 
+// Storage trace_chains reuses from one cell to the next.
+struct TraceScratch {
+  std::vector<std::size_t> order, next;
+  std::vector<Point64> directions;
+  std::vector<std::uint8_t> has_previous, used;
+};
+
 // Open chains first (in order of their first segment's start), then closed ones, each closed one
-// starting at its smallest point. O(n log n).
-std::vector<TracedChain> trace_chains(std::vector<SurfaceSegment> segments, const Box64& cell,
-                                      const Box64& world, bool border_wall);
+// starting at its smallest point; appended to `out`. O(n log n).
+void trace_chains(std::span<const SurfaceSegment> segments, const Box64& cell, const Box64& world,
+                  bool border_wall, TraceScratch& scratch, std::vector<TracedChain>& out);
 
 // Drops the points of an open or closed chain where it goes straight on in the same material,
 // and starts a closed chain at its smallest point: the chain's canonical form.

@@ -1,7 +1,7 @@
 // detach (islands.hpp): an island carved out with its own polygons as the shape, whose edges are
 // the landscape's edges, so the overlay meets no crossing and rounds nothing.
-#include <map>
 
+#include "debris.hpp"
 #include "edgeland/clip/clip.hpp"
 #include "edgeland/game/islands.hpp"
 #include "edgeland/kernel/centroid.hpp"
@@ -19,15 +19,6 @@ bool present(const Landscape& world, const IslandPiece& piece) {
   return found;
 }
 
-std::vector<DetachedIsland::Region> regions_of(const Island& island) {
-  std::map<Material, PolygonSet> by_material;
-  for (const IslandPiece& p : island.pieces) by_material[p.material].push_back(p.polygon);
-  std::vector<DetachedIsland::Region> out;
-  for (auto& [material, pieces] : by_material)
-    out.push_back({material, merge(ValidSet(std::move(pieces))).set.polygons()});
-  return out;
-}
-
 }  // namespace
 
 StaleIsland::StaleIsland(PolygonId p)
@@ -40,7 +31,7 @@ DetachedIsland detach(Landscape& world, const Island& island) {
     pieces.push_back(p.polygon);
   }
   DetachedIsland out;
-  out.regions = regions_of(island);
+  out.regions = game_detail::island_regions(island, world.checked());
   out.twice_area = island.twice_area;
   out.centroid = centroid(pieces);
   // Last: the only step that changes the landscape (the strong guarantee of carve).

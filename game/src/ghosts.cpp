@@ -1,5 +1,7 @@
 #include "ghosts.hpp"
 
+#include <algorithm>
+
 #include "chain_tracing.hpp"
 #include "edgeland/kernel/around_vertex.hpp"
 
@@ -74,11 +76,35 @@ void ChainEndIndex::add(const SurfaceChain& chain) {
   if (chain.points.back() != chain.points.front()) at_[chain.points.back()].push_back(&chain);
 }
 
-ChainsAround ChainEndIndex::lookup() const {
-  return [this](Point64 p, std::vector<const SurfaceChain*>& out) {
+void ChainEndIndex::erase(Point64 p, const SurfaceChain* chain) {
+  const auto it = at_.find(p);
+  if (it == at_.end()) return;
+  std::erase(it->second, chain);
+  if (it->second.empty()) at_.erase(it);
+}
+
+void ChainEndIndex::remove(const SurfaceChain& chain) {
+  if (chain.closed) return;
+  erase(chain.points.front(), &chain);
+  if (chain.points.back() != chain.points.front()) erase(chain.points.back(), &chain);
+}
+
+void ChainEndIndex::replace(const SurfaceChain* from, const SurfaceChain& to) {
+  if (to.closed) return;
+  for (const Point64 p : {to.points.front(), to.points.back()}) {
     const auto it = at_.find(p);
-    if (it != at_.end()) out.insert(out.end(), it->second.begin(), it->second.end());
-  };
+    if (it == at_.end()) continue;
+    std::replace(it->second.begin(), it->second.end(), from, &to);
+  }
+}
+
+void ChainEndIndex::chains_at(Point64 p, std::vector<const SurfaceChain*>& out) const {
+  const auto it = at_.find(p);
+  if (it != at_.end()) out.insert(out.end(), it->second.begin(), it->second.end());
+}
+
+ChainsAround ChainEndIndex::lookup() const {
+  return [this](Point64 p, std::vector<const SurfaceChain*>& out) { chains_at(p, out); };
 }
 
 }  // namespace edgeland::game_detail

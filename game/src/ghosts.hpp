@@ -31,13 +31,20 @@ void set_ghosts(SurfaceChain& chain, const ChainsAround& around, const Box64& wo
 // Where a chain goes on straight: end + (end - before).
 Point64 straight_on(Point64 end, Point64 before);
 
-// An index of open chains by their end points, for a whole landscape's chains at once.
+// An index of open chains by their end points (closed chains are not in it): the chains a
+// ghost is taken from. The chains must stay where they are while indexed.
 class ChainEndIndex {
  public:
   void add(const SurfaceChain& chain);
+  void remove(const SurfaceChain& chain);
+  // `to` takes the place of `from` (a chain with the same end points, which may be gone).
+  void replace(const SurfaceChain* from, const SurfaceChain& to);
+  // Appends the chains with an end at p.
+  void chains_at(Point64 p, std::vector<const SurfaceChain*>& out) const;
   ChainsAround lookup() const;
 
  private:
+  void erase(Point64 p, const SurfaceChain* chain);
   std::unordered_map<Point64, std::vector<const SurfaceChain*>, Point64Hash> at_;
 };
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "solid_boundary.hpp"
+#include "union_find.hpp"
 
 namespace edgeland::game_detail {
 namespace {
@@ -13,6 +14,20 @@ std::uint64_t mixed(std::uint64_t x) {
   x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
   x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
   return x ^ (x >> 31);
+}
+
+// Ports of one group that abut along a side become one: a port overlaps another over a positive
+// length exactly when one of its parts does, so matching gives the same unions, and a node's
+// sides keep one port per run of solid instead of one per cell along them.
+void join_abutting(std::vector<Port>& side) {
+  std::size_t kept = 0;
+  for (const Port& p : side) {
+    if (kept > 0 && side[kept - 1].hi == p.lo && side[kept - 1].group == p.group)
+      side[kept - 1].hi = p.hi;
+    else
+      side[kept++] = p;
+  }
+  side.resize(kept);
 }
 
 // Groups 0..n-1 united into classes; keeps the classes that still have ports (renumbered in
@@ -35,6 +50,7 @@ Summary finish(std::array<std::vector<Port>, 4> ports, std::vector<Group> groups
       }
       p.group = n;
     }
+  for (std::vector<Port>& side : ports) join_abutting(side);
   out.ports = std::move(ports);
   for (std::uint32_t g = 0; g < groups.size(); ++g) {
     const Group& root = groups[g];
@@ -73,14 +89,15 @@ void IslandKey::add(const IslandKey& o) {
   mix += o.mix;
 }
 
-Summary leaf_summary(const CellSolids& cell) {
+Summary leaf_summary(const CellScan& cell) {
   std::vector<Group> groups(cell.groups);
+  const std::span<const PolygonId> ids = cell.ids();
   for (std::uint32_t i = 0; i < cell.group_of.size(); ++i) {
     const std::uint32_t g = cell.group_of[i];
     if (g == kNotSolid) continue;
-    const IslandKey key = IslandKey::of(cell.polygons.own[i].id);
+    const IslandKey key = IslandKey::of(ids[i]);
     if (groups[g].key.count == 0) {
-      groups[g] = {cell.anchored[g], key, key.min_id, cell.polygons.box};
+      groups[g] = {cell.anchored[g] != 0, key, key.min_id, cell.box};
     } else {
       groups[g].key.add(key);
     }

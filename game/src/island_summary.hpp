@@ -14,7 +14,7 @@
 #include <span>
 #include <vector>
 
-#include "cell_solids.hpp"
+#include "cell_scan.hpp"
 
 namespace edgeland::game_detail {
 
@@ -47,8 +47,8 @@ struct Summary {
   std::vector<ClosedIsland> closed;        // unanchored groups without ports
 };
 
-// A cell's summary. O(polygons).
-Summary leaf_summary(const CellSolids& cell);
+// A cell's summary from its scan. O(polygons).
+Summary leaf_summary(const CellScan& cell);
 
 // A node's summary from its children's (boxes and summaries in the tree's order). O(ports of
 // the children). `matched` counts the ports looked at.

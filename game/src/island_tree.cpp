@@ -2,7 +2,6 @@
 
 #include <algorithm>
 
-#include "cell_polygons.hpp"
 #include "edgeland/spatial/tree_boxes.hpp"
 
 namespace edgeland::game_detail {
@@ -38,12 +37,13 @@ struct IslandTree::Registry {
   }
 };
 
-IslandTree::IslandTree(const Landscape& world, const PhysicsMaterials& materials)
+IslandTree::IslandTree(const Landscape& world, const CellStore& store,
+                       const PhysicsMaterials& materials)
     : materials_(materials),
       root_(std::make_unique<Node>()),
       registry_(std::make_unique<Registry>()) {
   root_->box = world.world();
-  update(world, all_cells(world));
+  update(world, store, all_cells(world));
 }
 
 IslandTree::~IslandTree() = default;
@@ -70,15 +70,15 @@ void IslandTree::replace_cell(Node& root, const Box64& cell, const LandscapeConf
   }
 }
 
-void IslandTree::recompute(Node& n, const Landscape& world) {
+void IslandTree::recompute(Node& n, const CellStore& store) {
   if (!n.dirty) return;
   // The node's old islands go first: a child may close the same island again below it (after a
   // split), and that one must stay.
   registry_->take_out(n.summary);
-  for (const auto& c : n.children) recompute(*c, world);
+  for (const auto& c : n.children) recompute(*c, store);
   ++last_nodes_;
   if (n.children.empty()) {
-    n.summary = leaf_summary(cell_solids(world, n.box, materials_));
+    n.summary = leaf_summary(store.at(n.box).scan);
   } else {
     std::vector<Box64> boxes;
     std::vector<const Summary*> summaries;
@@ -92,13 +92,13 @@ void IslandTree::recompute(Node& n, const Landscape& world) {
   n.dirty = false;
 }
 
-std::vector<ClosedIsland> IslandTree::update(const Landscape& world,
-                                             const std::vector<Box64>& cells) {
+std::vector<ClosedIsland> IslandTree::update(const Landscape& world, const CellStore& store,
+                                             std::span<const Box64> cells) {
   registry_->removed.clear();
   registry_->added.clear();
   last_nodes_ = last_ports_ = 0;
   for (const Box64& cell : cells) replace_cell(*root_, cell, world.config());
-  recompute(*root_, world);
+  recompute(*root_, store);
   std::sort(registry_->removed.begin(), registry_->removed.end());
   std::vector<ClosedIsland> fresh;
   for (const ClosedIsland& c : registry_->added)

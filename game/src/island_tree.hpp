@@ -8,18 +8,21 @@
 #include <memory>
 #include <vector>
 
+#include "cell_store.hpp"
 #include "island_summary.hpp"
 
 namespace edgeland::game_detail {
 
 class IslandTree {
  public:
-  IslandTree(const Landscape& world, const PhysicsMaterials& materials);
+  // The summaries of every cell of `world` (each with a record in `store`).
+  IslandTree(const Landscape& world, const CellStore& store, const PhysicsMaterials& materials);
   ~IslandTree();
 
   // The landscape after an edit whose ChangeSet::cells are `cells`. Returns the islands that are
   // new (not closed anywhere in the tree before).
-  std::vector<ClosedIsland> update(const Landscape& world, const std::vector<Box64>& cells);
+  std::vector<ClosedIsland> update(const Landscape& world, const CellStore& store,
+                                   std::span<const Box64> cells);
 
   // Every island.
   std::vector<ClosedIsland> islands() const;
@@ -33,7 +36,7 @@ class IslandTree {
   struct Registry;
 
   void replace_cell(Node& root, const Box64& cell, const LandscapeConfig& config);
-  void recompute(Node& node, const Landscape& world);
+  void recompute(Node& node, const CellStore& store);
 
   PhysicsMaterials materials_;
   std::unique_ptr<Node> root_;

@@ -1,60 +1,53 @@
 #include "island_walk.hpp"
 
 #include <algorithm>
-#include <map>
 #include <set>
+#include <utility>
+
+#include "edgeland/kernel/area.hpp"
 
 namespace edgeland::game_detail {
 namespace {
 
-struct BoxLess {
-  bool operator()(const Box64& l, const Box64& r) const {
-    return l.min != r.min ? l.min < r.min : l.max < r.max;
-  }
-};
-
 // The segment of side `s` of `box` from lo to hi along it, as a (flat) box.
 Box64 side_box(const Box64& box, Side s, std::int64_t lo, std::int64_t hi) {
-  const Point64 a = point_on(box, s, lo), b = point_on(box, s, hi);
-  return segment_box(a, b);
+  return segment_box(point_on(box, s, lo), point_on(box, s, hi));
 }
+
+struct Visit {
+  const CellRecord* cell;
+  std::uint32_t group;
+  friend bool operator==(const Visit&, const Visit&) = default;
+};
 
 class Walk {
  public:
-  Walk(const Landscape& world, const PhysicsMaterials& materials)
-      : world_(world), materials_(materials) {}
+  Walk(const Landscape& world, const CellStore& store) : world_(world), store_(store) {}
 
-  void visit(const Box64& cell, std::uint32_t group) {
-    if (!seen_.insert({cell, group}).second) return;
-    queue_.push_back({cell, group});
+  void visit(const CellRecord& cell, std::uint32_t group) {
+    const Visit v{&cell, group};
+    if (!known_.insert({v.cell, v.group}).second) return;
+    seen_.push_back(v);
+    queue_.push_back(v);
   }
 
   void run() {
     while (!queue_.empty()) {
-      const auto [cell, group] = queue_.back();
+      const Visit v = queue_.back();
       queue_.pop_back();
-      const CellSolids& s = solids(cell);
       for (Side side : kSides)
-        for (const Port& p : s.ports[static_cast<std::size_t>(side)])
-          if (p.group == group) cross(cell, side, p);
+        for (const Port& p : v.cell->scan.ports[static_cast<std::size_t>(side)])
+          if (p.group == v.group) cross(v.cell->scan.box, side, p);
     }
   }
 
-  const CellSolids& solids(const Box64& cell) {
-    auto it = cells_.find(cell);
-    if (it == cells_.end()) it = cells_.emplace(cell, cell_solids(world_, cell, materials_)).first;
-    return it->second;
-  }
-
-  std::vector<WalkedPolygon> polygons() {
+  std::vector<WalkedPolygon> polygons() const {
     std::vector<WalkedPolygon> out;
-    for (const auto& [cell, group] : seen_) {
-      const CellSolids& s = solids(cell);
+    for (const Visit& v : seen_) {
+      const CellScan& s = v.cell->scan;
       for (std::size_t i = 0; i < s.group_of.size(); ++i)
-        if (s.group_of[i] == group) {
-          const CellPolygon& p = s.polygons.own[i];
-          out.push_back({p.id, p.material, p.ring, cell});
-        }
+        if (s.group_of[i] == v.group)
+          out.push_back({s.ids()[i], s.materials[i], &s.contents->polygons()[i], s.box});
     }
     std::sort(out.begin(), out.end(),
               [](const WalkedPolygon& l, const WalkedPolygon& r) { return l.id < r.id; });
@@ -64,37 +57,59 @@ class Walk {
  private:
   // The neighbours' groups whose ports overlap port p on side `side` of `cell`.
   void cross(const Box64& cell, Side side, const Port& p) {
-    std::vector<Box64> neighbours;
     world_.cells_in(side_box(cell, side, p.lo, p.hi), [&](const CellView& c) {
-      if (across(cell, side, c.box)) neighbours.push_back(c.box);
+      if (!across(cell, side, c.box)) return true;
+      const CellRecord& n = store_.at(c.box);
+      for (const Port& q : n.scan.ports[static_cast<std::size_t>(opposite(side))])
+        if (std::min(p.hi, q.hi) > std::max(p.lo, q.lo)) visit(n, q.group);
       return true;
     });
-    for (const Box64& n : neighbours)
-      for (const Port& q : solids(n).ports[static_cast<std::size_t>(opposite(side))])
-        if (std::min(p.hi, q.hi) > std::max(p.lo, q.lo)) visit(n, q.group);
   }
 
   const Landscape& world_;
-  const PhysicsMaterials& materials_;
-  std::map<Box64, CellSolids, BoxLess> cells_;
-  std::set<std::pair<Box64, std::uint32_t>, decltype([](const auto& l, const auto& r) {
-             return BoxLess{}(l.first, r.first) || (l.first == r.first && l.second < r.second);
-           })>
-      seen_;
-  std::vector<std::pair<Box64, std::uint32_t>> queue_;
+  const CellStore& store_;
+  std::set<std::pair<const CellRecord*, std::uint32_t>> known_;
+  std::vector<Visit> seen_;  // in the order found
+  std::vector<Visit> queue_;
 };
 
 }  // namespace
 
-std::vector<WalkedPolygon> walk_piece(const Landscape& world, PolygonId start, const Box64& cell,
-                                      const PhysicsMaterials& materials) {
-  Walk walk(world, materials);
-  const CellSolids& s = walk.solids(cell);
-  for (std::size_t i = 0; i < s.polygons.own.size(); ++i)
-    if (s.polygons.own[i].id == start && s.group_of[i] != kNotSolid)
-      walk.visit(cell, s.group_of[i]);
+std::vector<WalkedPolygon> walk_piece(const Landscape& world, const CellStore& store,
+                                      PolygonId start, const Box64& cell) {
+  Walk walk(world, store);
+  const CellRecord& record = store.at(cell);
+  const std::span<const PolygonId> ids = record.scan.ids();
+  for (std::size_t i = 0; i < ids.size(); ++i)
+    if (ids[i] == start && record.scan.group_of[i] != kNotSolid)
+      walk.visit(record, record.scan.group_of[i]);
   walk.run();
   return walk.polygons();
+}
+
+Island island_of(const Landscape& world, const CellStore& store, const ClosedIsland& closed) {
+  Island out;
+  for (const WalkedPolygon& p :
+       walk_piece(world, store, closed.representative, closed.representative_cell)) {
+    out.pieces.push_back({p.id, p.material, *p.ring, p.cell});
+    const Box64 b = *bounding_box(*p.ring);
+    if (out.pieces.size() == 1)
+      out.bounds = b;
+    else
+      out.bounds.expand(b);
+    out.twice_area += twice_signed_area(*p.ring);
+  }
+  return out;
+}
+
+std::vector<Island> islands_of(const Landscape& world, const CellStore& store,
+                               std::span<const ClosedIsland> closed) {
+  std::vector<Island> out;
+  for (const ClosedIsland& c : closed) out.push_back(island_of(world, store, c));
+  std::sort(out.begin(), out.end(), [](const Island& l, const Island& r) {
+    return l.pieces.front().id < r.pieces.front().id;
+  });
+  return out;
 }
 
 }  // namespace edgeland::game_detail

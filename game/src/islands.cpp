@@ -3,71 +3,70 @@
 #include <algorithm>
 #include <set>
 
-#include "edgeland/kernel/area.hpp"
+#include "cell_store.hpp"
 #include "island_tree.hpp"
 #include "island_walk.hpp"
 
 namespace edgeland {
-namespace {
 
-Island island_of(const Landscape& world, const game_detail::ClosedIsland& closed,
-                 const PhysicsMaterials& materials) {
-  Island out;
-  for (const game_detail::WalkedPolygon& p : game_detail::walk_piece(
-           world, closed.representative, closed.representative_cell, materials)) {
-    out.pieces.push_back({p.id, p.material, *p.ring, p.cell});
-    const Box64 b = *bounding_box(*p.ring);
-    if (out.pieces.size() == 1)
-      out.bounds = b;
-    else
-      out.bounds.expand(b);
-    out.twice_area += twice_signed_area(*p.ring);
+namespace game_detail {
+
+// The tracker's own cell records and summaries, and the landscape last seen (to tell which
+// cells a change set's new cells replaced).
+struct IslandTrackerState {
+  IslandTrackerState(const Landscape& world, const PhysicsMaterials& m)
+      : materials(m), seen(world) {
+    store.scan(world, all_cells(world), materials);
+    tree = std::make_unique<IslandTree>(world, store, materials);
   }
-  return out;
-}
+  PhysicsMaterials materials;
+  CellStore store;
+  std::unique_ptr<IslandTree> tree;
+  Landscape seen;
+  std::vector<Box64> replaced;
+  std::vector<GoneCell> gone;
+};
 
-std::vector<Island> islands_of(const Landscape& world,
-                               const std::vector<game_detail::ClosedIsland>& closed,
-                               const PhysicsMaterials& materials) {
-  std::vector<Island> out;
-  for (const game_detail::ClosedIsland& c : closed) out.push_back(island_of(world, c, materials));
-  std::sort(out.begin(), out.end(), [](const Island& l, const Island& r) {
-    return l.pieces.front().id < r.pieces.front().id;
-  });
-  return out;
-}
+}  // namespace game_detail
 
-}  // namespace
+using game_detail::IslandTrackerState;
 
 IslandTracker::IslandTracker(const Landscape& world, const PhysicsMaterials& materials)
-    : tree_(std::make_unique<game_detail::IslandTree>(world, materials)) {}
+    : state_(std::make_unique<IslandTrackerState>(world, materials)) {}
 
 IslandTracker::~IslandTracker() = default;
 IslandTracker::IslandTracker(IslandTracker&&) noexcept = default;
 IslandTracker& IslandTracker::operator=(IslandTracker&&) noexcept = default;
 
 std::vector<Island> IslandTracker::update(const Landscape& world, const ChangeSet& changes) {
-  return islands_of(world, tree_->update(world, changes.cells), tree_->materials());
+  IslandTrackerState& s = *state_;
+  game_detail::replaced_cells(s.seen, changes.cells, s.replaced);
+  s.gone.clear();
+  s.store.remove(s.replaced, s.gone);
+  s.store.scan(world, changes.cells, s.materials);
+  s.seen = world;
+  return game_detail::islands_of(world, s.store, s.tree->update(world, s.store, changes.cells));
 }
 
 std::vector<Island> IslandTracker::resync(const Landscape& world) {
+  IslandTrackerState& s = *state_;
   std::set<game_detail::IslandKey> before;
-  for (const game_detail::ClosedIsland& c : tree_->islands()) before.insert(c.key);
-  tree_ = std::make_unique<game_detail::IslandTree>(world, tree_->materials());
+  for (const game_detail::ClosedIsland& c : s.tree->islands()) before.insert(c.key);
+  state_ = std::make_unique<IslandTrackerState>(world, s.materials);
   std::vector<game_detail::ClosedIsland> fresh;
-  for (const game_detail::ClosedIsland& c : tree_->islands())
+  for (const game_detail::ClosedIsland& c : state_->tree->islands())
     if (!before.count(c.key)) fresh.push_back(c);
-  return islands_of(world, fresh, tree_->materials());
+  return game_detail::islands_of(world, state_->store, fresh);
 }
 
 std::vector<Island> IslandTracker::islands(const Landscape& world) const {
-  return islands_of(world, tree_->islands(), tree_->materials());
+  return game_detail::islands_of(world, state_->store, state_->tree->islands());
 }
 
-std::size_t IslandTracker::island_count() const { return tree_->islands().size(); }
+std::size_t IslandTracker::island_count() const { return state_->tree->islands().size(); }
 
 IslandTracker::Work IslandTracker::last_work() const {
-  return {tree_->last_nodes(), tree_->last_ports()};
+  return {state_->tree->last_nodes(), state_->tree->last_ports()};
 }
 
 std::vector<Island> find_islands(const Landscape& world, const PhysicsMaterials& materials) {

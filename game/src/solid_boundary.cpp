@@ -1,21 +1,13 @@
 #include "solid_boundary.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <optional>
-
-#include "edgeland/kernel/supporting_line.hpp"
 
 namespace edgeland::game_detail {
 namespace {
 
-// An edge not on a side of the box, as an interval of its supporting line.
-struct LineEdge {
-  SupportingLine line;
-  bool forward = true;          // runs in the line's direction
-  std::int64_t lo = 0, hi = 0;  // positions along the line, lo < hi
-  Point64 lo_point, hi_point;
-  std::uint32_t polygon = 0;
-};
+std::atomic<std::uint64_t> runs{0};
 
 LineEdge line_edge(Point64 a, Point64 b, std::uint32_t polygon) {
   LineEdge e;
@@ -140,10 +132,16 @@ bool on_side_of(const Box64& inner, Side side, const Box64& outer) {
   return side_line(inner, side) == side_line(outer, side);
 }
 
-SolidBoundary solid_boundary(const Box64& box, std::span<const CellPolygon> polygons,
-                             const PhysicsMaterials& materials) {
-  SolidBoundary out;
-  std::vector<LineEdge> edges;
+std::uint64_t solid_boundary_runs() { return runs.load(std::memory_order_relaxed); }
+
+void solid_boundary(const Box64& box, std::span<const CellPolygon> polygons,
+                    const PhysicsMaterials& materials, SolidBoundary& out,
+                    std::vector<LineEdge>& edges) {
+  runs.fetch_add(1, std::memory_order_relaxed);
+  out.free.clear();
+  for (auto& side : out.ports) side.clear();
+  out.contacts.clear();
+  edges.clear();
   for (std::uint32_t i = 0; i < polygons.size(); ++i) {
     if (!materials.is_solid(polygons[i].material)) continue;
     const Polygon& ring = *polygons[i].ring;
@@ -165,7 +163,6 @@ SolidBoundary solid_boundary(const Box64& box, std::span<const CellPolygon> poly
   for (Side side : kSides) sort_ports(out.ports[static_cast<std::size_t>(side)], side);
   std::sort(out.contacts.begin(), out.contacts.end());
   out.contacts.erase(std::unique(out.contacts.begin(), out.contacts.end()), out.contacts.end());
-  return out;
 }
 
 }  // namespace edgeland::game_detail

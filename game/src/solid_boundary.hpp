@@ -8,12 +8,20 @@
 // Exact: pieces end at polygon vertices only (supporting_line.hpp groups collinear edges).
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
-#include "cell_polygons.hpp"
+#include "edgeland/game/physics_materials.hpp"
+#include "edgeland/kernel/supporting_line.hpp"
 
 namespace edgeland::game_detail {
+
+// One polygon of a cell as stage 1 reads it.
+struct CellPolygon {
+  Material material = kEmpty;
+  const Polygon* ring = nullptr;
+};
 
 // A piece of a solid polygon's boundary, directed with the polygon on its left.
 struct BoundaryPiece {
@@ -32,9 +40,24 @@ struct SolidBoundary {
   std::vector<std::array<std::uint32_t, 2>> contacts;  // polygon pairs, lower index first, unique
 };
 
-// O(n log n) for n edges of the cell's solid polygons.
-SolidBoundary solid_boundary(const Box64& box, std::span<const CellPolygon> polygons,
-                             const PhysicsMaterials& materials);
+// An edge not on a side of the box, as an interval of its supporting line.
+struct LineEdge {
+  SupportingLine line;
+  bool forward = true;          // runs in the line's direction
+  std::int64_t lo = 0, hi = 0;  // positions along the line, lo < hi
+  Point64 lo_point, hi_point;
+  std::uint32_t polygon = 0;
+};
+
+// Stage 1 into `out` (its vectors' storage reused), with `edges` as scratch. O(n log n) for n
+// edges of the cell's solid polygons.
+void solid_boundary(const Box64& box, std::span<const CellPolygon> polygons,
+                    const PhysicsMaterials& materials, SolidBoundary& out,
+                    std::vector<LineEdge>& edges);
+
+// How many times solid_boundary() ran in this process (a counter for the tests that check one
+// pass per changed cell).
+std::uint64_t solid_boundary_runs();
 
 // The side of `box` the segment a -> b lies on (both ends on one side line), if any.
 std::optional<Side> side_of(const Box64& box, Point64 a, Point64 b);

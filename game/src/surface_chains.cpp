@@ -4,10 +4,10 @@
 
 #include <unordered_set>
 
-#include "cell_polygons.hpp"
-#include "cell_surface.hpp"
+#include "cell_store.hpp"
 #include "chain_tracing.hpp"
 #include "ghosts.hpp"
+#include "surface_state.hpp"
 
 namespace edgeland {
 namespace {
@@ -15,13 +15,17 @@ namespace {
 using game_detail::ChainEndIndex;
 using game_detail::ChainsAround;
 
-// The chains of every cell, ghosts unset.
+// The chains of every cell with their ghosts, cell by cell in tree order (the ids of a surface
+// state made at once follow that order).
 std::vector<SurfaceChain> all_chains(const Landscape& world, const SurfaceOptions& options) {
+  const std::vector<Box64> cells = game_detail::all_cells(world);
+  game_detail::CellStore store;
+  store.scan(world, cells, options.materials);
+  game_detail::SurfaceState surface(options);
+  surface.update(world, store, {}, cells);
   std::vector<SurfaceChain> out;
-  for (const Box64& cell : game_detail::all_cells(world)) {
-    for (SurfaceChain& c : game_detail::cell_surface(world, cell, options).chains)
-      out.push_back(std::move(c));
-  }
+  out.reserve(surface.chains().size());
+  for (const auto& [id, chain] : surface.chains()) out.push_back(chain);
   return out;
 }
 
@@ -69,12 +73,7 @@ SurfaceChain join_from(const SurfaceChain* first, const ChainsAround& around, co
 }  // namespace
 
 std::vector<SurfaceChain> surface_chains(const Landscape& world, const SurfaceOptions& options) {
-  std::vector<SurfaceChain> chains = all_chains(world, options);
-  const ChainEndIndex ends = ends_of(chains);
-  const ChainsAround around = ends.lookup();
-  for (SurfaceChain& c : chains)
-    game_detail::set_ghosts(c, around, world.world(), options.border_wall);
-  return chains;
+  return all_chains(world, options);
 }
 
 std::vector<SurfaceChain> surface_loops(const Landscape& world, const SurfaceOptions& options) {

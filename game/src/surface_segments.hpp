@@ -6,8 +6,7 @@
 #include <span>
 #include <vector>
 
-#include "edgeland/game/surface_chains.hpp"
-#include "solid_boundary.hpp"
+#include "cell_scan.hpp"
 
 namespace edgeland::game_detail {
 
@@ -16,51 +15,24 @@ struct SurfaceSegment {
   Material material = kEmpty;  // that solid's material (0 for a wall)
 };
 
-// A closed interval of positions along a side.
-struct Span {
-  std::int64_t lo = 0, hi = 0;
-  friend bool operator==(const Span&, const Span&) = default;
-};
-
-// Intervals along each side of a cell, per Side: merged, ascending, disjoint.
-struct SideSpans {
-  std::array<std::vector<Span>, 4> sides;
-  friend bool operator==(const SideSpans&, const SideSpans&) = default;
-};
-
-// The cell's COVERS: where solid of the neighbours lies across each side (their solid edges on
-// the side's line run against the cell's ports), cut to the side's extent. With the cell's own
-// polygons this is all stage 2 reads, so a cell whose polygons and covers did not change keeps
-// its chains (surface_tracker.cpp). O(n log n) in the neighbours' edges.
-SideSpans side_covers(const CellPolygons& cell, const PhysicsMaterials& materials);
-
-// Where the cell's own solid lies on each side (its ports): what its neighbours' covers read
-// of it. O(n log n) in the ports.
-SideSpans port_spans(const SolidBoundary& solid);
-
-// Spans as one list (per side: the count, then each span's ends), as a tracker keeps a cell's
-// covers and ports.
-std::vector<std::int64_t> flatten(const SideSpans& spans);
-
-// A cell next to another, with its ports flattened.
-struct NeighbourPorts {
+// A cell next to another, with where its solid lies on its sides (CellScan::port_spans).
+struct NeighbourSpans {
   Box64 box;
-  std::span<const std::int64_t> ports;
+  const SideSpans* ports = nullptr;
 };
 
-// The same covers as side_covers, from the neighbours' ports instead of their polygons: a
-// neighbour's solid edges on a shared line are its ports there (every polygon lies in its cell),
-// so the cover of a side is the union of the ports of the cells across it on their opposite
-// side, cut to the side's extent. `neighbours` may hold any cells; those not across a side of
-// `box` by a positive length add nothing. O(n log n) in the ports.
-SideSpans covers_from_ports(const Box64& box, std::span<const NeighbourPorts> neighbours);
+// The cell's COVERS: where solid of the neighbours lies across each side, cut to the side's
+// extent. A neighbour's solid edges on a shared line are its ports there (every polygon lies in
+// its cell), so the cover of a side is the union of the ports of the cells across it on their
+// opposite side. `neighbours` may hold any cells; those not across a side of `box` add nothing.
+// With the cell's own scan this is all stage 2 reads, so a cell whose polygons and covers did
+// not change keeps its chains. Into `out` (storage reused). O(n log n) in the ports.
+void covers_from_ports(const Box64& box, std::span<const NeighbourSpans> neighbours,
+                       SideSpans& out);
 
-// O(n log n) in the cell's edges along its sides.
-std::vector<SurfaceSegment> surface_segments(const CellPolygons& cell, const SolidBoundary& solid,
-                                             const SideSpans& covers, const Box64& world,
-                                             const SurfaceOptions& options);
-
-// Whether the box's side lies on the world box's border.
-bool on_world_border(const Box64& box, Side side, const Box64& world);
+// Stage 2 into `out` (cleared first, storage reused). O(n log n) in the cell's edges along its
+// sides.
+void surface_segments(const CellScan& cell, const SideSpans& covers, const Box64& world,
+                      bool border_wall, std::vector<SurfaceSegment>& out);
 
 }  // namespace edgeland::game_detail

@@ -1,6 +1,7 @@
 #include "edgeland/io/log_kind.hpp"
 
 #include "edgeland/io/clip_log.hpp"
+#include "edgeland/spatial/log_format.hpp"
 #include "log_text.hpp"
 
 namespace edgeland::log {
@@ -24,9 +25,9 @@ LogStart log_start(std::string_view text) {
     std::string_view rest = trim_blanks(take_line(text));
     if (is_skipped_line(rest)) continue;
     const std::string_view word = take_word(rest);
-    const LogKind kind = word == "world"      ? LogKind::kLandscape
-                         : is_clip_step(word) ? LogKind::kClip
-                                              : LogKind::kUnknown;
+    const LogKind kind = word == kWorldKeyword ? LogKind::kLandscape
+                         : is_clip_step(word)  ? LogKind::kClip
+                                               : LogKind::kUnknown;
     return {kind, line, printable_excerpt(word)};
   }
   return {};

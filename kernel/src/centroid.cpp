@@ -44,7 +44,7 @@ Moments moments(const PolygonSet& set) {
   return m;
 }
 
-unsigned __int128 gcd(unsigned __int128 a, unsigned __int128 b) {
+UInt128 gcd(UInt128 a, UInt128 b) {
   while (b != 0) a = std::exchange(b, a % b);
   return a;
 }

@@ -4,8 +4,8 @@
 
 namespace edgeland {
 
-UInt256 multiply_wide(unsigned __int128 a, unsigned __int128 b) noexcept {
-  using U = unsigned __int128;
+UInt256 multiply_wide(UInt128 a, UInt128 b) noexcept {
+  using U = UInt128;
   // Schoolbook on 64-bit limbs: each partial product fits 128 bits, and the middle column
   // (at most three values below 2^64) fits as well, so no carry is lost.
   const U a0 = static_cast<std::uint64_t>(a), a1 = a >> 64;
@@ -24,8 +24,8 @@ int compare(const Fraction& a, const Fraction& b) noexcept {
   if (sa != sb) return sa < sb ? -1 : 1;
   if (sa == 0) return 0;
   // Same sign: compare |a.num| * b.den with |b.num| * a.den, flipped for negative values.
-  const UInt256 lhs = multiply_wide(unsigned_abs(a.num), static_cast<unsigned __int128>(b.den));
-  const UInt256 rhs = multiply_wide(unsigned_abs(b.num), static_cast<unsigned __int128>(a.den));
+  const UInt256 lhs = multiply_wide(unsigned_abs(a.num), static_cast<UInt128>(b.den));
+  const UInt256 rhs = multiply_wide(unsigned_abs(b.num), static_cast<UInt128>(a.den));
   const int magnitude = lhs < rhs ? -1 : (rhs < lhs ? 1 : 0);
   return sa > 0 ? magnitude : -magnitude;
 }

@@ -5,7 +5,7 @@
 namespace edgeland {
 
 std::string to_string(Int128 value) {
-  unsigned __int128 mag = unsigned_abs(value);
+  UInt128 mag = unsigned_abs(value);
   std::string digits;
   do {
     digits.push_back(static_cast<char>('0' + static_cast<int>(mag % 10)));

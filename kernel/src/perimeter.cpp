@@ -12,8 +12,8 @@ using W = arith::Checked<Int128>;
 
 }  // namespace
 
-unsigned __int128 isqrt(unsigned __int128 n) noexcept {
-  using U = unsigned __int128;
+UInt128 isqrt(UInt128 n) noexcept {
+  using U = UInt128;
   // Builds the root one bit at a time from the top. `bit` walks the powers of four; the
   // invariant is root^2 + remaining == n, with root scaled by the bits still to come.
   // root + bit never overflows: root < 2^64 and bit <= 2^126.
@@ -41,7 +41,7 @@ PerimeterBounds perimeter_bounds(const Ring& ring) noexcept {
     const Point64 b = ring[i + 1 == n ? 0 : i + 1];
     // |b - a|^2 as the dot product of b - a with itself.
     const Int128 squared = formulas::dot_from<W>(a.x, a.y, b.x, b.y, b.x, b.y).v;
-    const auto root = static_cast<Int128>(isqrt(static_cast<unsigned __int128>(squared)));
+    const auto root = static_cast<Int128>(isqrt(static_cast<UInt128>(squared)));
     lo = lo + W(root);
     hi = hi + W(root * root == squared ? root : root + 1);
   }

@@ -96,9 +96,9 @@ Polygon regular_polygon(Point64 center, std::int64_t radius, std::int64_t sides,
 
 std::int64_t circle_sides(std::int64_t radius) {
   require_radius("radius", radius);
-  const auto square = static_cast<unsigned __int128>(10 * radius);
+  const auto square = static_cast<UInt128>(10 * radius);
   auto root = static_cast<std::int64_t>(isqrt(square));
-  if (static_cast<unsigned __int128>(root) * static_cast<unsigned __int128>(root) < square) ++root;
+  if (static_cast<UInt128>(root) * static_cast<UInt128>(root) < square) ++root;
   const std::int64_t sides = (root + 7) / 8 * 8;
   return sides < kMaxCircleSides ? sides : kMaxCircleSides;
 }

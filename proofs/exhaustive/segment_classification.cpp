@@ -19,7 +19,7 @@ namespace {
 using boost::multiprecision::cpp_int;
 
 cpp_int big(Int128 v) {  // exact, via two 64-bit halves
-  const unsigned __int128 u = unsigned_abs(v);
+  const UInt128 u = unsigned_abs(v);
   cpp_int r = cpp_int(static_cast<std::uint64_t>(u >> 64)) << 64;
   r += static_cast<std::uint64_t>(u);
   return v < 0 ? cpp_int(-r) : r;

@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "edgeland/spatial/tree_boxes.hpp"
+#include "edgeland/spatial/tree_boxes.hpp"  // max_grid_depth
 
 namespace edgeland::detail {
 namespace {
@@ -24,6 +24,11 @@ void require_config(const Box64& world, const LandscapeConfig& c) {
   if (c.grid_depth < -1 || c.grid_depth > kMaxGridDepth) refuse(Setting::kGridDepth);
   if (c.tree != TreeKind::kQuadtree && c.tree != TreeKind::kKdTree) refuse(Setting::kTree);
   if (c.grid_depth > max_grid_depth(world, c)) refuse(Setting::kGridDepthBeyondCells);
+  if (c.region_depth < -1 || c.region_depth > kMaxGridDepth ||
+      c.region_depth > max_grid_depth(world, c) ||
+      (c.grid_depth >= 0 && c.region_depth > c.grid_depth))
+    refuse(Setting::kRegionDepth);
+  if (c.region_ids && c.region_depth < 0) refuse(Setting::kRegionIds);
 }
 
 bool can_split(const Box64& box, const LandscapeConfig& config) noexcept {
@@ -50,12 +55,3 @@ std::vector<Box64> split_boxes(const Box64& box, const LandscapeConfig& config) 
 }
 
 }  // namespace edgeland::detail
-
-namespace edgeland {
-
-std::vector<Box64> child_boxes(const Box64& node, const LandscapeConfig& config) {
-  if (!detail::can_split(node, config)) return {};
-  return detail::split_boxes(node, config);
-}
-
-}  // namespace edgeland

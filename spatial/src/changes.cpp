@@ -9,6 +9,7 @@ namespace edgeland::detail {
 namespace {
 
 void collect(const NodePtr& node, std::vector<NodePtr>& cells, std::vector<NodePtr>* inner) {
+  if (node->is_stub()) return;  // an unloaded region: nothing of it is seen to come or go
   if (node->is_cell()) {
     cells.push_back(node);
     return;

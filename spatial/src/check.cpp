@@ -8,6 +8,7 @@
 #include "cell_split.hpp"
 #include "edgeland/kernel/area.hpp"
 #include "edit_log.hpp"
+#include "regions.hpp"
 #include "save_load.hpp"
 
 namespace edgeland::detail {
@@ -58,6 +59,18 @@ void check_shape(const Node& c, const LandscapeConfig& config, std::vector<std::
   if (grid && static_cast<int>(c.depth) < config.grid_depth && can_split(c.box, config))
     problems.push_back(name(c) + ": a grid cell above the grid depth " +
                        std::to_string(config.grid_depth));
+  if (static_cast<int>(c.depth) < config.region_depth)
+    problems.push_back(name(c) + ": a cell above the region depth " +
+                       std::to_string(config.region_depth));
+}
+
+// A node keeps an id counter exactly when it is a region with its own ids.
+void check_counter_place(const Node& n, const LandscapeConfig& config,
+                         std::vector<std::string>& problems) {
+  const bool keeps = config.region_ids && is_region(config, n.depth);
+  if (keeps != (n.region_next != 0))
+    problems.push_back(name(n) + (keeps ? ": a region without its id counter"
+                                        : ": an id counter on a node that is no region"));
 }
 
 void check_sums(const Node& n, const NodePtr& rebuilt, std::vector<std::string>& problems) {
@@ -76,6 +89,7 @@ void check_cell_content(const Node& c, const LandscapeConfig& config,
   check_placement(c, problems);
   if (problems.size() != before) return;
   check_shape(c, config, problems);
+  check_counter_place(c, config, problems);
   if (!cell_is_canonical(c))
     problems.push_back(name(c) + ": content is not the canonical decomposition of its regions");
 }
@@ -87,7 +101,7 @@ void check_cell(const Node& c, const LandscapeConfig& config, std::vector<std::s
   check_validity(c, problems);
   if (problems.size() != before) return;
   check_cell_content(c, config, problems);
-  check_sums(c, make_cell(c.box, c.depth, c.content, c.ids), problems);
+  check_sums(c, make_cell(c.box, c.depth, c.content, c.ids, c.region_next), problems);
 }
 
 void check_inner(const Node& n, const LandscapeConfig& config, std::vector<std::string>& problems) {
@@ -110,11 +124,13 @@ void check_inner(const Node& n, const LandscapeConfig& config, std::vector<std::
     all_cells = all_cells && c->is_cell();
     children.push_back(c);
   }
-  if (config.grid_depth < 0 && all_cells && n.vertices <= config.merge_below)
+  const bool may_merge = config.grid_depth < 0 && static_cast<int>(n.depth) >= config.region_depth;
+  if (may_merge && all_cells && n.vertices <= config.merge_below)
     problems.push_back(name(n) + ": children small enough to merge");
+  check_counter_place(n, config, problems);
   if (config.grid_depth >= 0 && static_cast<int>(n.depth) >= config.grid_depth)
     problems.push_back(name(n) + ": grid node below the grid depth");
-  check_sums(n, make_inner(n.box, n.depth, children), problems);
+  check_sums(n, make_inner(n.box, n.depth, children, n.region_next), problems);
 }
 
 std::string check_edit(const LandscapeState& before, const NodePtr& new_root,
@@ -127,12 +143,20 @@ std::string check_edit(const LandscapeState& before, const NodePtr& new_root,
   for (const NodePtr& n : changes.new_inner) check_inner(*n, config, problems);
   std::set<PolygonId> old_ids, new_ids;
   for (const NodePtr& c : changes.old_cells) old_ids.insert(c->ids.begin(), c->ids.end());
-  for (const NodePtr& c : changes.new_cells)
+  for (const NodePtr& c : changes.new_cells) {
+    // With ids per region, "old" ids are those below the region's counter before the edit.
+    PolygonId old_next = old_next_id;
+    if (config.region_ids) {
+      const RegionHere now = region_above(new_root, config, c->box.min);
+      check_region_ids(c->ids, now.index, now.node->region_next, name(*c), problems);
+      old_next = region_above(before.root, config, c->box.min).node->region_next;
+    }
     for (PolygonId id : c->ids) {
       if (!new_ids.insert(id).second) problems.push_back("id " + std::to_string(id) + " twice");
-      if (id < old_next_id && !old_ids.count(id))
+      if (id < old_next && !old_ids.count(id))
         problems.push_back("id " + std::to_string(id) + " taken from a polygon that stays");
     }
+  }
   // gcov ascribes the unwinding of the strings built below, run only when building one throws
   // (out of memory), to these lines: not reached by tests.
   return problems.empty()
@@ -144,11 +168,28 @@ std::string check_edit(const LandscapeState& before, const NodePtr& new_root,
 
 namespace {
 
+// The region a walk of the tree is in (region_ids): its index and counter.
+struct WalkRegion {
+  std::uint64_t index = 0;
+  PolygonId counter = 0;
+};
+
 void check_subtree(const NodePtr& n, const LandscapeConfig& config,
                    std::vector<std::string>& problems, std::set<PolygonId>& ids,
-                   detail::AreaTable& areas) {
+                   detail::AreaTable& areas, std::uint64_t index, WalkRegion region) {
+  if (config.region_ids && is_region(config, n->depth)) {
+    check_region_counter(*n, index, name(*n), problems);
+    region = {index, n->region_next};
+  }
+  if (n->is_stub()) {
+    // Its content is elsewhere: its summary counts, its place was checked by its parent.
+    for (const auto& [m, a] : n->stub->twice_areas) areas[m.value()] += a;
+    return;
+  }
   if (n->is_cell()) {
     check_cell(*n, config, problems);
+    if (config.region_ids)
+      check_region_ids(n->ids, region.index, region.counter, name(*n), problems);
     for (std::size_t i = 0; i < n->ids.size(); ++i) {
       if (!ids.insert(n->ids[i]).second)
         problems.push_back("id " + std::to_string(n->ids[i]) + " twice");
@@ -159,7 +200,8 @@ void check_subtree(const NodePtr& n, const LandscapeConfig& config,
   }
   check_inner(*n, config, problems);
   for (std::uint32_t i = 0; i < n->child_count; ++i)
-    if (n->children[i]) check_subtree(n->children[i], config, problems, ids, areas);
+    if (n->children[i])
+      check_subtree(n->children[i], config, problems, ids, areas, index * 4 + i, region);
 }
 
 }  // namespace
@@ -171,8 +213,8 @@ LandscapeReport check_all(const LandscapeState& s) {
     report.problems.push_back("the root is not the world");
   std::set<PolygonId> ids;
   detail::AreaTable areas{};
-  check_subtree(root, s.config, report.problems, ids, areas);
-  if (!ids.empty() && *ids.rbegin() >= s.next_id)
+  check_subtree(root, s.config, report.problems, ids, areas, 0, {});
+  if (!s.config.region_ids && !ids.empty() && *ids.rbegin() >= s.next_id)
     report.problems.push_back("an id is not below the next id");
   for (std::size_t m = 1; m < kMaterialCount; ++m)
     if (areas[m] != (*s.areas)[m])

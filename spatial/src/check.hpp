@@ -5,7 +5,9 @@
 #include <vector>
 
 #include "changes.hpp"
-#include "edgeland/spatial/landscape.hpp"
+#include "edgeland/spatial/errors.hpp"
+#include "edgeland/spatial/landscape_state.hpp"
+#include "edgeland/spatial/types.hpp"
 #include "node.hpp"
 
 namespace edgeland::detail {

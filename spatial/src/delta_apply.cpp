@@ -2,6 +2,7 @@
 #include "edgeland/spatial/delta.hpp"
 #include "edit_form.hpp"
 #include "patch.hpp"
+#include "regions.hpp"
 #include "state_hash.hpp"
 
 namespace edgeland {
@@ -27,14 +28,8 @@ ChangeSet apply_edit(Landscape& world, const Edit& e) {
 }
 
 std::uint64_t Landscape::world_hash() const noexcept {
-  const LandscapeConfig& c = s_.config;
   detail::StateHash h;
-  h.add(s_.world)
-      .add(static_cast<std::uint64_t>(c.tree))
-      .add(static_cast<std::uint64_t>(c.edge_cap))
-      .add(static_cast<std::uint64_t>(c.merge_below))
-      .add(static_cast<std::uint64_t>(c.min_cell_size))
-      .add(static_cast<std::uint64_t>(static_cast<std::int64_t>(c.grid_depth)));
+  detail::add_world(h, s_.world, s_.config);
   return h.value();
 }
 
@@ -43,9 +38,8 @@ namespace {
 ChangeSet apply_command(Landscape& next, const Delta& d) {
   if (d.header.algorithm != kAlgorithmVersion)
     throw DeltaMismatch(DeltaMismatch::Field::kAlgorithm, d.header.algorithm, kAlgorithmVersion);
-  if (d.edits.size() != 1)
-    throw DeltaError("a command of " + std::to_string(d.edits.size()) + " edits", 0);
-  return apply_edit(next, d.edits.front());
+  if (d.edits.empty()) throw DeltaError("a command of no edit", 0);
+  return next.apply_batch(d.edits);  // one edit: apply_edit
 }
 
 }  // namespace

@@ -8,6 +8,8 @@ namespace edgeland {
 
 DivergenceSearch::DivergenceSearch(TreePath start) { questions_.push_back(std::move(start)); }
 
+DivergenceSearch::DivergenceSearch(std::vector<TreePath> starts) : questions_(std::move(starts)) {}
+
 // A node whose hashes differ: its differing children are the next questions when both sides
 // are inner nodes of the same shape whose children are known; otherwise the node is patched
 // whole.

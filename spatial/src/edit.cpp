@@ -5,11 +5,13 @@
 #include "edit.hpp"
 
 #include <algorithm>
+#include <limits>
 
 #include "cell_split.hpp"
 #include "changes.hpp"
 #include "check.hpp"
 #include "ids.hpp"
+#include "regions.hpp"
 #include "shape_cut.hpp"
 #include "split_content.hpp"
 
@@ -30,19 +32,35 @@ std::size_t vertices_of(const ValidSet& s) {
 
 }  // namespace
 
-EditBuilder::EditBuilder(const LandscapeState& state, std::span<const EditStep> steps)
-    : s_(state), steps_(steps), next_id_(state.next_id) {}
+EditBuilder::EditBuilder(const LandscapeState& state, std::span<const RelabelStep> steps)
+    : s_(state),
+      steps_(steps),
+      next_id_(state.next_id),
+      id_end_(std::numeric_limits<PolygonId>::max()) {}
 
-// Steps 1 and 2-7 of the README: each shape's size against the limits, the new tree, its limits,
-// what changed (checked in checked mode), and the next state.
+// Steps 1 and 2-7 of the README: each shape's size against the limits, the new tree, its
+// limits, what changed (checked in checked mode), and the next state.
 EditResult EditBuilder::build() {
-  for (const EditStep& step : steps_) {
-    const std::size_t shape_vertices = vertices_of(*step.shape);
-    if (shape_vertices > s_.limits.max_shape_vertices)
-      throw LimitExceeded(LimitExceeded::Limit::kShapeVertices, s_.limits.max_shape_vertices,
-                          shape_vertices);
-  }
-  NodePtr root = new_root();
+  for (const RelabelStep& step : steps_) require_shape_size(vertices_of(*step.shape));
+  return result(new_root());
+}
+
+EditResult EditBuilder::build(ShapeCut cut, const Box64& box, std::size_t vertices) {
+  require_shape_size(vertices);
+  reach_.clear();
+  reach_.push_back(Reach{box, true, std::move(cut)});
+  cut_given_ = true;
+  return result(rebuilt_root());
+}
+
+void EditBuilder::require_shape_size(std::size_t vertices) const {
+  if (vertices > s_.limits.max_shape_vertices)
+    throw LimitExceeded(LimitExceeded::Limit::kShapeVertices, s_.limits.max_shape_vertices,
+                        vertices);
+}
+
+// Steps 5-7 of the README on the new tree.
+EditResult EditBuilder::result(NodePtr root) {
   if (root->vertices > s_.limits.max_vertices)
     throw LimitExceeded(LimitExceeded::Limit::kVertices, s_.limits.max_vertices, root->vertices);
   if (root->cells > s_.limits.max_cells)
@@ -56,23 +74,43 @@ EditResult EditBuilder::build() {
   return {next_state(std::move(root), out), std::move(out)};
 }
 
-// Steps 2-6: the touched cells found, each big shape cut to them, overlaid, split and merged as a
-// draft, then given ids. The clipper's internal failures become EditFailure.
+// Steps 2-6: the touched cells found, each shape cut to them (big shapes), overlaid, split and
+// merged as a draft, then given ids. The clipper's internal failures become EditFailure.
 NodePtr EditBuilder::new_root() {
   reach_.clear();
   bool any = false;
-  for (const EditStep& step : steps_) {
-    const ValidSet& shape = *step.shape;
-    Reach& r = reach_.emplace_back();
-    r.shape = &shape;
-    r.box = bounding_box(shape.polygons()).value_or(Box64{});
-    r.in_world = !shape.polygons().empty() && s_.world.overlaps_open(r.box);
-    any = any || r.in_world;
+  for (const RelabelStep& step : steps_) {
+    const PolygonSet& shape = step.shape->polygons();
+    const Box64 box = bounding_box(shape).value_or(Box64{});
+    reach_.push_back(Reach{box, !shape.empty() && s_.world.overlaps_open(box), std::nullopt});
+    any = any || reach_.back().in_world;
   }
   if (!any) return s_.root;
   try {
-    for (Reach& r : reach_)
-      if (r.in_world) r.cut = cut_shape_to_cells(s_.root, *r.shape, r.box, clip_options());
+    // With regions, each region cuts the shapes to its own cells (rebuild_region).
+    if (!regions_on(s_.config)) cut_shapes(s_.root);
+  } catch (const InternalError& e) {
+    throw EditFailure{std::string(e.what()) + "\n  subject = " + e.subject_wkt +
+                      "\n  clip = " + e.clip_wkt};
+  }
+  return rebuilt_root();
+}
+
+void EditBuilder::cut_shapes(const NodePtr& node) {
+  for (std::size_t k = 0; k < steps_.size(); ++k)
+    if (reach_[k].in_world && node->box.overlaps_open(reach_[k].box))
+      reach_[k].cut = cut_shape_to_cells(node, *steps_[k].shape, reach_[k].box, clip_options());
+}
+
+bool EditBuilder::reaches(const Box64& box) const {
+  return std::any_of(reach_.begin(), reach_.end(),
+                     [&](const Reach& r) { return r.in_world && box.overlaps_open(r.box); });
+}
+
+// Steps 3-6 over the reach set up: overlays, splits and merges, ids. The clipper's internal
+// failures become EditFailure.
+NodePtr EditBuilder::rebuilt_root() {
+  try {
     Draft draft = rebuild(s_.root);
     return finish(draft, s_.root);
   } catch (const InternalError& e) {
@@ -141,20 +179,15 @@ EditBuilder::Draft EditBuilder::Draft::inner(const Box64& box, std::uint32_t dep
 
 const ValidSet& EditBuilder::shape_in(std::size_t k, const Node& cell) const {
   const ValidSet* pieces = reach_[k].cut ? reach_[k].cut->of(cell) : nullptr;
-  return pieces ? *pieces : *reach_[k].shape;
+  return pieces ? *pieces : *steps_[k].shape;
 }
 
-bool EditBuilder::reaches(const Box64& box) const {
-  for (const Reach& r : reach_)
-    if (r.in_world && box.overlaps_open(r.box)) return true;
-  return false;
-}
-
+// The steps whose shapes reach the cell, in order, in one overlay (relabel_cell).
 EditBuilder::Draft EditBuilder::edit_cell(const NodePtr& cell) {
   cell_steps_.clear();
   for (std::size_t k = 0; k < steps_.size(); ++k)
     if (reach_[k].in_world && cell->box.overlaps_open(reach_[k].box))
-      cell_steps_.push_back({&shape_in(k, *cell), steps_[k].table.table});
+      cell_steps_.push_back({&shape_in(k, *cell), steps_[k].table});
   std::optional<LabeledSet> content =
       relabel_cell(cell->content, cell_steps_, cell->box, clip_options()).content;
   if (!content) return Draft::keep(cell);
@@ -184,7 +217,10 @@ EditBuilder::Draft EditBuilder::merge_if_small(const NodePtr& old, std::vector<D
   Draft inner = Draft::inner(old->box, old->depth, std::move(children));
   const bool all_cells = std::all_of(inner.children.begin(), inner.children.end(),
                                      [](const Draft& c) { return c.is_cell(); });
-  if (s_.config.grid_depth >= 0 || inner.vertices > s_.config.merge_below || !all_cells)
+  // Never above the region depth: regions stay nodes of their own.
+  const bool above_regions = static_cast<int>(old->depth) < s_.config.region_depth;
+  if (s_.config.grid_depth >= 0 || inner.vertices > s_.config.merge_below || !all_cells ||
+      above_regions)
     return inner;
   PolygonSet all;
   std::vector<RegionLabel> labels;
@@ -202,6 +238,26 @@ EditBuilder::Draft EditBuilder::merge_if_small(const NodePtr& old, std::vector<D
 
 EditBuilder::Draft EditBuilder::rebuild(const NodePtr& node) {
   if (!reaches(node->box)) return Draft::keep(node);
+  if (node->is_stub()) return unloaded(node);
+  if (is_region(s_.config, node->depth)) return rebuild_region(node);
+  return rebuild_loaded(node);
+}
+
+EditBuilder::Draft EditBuilder::unloaded(const NodePtr& stub) const {
+  if (s_.unloaded != UnloadedRegions::kSkip) require_loaded(*stub);
+  return Draft::keep(stub);
+}
+
+EditBuilder::Draft EditBuilder::rebuild_region(const NodePtr& region) {
+  // A cut handed in whole (build(ShapeCut, ...): Landscape::remove) already keeps to cells.
+  if (cut_given_) return rebuild_loaded(region);
+  cut_shapes(region);
+  Draft draft = rebuild_loaded(region);
+  for (Reach& r : reach_) r.cut.reset();
+  return draft;
+}
+
+EditBuilder::Draft EditBuilder::rebuild_loaded(const NodePtr& node) {
   if (node->is_cell()) return edit_cell(node);
   std::vector<Draft> children(node->child_count);
   bool changed = false;
@@ -218,22 +274,43 @@ EditBuilder::Draft EditBuilder::rebuild(const NodePtr& node) {
 // keeps its id however the cells around it split or merged. Fresh ids go out in tree order.
 NodePtr EditBuilder::finish(Draft& draft, const NodePtr& old) {
   if (draft.kept) return draft.kept;
+  if (s_.config.region_ids && is_region(s_.config, old->depth)) return finish_region(draft, old);
+  return finish_node(draft, old);
+}
+
+NodePtr EditBuilder::finish_node(Draft& draft, const NodePtr& old) {
   if (old->is_cell() || draft.is_cell()) return finish_within(draft, IdSource(old));
   std::vector<NodePtr> children;
   for (std::size_t i = 0; i < draft.children.size(); ++i)
     children.push_back(finish(draft.children[i], old->children[i]));
-  return make_inner(draft.box, draft.depth, children);
+  return make_inner(draft.box, draft.depth, children, counter_at(draft.depth));
+}
+
+NodePtr EditBuilder::finish_region(Draft& draft, const NodePtr& old) {
+  const PolygonId saved = next_id_, saved_end = id_end_;
+  next_id_ = old->region_next;
+  id_end_ = region_id_end(region_of_id(old->region_next));
+  NodePtr node = finish_node(draft, old);
+  next_id_ = saved;
+  id_end_ = saved_end;
+  return node;
+}
+
+// The counter a node made at this depth keeps: the region's, at the region depth.
+PolygonId EditBuilder::counter_at(std::uint32_t depth) const {
+  return s_.config.region_ids && is_region(s_.config, depth) ? next_id_ : 0;
 }
 
 // A draft lying within the old cells of `previous`, with its ids.
 NodePtr EditBuilder::finish_within(Draft& draft, const IdSource& previous) {
   if (draft.is_cell()) {
-    std::vector<PolygonId> ids = match_ids(previous, draft.content, next_id_);
-    return make_cell(draft.box, draft.depth, std::move(draft.content), std::move(ids));
+    std::vector<PolygonId> ids = match_ids(previous, draft.content, next_id_, id_end_);
+    return make_cell(draft.box, draft.depth, std::move(draft.content), std::move(ids),
+                     counter_at(draft.depth));
   }
   std::vector<NodePtr> children;
   for (Draft& c : draft.children) children.push_back(finish_within(c, previous));
-  return make_inner(draft.box, draft.depth, children);
+  return make_inner(draft.box, draft.depth, children, counter_at(draft.depth));
 }
 
 }  // namespace edgeland::detail

@@ -1,11 +1,10 @@
 #pragma once
-// The edit-log recorder (README.md "Landscape edit logs"): the line each edit writes, and the
-// log kept as a persistent list of lines so that copies of a recording landscape share it.
+// The edit-log recorder (README.md "Landscape edit logs"): the log kept as a persistent list of
+// lines (each written by log_format.hpp) so that copies of a recording landscape share it.
 #include <memory>
-#include <span>
 #include <string>
 
-#include "edgeland/spatial/landscape.hpp"
+#include "edgeland/spatial/landscape_state.hpp"
 
 namespace edgeland::detail {
 
@@ -22,20 +21,6 @@ struct LogLine {
   mutable std::shared_ptr<const LogLine> prev;
   std::string text;  // one line, with its '\n'
 };
-
-// "carve WKT", "fill M WKT", "fill_empty M WKT", "replace FROM TO WKT", "relabel [FROM TO]...
-// WKT" (the pairs where the map changes a material, ascending), each ending in '\n'.
-std::string carve_line(const PolygonSet& shape);
-std::string fill_line(const PolygonSet& shape, Material m);
-std::string fill_empty_line(const PolygonSet& shape, Material m);
-std::string replace_line(const PolygonSet& shape, Material from, Material to);
-std::string relabel_line(const PolygonSet& shape, const MaterialMap& map);
-// "batch EDIT | EDIT | ...": every edit of a batch (Landscape::apply_batch) as its own line
-// would say it without the line break (its kind's line when its map has its kind's form, else
-// relabel's), in order, separated by " | " (no WKT holds a '|').
-std::string batch_line(std::span<const Edit> edits);
-// "world X0 Y0 X1 Y1[ M]".
-std::string world_line(const Box64& world, Material fill);
 
 // A log that replays to the landscape's regions: the world line when nothing was edited since
 // it was made, else the world line and one fill per material.

@@ -26,7 +26,7 @@ PolygonId IdSource::find(const Polygon& ring, RegionLabel material) const {
 }
 
 std::vector<PolygonId> match_ids(const IdSource& previous, const LabeledSet& content,
-                                 PolygonId& next_id) {
+                                 PolygonId& next_id, PolygonId end) {
   const PolygonSet& polys = content.set.polygons();
   std::vector<PolygonId> ids(polys.size());
   for (std::size_t i = 0; i < polys.size(); ++i) {
@@ -36,9 +36,7 @@ std::vector<PolygonId> match_ids(const IdSource& previous, const LabeledSet& con
       continue;
     }
     // Only a crafted save file can bring the counter here; a wrapped id would repeat id 0.
-    if (next_id == std::numeric_limits<PolygonId>::max())
-      throw LimitExceeded(LimitExceeded::Limit::kPolygonIds, std::numeric_limits<PolygonId>::max(),
-                          std::numeric_limits<PolygonId>::max());
+    if (next_id == end) throw LimitExceeded(LimitExceeded::Limit::kPolygonIds, end, end);
     ids[i] = next_id++;
   }
   return ids;

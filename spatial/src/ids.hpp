@@ -1,6 +1,7 @@
 #pragma once
 // Polygon ids (spatial/README.md, I6): a polygon keeps its id while it stays the same polygon
 // (same ring, same material); every other polygon gets the next fresh id.
+#include <limits>
 #include <vector>
 
 #include "node.hpp"
@@ -26,8 +27,10 @@ class IdSource {
   std::vector<Entry> entries_;  // sorted by ring
 };
 
-// Ids for content's polygons, in order: taken from `previous` where equal, else next_id++.
+// Ids for content's polygons, in order: taken from `previous` where equal, else next_id++, which
+// must stay below `end` (the end of its id space: LimitExceeded kPolygonIds).
 std::vector<PolygonId> match_ids(const IdSource& previous, const LabeledSet& content,
-                                 PolygonId& next_id);
+                                 PolygonId& next_id,
+                                 PolygonId end = std::numeric_limits<PolygonId>::max());
 
 }  // namespace edgeland::detail

@@ -14,9 +14,10 @@
 #include <string>
 #include <string_view>
 
-#include "byte_codec.hpp"
 #include "cell_split.hpp"
 #include "edgeland/kernel/area.hpp"
+#include "edgeland/spatial/byte_codec.hpp"
+#include "edgeland/spatial/landscape.hpp"
 #include "node.hpp"
 #include "save_format.hpp"
 #include "save_load.hpp"
@@ -36,7 +37,7 @@ class Loader {
   detail::LandscapeState load() {
     try {
       return read_landscape();
-    } catch (const detail::ReadFailure& failure) {
+    } catch (const ReadFailure& failure) {
       throw LoadError(failure.what, failure.offset);
     } catch (const std::bad_alloc&) {
       // Not reached by tests: every count is bounded by the file's bytes and the limits before
@@ -70,13 +71,14 @@ class Loader {
         std::string_view(format::kMagic, sizeof format::kMagic))
       in_.fail("not a landscape save file");
     const std::size_t end = bytes_.size() - format::kChecksumBytes;
-    detail::ByteReader tail(bytes_, end, bytes_.size());
+    ByteReader tail(bytes_, end, bytes_.size());
     const std::uint64_t checksum = tail.fixed(format::kChecksumBytes);
-    in_ = detail::ByteReader(bytes_, sizeof format::kMagic, end);
+    in_ = ByteReader(bytes_, sizeof format::kMagic, end);
     if (checksum != format::fnv1a64(bytes_.substr(0, end)))
       in_.fail("checksum mismatch: the file is corrupt");
-    if (const auto v = in_.fixed(4); v != format::kVersion)
-      in_.fail("unsupported version " + std::to_string(v));
+    version_ = in_.fixed(4);
+    if (version_ != format::kVersion && version_ != format::kRegionsVersion)
+      in_.fail("unsupported version " + std::to_string(version_));
   }
 
   std::int64_t coordinate() {
@@ -95,6 +97,7 @@ class Loader {
     c.merge_below = static_cast<std::uint32_t>(in_.fixed(4));
     c.min_cell_size = static_cast<std::int64_t>(in_.fixed(8));
     c.grid_depth = static_cast<int>(static_cast<std::int32_t>(in_.fixed(4)));
+    if (version_ == format::kRegionsVersion) read_regions(c);
     st.world.min.x = coordinate();
     st.world.min.y = coordinate();
     st.world.max.x = coordinate();
@@ -109,6 +112,15 @@ class Loader {
     }
   }
 
+  // Version 2: the region options, which must be on (a world without regions is version 1).
+  void read_regions(LandscapeConfig& c) {
+    c.region_depth = static_cast<int>(static_cast<std::int32_t>(in_.fixed(4)));
+    const auto ids = in_.fixed(1);
+    if (ids > 1) in_.fail("region_ids neither 0 nor 1");
+    c.region_ids = ids == 1;
+    if (c.region_depth < 0) in_.fail("a version 2 file without regions");
+  }
+
   static std::shared_ptr<const detail::AreaTable> areas_of(const NodePtr& root) {
     auto areas = std::make_shared<detail::AreaTable>();
     detail::for_each_cell(root, [&](const NodePtr& c) {
@@ -119,8 +131,9 @@ class Loader {
   }
 
   std::string_view bytes_;
-  detail::ByteReader in_;
+  ByteReader in_;
   LandscapeLimits limits_;
+  std::uint64_t version_ = 0;
 };
 
 // The most bytes a save file of a world within `limits` can take: no more is read.
@@ -130,15 +143,20 @@ std::uint64_t max_file_bytes(const LandscapeLimits& limits) {
     return n > kMax / bytes ? kMax : n * bytes;
   };
   const auto plus = [&](std::uint64_t a, std::uint64_t b) { return a > kMax - b ? kMax : a + b; };
-  const std::uint64_t nodes = times(limits.max_cells, 2 * format::kMaxNodeBytes);
+  // A node's tag and count, and a region's id counter (a varint of at most 10 bytes).
+  const std::uint64_t nodes = times(limits.max_cells, 2 * (format::kMaxNodeBytes + 10));
   const std::uint64_t vertices = times(limits.max_vertices, format::kMaxVertexBytes);
   const std::uint64_t polygons = times(limits.max_vertices / 3, format::kMaxPolygonBytes);
-  return plus(plus(nodes, vertices), plus(polygons, format::kHeaderBytes + format::kChecksumBytes));
+  return plus(
+      plus(nodes, vertices),
+      plus(polygons, format::kHeaderBytes + format::kRegionHeaderBytes + format::kChecksumBytes));
 }
 
-// The stream's bytes, at most the limits' worth. Read in chunks and joined once: a string grown
-// by doubling would hold up to three times the file while it moves.
-std::string read_bytes(std::istream& in, const LandscapeLimits& limits) {
+}  // namespace
+
+// Read in chunks and joined once: a string grown by doubling would hold up to three times the
+// file while it moves.
+std::string detail::read_stream(std::istream& in, const LandscapeLimits& limits) {
   const std::uint64_t max_bytes = max_file_bytes(limits);
   std::vector<std::string> chunks;
   std::size_t total = 0;
@@ -162,10 +180,8 @@ std::string read_bytes(std::istream& in, const LandscapeLimits& limits) {
   }
 }
 
-}  // namespace
-
 detail::LandscapeState detail::load_state(std::istream& in, const LandscapeLimits& limits) {
-  const std::string bytes = read_bytes(in, limits);
+  const std::string bytes = read_stream(in, limits);
   return Loader(bytes, limits).load();
 }
 

@@ -7,7 +7,7 @@
 namespace edgeland::detail {
 
 NodePtr make_cell(const Box64& box, std::uint32_t depth, LabeledSet content,
-                  std::vector<PolygonId> ids) {
+                  std::vector<PolygonId> ids, PolygonId region_next) {
   auto node = std::make_shared<Node>();
   node->box = box;
   node->depth = depth;
@@ -25,13 +25,16 @@ NodePtr make_cell(const Box64& box, std::uint32_t depth, LabeledSet content,
     for (Point64 p : polys[i]) h.add(p);
   }
   node->polygons = polys.size();
+  if (region_next != 0) h.add(static_cast<std::uint64_t>(region_next));
+  node->region_next = region_next;
   node->hash = h.value();
   node->content = std::move(content);
   node->ids = std::move(ids);
   return node;
 }
 
-NodePtr make_inner(const Box64& box, std::uint32_t depth, const std::vector<NodePtr>& children) {
+NodePtr make_inner(const Box64& box, std::uint32_t depth, const std::vector<NodePtr>& children,
+                   PolygonId region_next) {
   auto node = std::make_shared<Node>();
   node->box = box;
   node->depth = depth;
@@ -47,12 +50,29 @@ NodePtr make_inner(const Box64& box, std::uint32_t depth, const std::vector<Node
     node->deepest = std::max(node->deepest, c->deepest);
     h.add(c->hash);
   }
+  if (region_next != 0) h.add(static_cast<std::uint64_t>(region_next));
+  node->region_next = region_next;
   node->hash = h.value();
   const Box64& first = children.front()->box;
   node->cut_x = first.max.x != box.max.x;
   node->cut_y = first.max.y != box.max.y;
   node->x_line = first.max.x;
   node->y_line = first.max.y;
+  return node;
+}
+
+NodePtr make_stub(const Box64& box, std::uint32_t depth, const RegionSummary& summary) {
+  auto node = std::make_shared<Node>();
+  node->box = box;
+  node->depth = depth;
+  node->polygons = summary.polygons;
+  node->vertices = summary.vertices;
+  node->cells = summary.cells;
+  node->deepest = summary.deepest;
+  node->hash = summary.hash;
+  node->region_next = summary.next_id;
+  node->stub = std::make_shared<const StubInfo>(
+      StubInfo{summary.path, summary.twice_areas, summary.min_id, summary.max_id});
   return node;
 }
 

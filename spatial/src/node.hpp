@@ -13,6 +13,13 @@
 
 namespace edgeland::detail {
 
+// What an unloaded region keeps besides the sums every node has (Landscape::unload_region).
+struct StubInfo {
+  TreePath path;
+  std::vector<std::pair<Material, Int128>> twice_areas;  // solid materials present, ascending
+  PolygonId min_id = 0, max_id = 0;                      // its ids' range (0, 0: none)
+};
+
 struct Node {
   Box64 box;
   std::uint32_t depth = 0;        // the root is 0
@@ -33,8 +40,14 @@ struct Node {
   std::size_t polygons = 0, vertices = 0, cells = 0;
   std::uint32_t deepest = 0;  // the largest depth of a cell below (or this one's)
   std::uint64_t hash = 0;
+  // A region's id counter (LandscapeConfig::region_ids; part of the hash), else 0.
+  PolygonId region_next = 0;
+  // Set on an unloaded region: no content and no children, the sums and hash of the region it
+  // stands for (a stub is neither a cell nor an inner node; every walk of the tree checks).
+  std::shared_ptr<const StubInfo> stub;
 
-  bool is_cell() const noexcept { return child_count == 0; }
+  bool is_cell() const noexcept { return child_count == 0 && !stub; }
+  bool is_stub() const noexcept { return stub != nullptr; }
   // The child whose half-open box holds p (p in this node's box).
   const Node& child_at(Point64 p) const noexcept {
     const std::uint32_t ix = cut_x && p.x >= x_line ? 1 : 0;
@@ -48,13 +61,17 @@ struct Node {
 
 using NodePtr = std::shared_ptr<const Node>;
 
-// A cell from its content (canonical, inside box) and the ids of its polygons.
+// A cell from its content (canonical, inside box) and the ids of its polygons; region_next: its
+// id counter when it is a region with its own ids (else 0, and the hash is as without regions).
 NodePtr make_cell(const Box64& box, std::uint32_t depth, LabeledSet content,
-                  std::vector<PolygonId> ids);
+                  std::vector<PolygonId> ids, PolygonId region_next = 0);
 // An inner node over its children (in split_boxes order).
-NodePtr make_inner(const Box64& box, std::uint32_t depth, const std::vector<NodePtr>& children);
+NodePtr make_inner(const Box64& box, std::uint32_t depth, const std::vector<NodePtr>& children,
+                   PolygonId region_next = 0);
+// The stub of a region (its summary and where it lies).
+NodePtr make_stub(const Box64& box, std::uint32_t depth, const RegionSummary& summary);
 
-// Calls f(cell) for every cell below node, in tree order.
+// Calls f(cell) for every cell below node, in tree order (stubs have none).
 template <class F>
 void for_each_cell(const NodePtr& node, F&& f) {
   if (node->is_cell()) {
@@ -62,6 +79,13 @@ void for_each_cell(const NodePtr& node, F&& f) {
     return;
   }
   for (std::uint32_t i = 0; i < node->child_count; ++i) for_each_cell(node->children[i], f);
+}
+
+// Calls f(node) for every node below node and itself, in preorder.
+template <class F>
+void for_each_node(const NodePtr& node, F&& f) {
+  f(node);
+  for (std::uint32_t i = 0; i < node->child_count; ++i) for_each_node(node->children[i], f);
 }
 
 }  // namespace edgeland::detail

@@ -5,11 +5,12 @@
 #include <set>
 #include <string>
 
-#include "byte_codec.hpp"
 #include "changes.hpp"
 #include "check.hpp"
 #include "edgeland/kernel/area.hpp"
+#include "edgeland/spatial/byte_codec.hpp"
 #include "edit_log.hpp"
+#include "regions.hpp"
 #include "tree_codec.hpp"
 #include "tree_paths.hpp"
 
@@ -34,17 +35,22 @@ std::vector<std::size_t> entry_order(const Delta& d) {
   return order;
 }
 
+// Twice the areas of the subtree's polygons, times sign (a stub's from its summary).
 void add_areas(AreaTable& areas, const NodePtr& subtree, int sign) {
-  for_each_cell(subtree, [&](const NodePtr& c) {
-    for (std::size_t i = 0; i < c->ids.size(); ++i)
-      areas[c->content.labels[i]] += sign * twice_signed_area(c->polygon_set()[i]);
+  for_each_node(subtree, [&](const NodePtr& n) {
+    if (n->is_stub())
+      for (const auto& [m, a] : n->stub->twice_areas) areas[m.value()] += sign * a;
+    if (!n->is_cell()) return;
+    for (std::size_t i = 0; i < n->ids.size(); ++i)
+      areas[n->content.labels[i]] += sign * twice_signed_area(n->polygon_set()[i]);
   });
 }
 
 // Builds the patched state one entry at a time.
 class Patcher {
  public:
-  Patcher(const LandscapeState& s, const Delta& d) : s_(s), d_(d), next_(s) {}
+  Patcher(const LandscapeState& s, const Delta& d)
+      : s_(s), d_(d), next_(s), region_ids_(s.config.region_ids) {}
 
   EditResult run() {
     auto areas = std::make_shared<AreaTable>(*s_.areas);
@@ -63,8 +69,20 @@ class Patcher {
   }
 
  private:
+  // Whether the entry lies below its region's node (whose counter it then carries).
+  bool below_region(const PatchEntry& e) const {
+    return regions_on(s_.config) &&
+           e.path.size() > static_cast<std::size_t>(s_.config.region_depth);
+  }
+  TreePath region_of(const TreePath& path) const {
+    return TreePath(path.begin(), path.begin() + s_.config.region_depth);
+  }
+
   void apply_entry(std::size_t i, AreaTable& areas) {
     const PatchEntry& e = d_.patches[i];
+    const bool own_counter = region_ids_ && below_region(e);
+    if ((e.region_next != 0) != own_counter)
+      refuse(i, own_counter ? "no id counter for its region" : "an id counter where none applies");
     const std::vector<NodePtr> chain = nodes_on(next_.root, e.path);
     if (chain.empty()) refuse(i, "its path names no node of this world");
     const NodePtr& old = chain.back();
@@ -75,18 +93,36 @@ class Patcher {
     add_areas(areas, node, +1);
     patched_.insert(node.get());
     next_.root = replace_node(chain, e.path, std::move(node));
+    if (own_counter) set_counter(i, e);
+  }
+
+  // The region's node with the entry's counter.
+  void set_counter(std::size_t i, const PatchEntry& e) {
+    const TreePath path = region_of(e.path);
+    const std::uint64_t index = region_index(path);
+    if (e.region_next < region_first_id(index) || e.region_next > region_id_end(index))
+      refuse(i, "an id counter outside its region's id space");
+    const std::vector<NodePtr> chain = nodes_on(next_.root, path);
+    const Node& region = *chain.back();
+    std::vector<NodePtr> children(region.children.begin(),
+                                  region.children.begin() + region.child_count);
+    next_.root =
+        replace_node(chain, path, make_inner(region.box, region.depth, children, e.region_next));
+    touched_regions_.push_back(path);
   }
 
   // The entry's subtree in the old node's place, every node checked as it is read; its cells
   // and vertices count against the limits with the rest of the world's.
   NodePtr read_subtree(std::size_t i, const Node& old) {
-    const std::string& bytes = d_.patches[i].subtree;
+    const PatchEntry& e = d_.patches[i];
     const Node& root = *next_.root;
-    ByteReader in(bytes, 0, bytes.size());
+    ByteReader in(e.subtree, 0, e.subtree.size());
     try {
       TreeReader tree(in, s_.config, s_.limits, d_.next_id, root.cells - old.cells,
                       root.vertices - old.vertices);
-      NodePtr node = tree.read(old.box, old.depth);
+      if (region_ids_ && below_region(e))
+        tree.set_region(region_index(region_of(e.path)), e.region_next);
+      NodePtr node = tree.read(old.box, old.depth, region_index(e.path));
       if (!in.done()) in.fail("bytes left after the subtree");
       tree.check_ids();
       ids_.insert(ids_.end(), tree.ids().begin(), tree.ids().end());
@@ -111,33 +147,54 @@ class Patcher {
   }
 
   // I6 over the world: the patched ids are unique among themselves and against every polygon
-  // outside the patched subtrees, and all ids are below the patch's next id.
+  // outside the patched subtrees that could hold the same id, and all ids are below their
+  // counter. With ids per region that is the rest of the regions patched below their node
+  // (other regions hand out other ids); else every loaded cell, and every unloaded region's id
+  // range.
   void check_ids() {
     std::sort(ids_.begin(), ids_.end());
     if (const auto twice = std::adjacent_find(ids_.begin(), ids_.end()); twice != ids_.end())
       throw DeltaError("patched world: id " + std::to_string(*twice) + " twice", 0);
-    check_outside(next_.root);
+    if (!region_ids_) return check_outside(next_.root, d_.next_id);
+    for (const TreePath& path : touched_regions_) {
+      const NodePtr region = nodes_on(next_.root, path).back();
+      check_outside(region, region->region_next);
+    }
   }
 
-  void check_outside(const NodePtr& n) const {
+  void check_outside(const NodePtr& n, PolygonId below) const {
     if (patched_.count(n.get())) return;
-    if (!n->is_cell()) {
-      for (std::uint32_t i = 0; i < n->child_count; ++i) check_outside(n->children[i]);
-      return;
-    }
-    for (const PolygonId id : n->ids) {
-      if (std::binary_search(ids_.begin(), ids_.end(), id))
-        throw DeltaError("patched world: id " + std::to_string(id) + " twice", 0);
-      if (id >= d_.next_id)
-        throw DeltaError("patched world: id " + std::to_string(id) + " not below the next id", 0);
-    }
+    if (n->is_stub()) return check_stub(*n->stub, below);
+    for (std::uint32_t i = 0; i < n->child_count; ++i) check_outside(n->children[i], below);
+    for (const PolygonId id : n->ids) check_id(id, below);
+  }
+
+  void check_id(PolygonId id, PolygonId below) const {
+    if (std::binary_search(ids_.begin(), ids_.end(), id))
+      throw DeltaError("patched world: id " + std::to_string(id) + " twice", 0);
+    if (id >= below)
+      throw DeltaError("patched world: id " + std::to_string(id) + " not below its counter", 0);
+  }
+
+  // An unloaded region: its ids are not here, only their range.
+  void check_stub(const StubInfo& stub, PolygonId below) const {
+    if (stub.max_id == 0) return;
+    const auto first = std::lower_bound(ids_.begin(), ids_.end(), stub.min_id);
+    if (first != ids_.end() && *first <= stub.max_id)
+      throw DeltaError(
+          "patched world: id " + std::to_string(*first) + " in the id range of an unloaded region",
+          0);
+    if (stub.max_id >= below)
+      throw DeltaError("patched world: an unloaded region's ids not below the next id", 0);
   }
 
   const LandscapeState& s_;
   const Delta& d_;
   LandscapeState next_;
+  bool region_ids_;
   std::set<const Node*> patched_;
   std::vector<PolygonId> ids_;
+  std::vector<TreePath> touched_regions_;  // regions patched below their node (region_ids)
 };
 
 }  // namespace

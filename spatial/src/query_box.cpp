@@ -6,6 +6,7 @@
 #include "edgeland/spatial/landscape.hpp"
 #include "node.hpp"
 #include "query_args.hpp"
+#include "regions.hpp"
 
 namespace edgeland {
 namespace {
@@ -16,6 +17,7 @@ using detail::NodePtr;
 template <class F>
 bool visit_cells_meeting(const NodePtr& n, const Box64& box, bool open, F&& f) {
   if (open ? !n->box.overlaps_open(box) : !n->box.overlaps(box)) return true;
+  detail::require_loaded(*n);
   if (n->is_cell()) return f(n);
   for (std::uint32_t i = 0; i < n->child_count; ++i)
     if (!visit_cells_meeting(n->children[i], box, open, f)) return false;

@@ -4,6 +4,7 @@
 #include "edgeland/spatial/landscape.hpp"
 #include "node.hpp"
 #include "query_args.hpp"
+#include "regions.hpp"
 
 namespace edgeland {
 
@@ -16,7 +17,7 @@ Material Landscape::material_at(Point64 p) const {
       p.y >= s_.world.max.y)
     return kEmpty;
   const Node* n = s_.root.get();
-  while (!n->is_cell()) n = &n->child_at(p);
+  for (detail::require_loaded(*n); !n->is_cell(); detail::require_loaded(*n)) n = &n->child_at(p);
   const PolygonSet& polys = n->polygon_set();
   for (std::size_t i = 0; i < polys.size(); ++i) {
     const Box64& b = n->boxes[i];

@@ -9,6 +9,7 @@
 #include "edgeland/spatial/landscape.hpp"
 #include "node.hpp"
 #include "query_args.hpp"
+#include "regions.hpp"
 
 namespace edgeland {
 namespace {
@@ -28,6 +29,7 @@ void cells_on(const NodePtr& n, const Segment& s, const Box64& reach,
   if (!n->box.overlaps(reach)) return;
   const auto range = clip_parameters(s, n->box);
   if (!range) return;
+  detail::require_loaded(*n);
   if (n->is_cell()) {
     out.push_back({range->t0, n.get()});
     return;

@@ -8,6 +8,10 @@
 //   (u8), vertex count (varint), each vertex as the zigzag varint deltas of x and y from the
 //   previous vertex (the first from (0, 0)),
 //   FNV-1a 64 of everything before it, u64.
+// Version 2 (a landscape with regions, LandscapeConfig::region_depth >= 0; a world without them
+// is still written as version 1, byte for byte as before): after grid_depth, region_depth i32 and
+// region_ids u8; with region_ids, each region's node writes its id counter (varint) after its
+// tag.
 #include <cstddef>
 #include <cstdint>
 #include <string_view>
@@ -16,6 +20,8 @@ namespace edgeland::detail::save_format {
 
 inline constexpr char kMagic[8] = {'E', 'D', 'G', 'E', 'L', 'A', 'N', 'D'};
 inline constexpr std::uint32_t kVersion = 1;
+inline constexpr std::uint32_t kRegionsVersion = 2;
+inline constexpr std::size_t kRegionHeaderBytes = 4 + 1;
 inline constexpr std::uint8_t kCellTag = 0;
 inline constexpr std::uint8_t kInnerTag = 1;
 // Magic, version, configuration (1 + 4 + 4 + 8 + 4), world, next id.

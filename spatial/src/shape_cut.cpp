@@ -8,7 +8,7 @@ namespace {
 
 // The cells an edit with this shape box descends into, in tree order.
 void touched_cells(const NodePtr& node, const Box64& shape_box, std::vector<const Node*>& out) {
-  if (!node->box.overlaps_open(shape_box)) return;
+  if (!node->box.overlaps_open(shape_box) || node->is_stub()) return;
   if (node->is_cell()) {
     out.push_back(node.get());
     return;

@@ -5,6 +5,7 @@
 #include <cstdint>
 
 #include "edgeland/kernel/bbox.hpp"
+#include "edgeland/spatial/types.hpp"
 
 namespace edgeland::detail {
 
@@ -26,5 +27,19 @@ class StateHash {
  private:
   std::uint64_t h_;
 };
+
+// The world box and the configuration, the start of the state hash and all of the world hash
+// (Landscape::world_hash). The region options only when they are on: without them the hashes
+// are what they always were (every pin stands).
+inline void add_world(StateHash& h, const Box64& world, const LandscapeConfig& c) noexcept {
+  h.add(world)
+      .add(static_cast<std::uint64_t>(c.tree))
+      .add(static_cast<std::uint64_t>(c.edge_cap))
+      .add(static_cast<std::uint64_t>(c.merge_below))
+      .add(static_cast<std::uint64_t>(c.min_cell_size))
+      .add(static_cast<std::uint64_t>(static_cast<std::int64_t>(c.grid_depth)));
+  if (c.region_depth >= 0)
+    h.add(static_cast<std::uint64_t>(c.region_depth)).add(std::uint64_t{c.region_ids});
+}
 
 }  // namespace edgeland::detail

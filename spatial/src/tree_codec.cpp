@@ -7,6 +7,7 @@
 
 #include "cell_split.hpp"
 #include "check.hpp"
+#include "regions.hpp"
 #include "save_format.hpp"
 
 namespace edgeland::detail {
@@ -20,6 +21,7 @@ constexpr std::uint32_t kMaxDepth = 64;
 
 void write_cell(ByteWriter& w, const Node& n) {
   w.u8(format::kCellTag);
+  if (n.region_next != 0) w.varint(n.region_next);
   const PolygonSet& polys = n.polygon_set();
   w.varint(polys.size());
   for (std::size_t i = 0; i < polys.size(); ++i) {
@@ -38,11 +40,13 @@ void write_cell(ByteWriter& w, const Node& n) {
 }  // namespace
 
 void write_tree(ByteWriter& w, const Node& n) {
+  require_loaded(n);
   if (n.is_cell()) {
     write_cell(w, n);
     return;
   }
   w.u8(format::kInnerTag);
+  if (n.region_next != 0) w.varint(n.region_next);
   for (std::uint32_t i = 0; i < n.child_count; ++i) write_tree(w, *n.children[i]);
 }
 
@@ -55,19 +59,35 @@ TreeReader::TreeReader(ByteReader& in, const LandscapeConfig& config, const Land
       cells_(cells),
       vertices_(vertices) {}
 
-NodePtr TreeReader::read(const Box64& box, std::uint32_t depth) {
+NodePtr TreeReader::read(const Box64& box, std::uint32_t depth, std::uint64_t index) {
   // Not reached by tests: a node at depth 64 has no side longer than 1, so read_inner refuses
   // its split first; the bound stands should the split rule ever change.
   if (depth > kMaxDepth) in_.fail("tree too deep");
   const auto tag = in_.fixed(1);
-  if (tag == format::kInnerTag) return read_inner(box, depth);
-  if (tag != format::kCellTag) in_.fail("unknown node tag");
-  return read_cell(box, depth);
+  if (tag != format::kInnerTag && tag != format::kCellTag) in_.fail("unknown node tag");
+  // A region with its own ids: its counter, then what lies below it in its id space.
+  const bool own_ids = config_.region_ids && is_region(config_, depth);
+  const Region outer = region_;
+  if (own_ids) region_ = {index, read_counter(index)};
+  const PolygonId counter = own_ids ? region_.counter : 0;
+  NodePtr node = tag == format::kInnerTag ? read_inner(box, depth, index, counter)
+                                          : read_cell(box, depth, counter);
+  region_ = outer;
+  return node;
+}
+
+PolygonId TreeReader::read_counter(std::uint64_t index) {
+  const PolygonId counter = in_.varint();
+  if (counter < region_first_id(index) || counter > region_id_end(index))
+    in_.fail("id counter " + std::to_string(counter) + " outside region " + std::to_string(index) +
+             "'s id space");
+  return counter;
 }
 
 // Whether the node may be split is known before its children are read, and whether they
 // should have been merged as soon as they are.
-NodePtr TreeReader::read_inner(const Box64& box, std::uint32_t depth) {
+NodePtr TreeReader::read_inner(const Box64& box, std::uint32_t depth, std::uint64_t index,
+                               PolygonId counter) {
   if (!can_split(box, config_)) in_.fail("a cell too small to split is split");
   if (config_.grid_depth >= 0 && static_cast<int>(depth) >= config_.grid_depth)
     in_.fail("a grid node split below the grid depth");
@@ -75,13 +95,14 @@ NodePtr TreeReader::read_inner(const Box64& box, std::uint32_t depth) {
   if (boxes.size() > in_.left() / format::kMinCellBytes) in_.fail("truncated tree");
   std::vector<NodePtr> children;
   children.reserve(boxes.size());
-  for (const Box64& b : boxes) children.push_back(read(b, depth + 1));
-  NodePtr node = make_inner(box, depth, children);
+  for (std::size_t i = 0; i < boxes.size(); ++i)
+    children.push_back(read(boxes[i], depth + 1, index * 4 + i));
+  NodePtr node = make_inner(box, depth, children, counter);
   refuse_problems([&](std::vector<std::string>& p) { check_inner(*node, config_, p); });
   return node;
 }
 
-NodePtr TreeReader::read_cell(const Box64& box, std::uint32_t depth) {
+NodePtr TreeReader::read_cell(const Box64& box, std::uint32_t depth, PolygonId counter) {
   if (++cells_ > limits_.max_cells)
     throw LimitExceeded(LimitExceeded::Limit::kCells, limits_.max_cells, cells_);
   const std::size_t start = in_.at();
@@ -103,15 +124,19 @@ NodePtr TreeReader::read_cell(const Box64& box, std::uint32_t depth) {
     in_.fail(std::string("cell content: ") + e.what());
   }
   content.labels = std::move(labels);
-  NodePtr cell = make_cell(box, depth, std::move(content), std::move(ids));
+  NodePtr cell = make_cell(box, depth, std::move(content), std::move(ids), counter);
   refuse_problems([&](std::vector<std::string>& p) { check_cell_content(*cell, config_, p); });
   return cell;
 }
 
 PolygonId TreeReader::read_id() {
   const PolygonId id = in_.varint();
-  if (id == 0 || id >= next_id_)
+  if (config_.region_ids) {
+    if (region_of_id(id) != region_.index || id == 0 || id >= region_.counter)
+      in_.fail("polygon id " + std::to_string(id) + " not below its region's counter");
+  } else if (id == 0 || id >= next_id_) {
     in_.fail("polygon id " + std::to_string(id) + " not in 1..next id - 1");
+  }
   ids_.push_back(id);
   return id;
 }

@@ -20,7 +20,7 @@ NodePtr replace_node(const std::vector<NodePtr>& chain, const TreePath& path, No
     std::vector<NodePtr> children(parent.children.begin(),
                                   parent.children.begin() + parent.child_count);
     children[path[level]] = std::move(node);
-    node = make_inner(parent.box, parent.depth, children);
+    node = make_inner(parent.box, parent.depth, children, parent.region_next);
   }
   return node;
 }

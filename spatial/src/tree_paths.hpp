@@ -12,7 +12,7 @@ namespace edgeland::detail {
 std::vector<NodePtr> nodes_on(const NodePtr& root, const TreePath& path);
 
 // The root of the tree with the last node of `chain` (nodes_on) replaced by `node`, every
-// ancestor rebuilt by make_inner.
+// ancestor rebuilt by make_inner (keeping its id counter).
 NodePtr replace_node(const std::vector<NodePtr>& chain, const TreePath& path, NodePtr node);
 
 // Tree order of paths (a parent before its children). A loop rather than vector's <=>, whose

@@ -45,7 +45,7 @@ std::vector<FixtureShape> fixtures_of(const box2d::Terrain& terrain) {
   return out;
 }
 
-// The scene of `edgeland demo --physics` (adapters/box2d/scene): 200 balls and boxes on a
+// The scene of `edgeland demo --physics` (demo/physics): 200 balls and boxes on a
 // layered world with hills, 3 blasts or fills near them per frame for 1,200 frames.
 TEST(PhysicsSimulation, BodiesStayOutOfSolidWhileTheTerrainChangesUnderThem) {
   box2d::PhysicsScene scene;
@@ -72,7 +72,10 @@ TEST(PhysicsSimulation, BodiesStayOutOfSolidWhileTheTerrainChangesUnderThem) {
   EXPECT_GT(2 * fell, debris);
   // The fixtures kept from change sets equal those of a terrain built from scratch.
   b2World fresh_world(b2Vec2(0, -10));
-  const box2d::Terrain fresh(fresh_world, scene.land(),
+  GameOptions options = box2d::PhysicsScene::game_options();
+  options.debris = false;
+  const GameDriver fresh_game(scene.land(), options);
+  const box2d::Terrain fresh(fresh_world, fresh_game,
                              box2d::PhysicsScene::terrain_options(box2d::PhysicsSceneOptions{}));
   EXPECT_EQ(fixtures_of(scene.terrain()), fixtures_of(fresh));
   // A static body per region with chains: none left empty by the updates, none missing.
@@ -124,9 +127,10 @@ Slide slide_a_box(AddTerrain add_terrain) {
 TEST(PhysicsSimulation, ABoxSlidesAcrossCellLinesWithoutBumps) {
   const Slide slide = slide_a_box([](b2World& world, const Landscape& land) {
     box2d::TerrainOptions options;
-    options.units.units_per_engine_unit = kUnitsPerMetre;
+    options.units_per_metre = kUnitsPerMetre;
     options.friction.fill(0);
-    return std::make_unique<box2d::Terrain>(world, land, options);
+    const GameDriver game(land);  // the terrain reads its chains once
+    return std::make_unique<box2d::Terrain>(world, game, options);
   });
   EXPECT_GE(slide.cell_lines_crossed, 6);
   EXPECT_LT(slide.largest_vy, 1e-3f);   // measured: 2e-6
@@ -154,6 +158,69 @@ TEST(PhysicsSimulation, PerPolygonLoopsMakeTheSameBoxBump) {
     return 0;
   });
   EXPECT_GT(std::max(slide.largest_vy, slide.largest_dvx), 1e-3f);  // measured: vy 3.6e-3
+}
+
+// Issue 36, point 7: in a world cornered at (10^6, 10^6) the debris body of an island appears
+// where the island was, in the terrain's own units (the corner is Box2D's origin).
+TEST(PhysicsSimulation, DebrisOfAFarWorldLandsWhereItsIslandWas) {
+  const Point64 corner{1'000'000, 1'000'000};
+  Landscape land({corner, {corner.x + 4096, corner.y + 4096}}, kEmpty);
+  land.fill(PolygonSet{{{corner.x, corner.y},
+                        {corner.x + 4096, corner.y},
+                        {corner.x + 4096, corner.y + 1000},
+                        {corner.x, corner.y + 1000}}},
+            1);
+  GameDriver game(std::move(land));
+  b2World world(b2Vec2(0, -10));
+  box2d::TerrainOptions options;
+  options.units_per_metre = kUnitsPerMetre;
+  box2d::Terrain terrain(world, game, options);
+  EXPECT_EQ(terrain.units().origin, corner);
+  // A moat around a 180 x 180 block centred 2048 x 768 units from the corner: 64 m, 24 m.
+  const std::int64_t x = corner.x + 1948, y = corner.y + 668;
+  const PolygonSet moat{
+      {{x - 10, y - 10}, {x + 190, y - 10}, {x + 190, y}, {x - 10, y}},
+      {{x - 10, y + 180}, {x + 190, y + 180}, {x + 190, y + 190}, {x - 10, y + 190}},
+      {{x - 10, y}, {x, y}, {x, y + 180}, {x - 10, y + 180}},
+      {{x + 180, y}, {x + 190, y}, {x + 190, y + 180}, {x + 180, y + 180}}};
+  const GameUpdate u = game.apply(Edit::carve(ValidSet(moat)));
+  terrain.apply(u);
+  ASSERT_EQ(u.debris.size(), 1u);
+  const b2Body* body = box2d::make_debris_body(world, u.debris.front(), terrain.units());
+  EXPECT_FLOAT_EQ(body->GetPosition().x, 2038.0f / kUnitsPerMetre);
+  EXPECT_FLOAT_EQ(body->GetPosition().y, 758.0f / kUnitsPerMetre);
+  EXPECT_NEAR(body->GetMass(), 180.0f * 180.0f / (kUnitsPerMetre * kUnitsPerMetre), 1e-3f);
+
+  // An explicit origin (0, 0) is taken as given, not as "unset": the same debris then lies at the
+  // landscape's own coordinates.
+  b2World far_world(b2Vec2(0, -10));
+  box2d::TerrainOptions at_zero = options;
+  at_zero.origin = Point64{0, 0};
+  box2d::Terrain zero_terrain(far_world, game, at_zero);
+  EXPECT_EQ(zero_terrain.units().origin, (Point64{0, 0}));
+  const b2Body* far_body =
+      box2d::make_debris_body(far_world, u.debris.front(), zero_terrain.units());
+  EXPECT_FLOAT_EQ(far_body->GetPosition().x, static_cast<float>(x + 90) / kUnitsPerMetre);
+  EXPECT_FLOAT_EQ(far_body->GetPosition().y, static_cast<float>(y + 90) / kUnitsPerMetre);
+}
+
+// A world reaching past 2^24 units from the origin is refused, naming the corner.
+TEST(PhysicsSimulation, AWorldFloatsCannotHoldIsRefused) {
+  const std::int64_t far = std::int64_t{1} << 25;
+  GameDriver game(Landscape({{0, 0}, {far, 1024}}, kEmpty));
+  b2World world(b2Vec2(0, -10));
+  try {
+    box2d::Terrain terrain(world, game);
+    FAIL() << "a world 2^25 units wide was taken";
+  } catch (const box2d::OutOfEngineRange& e) {
+    EXPECT_EQ(e.point.x, far);
+    EXPECT_EQ(e.origin, (Point64{0, 0}));
+    EXPECT_EQ(e.limit, box2d::kMaxEngineOffset);
+  }
+  // The same world with its origin in the middle fits.
+  box2d::TerrainOptions middle;
+  middle.origin = Point64{far / 2, 0};
+  EXPECT_NO_THROW(box2d::Terrain(world, game, middle));
 }
 
 }  // namespace

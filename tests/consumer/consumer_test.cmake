@@ -12,6 +12,7 @@ add_test(NAME install.consumer
     -DCONSUMER_SOURCE_DIR=${CMAKE_CURRENT_LIST_DIR}
     -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}/consumer
     -DCXX_COMPILER=${CMAKE_CXX_COMPILER}
+    -DC_COMPILER=${CMAKE_C_COMPILER}
     -DBUILD_TYPE=${CMAKE_BUILD_TYPE}
     "-DCXX_FLAGS=${consumer_flags}"
     -P ${CMAKE_CURRENT_LIST_DIR}/run_consumer_test.cmake)

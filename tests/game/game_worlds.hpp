@@ -5,26 +5,19 @@
 #include <cstdint>
 #include <functional>
 
+#include "edgeland/demo/splitmix64.hpp"
 #include "edgeland/spatial/landscape.hpp"
 #include "shape_builders.hpp"
 
 namespace edgeland::test {
 
-class SplitMix {
+// The project's one seeded generator (demo/: splitmix64.hpp) with draws in [lo, hi].
+class SplitMix : public demo::SplitMix64 {
  public:
-  explicit SplitMix(std::uint64_t seed) : s_(seed) {}
-  std::uint64_t next() {
-    std::uint64_t z = (s_ += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-  }
+  using demo::SplitMix64::SplitMix64;
   std::int64_t in(std::int64_t lo, std::int64_t hi) {  // [lo, hi]
-    return lo + static_cast<std::int64_t>(next() % static_cast<std::uint64_t>(hi - lo + 1));
+    return lo + static_cast<std::int64_t>(below(static_cast<std::uint64_t>(hi - lo + 1)));
   }
-
- private:
-  std::uint64_t s_;
 };
 
 // A convex blast of about radius r around c: the hull of random points on a square ring.

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <utility>
 
 #include "edgeland/kernel/area.hpp"
 #include "edgeland/kernel/validate.hpp"
@@ -58,6 +59,23 @@ TEST(LogParser, KeywordWithoutShapeIsMissingShape) {
   } catch (const LogError& e) {
     EXPECT_EQ(e.kind, LogErrorKind::kMissingShape);
     EXPECT_EQ(e.line, 2u);
+  }
+}
+
+TEST(LogParser, EveryErrorKindHasItsDocumentedStableName) {
+  // The kinds of the errors the parser throws, named as clip_log.hpp documents ("unknown-step"
+  // ...): a tool reporting them in JSON depends on these strings staying the same.
+  const std::pair<const char*, const char*> lines[] = {
+      {"Union POLYGON ((0 0, 1 0, 1 1, 0 0))", "unknown-step"},
+      {"difference", "missing-shape"},
+      {"set POLYGON ((0 0, 1.5 0, 1 1, 0 0))", "bad-shape"}};
+  for (const auto& [line, name] : lines) {
+    try {
+      parse_log_line(line, 1);
+      ADD_FAILURE() << "no error for: " << line;
+    } catch (const LogError& e) {
+      EXPECT_STREQ(log_error_kind_name(e.kind), name) << line;
+    }
   }
 }
 

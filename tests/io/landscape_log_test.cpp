@@ -10,11 +10,14 @@
 #include <set>
 #include <string>
 #include <tuple>
+#include <variant>
 
 #include "edgeland/clip/clip.hpp"
+#include "edgeland/demo/integer_trig.hpp"
+#include "edgeland/demo/splitmix64.hpp"
 #include "edgeland/io/log_kind.hpp"
-#include "integer_trig.hpp"
-#include "splitmix64.hpp"
+#include "edgeland/spatial/delta.hpp"
+#include "edgeland/spatial/log_format.hpp"
 
 namespace edgeland::log {
 namespace {
@@ -169,6 +172,45 @@ TEST(LandscapeLogParser, TheWorldComesFirstAndOnlyOnce) {
   }
 }
 
+TEST(LandscapeLogParser, EveryErrorKindHasItsDocumentedStableName) {
+  // The kinds of real errors, named as landscape_log.hpp documents ("missing-world" ...): a tool
+  // reporting them in JSON depends on these strings staying the same, and no two are alike.
+  const auto name_of = [](std::string_view text) {
+    const ParsedLandscapeLog parsed = parse_landscape_log(text);
+    EXPECT_TRUE(parsed.error.has_value()) << text;
+    return std::string(parsed.error ? landscape_log_error_kind_name(parsed.error->kind) : "");
+  };
+  const std::string world = "world 0 0 9 9\n";
+  EXPECT_EQ(name_of(world + "dig " + kBox), "unknown-command");
+  EXPECT_EQ(name_of(std::string("carve ") + kBox), "missing-world");
+  EXPECT_EQ(name_of(world + world), "repeated-world");
+  EXPECT_EQ(name_of(world + "fill 256 " + kBox), "bad-argument");
+  EXPECT_EQ(name_of(world + "fill 1"), "missing-shape");
+  EXPECT_EQ(name_of(world + "carve POLYGON ((0 0, 1.5 0, 1 1, 0 0))"), "bad-shape");
+}
+
+TEST(LandscapeLogFormat, AnEditsLineIsTheLineTheLandscapeRecordsForIt) {
+  // log_format.hpp's writer of a batch's Edit and the landscape's own recorder write one
+  // format: applying each edit to a recording landscape appends exactly edit_line(edit), and
+  // the reader takes it back as the same kind.
+  const ValidSet box(PolygonSet{{{10, 10}, {20, 10}, {20, 30}, {10, 30}}});
+  const Edit edits[] = {Edit::carve(box), Edit::fill(box, 3), Edit::fill_empty(box, 5),
+                        Edit::replace(box, 3, 7),
+                        Edit::relabel(box, MaterialMap().set(7, 2).set(2, 7))};
+  Landscape world({{0, 0}, {100, 50}}, 1);
+  world.start_log();
+  for (const Edit& edit : edits) {
+    const std::string before = world.log();
+    edgeland::apply_edit(world, edit);
+    const std::string line = edit_line(edit);
+    EXPECT_EQ(world.log(), before + line);
+    const std::optional<LandscapeCommand> read =
+        parse_landscape_line(line.substr(0, line.size() - 1), 1);
+    ASSERT_TRUE(read && std::holds_alternative<LandscapeEdit>(*read)) << line;
+    EXPECT_EQ(std::get<LandscapeEdit>(*read).kind, edit.kind) << line;
+  }
+}
+
 TEST(LandscapeLogParser, StopsAtTheFirstBadLineKeepingTheEditsBefore) {
   const std::string text = std::string("world 0 0 99 99\nfill 1 ") + kBox + "\ncarve " + kBox +
                            "\nfill 300 " + kBox + "\ncarve " + kBox + "\n";
@@ -254,13 +296,13 @@ TEST(LandscapeLogApply, WorldMaterialFillsTheWorld) {
 
 // A ring of n points around c with radii in [r/2, r] from the integer table: rough enough to
 // snap, many-sided enough to split cells (edge_cap 128) and small enough to merge them again.
-Ring random_ring(cli::SplitMix64& random, const Box64& area) {
+Ring random_ring(demo::SplitMix64& random, const Box64& area) {
   const Point64 c{random.between(area.min.x, area.max.x), random.between(area.min.y, area.max.y)};
   const std::int64_t r = random.between(3, 120);
   const int n = static_cast<int>(random.between(3, 40));
   Ring ring;
   for (int i = 0; i < n; ++i) {
-    ring.push_back(cli::polar(c, r * random.between(50, 100) / 100, i * cli::kFullTurn / n));
+    ring.push_back(demo::polar(c, r * random.between(50, 100) / 100, i * demo::kFullTurn / n));
   }
   return ring;
 }
@@ -269,7 +311,7 @@ Ring random_ring(cli::SplitMix64& random, const Box64& area) {
 // relabels of random maps of 0..6),
 // each shape a valid set made by the OGC import; some reach past the world box.
 void random_edits(Landscape& l, std::uint64_t seed, int count) {
-  cli::SplitMix64 random(seed);
+  demo::SplitMix64 random(seed);
   const Box64 area{{l.world().min.x - 50, l.world().min.y - 50},
                    {l.world().max.x + 50, l.world().max.y + 50}};
   for (int i = 0; i < count; ++i) {

@@ -69,6 +69,16 @@ RC_GTEST_PROP(WktReaderOracle, AgreesOnTokenSoup, ()) {
   RC_ASSERT(disagreement("MULTIPOLYGON (" + text).empty());
 }
 
+TEST(WktReaderOracle, AgreesOnAStrayCommaAfterAnEmptyMember) {
+  // Found by AgreesOnTokenSoup (seed 2579270481056419704): the reference dropped the comma with
+  // the EMPTY member and read "MULTIPOLYGON (EMPTY , )" as the empty set; both refuse it now.
+  for (const char* text : {"MULTIPOLYGON (EMPTY , ) ", "MULTIPOLYGON (EMPTY, )",
+                           "MULTIPOLYGON (((0 0, 1 0, 0 1, 0 0)), EMPTY, )"}) {
+    EXPECT_EQ(disagreement(text), "");
+    EXPECT_THROW(read_wkt(text), WktError) << text;
+  }
+}
+
 // A valid text with one token inserted, removed or replaced: the defects a file has in practice.
 RC_GTEST_PROP(WktReaderOracle, AgreesOnValidTextsWithOneEdit, ()) {
   const std::string valid =

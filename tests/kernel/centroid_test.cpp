@@ -11,6 +11,7 @@
 #include "edgeland/kernel/errors.hpp"
 #include "edgeland/kernel/triangulate.hpp"
 #include "edgeland/kernel/validate.hpp"
+#include "support/big_int.hpp"
 #include "support/generators.hpp"
 
 namespace edgeland::testing {
@@ -21,14 +22,7 @@ using boost::multiprecision::cpp_rational;
 
 constexpr std::int64_t B = kCoordBound;
 
-cpp_int big(Int128 v) {
-  const bool negative = v < 0;
-  unsigned __int128 u = unsigned_abs(v);
-  cpp_int out = static_cast<std::uint64_t>(u >> 64);
-  out <<= 64;
-  out += static_cast<std::uint64_t>(u);
-  return negative ? cpp_int(-out) : out;
-}
+using edgeland::test::big;
 
 struct RationalXY {
   cpp_rational x, y;

@@ -10,6 +10,7 @@
 #include "edgeland/kernel/point.hpp"
 #include "edgeland/kernel/polygon.hpp"
 #include "edgeland/kernel/predicates.hpp"
+#include "support/big_int.hpp"
 
 namespace edgeland::test {
 
@@ -26,8 +27,7 @@ struct QPoint {
 
 inline QPoint q(Point64 p) { return {cpp_rational(p.x), cpp_rational(p.y)}; }
 inline QPoint q(const RationalPoint& p) {
-  return {cpp_rational(cpp_int(p.x_num), cpp_int(p.den)),
-          cpp_rational(cpp_int(p.y_num), cpp_int(p.den))};
+  return {cpp_rational(big(p.x_num), big(p.den)), cpp_rational(big(p.y_num), big(p.den))};
 }
 
 inline cpp_int ref_cross(const cpp_int& ax, const cpp_int& ay, const cpp_int& bx,

@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "exact_reference.hpp"
+#include "support/big_int.hpp"
 
 namespace edgeland::test {
 namespace {
@@ -14,7 +15,7 @@ namespace {
 constexpr Int128 kMax = std::numeric_limits<Int128>::max();
 constexpr Int128 kMin = std::numeric_limits<Int128>::min();
 
-cpp_rational value(const Fraction& f) { return cpp_rational(cpp_int(f.num), cpp_int(f.den)); }
+cpp_rational value(const Fraction& f) { return cpp_rational(big(f.num), big(f.den)); }
 
 int ref_compare(const Fraction& a, const Fraction& b) {
   const cpp_rational d = value(a) - value(b);
@@ -90,7 +91,7 @@ RC_GTEST_PROP(MultiplyWideProperty, MatchesCppInt, ()) {
   const auto a = static_cast<unsigned __int128>(gen_int128());
   const auto b = static_cast<unsigned __int128>(gen_int128());
   const UInt256 p = multiply_wide(a, b);
-  RC_ASSERT(((cpp_int(p.hi) << 128) | cpp_int(p.lo)) == cpp_int(a) * cpp_int(b));
+  RC_ASSERT(((big(p.hi) << 128) | big(p.lo)) == cpp_int(a) * cpp_int(b));
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 
 #include "exact_reference.hpp"
 #include "random_geometry.hpp"
+#include "support/big_int.hpp"
 
 namespace edgeland::test {
 namespace {
@@ -17,12 +18,12 @@ TEST(GridCells, FullRangeBoxNeedsMoreThan64Bits) {
   // compared with it exceed 2^64.
   const Box64 all{{-B, -B}, {B, B}};
   const cpp_int side = cpp_int(2) * B + 1;
-  EXPECT_EQ(cpp_int(point_count(all)), side * side);
-  EXPECT_EQ(cpp_int(cells_covering(all, 1)), side * side);
+  EXPECT_EQ(big(point_count(all)), side * side);
+  EXPECT_EQ(big(cells_covering(all, 1)), side * side);
   EXPECT_EQ(cells_covering(all, std::int64_t{1} << 32), 1);
   EXPECT_EQ(cells_covering(all, std::int64_t{1} << 31), 4);  // 2^32 - 1 points: two columns
-  EXPECT_EQ(cpp_int(cells_area(std::int64_t{1} << 33, std::uint64_t{1} << 40)), cpp_int(1) << 106);
-  EXPECT_EQ(cpp_int(block_size(kMaxGridSide, kMaxGridSide)), cpp_int(1) << 80);
+  EXPECT_EQ(big(cells_area(std::int64_t{1} << 33, std::uint64_t{1} << 40)), cpp_int(1) << 106);
+  EXPECT_EQ(big(block_size(kMaxGridSide, kMaxGridSide)), cpp_int(1) << 80);
   EXPECT_EQ(point_count(Box64{{7, -3}, {7, -3}}), 1);
 }
 
@@ -35,9 +36,9 @@ RC_GTEST_PROP(GridCellsProperty, MatchCeilingDivisionsOfTheBox, ()) {
       *rc::gen::element<std::int64_t>(1, 2, 3, 1000, std::int64_t{1} << 33, kMaxGridSide);
   const std::uint64_t n = *rc::gen::inRange<std::uint64_t>(0, std::uint64_t{1} << 40);
   const cpp_int w = cpp_int(box.max.x) - box.min.x + 1, h = cpp_int(box.max.y) - box.min.y + 1;
-  RC_ASSERT(cpp_int(point_count(box)) == w * h);
-  RC_ASSERT(cpp_int(cells_covering(box, side)) == ceil_div(w, side) * ceil_div(h, side));
-  RC_ASSERT(cpp_int(cells_area(side, n)) == cpp_int(side) * side * n);
+  RC_ASSERT(big(point_count(box)) == w * h);
+  RC_ASSERT(big(cells_covering(box, side)) == ceil_div(w, side) * ceil_div(h, side));
+  RC_ASSERT(big(cells_area(side, n)) == cpp_int(side) * side * n);
 }
 
 }  // namespace

@@ -6,11 +6,12 @@
 
 #include "exact_reference.hpp"
 #include "random_geometry.hpp"
+#include "support/big_int.hpp"
 
 namespace edgeland::test {
 namespace {
 
-using U = unsigned __int128;
+using U = UInt128;
 
 TEST(Isqrt, SmallValuesAndPerfectSquares) {
   EXPECT_EQ(isqrt(0), U(0));
@@ -49,8 +50,8 @@ TEST(PerimeterBounds, LongestDiagonalAtTheBound) {
   const PerimeterBounds b = perimeter_bounds(Ring{{-B, -B}, {B, B}});
   const cpp_int squared = 2 * cpp_int(2 * B) * (2 * B);
   const cpp_int root = sqrt(squared);
-  EXPECT_EQ(cpp_int(b.lo), 2 * root);
-  EXPECT_EQ(cpp_int(b.hi), 2 * (root + 1));
+  EXPECT_EQ(big(b.lo), 2 * root);
+  EXPECT_EQ(big(b.hi), 2 * (root + 1));
 }
 
 TEST(PerimeterBounds, SetSumsItsMembers) {
@@ -69,7 +70,7 @@ RC_GTEST_PROP(IsqrtProperty, MatchesCppIntSqrt, ()) {
     n = r * r - U(*rc::gen::inRange(0, 2)) + (r == 0 ? 1 : 0);
   }
   const U root = isqrt(n);
-  RC_ASSERT(cpp_int(root) == sqrt(cpp_int(n)));
+  RC_ASSERT(big(root) == sqrt(big(n)));
 }
 
 RC_GTEST_PROP(PerimeterBoundsProperty, BracketsEveryEdgeExactly, ()) {
@@ -84,8 +85,8 @@ RC_GTEST_PROP(PerimeterBoundsProperty, BracketsEveryEdgeExactly, ()) {
     hi += root * root == squared ? root : root + 1;
   }
   const PerimeterBounds b = perimeter_bounds(ring);
-  RC_ASSERT(cpp_int(b.lo) == lo);
-  RC_ASSERT(cpp_int(b.hi) == hi);
+  RC_ASSERT(big(b.lo) == lo);
+  RC_ASSERT(big(b.hi) == hi);
   RC_ASSERT(b.lo <= b.hi);
   RC_ASSERT(b.hi - b.lo <= Int128(ring.size()));
 }

@@ -7,6 +7,7 @@
 #include "edgeland/kernel/point_in_polygon.hpp"
 #include "exact_reference.hpp"
 #include "random_geometry.hpp"
+#include "support/big_int.hpp"
 
 namespace edgeland::test {
 namespace {
@@ -14,7 +15,7 @@ namespace {
 constexpr std::int64_t D = kMaxRayDirection;
 const Ring kSquare{{0, 0}, {2, 0}, {2, 2}, {0, 2}};
 
-cpp_rational value(const Fraction& f) { return cpp_rational(cpp_int(f.num), cpp_int(f.den)); }
+cpp_rational value(const Fraction& f) { return cpp_rational(big(f.num), big(f.den)); }
 
 TEST(FirstHit, LongestDirectionIntoFullRangeDiamond) {
   // From the corner (-B, -B) along (2B+1, 2B+1): the diamond |x| + |y| = B is entered at

@@ -17,6 +17,7 @@
 #include "edgeland/kernel/validate.hpp"
 #include "exact_reference.hpp"
 #include "random_geometry.hpp"
+#include "support/big_int.hpp"
 
 namespace edgeland::test {
 namespace {
@@ -45,7 +46,7 @@ QPoint moved(const QPoint& p) {
   return {p.x + eps, p.y + eps * eps};
 }
 
-cpp_rational as_rational(const Fraction& f) { return cpp_rational(cpp_int(f.num), cpp_int(f.den)); }
+cpp_rational as_rational(const Fraction& f) { return cpp_rational(big(f.num), big(f.den)); }
 
 QPoint at(const Segment& s, const cpp_rational& t) {
   return {s.a.x + t * (cpp_int(s.b.x) - s.a.x), s.a.y + t * (cpp_int(s.b.y) - s.a.y)};

@@ -1,7 +1,7 @@
 // Landscape::load on files broken in one place each, below the fields the save file codec
-// writes (fuzz/save_file.hpp): bytes after the tree, a tree cut short, a varint past 64 bits,
-// a count past the file, an unknown node tag, coordinates past the bound, an id twice, and the
-// stream itself failing or passing the limits. Each is refused with a LoadError naming what is
+// writes (tests/support/save_file.hpp): bytes after the tree, a tree cut short, a varint past 64
+// bits, a count past the file, an unknown node tag, coordinates past the bound, an id twice, and
+// the stream itself failing or passing the limits. Each is refused with a LoadError naming what is
 // wrong (spatial/src/load.cpp), with the checksum made right first: it is no defence.
 #include <gtest/gtest.h>
 

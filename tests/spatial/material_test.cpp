@@ -31,6 +31,14 @@ static_assert(std::is_convertible_v<std::uint8_t, Material>);
 static_assert(Material(7).value() == 7 && Material(7) == 7 && Material(3) < Material(7));
 static_assert(!kEmpty.solid() && Material(1).solid());
 
+// A game's unscoped enumeration of materials converts like its numbers (issue 36, point 7: it
+// was a compile error); an out-of-range enumerator is refused like any number; a scoped one
+// still does not convert (tests/spatial/material_scoped_enum.cpp: the message says how to pass it).
+enum GameMaterial { kBedrock = 1, kRock = 2, kNotAMaterial = 300 };
+enum class ScopedMaterial { kRock = 2 };
+static_assert(std::is_convertible_v<GameMaterial, Material> && Material(kRock) == Material(2));
+static_assert(kConstantMaterial<kBedrock> && !std::is_convertible_v<ScopedMaterial, Material>);
+
 std::int64_t refused_number(auto number) {
   try {
     const Material m(number);
@@ -39,6 +47,14 @@ std::int64_t refused_number(auto number) {
     return e.number;
   }
   return 0;
+}
+
+TEST(Material, AnUnscopedEnumeratorIsItsNumber) {
+  Landscape world({{0, 0}, {64, 64}}, kBedrock);
+  world.fill(PolygonSet{{{0, 0}, {10, 0}, {10, 10}, {0, 10}}}, kRock);
+  EXPECT_EQ(world.material_at({5, 5}), kRock);
+  EXPECT_EQ(world.material_at({50, 50}), kBedrock);
+  EXPECT_EQ(refused_number(kNotAMaterial), 300);
 }
 
 TEST(Material, ANumberOutsideTheRangeIsRefusedWithTheNumber) {

@@ -1,6 +1,6 @@
 // Save files are untrusted (issue 27, points 1-4): hostile files built field by field with the
-// load fuzzer's own codec (fuzz/save_file.hpp, which shares no code with the library), each
-// refused with a LoadError or LimitExceeded before the work it asks for is done, and never a
+// load fuzzer's own codec (tests/support/save_file.hpp, which shares no code with the library),
+// each refused with a LoadError or LimitExceeded before the work it asks for is done, and never a
 // world that fails check().
 #include "save_file.hpp"
 

@@ -6,26 +6,19 @@
 #include <cstdint>
 #include <vector>
 
+#include "edgeland/demo/splitmix64.hpp"
 #include "edgeland/kernel/polygon.hpp"
 
 namespace edgeland::testing {
 
-// Deterministic integers for large inputs (the same sequence on every platform).
-class SplitMix64 {
+// Deterministic integers for large inputs: the project's one seeded generator (demo/:
+// splitmix64.hpp) as a `draw(lo, hi)` in [lo, hi), the same sequence on every platform.
+class SplitMix64 : public demo::SplitMix64 {
  public:
-  explicit SplitMix64(std::uint64_t seed) : state_(seed) {}
-  std::uint64_t next() {
-    std::uint64_t z = (state_ += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-  }
+  using demo::SplitMix64::SplitMix64;
   std::int64_t operator()(std::int64_t lo, std::int64_t hi) {
-    return lo + static_cast<std::int64_t>(next() % static_cast<std::uint64_t>(hi - lo));
+    return lo + static_cast<std::int64_t>(below(static_cast<std::uint64_t>(hi - lo)));
   }
-
- private:
-  std::uint64_t state_;
 };
 
 // The star-shaped ring center + d over the directions d sorted counter-clockwise by angle,

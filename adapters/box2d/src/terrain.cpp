@@ -3,9 +3,8 @@
 #include "edgeland/box2d/terrain.hpp"
 
 #include <algorithm>
+#include <string>
 #include <vector>
-
-#include "edgeland/kernel/convex_pieces.hpp"
 
 namespace edgeland::box2d {
 namespace {
@@ -38,21 +37,70 @@ std::vector<Run> runs_of(const SurfaceChain& c) {
 
 }  // namespace
 
+namespace {
+
+// The origin's rule (terrain.hpp, UNITS) and the float range, checked on the world's corners.
+EngineUnits engine_units(const TerrainOptions& options, const Box64& world) {
+  const EngineUnits units{options.origin.value_or(world.min), options.units_per_metre};
+  for (const Point64 corner :
+       {world.min, world.max, Point64{world.min.x, world.max.y}, Point64{world.max.x, world.min.y}})
+    require_in_engine_range(corner, units.origin);
+  return units;
+}
+
+}  // namespace
+
+OutOfEngineRange::OutOfEngineRange(Point64 p, Point64 o)
+    : Error("point (" + std::to_string(p.x) + " " + std::to_string(p.y) + ") lies more than 2^24 " +
+            "units from the engine origin (" + std::to_string(o.x) + " " + std::to_string(o.y) +
+            "): Box2D's floats cannot hold it exactly"),
+      point(p),
+      origin(o) {}
+
+void require_in_engine_range(Point64 p, Point64 origin) {
+  const auto far = [](std::int64_t a, std::int64_t b) {
+    return static_cast<Int128>(a) - b > kMaxEngineOffset ||
+           static_cast<Int128>(b) - a > kMaxEngineOffset;
+  };
+  if (far(p.x, origin.x) || far(p.y, origin.y)) throw OutOfEngineRange(p, origin);
+}
+
 b2Vec2 to_b2(const EngineUnits& units, Point64 p) {
   const EngineVec v = units.to_engine(p);
   return {static_cast<float>(v.x), static_cast<float>(v.y)};
 }
 
-Terrain::Terrain(b2World& world, const Landscape& land, const TerrainOptions& options)
+Terrain::Terrain(b2World& world, const GameDriver& game, const TerrainOptions& options)
     : world_(world),
-      units_(options.units),
+      units_(engine_units(options, game.landscape().world())),
       friction_(options.friction),
-      tracker_(land, options.surface),
-      world_box_(land.world()),
+      world_box_(game.landscape().world()),
       grid_(std::max<std::int64_t>(1, options.body_grid)),
       bodies_(static_cast<std::size_t>(grid_ * grid_), nullptr) {
-  if (units_.origin == Point64{}) units_.origin = land.world().min;
-  for (const auto& [id, chain] : tracker_.chains()) add(id, chain);
+  for (const auto& [id, chain] : game.chains()) add(id, chain);
+  reserve_proxies(options.reserve_proxies.value_or(
+      std::max(kDefaultReservedProxies, 2 * static_cast<std::size_t>(world_.GetProxyCount()))));
+}
+
+// BROAD PHASE (terrain.hpp): a zig-zag chain of `count` edges a unit of Box2D's space apart,
+// beyond the world's lower-left corner (nothing there to pair with), stepped over and destroyed.
+void Terrain::reserve_proxies(std::size_t count) {
+  if (count <= static_cast<std::size_t>(world_.GetProxyCount())) return;
+  const b2Vec2 corner = to_b2(units_, world_box_.min);
+  b2BodyDef def;
+  def.type = b2_staticBody;
+  def.position.Set(corner.x - 1000.0f, corner.y - 1000.0f);
+  b2Body* scratch = world_.CreateBody(&def);
+  std::vector<b2Vec2>& v = vertices_;
+  v.clear();
+  for (std::size_t i = 0; i <= count; ++i)
+    v.push_back({static_cast<float>(i % 512) * 0.5f,
+                 static_cast<float>(i / 512) * 0.5f + static_cast<float>(i % 2) * 0.25f});
+  b2ChainShape chain;
+  chain.CreateChain(v.data(), static_cast<int32>(v.size()), v.front(), v.back());
+  scratch->CreateFixture(&chain, 0.0f);
+  world_.Step(0.0f, 0, 0);  // the broad phase forgets the new proxies (else each destroy scans)
+  world_.DestroyBody(scratch);
 }
 
 Terrain::~Terrain() {
@@ -101,9 +149,10 @@ void Terrain::add(ChainId id, const SurfaceChain& c) {
   record.region = region;
   std::vector<b2Fixture*>& list = record.fixtures;
   const std::size_t n = c.points.size();
+  std::vector<b2Vec2>& v = vertices_;
   for (const Run& run : runs_of(c)) {
     b2ChainShape shape;
-    std::vector<b2Vec2> v;
+    v.clear();
     if (c.closed && run.segments == n) {
       for (const Point64& p : c.points) v.push_back(to_b2(units_, p));
       shape.CreateLoop(v.data(), static_cast<int32>(v.size()));
@@ -136,10 +185,10 @@ void Terrain::remove(ChainId id, std::vector<std::size_t>& emptied) {
 
 // Removals first, then additions (a region keeps its body across the update); bodies left
 // without fixtures are destroyed last.
-void Terrain::apply(const ChainUpdate& update) {
+void Terrain::apply(const GameUpdate& update) {
   std::vector<std::size_t> emptied;
-  for (ChainId id : update.removed) remove(id, emptied);
-  for (const auto& [id, chain] : update.added) add(id, chain);
+  for (ChainId id : update.chains.removed) remove(id, emptied);
+  for (const auto& [id, chain] : update.chains.added) add(id, chain);
   for (std::size_t region : emptied) {
     b2Body*& body = bodies_[region];
     if (body == nullptr || body->GetFixtureList() != nullptr) continue;
@@ -148,43 +197,37 @@ void Terrain::apply(const ChainUpdate& update) {
   }
 }
 
-ChainUpdate Terrain::update(const Landscape& land, const ChangeSet& changes) {
-  ChainUpdate u = tracker_.update(land, changes);
-  apply(u);
-  return u;
-}
-
-ChainUpdate Terrain::resync(const Landscape& land) {
-  ChainUpdate u = tracker_.resync(land);
-  apply(u);
-  return u;
-}
-
-b2Body* make_debris_body(b2World& world, const DetachedIsland& island, const EngineUnits& units,
+// Fixtures made massless, then the density set on each and the mass computed once: b2Body's
+// CreateFixture recomputes the mass over all fixtures whenever one has density (1,601 pieces
+// cost 26-35 ms that way; issue 35).
+b2Body* make_debris_body(b2World& world, const Debris& debris, const EngineUnits& units,
                          const DebrisOptions& options) {
-  const EngineVec centre = units.to_engine(island.centroid);
+  require_in_engine_range(debris.bounds.min, units.origin);
+  require_in_engine_range(debris.bounds.max, units.origin);
+  const EngineVec centre = units.to_engine(debris.centroid);
   b2BodyDef def;
   def.type = b2_dynamicBody;
   def.position.Set(static_cast<float>(centre.x), static_cast<float>(centre.y));
   b2Body* body = world.CreateBody(&def);
-  for (const DetachedIsland::Region& region : island.regions)
-    for (const Polygon& polygon : region.polygons)
-      for (const Polygon& piece : convex_pieces(polygon, options.max_piece_vertices)) {
-        std::vector<b2Vec2> v;
-        for (const Point64& p : piece) {
-          const EngineVec e = units.to_engine(p);
-          v.push_back({static_cast<float>(e.x - centre.x), static_cast<float>(e.y - centre.y)});
-        }
-        b2PolygonShape shape;
-        shape.Set(v.data(), static_cast<int32>(v.size()));
-        b2FixtureDef fixture;
-        fixture.shape = &shape;
-        fixture.density = options.density;
-        fixture.friction = options.friction;
-        fixture.restitution = options.restitution;
-        fixture.userData.pointer = region.material.value();
-        body->CreateFixture(&fixture);
-      }
+  std::vector<b2Vec2> v;
+  for (const DebrisPiece& piece : debris.pieces) {
+    v.clear();
+    for (const Point64& p : piece.polygon) {
+      const EngineVec e = units.to_engine(p);
+      v.push_back({static_cast<float>(e.x - centre.x), static_cast<float>(e.y - centre.y)});
+    }
+    b2PolygonShape shape;
+    shape.Set(v.data(), static_cast<int32>(v.size()));
+    b2FixtureDef fixture;
+    fixture.shape = &shape;
+    fixture.density = 0;
+    fixture.friction = options.friction;
+    fixture.restitution = options.restitution;
+    fixture.userData.pointer = piece.material.value();
+    body->CreateFixture(&fixture);
+  }
+  for (b2Fixture* f = body->GetFixtureList(); f; f = f->GetNext()) f->SetDensity(options.density);
+  body->ResetMassData();
   return body;
 }
 

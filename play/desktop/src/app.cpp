@@ -7,20 +7,21 @@
 #include <fstream>
 #include <optional>
 
+#include "edgeland/demo/landscape.hpp"
 #include "picture.hpp"
 
 namespace edgeland::play {
 namespace {
 
-constexpr Material kWater = 5;
+using demo::kWater;
 
 bool solid(Material m) { return m != kEmpty && m != kWater; }
 
 // Water is no obstacle; the world's border is a wall, so that nothing rolls out of the world.
-SurfaceOptions surface_options() {
-  SurfaceOptions options;
-  options.materials.set_solid(kWater, false);
-  options.border_wall = true;
+GameOptions game_options() {
+  GameOptions options;
+  options.surface.materials.set_solid(kWater, false);
+  options.surface.border_wall = true;
   return options;
 }
 
@@ -48,11 +49,11 @@ App::App(SDL_Renderer* renderer, const AppOptions& options)
     : renderer_(renderer),
       options_(options),
       view_{options.world, options.width, options.height},
-      session_(demo_landscape(options.world, options.seed)),
+      session_(demo::demo_landscape(options.world, options.seed), game_options()),
       mesh_(view_),
-      physics_(session_.world(), options.units_per_metre, surface_options()),
-      islands_(session_.world(), surface_options().materials) {
-  take_world();
+      physics_(session_.game(), options.units_per_metre) {
+  mesh_.reset(session_.world());
+  take(session_.settle(), true);  // the islands the world starts with fall
 }
 
 App::~App() {
@@ -124,27 +125,30 @@ void App::use_tool(Point64 from, Point64 to) {
                       .material = *kind == ToolKind::kWater ? kWater : material_,
                       .from_material = from_};
   const auto start = std::chrono::steady_clock::now();
-  std::optional<ChangeSet> changes;
+  std::optional<GameUpdate> update;
   try {
-    changes = session_.apply(edit);
+    update = session_.apply(edit);
   } catch (const Error&) {
     ++report_.refused;  // the world is as it was (strong guarantee)
     return;
   }
   last_edit_ms_ = ms_since(start);
   report_.edit_ms_total += last_edit_ms_;
-  if (!changes) return;
   ++report_.edits;
-  take(*changes, *kind != ToolKind::kExplosion && *kind != ToolKind::kDigger);
+  take(*update, *kind != ToolKind::kExplosion && *kind != ToolKind::kDigger);
 }
 
 void App::press_key(const std::string& key) {
-  if (key == "ctrl+z" && session_.undo()) {
-    ++report_.undos;
-    take_world();
-  } else if (key == "ctrl+y" && session_.redo()) {
-    ++report_.redos;
-    take_world();
+  if (key == "ctrl+z") {
+    if (const std::optional<GameUpdate> u = session_.undo()) {
+      ++report_.undos;
+      take_world(*u);
+    }
+  } else if (key == "ctrl+y") {
+    if (const std::optional<GameUpdate> u = session_.redo()) {
+      ++report_.redos;
+      take_world(*u);
+    }
   } else if (key == "f5") {
     save();
   } else if (key == "f9") {
@@ -164,53 +168,24 @@ void App::press_key(const std::string& key) {
 
 // --- the world's changes -----------------------------------------------------------------------
 
-void App::take(const ChangeSet& changes, bool may_bury) {
+// The update's meshes, chains and debris (the game driver's, translated).
+void App::take(const GameUpdate& update, bool may_bury) {
   const auto start = std::chrono::steady_clock::now();
-  mesh_.apply(changes);
-  physics_.apply(session_.world(), changes);
+  mesh_.apply(update.meshes);
+  physics_.apply(update);
   last_collider_ms_ = ms_since(start);
   report_.collider_ms_total += last_collider_ms_;
-  dirty_ = changes.cells;
-  settle(islands_.update(session_.world(), changes));
+  dirty_ = update.changes.cells;
+  report_.islands_detached += update.debris.size();
+  report_.islands_left += update.debris_waiting;
   if (may_bury) bury();
 }
 
 // Undo, redo and load put the islands that were detached back into the landscape: their debris
-// goes, and the trackers see the whole world again.
-void App::take_world() {
-  mesh_.reset(session_.world());
-  physics_.reset(session_.world());
+// goes, and those islands fall again with the update.
+void App::take_world(const GameUpdate& update) {
   physics_.remove_debris();
-  dirty_.clear();
-  settle(islands_.resync(session_.world()));
-  bury();
-}
-
-// Every island falls: detached from the landscape as one edit (given to the trackers like any
-// other), it becomes a dynamic body. Detaching one island can re-cut the cells of another, which
-// is then stale and comes back re-cut from the tracker (game/islands.hpp).
-void App::settle(std::vector<Island> pending) {
-  Landscape& world = session_.world();
-  while (!pending.empty()) {
-    const Island island = std::move(pending.back());
-    pending.pop_back();
-    std::optional<DetachedIsland> detached;
-    try {
-      detached = detach(world, island);
-    } catch (const StaleIsland&) {
-      continue;  // re-cut by another detach: the tracker reports it again
-    } catch (const Error&) {
-      continue;  // refused (a bug of the game layer): it stays in the landscape, counted as left
-    }
-    mesh_.apply(detached->changes);
-    physics_.apply(world, detached->changes);
-    for (Island& again : islands_.update(world, detached->changes)) {
-      pending.push_back(std::move(again));
-    }
-    physics_.add_debris(*detached);
-    ++report_.islands_detached;
-  }
-  report_.islands_left += islands_.island_count();
+  take(update, true);
 }
 
 // A body whose centre an edit filled is buried: the game removes it.
@@ -235,8 +210,7 @@ void App::load() {
     loaded.start_log();  // the log goes on from the loaded world (a world line and fills)
     ++report_.loads;
     if (loaded.state_hash() == saved_hash_) ++report_.loads_matching_save;
-    session_.reset(std::move(loaded));
-    take_world();
+    take_world(session_.reset(std::move(loaded)));
   } catch (const LoadError&) {
     ++report_.refused;
   }

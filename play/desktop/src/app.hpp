@@ -9,7 +9,6 @@
 #include <string>
 #include <vector>
 
-#include "edgeland/game/islands.hpp"
 #include "edgeland/play/session.hpp"
 #include "input_script.hpp"
 #include "physics.hpp"
@@ -58,9 +57,8 @@ class App {
  private:
   void use_tool(Point64 from, Point64 to);
   void press_key(const std::string& key);
-  void take(const ChangeSet& changes, bool may_bury);
-  void take_world();                         // after undo, redo, load: everything again
-  void settle(std::vector<Island> pending);  // detaches the islands an edit made
+  void take(const GameUpdate& update, bool may_bury);
+  void take_world(const GameUpdate& update);  // after undo, redo, load
   void save();
   void load();
   void bury();
@@ -75,7 +73,6 @@ class App {
   Session session_;
   TerrainMesh mesh_;
   Physics physics_;
-  IslandTracker islands_;
   AppReport report_;
   // Tool state.
   std::string tool_ = "explosion";

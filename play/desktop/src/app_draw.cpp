@@ -4,7 +4,7 @@
 #include <cstdio>
 
 #include "app.hpp"
-#include "material_palette.hpp"
+#include "edgeland/demo/palette.hpp"
 #include "picture.hpp"
 
 namespace edgeland::play {
@@ -52,7 +52,7 @@ void outline_boxes(SDL_Renderer* renderer, const std::vector<Box64>& boxes,
 }  // namespace
 
 void App::draw() {
-  const cli::Rgb sky = cli::material_colour(kEmpty);
+  const demo::Rgb sky = demo::material_colour(kEmpty);
   SDL_SetRenderDrawColor(renderer_, sky.r, sky.g, sky.b, 255);
   SDL_RenderClear(renderer_);
   mesh_.draw(renderer_);
@@ -82,7 +82,7 @@ void App::draw_debris(const DynamicBody& d) const {
   const double cx = physics_.world_x(p.x), cy = physics_.world_y(p.y);
   const double c = std::cos(d.body->GetAngle()), s = std::sin(d.body->GetAngle());
   for (const DynamicBody::Piece& piece : d.shape) {
-    const cli::Rgb colour = cli::material_colour(piece.material);
+    const demo::Rgb colour = demo::material_colour(piece.material);
     std::vector<SDL_Vertex> vertices;
     for (const auto& [x, y] : piece.vertices) {
       vertices.push_back({{view_.x(cx + c * x - s * y), view_.y(cy + s * x + c * y)},

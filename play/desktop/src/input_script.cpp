@@ -4,7 +4,7 @@
 #include <charconv>
 #include <utility>
 
-#include "log_text.hpp"
+#include "edgeland/io/log_words.hpp"
 
 namespace edgeland::play {
 namespace {

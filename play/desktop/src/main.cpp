@@ -16,8 +16,8 @@
 #include <sstream>
 
 #include "app.hpp"
+#include "edgeland/demo/input_text.hpp"
 #include "edgeland/io/landscape_replay.hpp"
-#include "input_text.hpp"
 #include "picture.hpp"
 
 namespace edgeland::play {
@@ -210,7 +210,7 @@ int run(const MainOptions& options) {
   std::vector<InputEvent> script;
   if (!options.script.empty()) {
     try {
-      script = parse_input_script(cli::read_input_text(options.script));
+      script = parse_input_script(demo::read_input_text(options.script));
     } catch (const std::exception& error) {
       std::cerr << "edgeland-play: " << options.script << ": " << error.what() << '\n';
       return 2;

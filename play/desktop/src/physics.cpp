@@ -5,14 +5,13 @@
 
 namespace edgeland::play {
 
-Physics::Physics(const Landscape& land, double units_per_metre, const SurfaceOptions& surface)
-    : box_(land.world()),
-      units_{land.world().min, units_per_metre},
+Physics::Physics(const GameDriver& game, double units_per_metre)
+    : box_(game.landscape().world()),
+      units_{game.landscape().world().min, units_per_metre},
       world_(std::make_unique<b2World>(b2Vec2(0.0f, -10.0f))) {
   box2d::TerrainOptions options;
-  options.surface = surface;
-  options.units = units_;
-  terrain_.emplace(*world_, land, options);
+  options.units_per_metre = units_per_metre;
+  terrain_.emplace(*world_, game, options);
 }
 
 b2Vec2 Physics::metres(Point64 p) const { return box2d::to_b2(units_, p); }
@@ -29,12 +28,11 @@ Point64 Physics::centre(const DynamicBody& body) const {
   return {std::llround(world_x(p.x)), std::llround(world_y(p.y))};
 }
 
-// Both happen between two steps: no body ever sees a missing wall.
-void Physics::apply(const Landscape& land, const ChangeSet& changes) {
-  terrain_->update(land, changes);
+// Between two steps: no body ever sees a missing wall.
+void Physics::apply(const GameUpdate& update) {
+  terrain_->apply(update);
+  for (const Debris& d : update.debris) add_debris(d);
 }
-
-void Physics::reset(const Landscape& land) { terrain_->resync(land); }
 
 void Physics::drop_ball(Point64 at, double radius) {
   b2BodyDef def;
@@ -69,21 +67,17 @@ void Physics::drop_box(Point64 at, double half) {
   bodies_.push_back({body, BodyKind::kBox, half});
 }
 
-void Physics::add_debris(const DetachedIsland& island) {
-  DynamicBody debris{box2d::make_debris_body(*world_, island, units_), BodyKind::kDebris, 0};
-  const EngineVec c = to_double(island.centroid);
-  for (const DetachedIsland::Region& region : island.regions) {
-    for (const Polygon& polygon : region.polygons) {
-      DynamicBody::Piece piece{region.material, {}, {}};
-      for (const Point64& p : polygon) {
-        piece.vertices.emplace_back(static_cast<double>(p.x) - c.x, static_cast<double>(p.y) - c.y);
-      }
-      for (const Triangle& t : polygon_mesh(0, region.material, polygon).triangles) {
-        for (const std::uint32_t i : {t.a, t.b, t.c})
-          piece.triangles.push_back(static_cast<int>(i));
-      }
-      debris.shape.push_back(std::move(piece));
-    }
+// The debris body, and its meshes (the driver's) around the body's origin for drawing.
+void Physics::add_debris(const Debris& d) {
+  DynamicBody debris{box2d::make_debris_body(*world_, d, units_), BodyKind::kDebris, 0};
+  const EngineVec c = to_double(d.centroid);
+  for (const PolygonMesh& mesh : d.meshes) {
+    DynamicBody::Piece piece{mesh.material, {}, {}};
+    for (const Point64& p : mesh.vertices)
+      piece.vertices.emplace_back(static_cast<double>(p.x) - c.x, static_cast<double>(p.y) - c.y);
+    for (const Triangle& t : mesh.triangles)
+      for (const std::uint32_t i : {t.a, t.b, t.c}) piece.triangles.push_back(static_cast<int>(i));
+    debris.shape.push_back(std::move(piece));
   }
   bodies_.push_back(std::move(debris));
 }

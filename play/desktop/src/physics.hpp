@@ -1,9 +1,9 @@
 #pragma once
-// The desktop demo's physics: a Box2D 2.4 world whose static terrain follows the landscape from
-// its change sets (the game layer's Box2D adapter, edgeland::box2d::Terrain: per-cell surface
-// chains with ghost vertices, no seams), the balls and boxes dropped on it, and the debris
-// islands detached from it (edgeland::box2d::make_debris_body). Engine units are metres,
-// `units_per_metre` world units each, relative to the world box's corner.
+// The desktop demo's physics: a Box2D 2.4 world whose static terrain follows the game driver's
+// updates (the Box2D adapter, edgeland::box2d::Terrain: per-cell surface chains with ghost
+// vertices, no seams), the balls and boxes dropped on it, and the debris the updates hand out
+// (edgeland::box2d::make_debris_body). Engine units are metres, `units_per_metre` world units
+// each, relative to the world box's corner.
 #include <box2d/box2d.h>
 
 #include <functional>
@@ -12,8 +12,7 @@
 #include <vector>
 
 #include "edgeland/box2d/terrain.hpp"
-#include "edgeland/game/islands.hpp"
-#include "edgeland/game/render_meshes.hpp"
+#include "edgeland/game/game_driver.hpp"
 
 namespace edgeland::play {
 
@@ -35,15 +34,13 @@ struct DynamicBody {
 
 class Physics {
  public:
-  Physics(const Landscape& land, double units_per_metre, const SurfaceOptions& surface);
+  Physics(const GameDriver& game, double units_per_metre);
 
-  // The terrain after one edit (or a detach), and after any other change.
-  void apply(const Landscape& land, const ChangeSet& changes);
-  void reset(const Landscape& land);
+  // One update of the game: the terrain's chains, and a body per debris.
+  void apply(const GameUpdate& update);
 
   void drop_ball(Point64 at, double radius);
   void drop_box(Point64 at, double half);
-  void add_debris(const DetachedIsland& island);
   // One fixed step; bodies that fell below the world are removed.
   void step(double seconds);
   // Removes the balls and boxes whose centre `covered` says is now inside solid material (a fill
@@ -60,6 +57,7 @@ class Physics {
 
  private:
   b2Vec2 metres(Point64 p) const;
+  void add_debris(const Debris& debris);
 
   Box64 box_;
   EngineUnits units_;

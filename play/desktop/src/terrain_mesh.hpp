@@ -9,6 +9,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "edgeland/game/render_meshes.hpp"
 #include "edgeland/spatial/landscape.hpp"
 
 namespace edgeland::play {
@@ -39,7 +40,8 @@ class TerrainMesh {
  public:
   explicit TerrainMesh(const ViewTransform& view) : view_(view) {}
 
-  void apply(const ChangeSet& changes);
+  // The game driver's meshes: those dropped deleted, those built added.
+  void apply(const MeshUpdate& update);
   void reset(const Landscape& landscape);
   void draw(SDL_Renderer* renderer) const;
   std::size_t triangles() const noexcept { return triangles_; }
@@ -49,7 +51,7 @@ class TerrainMesh {
     std::vector<SDL_Vertex> vertices;  // the polygon's own vertices, in pixels, coloured
     std::vector<int> indices;          // three per triangle
   };
-  void add(PolygonId id, Material material, const Polygon& polygon);
+  void add(const PolygonMesh& mesh);
 
   ViewTransform view_;
   std::unordered_map<PolygonId, Mesh> meshes_;

@@ -8,7 +8,7 @@
 
 #include <string>
 
-#include "material_palette.hpp"
+#include "edgeland/demo/palette.hpp"
 #include "replay_json.hpp"
 #include "web_world.hpp"
 
@@ -112,10 +112,10 @@ val replay(const std::string& text) {
   return result;
 }
 
-// A material's colour in pictures (cli/material_palette.hpp) as 0xRRGGBB, so that the page
+// A material's colour in pictures (edgeland/demo/palette.hpp) as 0xRRGGBB, so that the page
 // and the PNGs agree.
 int material_colour(int material) {
-  const cli::Rgb c = cli::material_colour(static_cast<Material>(material));
+  const demo::Rgb c = demo::material_colour(static_cast<Material>(material));
   return c.r << 16 | c.g << 8 | c.b;
 }
 

@@ -10,7 +10,7 @@ namespace edgeland::play {
 struct ReplayOutput {
   std::string json;   // the JSON object, without its newline
   std::string error;  // the stderr line ("" when the log replayed to its end)
-  int status = 0;     // the command's exit status (cli/command.hpp)
+  int status = 0;     // the command's exit status (cli/commands.hpp)
 };
 
 ReplayOutput replay_landscape_text(std::string_view text);

@@ -1,15 +1,13 @@
 #pragma once
-// The page's world: a Session (play/core), the game layer's trackers (surface chains for the
-// colliders, debris islands) and what the page needs to redraw and rebuild its colliders, as flat
-// arrays that cross into JavaScript in one copy each. Floating point appears only in the ids'
+// The page's world: a Session (play/core) over the game driver, and its updates as what the page
+// needs to redraw and rebuild its colliders, flat arrays that cross into JavaScript in one copy
+// each. Floating point appears only in the ids'
 // transport type, the debris centroids and the timings, never in the world.
 #include <cstdint>
 #include <map>
 #include <string>
 #include <vector>
 
-#include "edgeland/game/islands.hpp"
-#include "edgeland/game/surface_tracker.hpp"
 #include "edgeland/play/session.hpp"
 
 namespace edgeland::play {
@@ -49,20 +47,6 @@ struct WebStats {
   double total_edit_ms = 0;  // all apply() calls
 };
 
-// The changes of one user action composed (an edit, then the detaches it caused): a polygon or
-// chain added and removed again within it never reaches the page.
-struct PendingChanges {
-  std::vector<PolygonId> removed;
-  std::map<PolygonId, std::pair<Material, Polygon>> added;
-  std::vector<Box64> cells;
-  std::vector<ChainId> chains_removed;
-  std::map<ChainId, SurfaceChain> chains_added;
-  std::vector<DetachedIsland> debris;
-
-  void take(const ChangeSet& changes);
-  void take(const ChainUpdate& chains);
-};
-
 class WebWorld {
  public:
   // The demo world (seed > 0) or a world filled with `fill` (seed 0), recording its log.
@@ -85,12 +69,9 @@ class WebWorld {
   const Landscape& landscape() const noexcept { return session_.world(); }
 
  private:
-  void settle(std::vector<Island> pending, PendingChanges& changes);
-  WebUpdate world_swapped();  // after undo, redo, load
+  WebUpdate world_swapped(const GameUpdate& update);  // after undo, redo, load
 
   Session session_;
-  SurfaceTracker surface_;
-  IslandTracker islands_;
   std::size_t edits_ = 0, islands_detached_ = 0;
   double last_edit_ms_ = 0, total_edit_ms_ = 0;
 };

@@ -60,6 +60,19 @@ inline int compare_distance(const Scaled& p, const Scaled& a, const Scaled& b, I
   return (lhs > rhs) - (lhs < rhs);
 }
 
+// std::lcm for Int128 (the standard's needs a built-in integer type; the portable build's
+// Int128 is a class).
+inline Int128 least_common_multiple(Int128 a, Int128 b) {
+  Int128 x = a < 0 ? -a : a, y = b < 0 ? -b : b;
+  const Int128 product_over = x;
+  while (y != 0) {
+    const Int128 r = x % y;
+    x = y;
+    y = r;
+  }
+  return x == 0 ? Int128(0) : product_over / x * (b < 0 ? -b : b);
+}
+
 class TwoPolygonReference {
  public:
   struct Piece {
@@ -69,7 +82,7 @@ class TwoPolygonReference {
 
   TwoPolygonReference(const Polygon& a, const Polygon& b) : a_(a), b_(b) {
     Int128 lcm = 1;
-    for_each_crossing([&](Int128 d) { lcm = std::lcm(lcm, d); });
+    for_each_crossing([&](Int128 d) { lcm = least_common_multiple(lcm, d); });
     scale_ = 2 * lcm;
     for (int which = 0; which < 2; ++which) {
       const Polygon& self = which == 0 ? a_ : b_;

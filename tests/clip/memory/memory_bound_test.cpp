@@ -1,7 +1,7 @@
 // The working memory clip.hpp promises (MEMORY): the peak of heap bytes allocated during one
 // operation, beyond what was allocated before it, stays within a bound per input edge plus a
 // bound per crossing. Measured by replacing the global allocation functions
-// (fuzz/allocation_meter.hpp, as the load memory test does).
+// (tests/support/allocation_meter.hpp, as the load memory test does).
 #include <gtest/gtest.h>
 
 #include <cmath>

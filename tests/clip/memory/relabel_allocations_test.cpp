@@ -1,7 +1,7 @@
 // relabel() reuses its working storage (kernel/internal/.../scratch.hpp): once an overlay of a
 // size has run, the same overlay allocates nothing but its result (issue 28: a landscape edit
 // calls it for every cell it touches, many times a frame). Counted by the counting allocation
-// functions (fuzz/allocation_meter.hpp).
+// functions (tests/support/allocation_meter.hpp).
 #include <gtest/gtest.h>
 
 #include <cmath>

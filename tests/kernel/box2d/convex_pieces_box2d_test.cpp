@@ -11,9 +11,10 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "edgeland/demo/landscape.hpp"
 #include "edgeland/kernel/convex_pieces.hpp"
 #include "support/box2d_piece.hpp"
-#include "support/demo_landscape.hpp"
+#include "support/landscape_polygons.hpp"
 #include "support/validate_generators.hpp"
 
 namespace edgeland::testing {
@@ -29,7 +30,7 @@ std::size_t count_not_kept(const std::vector<Polygon>& pieces,
 TEST(ConvexPiecesBox2d, DemoWorldPiecesAreKept) {
   // The world of `edgeland demo` after 2,000 of its players' edits: layers under wavy lines,
   // rough explosions, capsule tunnels, pools; every polygon cut at its cell's lines.
-  const Landscape world = demo_landscape(2000);
+  const Landscape world = demo::demo_landscape(demo::kDemoWorld, 1, 2000);
   std::vector<Polygon> pieces;
   std::vector<Point64> cells;
   std::int64_t largest = 0;
@@ -46,7 +47,7 @@ TEST(ConvexPiecesBox2d, DemoWorldPiecesAreKept) {
   for (const double meters : {0.01, 0.005}) {
     std::vector<Box2dFrame> at_world, at_cell;
     for (const Point64& c : cells) {
-      at_world.push_back({kDemoWorld.min, meters});
+      at_world.push_back({demo::kDemoWorld.min, meters});
       at_cell.push_back({c, meters});
     }
     EXPECT_EQ(count_not_kept(pieces, at_world), 0u) << meters << " m per unit, world corner";

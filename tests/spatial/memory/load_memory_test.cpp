@@ -1,8 +1,8 @@
 // The memory a load takes (issue 27, point 1), measured by replacing the global allocation
-// functions (fuzz/allocation_meter.cpp), so this is its own executable: a small multiple of the
-// file plus the world it returns, and for a refused file a small multiple of the file. Before,
-// the issue's full quadtree of empty cells (0.6 MB) took 117 MB before it was refused, and at
-// 9.8 MB ran out of memory with std::bad_alloc instead of a LoadError.
+// functions (tests/support/allocation_meter.cpp), so this is its own executable: a small multiple
+// of the file plus the world it returns, and for a refused file a small multiple of the file.
+// Before, the issue's full quadtree of empty cells (0.6 MB) took 117 MB before it was refused, and
+// at 9.8 MB ran out of memory with std::bad_alloc instead of a LoadError.
 #include <gtest/gtest.h>
 
 #include <sstream>

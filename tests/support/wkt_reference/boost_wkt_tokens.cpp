@@ -252,9 +252,12 @@ std::vector<Token> drop_empty_members(const std::vector<Token>& tokens) {
       continue;
     }
     dropped = true;
+    // The comma before it goes with it, else the one after, unless a ')' follows that comma:
+    // "(EMPTY, )" has a stray comma, as io/'s reader says (RapidCheck found the disagreement).
     if (kept.back().kind == Kind::kComma) {
       kept.pop_back();
-    } else if (tokens[i + 1].kind == Kind::kComma) {
+    } else if (tokens[i + 1].kind == Kind::kComma &&
+               !(i + 2 < tokens.size() && tokens[i + 2].kind == Kind::kClose)) {
       ++i;
     }
   }

@@ -109,6 +109,14 @@ EDGELAND_EXPORT ValidClipResult import_to_valid_set(const std::vector<std::vecto
 // and vertices by this. O(n log n); the result is normalize(set, kPositive)'s.
 EDGELAND_EXPORT ValidClipResult merge(const ValidSet& set, const ClipOptions& options = {});
 
+// merge()'s region for a set whose members tile it: the same maximal hole-free polygons up to
+// where hole splitting cuts, found without noding, snap rounding or labeling (a valid set's
+// members never cross; they meet at points and along shared stretches, which cancel). For
+// sets that are mostly shared stretches, like a landscape's polygons of one material cut at
+// cell lines: the game layer's debris outlines. Nothing rounds; the result's area is exactly the
+// members' sum. O(n log n) plus hole splitting's bridges.
+EDGELAND_EXPORT ValidClipResult merge_tiles(const ValidSet& set, const ClipOptions& options = {});
+
 // The part of a valid set inside a closed axis-aligned box (the landscape's cell cut); a box
 // of zero width or height gives the empty set. The box is the clip operand: a corner beyond
 // the bound throws CoordinateOutOfRange (polygon 0, ring 0, vertex kNone, `where` the corner),

@@ -1,5 +1,7 @@
 #pragma once
 // ValidSet: a polygon set known to be valid (clip.hpp's operations take and return it).
+#include <cstddef>
+#include <span>
 #include <utility>
 
 #include "edgeland/clip/types.hpp"
@@ -27,12 +29,18 @@ class EDGELAND_EXPORT ValidSet {
   struct Trusted {};
   ValidSet(PolygonSet set, Trusted) noexcept : set_(std::move(set)) {}
   friend struct ValidSetFactory;
+  friend ValidSet subset(const ValidSet& set, std::span<const std::size_t> members);
   PolygonSet set_;
   bool canonical_ = false;  // in canonical form (an operation's output)
   // No ring has three consecutive collinear vertices (canonical sets, and validated sets found
   // so): the pipeline then tests only the vertices an operation creates for collinearity.
   bool collinear_free_ = false;
 };
+
+// The members of `set` at these indices (ascending, each at most once), in their order: valid
+// without validating again (any part of a valid set is one), and in canonical form when `set`
+// is. Throws InvalidArgument for an index out of range or out of order.
+EDGELAND_EXPORT ValidSet subset(const ValidSet& set, std::span<const std::size_t> members);
 
 struct ValidClipResult {
   ValidSet set;

@@ -16,13 +16,14 @@
 #include <memory>
 #include <vector>
 
+#include "edgeland/game/game_types.hpp"
 #include "edgeland/game/physics_materials.hpp"
 #include "edgeland/kernel/predicates.hpp"
 
 namespace edgeland {
 
 namespace game_detail {
-class IslandTree;
+struct IslandTrackerState;
 }
 
 struct IslandPiece {
@@ -67,7 +68,7 @@ class EDGELAND_EXPORT IslandTracker {
   Work last_work() const;
 
  private:
-  std::unique_ptr<game_detail::IslandTree> tree_;
+  std::unique_ptr<game_detail::IslandTrackerState> state_;
 };
 
 // Every island of a landscape. O(N).
@@ -77,11 +78,7 @@ EDGELAND_EXPORT std::vector<Island> find_islands(const Landscape& world,
 // An island taken out of the landscape, ready to become a dynamic body.
 struct DetachedIsland {
   ChangeSet changes;  // the edit that removed it (as any edit's: for the trackers)
-  struct Region {
-    Material material = kEmpty;
-    PolygonSet polygons;  // the material's part of the island as maximal polygons (merged
-                          // across cell lines; holes split as the clipper splits them)
-  };
+  using Region = IslandRegion;
   std::vector<Region> regions;  // ascending material
   Int128 twice_area = 0;        // of the whole island, exact
   RationalPoint centroid;       // of the whole island, exact (kernel centroid())

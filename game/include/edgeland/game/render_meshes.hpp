@@ -6,23 +6,11 @@
 // polygon's. Integer coordinates; a renderer converts them to its own units.
 #include <vector>
 
+#include "edgeland/game/game_types.hpp"
 #include "edgeland/kernel/triangulate.hpp"
 #include "edgeland/spatial/landscape.hpp"
 
 namespace edgeland {
-
-struct PolygonMesh {
-  PolygonId id = 0;
-  Material material = kEmpty;
-  std::vector<Point64> vertices;    // the polygon's own vertices (a vertex buffer)
-  std::vector<Triangle> triangles;  // counter-clockwise index triples into `vertices`
-  friend bool operator==(const PolygonMesh&, const PolygonMesh&) = default;
-};
-
-struct MeshUpdate {
-  std::vector<PolygonId> dropped;  // ascending: the meshes to delete
-  std::vector<PolygonMesh> built;  // by ascending id: the meshes to add
-};
 
 // The mesh of one landscape polygon. O(n log n).
 EDGELAND_EXPORT PolygonMesh polygon_mesh(PolygonId id, Material material, const Polygon& polygon);

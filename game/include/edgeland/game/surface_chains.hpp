@@ -29,31 +29,10 @@
 #include <cstdint>
 #include <vector>
 
-#include "edgeland/game/physics_materials.hpp"
-#include "edgeland/kernel/bbox.hpp"
+#include "edgeland/game/game_types.hpp"
 #include "edgeland/spatial/landscape.hpp"
 
 namespace edgeland {
-
-struct SurfaceOptions {
-  PhysicsMaterials materials;
-  // The world border as a wall around the non-solid parts of the world (chains along the border,
-  // material 0), so no body leaves the world. Default: the border is not exported.
-  bool border_wall = false;
-  friend bool operator==(const SurfaceOptions&, const SurfaceOptions&) = default;
-};
-
-struct SurfaceChain {
-  std::vector<Point64> points;
-  // materials[i]: the solid material left of the segment points[i] -> points[i + 1] (for a
-  // closed chain the last segment runs back to points[0]); 0 along a border wall.
-  std::vector<Material> materials;
-  bool closed = false;
-  Point64 ghost_prev;  // the surface point before points.front()
-  Point64 ghost_next;  // the surface point after points.back()
-  Box64 cell;          // the cell the chain lies in (the world box for whole loops)
-  friend bool operator==(const SurfaceChain&, const SurfaceChain&) = default;
-};
 
 // The surface of every cell, cell by cell in tree order (within a cell: open chains in order of
 // their first point, then closed ones in order of their smallest point). O(N log N) for N

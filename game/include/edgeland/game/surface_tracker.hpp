@@ -13,24 +13,24 @@
 // end near them; nothing depends on the world's size.
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <vector>
 
 #include "edgeland/game/surface_chains.hpp"
 
 namespace edgeland {
 
-using ChainId = std::uint64_t;
-
-struct ChainUpdate {
-  std::vector<ChainId> removed;                         // ascending
-  std::vector<std::pair<ChainId, SurfaceChain>> added;  // by ascending id
-  bool empty() const noexcept { return removed.empty() && added.empty(); }
-};
+namespace game_detail {
+struct SurfaceTrackerState;
+}
 
 class EDGELAND_EXPORT SurfaceTracker {
  public:
   // Every chain of `world` (surface_chains()), numbered from 1. O(N log N).
   explicit SurfaceTracker(const Landscape& world, const SurfaceOptions& options = {});
+  ~SurfaceTracker();
+  SurfaceTracker(SurfaceTracker&&) noexcept;
+  SurfaceTracker& operator=(SurfaceTracker&&) noexcept;
 
   // `world` after one edit that returned `changes`. Every edit since the tracker was made (or
   // last updated) must be passed, in order, each with the landscape right after it; a landscape
@@ -38,33 +38,14 @@ class EDGELAND_EXPORT SurfaceTracker {
   ChainUpdate update(const Landscape& world, const ChangeSet& changes);
 
   // `world` after any change at all (an undo to a snapshot, a load): the cells whose polygons
-  // differ from those last seen are found by comparing every cell's polygon ids. O(N).
+  // differ from those last seen are found by comparing every cell's polygons. O(N).
   ChainUpdate resync(const Landscape& world);
 
-  const std::map<ChainId, SurfaceChain>& chains() const noexcept { return chains_; }
-  const SurfaceOptions& options() const noexcept { return options_; }
+  const std::map<ChainId, SurfaceChain>& chains() const noexcept;
+  const SurfaceOptions& options() const noexcept;
 
  private:
-  struct BoxLess {
-    bool operator()(const Box64& l, const Box64& r) const noexcept;
-  };
-  struct CellRecord {
-    std::vector<PolygonId> ids;        // the cell's polygons when last seen
-    std::vector<ChainId> chains;       // its chains
-    std::vector<std::int64_t> covers;  // what its chains read from its neighbours (flattened)
-    std::vector<std::int64_t> ports;   // what its neighbours read of it (flattened)
-  };
-  using CellMap = std::map<Box64, CellRecord, BoxLess>;
-
-  ChainUpdate replace_cells(const Landscape& world, const std::vector<Box64>& gone,
-                            const std::vector<Box64>& fresh);
-  ChainId keep(const SurfaceChain& chain, ChainUpdate& update);
-
-  SurfaceOptions options_;
-  CellMap cells_;
-  std::map<ChainId, SurfaceChain> chains_;
-  ChainId next_id_ = 1;
-  Landscape seen_;  // the landscape of the last update (a snapshot: O(1) to copy)
+  std::unique_ptr<game_detail::SurfaceTrackerState> state_;
 };
 
 }  // namespace edgeland

@@ -10,9 +10,11 @@
 // integer type instead of `Checked<T>`. In the checked build (EDGELAND_CHECKED) every
 // operation also tests for overflow and aborts with a message, so a broken proof obligation
 // is caught at run time in tests and fuzzers too. The release build trusts the proof.
+#include <concepts>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <type_traits>
 
 #include "edgeland/kernel/int128.hpp"
 
@@ -29,30 +31,48 @@ inline constexpr bool kChecked = true;
 inline constexpr bool kChecked = false;
 #endif
 
+// Overflow tests. GCC and Clang have __builtin_*_overflow; the portable build (and MSVC, which
+// has neither the builtins nor __int128) tests the sign bits of the wrapped result instead:
+// a + b overflows exactly when a and b share a sign the sum lacks, a - b when a and b differ
+// in sign and the difference lacks a's. T is std::int64_t or Int128.
 template <class T>
-constexpr T add(T a, T b) noexcept {
-  if constexpr (kChecked) {
-    T r{};
-    if (__builtin_add_overflow(a, b, &r)) overflow_trap("add");
-    return r;
+constexpr T wrapping_add(T a, T b) noexcept {
+  if constexpr (std::is_same_v<T, std::int64_t>) {
+    return static_cast<T>(static_cast<std::uint64_t>(a) + static_cast<std::uint64_t>(b));
   } else {
-    return a + b;
+    return static_cast<T>(static_cast<UInt128>(a) + static_cast<UInt128>(b));
   }
 }
-
 template <class T>
-constexpr T sub(T a, T b) noexcept {
-  if constexpr (kChecked) {
-    T r{};
-    if (__builtin_sub_overflow(a, b, &r)) overflow_trap("sub");
-    return r;
+constexpr T wrapping_sub(T a, T b) noexcept {
+  if constexpr (std::is_same_v<T, std::int64_t>) {
+    return static_cast<T>(static_cast<std::uint64_t>(a) - static_cast<std::uint64_t>(b));
   } else {
-    return a - b;
+    return static_cast<T>(static_cast<UInt128>(a) - static_cast<UInt128>(b));
   }
+}
+template <class T>
+constexpr bool add_overflows(T a, T b, T* out) noexcept {
+#if EDGELAND_NATIVE_INT128
+  return __builtin_add_overflow(a, b, out);
+#else
+  *out = wrapping_add(a, b);
+  return ((a ^ *out) & (b ^ *out)) < 0;
+#endif
+}
+template <class T>
+constexpr bool sub_overflows(T a, T b, T* out) noexcept {
+#if EDGELAND_NATIVE_INT128
+  return __builtin_sub_overflow(a, b, out);
+#else
+  *out = wrapping_sub(a, b);
+  return ((a ^ b) & (a ^ *out)) < 0;
+#endif
 }
 
 // 128-bit multiply-with-overflow: clang lowers __builtin_mul_overflow on __int128 to
-// __muloti4, which libgcc does not provide, so the 128-bit check is done by hand.
+// __muloti4, which libgcc does not provide, so the 128-bit check is done by hand (and so the
+// same in both builds): the magnitudes' product fits when |b| <= limit / |a|.
 constexpr bool mul_overflows(Int128 a, Int128 b, Int128* out) noexcept {
   using U = UInt128;
   const U ua = unsigned_abs(a), ub = unsigned_abs(b);
@@ -63,8 +83,37 @@ constexpr bool mul_overflows(Int128 a, Int128 b, Int128* out) noexcept {
   *out = negative ? Int128(U(0) - mag) : Int128(mag);
   return false;
 }
+// 64-bit: the exact product in 128 bits (|a b| <= 2^126), then its range.
 constexpr bool mul_overflows(std::int64_t a, std::int64_t b, std::int64_t* out) noexcept {
+#if EDGELAND_NATIVE_INT128
   return __builtin_mul_overflow(a, b, out);
+#else
+  const Int128 exact = Int128(a) * Int128(b);
+  *out = static_cast<std::int64_t>(exact);
+  return exact != Int128(*out);
+#endif
+}
+
+template <class T>
+constexpr T add(T a, T b) noexcept {
+  if constexpr (kChecked) {
+    T r{};
+    if (add_overflows(a, b, &r)) overflow_trap("add");
+    return r;
+  } else {
+    return a + b;
+  }
+}
+
+template <class T>
+constexpr T sub(T a, T b) noexcept {
+  if constexpr (kChecked) {
+    T r{};
+    if (sub_overflows(a, b, &r)) overflow_trap("sub");
+    return r;
+  } else {
+    return a - b;
+  }
 }
 
 template <class T>
@@ -85,6 +134,9 @@ struct Checked {
   T v{};
   constexpr Checked() = default;
   constexpr Checked(T value) : v(value) {}  // NOLINT: implicit on purpose, formulas read as math
+  // The portable Int128 is a class, so a literal reaches it through a second conversion.
+  template <std::integral I>
+  requires(!std::integral<T>) constexpr Checked(I value) : v(value) {}  // NOLINT: as above
   // Widening from a narrower checked type (formulas that take differences in 64 bits).
   template <class U>
   requires(sizeof(U) < sizeof(T)) explicit constexpr Checked(Checked<U> narrow)

@@ -35,6 +35,9 @@ class EDGELAND_EXPORT InvalidConfig : public LandscapeError {
     kTree,                  // not a TreeKind
     kGridDepthBeyondCells,  // grid_depth deeper than min_cell_size lets the world split
                             // (max_grid_depth in tree_boxes.hpp); never silently shallower
+    kRegionDepth,           // region_depth outside -1..10, beyond max_grid_depth, or below a
+                            // grid's depth
+    kRegionIds,             // region_ids without a region_depth
   };
   InvalidConfig(Setting setting, const Box64& world, const LandscapeConfig& config);
   Setting setting;
@@ -61,6 +64,15 @@ class EDGELAND_EXPORT LimitExceeded : public LandscapeError {
   Limit limit;
   std::size_t maximum;
   std::size_t requested;
+};
+
+// Landscape::remove named a polygon the landscape does not hold: no cell with the box `cell`,
+// or none with the id `id` in it (it changed since it was named).
+class EDGELAND_EXPORT UnknownPolygon : public LandscapeError {
+ public:
+  UnknownPolygon(PolygonId id, const Box64& cell);
+  PolygonId id;
+  Box64 cell;
 };
 
 // A checked-mode invariant failed: a bug in edgeland. `state` is the landscape before the
@@ -115,6 +127,15 @@ class EDGELAND_EXPORT InvalidPath : public LandscapeError {
  public:
   explicit InvalidPath(TreePath path);
   TreePath path;
+};
+
+// An edit or a query reached a region that is not loaded (Landscape::unload_region), or a save
+// was asked of a world with one. `path` and `box` name the region.
+class EDGELAND_EXPORT RegionNotLoaded : public LandscapeError {
+ public:
+  RegionNotLoaded(TreePath path, const Box64& box);
+  TreePath path;
+  Box64 box;
 };
 
 }  // namespace edgeland

@@ -35,7 +35,8 @@
 //
 // HEADERS. This is the front end and the umbrella: it includes material.hpp (Material),
 // types.hpp (the configuration, views, change sets, crossings, reports) and errors.hpp (the
-// landscape's errors), which code that only handles those types can include alone.
+// landscape's errors), which code that only handles those types can include alone, and
+// landscape_state.hpp (the private state, detail::LandscapeState).
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -58,6 +59,7 @@
 #include "edgeland/kernel/predicates.hpp"
 #include "edgeland/kernel/validate.hpp"
 #include "edgeland/spatial/errors.hpp"
+#include "edgeland/spatial/landscape_state.hpp"
 #include "edgeland/spatial/material.hpp"
 #include "edgeland/spatial/types.hpp"
 
@@ -67,32 +69,28 @@ struct Delta;       // delta.hpp
 struct PatchEntry;  // delta.hpp
 
 namespace detail {
-
-struct Node;     // the tree (spatial/src/node.hpp)
-struct LogLine;  // the recorded log, a persistent list shared by copies (spatial/src/edit_log.hpp)
-using AreaTable = std::array<Int128, kMaterialCount>;
-
-struct EditTable;  // an edit's material -> material table (spatial/src/edit.hpp)
-struct EditStep;   // a shape and its table: one step of an edit or a batch (edit.hpp)
-
-// A landscape's whole state, private to Landscape: spatial/src's stages take it as an argument
-// from the Landscape's members. An edit builds the next state from it and Landscape::apply
-// commits that by one assignment, so a throw leaves it as it was.
-struct LandscapeState {
-  Box64 world;
-  LandscapeConfig config;
-  LandscapeLimits limits;
-  std::shared_ptr<const Node> root;
-  std::shared_ptr<const AreaTable> areas;  // twice the area of every solid material
-  PolygonId next_id = 1;
-  std::uint64_t edits = 0;  // successful edits since construction (or load)
-  Material initial_fill = kEmpty;
-  bool checked = false;
-  bool logging = false;
-  std::shared_ptr<const LogLine> log;  // the last line recorded
-};
-
+struct EditTable;   // an edit's material -> material table (spatial/src/edit.hpp)
+struct EditResult;  // what an edit builds (spatial/src/edit.hpp)
 }  // namespace detail
+
+// One cell's polygons as arrays, for code that reads whole cells (the game layer): what
+// polygons_in hands out one view at a time, without a visitor or a reference count per polygon.
+// It shares the cell, so the arrays stay valid as long as it lives, whatever happens to the
+// landscape meanwhile (as PolygonView). Canonical order within the cell.
+class EDGELAND_EXPORT CellContents {
+ public:
+  const Box64& box() const noexcept;
+  std::size_t size() const noexcept;
+  std::span<const Polygon> polygons() const noexcept;
+  std::span<const PolygonId> ids() const noexcept;
+  std::span<const Box64> bounds() const noexcept;  // each polygon's bounding box
+  Material material(std::size_t i) const noexcept;
+
+ private:
+  friend class Landscape;
+  explicit CellContents(std::shared_ptr<const detail::Node> cell) : cell_(std::move(cell)) {}
+  std::shared_ptr<const detail::Node> cell_;
+};
 
 class EDGELAND_EXPORT Landscape {
  public:
@@ -118,17 +116,26 @@ class EDGELAND_EXPORT Landscape {
   ChangeSet fill_empty(const PolygonSet& shape, Material material);
   ChangeSet replace(const PolygonSet& shape, Material from, Material to);
   ChangeSet relabel(const PolygonSet& shape, const MaterialMap& map);
-  // A frame's edits (types.hpp Edit) applied in order as ONE edit: one overlay per touched cell
-  // (of kMaxBatchSteps edits at a time: relabel.hpp), rounded once, and one change set. Inside
-  // the cell a point of material m ends as m passed through the map of every edit whose shape
-  // holds it, in order: the materials applying the edits one by one would give before rounding.
-  // Rounding once where the edits one by one round after each, the two results differ only
-  // near the shapes' boundaries, within the rounding bound of spatial/README.md ("Batches"); the
-  // one-by-one edits are still there (apply_edit, or carve ... relabel) for a game that wants
-  // each rounded. A batch of one is that edit (the same result and log line); an empty batch
-  // changes nothing. Deterministic, valid, the strong guarantee and checked mode as every edit;
-  // recorded as one `batch` line. Throws what an edit throws (LimitExceeded: any shape, or the
-  // landscape after the batch, past its limits).
+  // Removes these polygons (each at most once): a carve of exactly their region, recorded as one
+  // in the log. Its edges are the landscape's own, so it meets no crossing, rounds nothing and
+  // leaves every other polygon's region as it was; no shape is validated (each cell's polygons
+  // are a valid set). What a game detaching debris calls. Throws UnknownPolygon (nothing
+  // changed), LimitExceeded, LandscapeInternalError, and RegionNotLoaded for a polygon named in
+  // an unloaded region (under UnloadedRegions::kSkip such names are left out, as an edit leaves
+  // a stub). O(depth per polygon + the cells' overlays).
+  ChangeSet remove(std::span<const PolygonRef> polygons);
+  // A frame's edits (types.hpp Edit), applied in order as ONE edit: in every cell some of their
+  // shapes reach, one overlay of the cell with all of those shapes (clip's relabel_cell of
+  // several steps, relabel.hpp), rounded once; one change set, one log line (`batch`), one
+  // edit counted. Inside a touched cell a point of material m ends as m passed through the map
+  // of every edit whose shape holds it, in order: what the edits one by one give before
+  // rounding. The one-by-one edits round after each edit, so the two results differ near the
+  // shapes' boundaries, within the rounding bound spatial/README.md ("Frame batches") states
+  // and tests; both stay available (apply_edit, carve ... relabel, for a game that wants each
+  // edit rounded on its own). A batch of one is apply_edit of that edit (the same state, hash
+  // and log line); an empty batch changes nothing and counts no edit. Deterministic, valid,
+  // the strong guarantee and checked mode as every edit. Throws what an edit throws
+  // (LimitExceeded for any shape, or the landscape after the batch, past its limits).
   ChangeSet apply_batch(std::span<const Edit> edits);
 
   // --- queries -------------------------------------------------------------------------------
@@ -168,6 +175,10 @@ class EDGELAND_EXPORT Landscape {
   // Calls visit for every cell whose closed box meets the closed box (empty cells included),
   // in tree order; stop by returning false.
   void cells_in(const Box64& box, const std::function<bool(const CellView&)>& visit) const;
+  // The cell whose box is exactly `box`, if the landscape has one. O(depth). (A box that is not a
+  // cell's, an inner node's included, gives nullopt: no error.) Throws RegionNotLoaded when the
+  // box lies in an unloaded region.
+  std::optional<CellContents> cell(const Box64& box) const;
   // Twice the area of a material (exact), over the whole world (material 0: the empty area).
   Int128 twice_area(Material m) const;
   LandscapeStats stats() const;
@@ -217,7 +228,7 @@ class EDGELAND_EXPORT Landscape {
   std::optional<NodeDigest> node_digest(const TreePath& path) const;
   // The subtree at `path` as a PATCH carries it (patch_delta). Throws InvalidPath. O(subtree).
   PatchEntry patch_entry(const TreePath& path) const;
-  // Applies a COMMAND (the edit, as apply_edit) or a PATCH (its subtrees, ids and counters),
+  // Applies a COMMAND (the edit, as apply_edit; a batch, as apply_batch) or a PATCH (its subtrees, ids and counters),
   // after checking that it belongs to this world (DeltaMismatch kWorld; a COMMAND also kAlgorithm)
   // and, as `checks` asks, that this landscape is its base (kBase) and that the result is its
   // result (kResult). Returns what changed, as an edit does. Throws DeltaError (a CHANGES delta,
@@ -230,12 +241,61 @@ class EDGELAND_EXPORT Landscape {
   // DrawMirror holding that part of the world has as its digest. Throws InvalidPath. O(subtree).
   std::uint64_t drawn_digest(const TreePath& path = {}) const;
 
+  // --- regions (LandscapeConfig::region_depth; spatial/README.md "Regions") ---------------
+  // A region is a node at the region depth. An unloaded region is a stub that keeps its hash,
+  // areas and counts: state_hash(), twice_area() and stats() stay exact, and an edit or a query
+  // that reaches it throws RegionNotLoaded (an edit changes nothing then), as save() does.
+  //
+  // Every region's path, in tree order (none without regions). O(regions).
+  std::vector<TreePath> region_paths() const;
+  // The regions whose box interior meets `box`: those an edit whose shape has this bounding box
+  // reaches. O(regions met x depth).
+  std::vector<TreePath> regions_meeting(const Box64& box) const;
+  // A region's hash, counts, areas and ids, loaded or not. Throws InvalidPath (no region there).
+  // O(region) when loaded.
+  RegionSummary region_summary(const TreePath& path) const;
+  bool region_loaded(const TreePath& path) const;
+  // The memory of a loaded region's nodes (stats().bytes of it); a stub's own for an unloaded
+  // one. Throws InvalidPath. O(region).
+  std::size_t region_bytes(const TreePath& path) const;
+  // Writes the region as a region record (its summary and its subtree, with a checksum).
+  // Throws InvalidPath, RegionNotLoaded. O(region).
+  void save_region(const TreePath& path, std::ostream& out) const;
+  // Writes the region's summary alone, as a record without its content (loaded or not): what
+  // another world needs to hold it as a stub (from_regions with read_region_summary). Throws
+  // InvalidPath. O(region) when loaded.
+  void save_region_summary(const TreePath& path, std::ostream& out) const;
+  // Replaces the region by its stub; nothing else changes (not the state hash). Throws
+  // InvalidPath. O(region) (its summary).
+  void unload_region(const TreePath& path);
+  // Reads a region record into its stub: the record must be of this world, at a stub whose
+  // hash and summary it has, and is read as load() reads a file (every node checked, counts
+  // against the limits). Throws LoadError (offset within the record) or LimitExceeded, and then
+  // changes nothing. O(region).
+  void load_region(std::istream& in);
+  // What an edit does where it reaches an unloaded region: refuse (the default) or skip.
+  void set_unloaded_policy(UnloadedRegions policy) noexcept { s_.unloaded = policy; }
+  UnloadedRegions unloaded_policy() const noexcept { return s_.unloaded; }
+  // A world of stubs only, from the summaries of its regions (each region exactly once, of this
+  // world): what a store opens before it loads any region. `next_id` is the landscape's next id
+  // (1 with region_ids). Throws InvalidConfig (regions off or a bad configuration), LoadError
+  // (a region missing, twice, of another world, or with a counter outside its id space; offset 0)
+  // or LimitExceeded.
+  static Landscape from_regions(const Box64& world, const LandscapeConfig& config,
+                                PolygonId next_id, const std::vector<RegionSummary>& regions,
+                                const LandscapeLimits& limits = {});
+  // The summary at the head of a region record (or of a summary record), its checksum checked.
+  // Throws LoadError.
+  static RegionSummary read_region_summary(std::istream& in);
+
  private:
   explicit Landscape(detail::LandscapeState state) : s_(std::move(state)) {}
   // The one edit driver (spatial/README.md, "An edit"): builds the next state from s_ with the
-  // steps (an edit's shape and table, or a batch's), appends `log_line` to the log when
-  // recording, then commits.
-  ChangeSet apply(std::span<const detail::EditStep> steps,
+  // shape and the table, appends `log_line` to the log when recording, then commits.
+  ChangeSet apply(const ValidSet& shape, const detail::EditTable& table,
+                  const std::function<std::string()>& log_line);
+  // The same for any way of building the next state (Landscape::remove's cut shape, a batch).
+  ChangeSet apply(const std::function<detail::EditResult()>& build,
                   const std::function<std::string()>& log_line);
 
   detail::LandscapeState s_;

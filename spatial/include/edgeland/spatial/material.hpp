@@ -18,6 +18,7 @@
 #include <functional>
 #include <limits>
 #include <string>
+#include <type_traits>
 #include <utility>
 
 #include "edgeland/kernel/export.hpp"
@@ -36,6 +37,16 @@ concept MaterialNumber = std::integral<T> && !std::same_as<T, bool> && !std::sam
                          !std::same_as<T, wchar_t> && !std::same_as<T, char8_t> &&
                          !std::same_as<T, char16_t> && !std::same_as<T, char32_t>;
 
+// A game's own unscoped enumeration of materials (`enum Rock { kBedrock = 1, kDirt = 2 };`)
+// converts like its number; a scoped one (`enum class`) does not convert implicitly, as nothing
+// does from a scoped enumeration (the deleted constructor below says how to pass one).
+template <class E>
+concept UnscopedMaterialEnum =
+    std::is_enum_v<E> && std::is_convertible_v<E, std::underlying_type_t<E>> &&
+    MaterialNumber<std::underlying_type_t<E>>;
+template <class E>
+concept ScopedEnum = std::is_enum_v<E> && !std::is_convertible_v<E, std::underlying_type_t<E>>;
+
 class Material {
  public:
   // Empty space.
@@ -44,6 +55,13 @@ class Material {
   // int64 range).
   template <MaterialNumber T>
   constexpr Material(T number) : value_(checked(number)) {}  // NOLINT: implicit by design
+  // An unscoped enumerator: its number, checked the same way.
+  template <UnscopedMaterialEnum E>
+  constexpr Material(E number)  // NOLINT: implicit by design
+      : value_(checked(static_cast<std::underlying_type_t<E>>(number))) {}
+  // A scoped enumerator (enum class) is refused at compile time; the compiler quotes this line:
+  template <ScopedEnum E>
+  Material(E) = delete;  // an enum class: pass Material(static_cast<int>(e))
 
   // The material's number, 0..255.
   constexpr std::uint8_t value() const noexcept { return value_; }

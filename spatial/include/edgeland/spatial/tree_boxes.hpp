@@ -6,7 +6,7 @@
 
 #include "edgeland/kernel/bbox.hpp"
 #include "edgeland/kernel/export.hpp"
-#include "edgeland/spatial/landscape.hpp"
+#include "edgeland/spatial/types.hpp"
 
 namespace edgeland {
 

@@ -10,6 +10,7 @@
 
 #include "edgeland/clip/valid_set.hpp"
 #include "edgeland/kernel/bbox.hpp"
+#include "edgeland/kernel/export.hpp"
 #include "edgeland/kernel/fraction.hpp"
 #include "edgeland/kernel/int128.hpp"
 #include "edgeland/kernel/point.hpp"
@@ -40,7 +41,20 @@ struct LandscapeConfig {
   // splits or merges; at most max_grid_depth(world, config) (tree_boxes.hpp), the depth at
   // which cells still split given min_cell_size, else InvalidConfig. -1: adaptive.
   int grid_depth = -1;
+  // Region streaming (spatial/README.md, "Regions"). >= 0: the tree always splits down to this
+  // depth and never merges above it; every node at this depth is a region, which can be saved,
+  // unloaded (a stub keeps its hash, areas and counts) and loaded on its own, and an edit's result
+  // in a region depends on that region alone. At most 10 and max_grid_depth(world, config), and
+  // at most grid_depth in grid mode, else InvalidConfig. -1: off (no region, as before).
+  int region_depth = -1;
+  // Ids per region (needs region_depth >= 0): region r hands out ids r * 2^44 + 1, r * 2^44 + 2,
+  // ... from a counter kept in its own node, so regions edited apart (by two servers) never hand
+  // out one id twice. r is the region's path read as base-4 digits (region_index).
+  bool region_ids = false;
 };
+
+// Ids per region (LandscapeConfig::region_ids): the region's index in the high bits.
+inline constexpr int kRegionIdBits = 44;
 
 // Limits on what one landscape may hold; an edit, a constructor or a load that would pass one
 // throws LimitExceeded and changes nothing. A load also reads at most the bytes a world within
@@ -51,6 +65,13 @@ struct LandscapeLimits {
   // Cells of the tree (inner nodes are fewer: each has at least two children). Above the 4^10
   // cells of the deepest grid; about 250 bytes each when empty.
   std::size_t max_cells = std::size_t{1} << 22;
+};
+
+// A polygon of the landscape named by its id and the closed box of its cell, as PolygonView and
+// ChangeSet::Added give them (Landscape::remove).
+struct PolygonRef {
+  PolygonId id = 0;
+  Box64 cell;
 };
 
 // One polygon of the landscape as polygons_in shows it. The view shares ownership of the cell
@@ -99,6 +120,10 @@ struct Edit {
   }
 };
 
+// A polygon set as an edit's shape, validated as every edit validates it: CoordinateOutOfRange
+// for a coordinate beyond kCoordBound, InvalidInput (operand kClip) for any other violation.
+EDGELAND_EXPORT ValidSet edit_shape(PolygonSet shape);
+
 // What an edit changed.
 struct ChangeSet {
   std::vector<PolygonId> removed;  // ids that no longer exist, ascending
@@ -144,6 +169,26 @@ struct NodeDigest {
   bool loaded = true;      // false: an unloaded region, whose hash is known but not its children
   std::vector<std::uint64_t> children;  // the children's hashes (inner nodes)
   friend bool operator==(const NodeDigest&, const NodeDigest&) = default;
+};
+
+// What an edit does where it reaches an unloaded region (Landscape::set_unloaded_policy).
+enum class UnloadedRegions : std::uint8_t {
+  kRefuse,  // throw RegionNotLoaded and change nothing (the default)
+  kSkip,    // change the loaded regions only: one of several owners of a world (store/README.md)
+};
+
+// A region as a store keeps it without its content (Landscape::region_summary,
+// read_region_summary): what its stub holds.
+struct RegionSummary {
+  TreePath path;
+  std::uint64_t world = 0;  // Landscape::world_hash of the world it belongs to
+  std::uint64_t hash = 0;   // the region node's hash
+  std::size_t polygons = 0, vertices = 0, cells = 0;
+  std::uint32_t deepest = 0;         // the largest depth of a cell in it
+  PolygonId min_id = 0, max_id = 0;  // the range of its polygons' ids (0, 0: none)
+  PolygonId next_id = 0;             // its id counter (region_ids), else 0
+  std::vector<std::pair<Material, Int128>> twice_areas;  // solid materials present, ascending
+  friend bool operator==(const RegionSummary&, const RegionSummary&) = default;
 };
 
 // Which hashes Landscape::apply_delta compares. A client that knows it has diverged turns them

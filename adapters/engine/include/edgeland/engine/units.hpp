@@ -6,9 +6,14 @@
 // landscape points, ray hits and normals into engine units for drawing and physics, and engine
 // positions back into landscape points for its next edit or query.
 //
-// Why an origin: a world near the int32 bound would lose every vertex to float rounding in the
-// engine (Box2D asserts on such loops). Engine coordinates are taken relative to `origin` (by
-// default the world box's corner), so they stay as small as the world is wide.
+// THE ORIGIN RULE, one for every conversion: engine = (landscape - origin) / units_per_engine_unit,
+// with `origin` exactly what the EngineUnits holds. An EngineUnits{} made by hand has the origin
+// (0, 0), the landscape's own; the Box2D adapter's Terrain builds its EngineUnits with the world
+// box's corner as the origin unless TerrainOptions::origin is given (an explicit (0, 0) too), and
+// Terrain::units() is the one to pass on (make_debris_body), so debris lands where its island was
+// in any world. Why an origin at all: a world near the int32 bound would lose every vertex to
+// float rounding in the engine (Box2D asserts on such loops); relative to a near origin, engine
+// coordinates stay as small as the world is wide (adapters/README.md, "Units and the origin").
 #include <cmath>
 #include <cstdint>
 
@@ -45,7 +50,7 @@ inline EngineVec unit_vector(Point64 d) {
 
 // World <-> engine: engine = (world - origin) / units_per_engine_unit.
 struct EngineUnits {
-  Point64 origin;                    // the landscape point at the engine's (0, 0)
+  Point64 origin;                    // the landscape point at the engine's (0, 0); default (0, 0)
   double units_per_engine_unit = 1;  // landscape units in one engine unit (metre): > 0
 
   EngineVec to_engine(Point64 p) const {

@@ -1,12 +1,15 @@
 #pragma once
-// A front end's hold on its world (play/web, play/desktop): the landscape, the tools' edits and
-// undo/redo by snapshots. A Landscape copy costs O(1) (the tree is persistent and shared), so
-// every edit keeps the world before it, and undo is one assignment; the recorded edit log lives
-// in the landscape and goes back with it, so the log of the world shown always replays to it.
+// A front end's hold on its world (play/web, play/desktop): the game driver that owns the
+// landscape, the tools' edits and undo/redo by snapshots. Every call hands back the driver's
+// GameUpdate (what the front end's physics, meshes and debris take). A Landscape copy costs O(1)
+// (the tree is persistent and shared), so every edit keeps the world before it, and undo is the
+// driver reset to it; the recorded edit log lives in the landscape and goes back with it, so
+// the log of the world shown always replays to it.
 #include <cstddef>
 #include <optional>
 #include <vector>
 
+#include "edgeland/game/game_driver.hpp"
 #include "edgeland/play/tool_shapes.hpp"
 #include "edgeland/spatial/landscape.hpp"
 
@@ -16,34 +19,32 @@ class Session {
  public:
   // `world` as it is now; its log (if it records one) goes on recording. Keeps at most
   // `max_undo` snapshots to go back to.
-  explicit Session(Landscape world, std::size_t max_undo = 256);
+  Session(Landscape world, const GameOptions& options, std::size_t max_undo = 256);
 
-  // Applies the tool's edit (its shape imported as an OGC polygon: tool_ring's integer rounding
-  // may leave a ring that is not strictly simple). Nothing when the shape has no area. Throws
-  // what the landscape's edits throw, the world then unchanged (strong guarantee).
-  std::optional<ChangeSet> apply(const ToolEdit& edit);
+  // Applies the tool's edit (tool_shape: valid by construction). Throws what the landscape's
+  // edits throw, the world then unchanged (strong guarantee).
+  GameUpdate apply(const ToolEdit& edit);
 
-  bool can_undo() const noexcept { return !undo_.empty(); }
-  bool can_redo() const noexcept { return !redo_.empty(); }
-  // Back to the world before the last edit (or forward again); false when there is none.
-  bool undo();
-  bool redo();
+  // Back to the world before the last edit (or forward again); nothing when there is none.
+  std::optional<GameUpdate> undo();
+  std::optional<GameUpdate> redo();
 
   // Replaces the world (a loaded save file): the history starts again.
-  void reset(Landscape world);
+  GameUpdate reset(Landscape world);
+  // No edit: the debris waiting in the driver's queue moves (GameDriver::apply of no edits).
+  GameUpdate settle();
 
-  const Landscape& world() const noexcept { return world_; }
-  Landscape& world() noexcept { return world_; }
+  const Landscape& world() const noexcept { return game_.landscape(); }
+  const GameDriver& game() const noexcept { return game_; }
 
  private:
-  Landscape world_;
+  GameDriver game_;
   std::size_t max_undo_;
   std::vector<Landscape> undo_;  // oldest first
   std::vector<Landscape> redo_;  // the next redo last
 };
 
-// The `edgeland demo` world (cli/demo_world.hpp: layers, bands, caves, pools) built in `box`
-// from `seed`, recording its log from the start so that the log replays bit for bit.
-Landscape demo_landscape(const Box64& box, std::uint64_t seed);
+// The tool's edit as one edit of a frame.
+Edit tool_edit(const ToolEdit& edit);
 
 }  // namespace edgeland::play

@@ -1,9 +1,9 @@
 #pragma once
 // The shapes of the front ends' tools (play/web, play/desktop), in integers: a tool pressed at
 // one point is a circle (a regular polygon) around it, a tool dragged from one point to the next
-// is the stadium around that stroke. Integer trigonometry (cli/integer_trig.hpp) makes the same
-// input give the same vertices in the browser and on the desktop, so a recorded session replays
-// to the same world anywhere.
+// is the stadium around that stroke, both the kernel's shape builders (kernel/shapes.hpp), whose
+// integer trigonometry makes the same input give the same vertices in the browser and on the
+// desktop, so a recorded session replays to the same world anywhere.
 #include <cstdint>
 
 #include "edgeland/io/landscape_log.hpp"
@@ -33,16 +33,13 @@ struct ToolEdit {
 inline constexpr std::int64_t kMinToolRadius = 2;
 inline constexpr std::int64_t kMaxToolRadius = 1 << 20;  // |points| stay far inside the bound
 
-// The direction of (dx, dy) in 1/256 turns (integer_trig.hpp's unit): the table angle whose
-// unit vector has the largest dot product with it (0 for the zero vector).
-int heading(std::int64_t dx, std::int64_t dy) noexcept;
+// The corners of a click's shape.
+inline constexpr std::int64_t kToolCorners = 24;
 
-// The regular 24-gon of radius r around c, counter-clockwise.
-Ring circle_ring(Point64 c, std::int64_t r);
-
-// The tool's shape: circle_ring(to, r) for a click, the stadium around from -> to otherwise
-// (demo_shapes.hpp capsule). The radius is clamped to [kMinToolRadius, kMaxToolRadius].
-Ring tool_ring(const ToolEdit& edit);
+// The tool's shape, valid by construction: the kernel's regular_polygon(to, r, kToolCorners) for
+// a click, its capsule(from, to, r) otherwise. The radius is clamped to [kMinToolRadius,
+// kMaxToolRadius].
+Polygon tool_shape(const ToolEdit& edit);
 
 // The landscape edit a tool makes (landscape_log.hpp's kinds): carve, fill, fill_empty, replace.
 log::LandscapeEditKind edit_kind(ToolKind tool) noexcept;

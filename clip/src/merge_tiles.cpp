@@ -1,0 +1,160 @@
+// merge_tiles (clip.hpp): the union of a valid set's members without the general pipeline.
+// Members of a valid set have disjoint interiors, so their boundaries never cross: they meet at
+// points and along collinear stretches only. Stages, each handing the next what it needs:
+//   1. boundary stretches: the members' directed edges grouped by supporting line; on each
+//      line the net direction of the edges over every stretch between their end points (+1,
+//      -1 or 0: two members covering a stretch the same way would overlap), so stretches two
+//      members share cancel and every stretch left has the union's inside on its left;
+//   2. faces: the stretches traced by the sharpest-left-turn rule (face_tracing.hpp), walks
+//      split where they revisit a point: counter-clockwise outer rings and clockwise holes;
+//   3. the rings reduced to their corners and the points two rings touch at (what hole
+//      splitting may bridge to, as assembly's corner bridges), holes split (hole_splitting.hpp),
+//      each piece in canonical form, the pieces sorted.
+// Nothing is rounded: every output vertex is a member's vertex. In checked mode the result is
+// validated and its area compared with the members' sum, exactly.
+#include <algorithm>
+
+#include "canonical.hpp"
+#include "edgeland/clip/clip.hpp"
+#include "edgeland/kernel/area.hpp"
+#include "edgeland/kernel/assert.hpp"
+#include "edgeland/kernel/supporting_line.hpp"
+#include "face_tracing.hpp"
+#include "hole_splitting.hpp"
+#include "valid_set_factory.hpp"
+
+namespace edgeland {
+namespace detail {
+namespace {
+
+// A directed edge on its supporting line (the kernel's key: reduced direction and exact offset),
+// its end points placed along the line by position_on().
+struct LineEdge {
+  SupportingLine line;
+  std::int64_t from = 0, to = 0;
+  Point64 a, b;
+  bool operator<(const LineEdge& o) const { return line < o.line; }
+};
+
+LineEdge line_edge(Point64 a, Point64 b) {
+  const SupportingLine line = supporting_line(a, b);
+  return {line, position_on(line, a), position_on(line, b), a, b};
+}
+
+// One end point of an edge of a line: where the net direction changes by `delta`.
+struct LineEvent {
+  std::int64_t at;
+  Point64 point;
+  int delta;
+};
+
+// The stretches of one line (edges [first, last) of it) with a net direction, appended to `out`.
+void net_stretches(const LineEdge* first, const LineEdge* last, std::vector<Segment>& out,
+                   std::vector<LineEvent>& events) {
+  events.clear();
+  for (const LineEdge* e = first; e != last; ++e) {
+    const bool forward = e->from < e->to;
+    events.push_back({forward ? e->from : e->to, forward ? e->a : e->b, forward ? 1 : -1});
+    events.push_back({forward ? e->to : e->from, forward ? e->b : e->a, forward ? -1 : 1});
+  }
+  std::sort(events.begin(), events.end(),
+            [](const LineEvent& l, const LineEvent& r) { return l.at < r.at; });
+  int net = 0;
+  for (std::size_t i = 0; i < events.size();) {
+    std::size_t j = i;  // every event at one position before the net is read
+    for (; j < events.size() && events[j].at == events[i].at; ++j) net += events[j].delta;
+    if (net < -1 || net > 1) fail_stage("tile merge", "two members cover a stretch the same way");
+    if (net != 0 && j < events.size()) {
+      const Point64 p = events[i].point, q = events[j].point;
+      out.push_back(net > 0 ? Segment{p, q} : Segment{q, p});
+    }
+    i = j;
+  }
+}
+
+// Stage 1: the union's boundary as directed stretches (inside on the left).
+std::vector<Segment> boundary_stretches(const PolygonSet& members) {
+  std::vector<LineEdge> edges;
+  for (const Polygon& p : members)
+    for (std::size_t i = 0; i < p.size(); ++i)
+      edges.push_back(line_edge(p[i], p[(i + 1) % p.size()]));
+  std::sort(edges.begin(), edges.end());
+  std::vector<Segment> out;
+  std::vector<LineEvent> events;
+  for (std::size_t i = 0; i < edges.size();) {
+    std::size_t j = i + 1;
+    while (j < edges.size() && edges[j].line == edges[i].line) ++j;
+    if (j == i + 1)
+      out.push_back({edges[i].a, edges[i].b});  // alone on its line: kept as it is
+    else
+      net_stretches(edges.data() + i, edges.data() + j, out, events);
+    i = j;
+  }
+  return out;
+}
+
+// Points of more than one ring, sorted: where hole splitting may bridge to beside corners.
+std::vector<Point64> shared_points(const std::vector<ScratchRing>& a,
+                                   const std::vector<ScratchRing>& b) {
+  std::vector<Point64> all;
+  for (const auto* rings : {&a, &b})
+    for (const ScratchRing& r : *rings) all.insert(all.end(), r.begin(), r.end());
+  std::sort(all.begin(), all.end());
+  std::vector<Point64> shared;
+  for (std::size_t i = 1; i < all.size(); ++i)
+    if (all[i] == all[i - 1] && (shared.empty() || shared.back() != all[i]))
+      shared.push_back(all[i]);
+  return shared;
+}
+
+void reduce_to_corners(std::vector<ScratchRing>& rings, const std::vector<Point64>& keep) {
+  Ring ring;
+  for (ScratchRing& r : rings) {
+    ring.assign(r.begin(), r.end());
+    drop_collinear_except(ring, keep);
+    r.assign(ring.begin(), ring.end());
+  }
+}
+
+// Stages 2 and 3: the faces of the stretches, holes split, the pieces canonical and sorted.
+PolygonSet pieces_of(const std::vector<Segment>& stretches, std::size_t& holes_split) {
+  ScratchVector<ScratchRing> faces, outers, holes;
+  trace_faces(stretches, faces);
+  for (ScratchRing& f : faces) {
+    const Int128 area = twice_signed_area(f);
+    if (area == 0) fail_stage("tile merge", "a traced face has no area");
+    (area > 0 ? outers : holes).push_back(std::move(f));
+  }
+  if (!holes.empty()) {
+    const std::vector<Point64> keep = shared_points(outers, holes);
+    reduce_to_corners(outers, keep);
+    reduce_to_corners(holes, keep);
+  }
+  std::vector<Ring> rings;
+  split_holes(outers, holes, holes_split, rings);
+  PolygonSet out;
+  out.reserve(rings.size());
+  for (Ring& r : rings) out.push_back(canonical_ring(std::move(r)));
+  sort_canonical(out);
+  return out;
+}
+
+void check_tiles_merged(const ValidSet& members, const PolygonSet& merged) {
+  const ValidationReport report = validate(merged, 1);
+  if (!report.ok()) fail_stage("tile merge", report.violations[0].describe());
+  if (twice_signed_area(merged) != twice_signed_area(members.polygons()))
+    fail_stage("tile merge", "the union's area is not the members' sum");
+}
+
+}  // namespace
+}  // namespace detail
+
+ValidClipResult merge_tiles(const ValidSet& set, const ClipOptions& options) {
+  ClipResult out;
+  const std::vector<Segment> stretches = detail::boundary_stretches(set.polygons());
+  out.polygons = detail::pieces_of(stretches, out.stats.holes_split);
+  if (options.checked) detail::check_tiles_merged(set, out.polygons);
+  return ValidSetFactory::from(std::move(out));
+}
+
+}  // namespace edgeland

@@ -1,0 +1,75 @@
+#include "debris_job.hpp"
+
+#include <map>
+
+#include "edgeland/clip/clip.hpp"
+#include "edgeland/game/render_meshes.hpp"
+#include "edgeland/kernel/centroid.hpp"
+#include "edgeland/kernel/convex_pieces.hpp"
+
+namespace edgeland::game_detail {
+namespace {
+
+std::size_t vertices_of(const PolygonSet& set) {
+  std::size_t n = 0;
+  for (const Polygon& p : set) n += p.size();
+  return n;
+}
+
+}  // namespace
+
+IslandRegion merged_region(Material material, PolygonSet pieces, bool checked) {
+  return {material, merge_tiles(ValidSet(std::move(pieces)), {.checked = checked}).set.polygons()};
+}
+
+// The area, centroid and bounds are the island's (exact, O(n)); the rest waits for the steps.
+DebrisJob::DebrisJob(Island island, bool checked) : island_(std::move(island)), checked_(checked) {
+  std::map<Material, PolygonSet> by_material;
+  PolygonSet all;
+  for (const IslandPiece& p : island_.pieces) {
+    by_material[p.material].push_back(p.polygon);
+    all.push_back(p.polygon);
+  }
+  materials_.assign(by_material.begin(), by_material.end());
+  vertices_ = vertices_of(all);
+  debris_.twice_area = island_.twice_area;
+  debris_.centroid = centroid(all);
+  debris_.bounds = island_.bounds;
+}
+
+bool DebrisJob::done() const noexcept {
+  return merged_ == materials_.size() && region_ == debris_.regions.size();
+}
+
+std::size_t DebrisJob::next_cost() const {
+  if (merged_ < materials_.size()) return vertices_of(materials_[merged_].second);
+  return debris_.regions[region_].polygons[polygon_].size();
+}
+
+// One material merged, or one merged polygon cut into convex pieces (and meshed).
+void DebrisJob::step(const GameOptions& options) {
+  if (merged_ < materials_.size()) {
+    auto& [material, pieces] = materials_[merged_++];
+    IslandRegion merged = merged_region(material, std::move(pieces), checked_);
+    if (!merged.polygons.empty()) debris_.regions.push_back(std::move(merged));
+    return;
+  }
+  const IslandRegion& r = debris_.regions[region_];
+  const Polygon& p = r.polygons[polygon_];
+  for (Polygon& piece : convex_pieces(p, options.max_piece_vertices))
+    debris_.pieces.push_back({r.material, std::move(piece)});
+  if (options.meshes) debris_.meshes.push_back(polygon_mesh(0, r.material, p));
+  if (++polygon_ == r.polygons.size()) ++region_, polygon_ = 0;
+}
+
+bool DebrisJob::advance(const GameOptions& options, std::size_t& spent, bool all) {
+  while (!done()) {
+    const std::size_t cost = next_cost();
+    if (!all && spent != 0 && spent + cost > options.debris_budget) break;
+    step(options);
+    spent += cost;
+  }
+  return done();
+}
+
+}  // namespace edgeland::game_detail

@@ -1,0 +1,46 @@
+#pragma once
+// One island's debris made in steps (GameOptions::debris_budget), so that a big island spreads
+// its work over a few updates instead of stalling one: first each material's merge into maximal
+// polygons (clip's merge_tiles), then the convex pieces (and mesh) of one merged polygon at a
+// time. A step's cost is the vertices it reads. The island stays in the landscape until the job
+// is done and the driver carves it out (debris.hpp, detach_prepared); if an edit changed it
+// meanwhile, the carve finds it stale and drops the job (the island tracker has queued what the
+// edit left).
+#include <cstddef>
+#include <vector>
+
+#include "edgeland/game/game_types.hpp"
+#include "edgeland/game/islands.hpp"
+
+namespace edgeland::game_detail {
+
+// One material's pieces of an island merged into maximal polygons (polygons that touch along
+// cell lines and bridges, never crossing: nothing rounds).
+IslandRegion merged_region(Material material, PolygonSet pieces, bool checked);
+
+class DebrisJob {
+ public:
+  DebrisJob(Island island, bool checked);
+
+  // Steps while their costs fit in options.debris_budget - `spent` (adding them to `spent`);
+  // one step whatever its cost when `spent` is 0, every step left when `all`. Returns done().
+  bool advance(const GameOptions& options, std::size_t& spent, bool all);
+  bool done() const noexcept;
+  const Island& island() const noexcept { return island_; }
+  std::size_t vertices() const noexcept { return vertices_; }
+  Debris take() { return std::move(debris_); }
+
+ private:
+  std::size_t next_cost() const;
+  void step(const GameOptions& options);
+
+  Island island_;
+  bool checked_;
+  std::size_t vertices_ = 0;
+  std::vector<std::pair<Material, PolygonSet>> materials_;  // pieces to merge, ascending material
+  std::size_t merged_ = 0;                                  // materials merged so far
+  std::size_t region_ = 0, polygon_ = 0;                    // next merged polygon to cut
+  Debris debris_;
+};
+
+}  // namespace edgeland::game_detail

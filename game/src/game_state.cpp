@@ -1,0 +1,225 @@
+#include "game_state.hpp"
+
+#include <algorithm>
+
+#include "debris.hpp"
+#include "edgeland/clip/clip.hpp"
+#include "edgeland/game/render_meshes.hpp"
+#include "island_walk.hpp"
+#include "update_merge.hpp"
+
+namespace edgeland::game_detail {
+namespace {
+
+// An edit that turns some non-solid material solid (a fill, in the game's terms).
+bool fills(const Edit& e, const PhysicsMaterials& materials) {
+  for (std::size_t m = 0; m < kMaterialCount; ++m) {
+    const Material from = static_cast<std::uint8_t>(m);
+    if (!materials.is_solid(from) && materials.is_solid(e.map[from])) return true;
+  }
+  return false;
+}
+
+// One polygon of a cell, for comparing the cells before and after a reset.
+struct Held {
+  PolygonId id;
+  Material material;
+  const Polygon* ring;
+  Box64 cell;
+  bool same(const Held& o) const {
+    return id == o.id && material == o.material && *ring == *o.ring;
+  }
+};
+
+void add_held(const CellContents& c, std::vector<Held>& out) {
+  for (std::size_t i = 0; i < c.size(); ++i)
+    out.push_back({c.ids()[i], c.material(i), &c.polygons()[i], c.box()});
+}
+
+// Whether `list` (ascending by id) holds the same polygon as `h`.
+bool holds(const std::vector<Held>& list, const Held& h) {
+  const auto [lo, hi] = std::equal_range(list.begin(), list.end(), h,
+                                         [](const Held& l, const Held& r) { return l.id < r.id; });
+  return std::any_of(lo, hi, [&](const Held& o) { return o.same(h); });
+}
+
+// The polygons of the cells a reset replaced, as a change set: those gone that the new cells do
+// not hold (same id, ring and material) are removed, the new cells' others added.
+ChangeSet changes_between(std::span<const GoneCell> gone, const CellStore& store,
+                          std::span<const Box64> fresh) {
+  std::vector<Held> before, after;
+  for (const GoneCell& g : gone) add_held(*g.contents, before);
+  for (const Box64& box : fresh) add_held(*store.at(box).scan.contents, after);
+  const auto by_id = [](const Held& l, const Held& r) { return l.id < r.id; };
+  std::sort(before.begin(), before.end(), by_id);
+  std::sort(after.begin(), after.end(), by_id);
+  ChangeSet out;
+  out.cells.assign(fresh.begin(), fresh.end());
+  for (const Held& b : before)
+    if (!holds(after, b)) out.removed.push_back(b.id);
+  for (const Held& a : after)
+    if (!holds(before, a)) out.added.push_back({a.id, a.material, *a.ring, a.cell});
+  return out;
+}
+
+// The options a later update would trip over, refused before anything is built: debris pieces
+// of fewer than 3 vertices would throw from convex_pieces() in the middle of an update, after its
+// edits were kept.
+const GameOptions& checked(const GameOptions& options) {
+  if (options.max_piece_vertices < 3) {
+    throw InvalidArgument("max_piece_vertices", options.max_piece_vertices, 3);
+  }
+  return options;
+}
+
+}  // namespace
+
+GameState::GameState(Landscape world, const GameOptions& options)
+    : options_(checked(options)),
+      land_(std::move(world)),
+      filled_(land_),
+      surface_(options.surface) {
+  const std::vector<Box64> cells = all_cells(land_);
+  store_.scan(land_, cells, options_.surface.materials);
+  surface_.update(land_, store_, {}, cells);
+  if (!options_.debris) return;
+  islands_ = std::make_unique<IslandTree>(land_, store_, options_.surface.materials);
+  queue_islands(islands_of(land_, store_, islands_->islands()));
+}
+
+// Stage "edit": the frame's edits as one batch (Landscape::apply_batch: one overlay per touched
+// cell, rounded once; a batch of one is that edit), kept only when it succeeds.
+ChangeSet GameState::edit(std::span<const Edit> edits) { return land_.apply_batch(edits); }
+
+GameUpdate GameState::apply(std::span<const Edit> edits) {
+  const Landscape before = land_;
+  ChangeSet changes = edit(edits);  // the only step that may throw an input error
+  GameUpdate out;
+  start_work();
+  note_fills(edits);
+  filled_ = land_;  // before debris leaves it: a body in a fill that fell is buried too
+  follow(before, changes, out);
+  take_changes(out.changes, std::move(changes));
+  drain_debris(out);
+  finish(out);
+  return out;
+}
+
+GameUpdate GameState::reset(Landscape world) {
+  land_ = std::move(world);
+  fills_.clear();
+  filled_ = land_;
+  queue_.clear();
+  GameUpdate out;
+  start_work();
+  differing_cells(land_, store_, replaced_, fresh_);
+  replace_cells(replaced_, fresh_, out);
+  out.changes = changes_between(gone_, store_, fresh_);
+  if (islands_) {  // summaries made anew: every island of the world waits again
+    islands_ = std::make_unique<IslandTree>(land_, store_, options_.surface.materials);
+    queue_islands(islands_of(land_, store_, islands_->islands()));
+  }
+  drain_debris(out);
+  finish(out);
+  return out;
+}
+
+// Stage "follow": the change's cells replaced in the store (each new one scanned once), then
+// the chains and the island summaries from the records.
+void GameState::follow(const Landscape& before, const ChangeSet& changes, GameUpdate& out) {
+  fresh_.clear();
+  for (const Box64& box : changes.cells)
+    if (land_.cell(box)) fresh_.push_back(box);  // a batch's step may re-cut a cell again
+  std::sort(fresh_.begin(), fresh_.end(), [](const Box64& l, const Box64& r) {
+    return l.min != r.min ? l.min < r.min : l.max < r.max;
+  });
+  fresh_.erase(std::unique(fresh_.begin(), fresh_.end()), fresh_.end());
+  replaced_cells(before, fresh_, replaced_);
+  replace_cells(replaced_, fresh_, out);
+  if (!islands_) return;
+  std::vector<Island> found = islands_of(land_, store_, islands_->update(land_, store_, fresh_));
+  out.work.islands_found += found.size();
+  queue_islands(std::move(found));
+}
+
+void GameState::queue_islands(std::vector<Island> islands) {
+  for (Island& island : islands)
+    queue_.push_back({DebrisJob(std::move(island), land_.checked()), 0});
+}
+
+void GameState::replace_cells(std::span<const Box64> replaced, std::span<const Box64> fresh,
+                              GameUpdate& out) {
+  gone_.clear();
+  store_.remove(replaced, gone_);
+  store_.scan(land_, fresh, options_.surface.materials);
+  take_chains(out.chains, surface_.update(land_, store_, gone_, fresh));
+  out.work.cells_traced += surface_.last_traced();
+}
+
+// Stage "debris": the queued islands' jobs advanced, those finished carved out in one edit,
+// then followed.
+void GameState::drain_debris(GameUpdate& out) {
+  if (queue_.empty()) return;
+  std::vector<DebrisJob> finished = advance_jobs();
+  for (Waiting& w : queue_) ++w.age;
+  if (finished.empty()) return;
+  const Landscape before = land_;
+  DetachedAll detached = detach_finished(land_, finished);
+  if (!detached.changes.cells.empty()) follow(before, detached.changes, out);
+  take_changes(out.changes, std::move(detached.changes));
+  out.work.islands_detached += detached.debris.size();
+  for (Debris& d : detached.debris) out.debris.push_back(std::move(d));
+}
+
+// Oldest first, while the budget lasts (the first gets a step whatever it costs); a job that
+// has waited options_.max_debris_wait updates is finished whatever the budget. Queued later,
+// a job has waited no longer than those before it, so the first that stops ends the pass.
+std::vector<DebrisJob> GameState::advance_jobs() {
+  std::vector<DebrisJob> finished;
+  std::size_t spent = 0;
+  while (!queue_.empty()) {
+    Waiting& w = queue_.front();
+    if (!w.job.advance(options_, spent, w.age >= options_.max_debris_wait)) break;
+    finished.push_back(std::move(w.job));
+    queue_.pop_front();
+  }
+  return finished;
+}
+
+// Stage "finish": the merged lists in order, the meshes of what the update added.
+void GameState::finish(GameUpdate& out) const {
+  finish_changes(out.changes, land_);
+  finish_chains(out.chains);
+  if (options_.meshes) out.meshes = mesh_update(out.changes);
+  out.debris_waiting = queue_.size();
+  out.work.cells_scanned = static_cast<std::size_t>(store_.scans() - scans_before_);
+  out.work.boundary_passes = static_cast<std::size_t>(solid_boundary_runs() - passes_before_);
+}
+
+void GameState::start_work() {
+  scans_before_ = store_.scans();
+  passes_before_ = solid_boundary_runs();
+}
+
+void GameState::note_fills(std::span<const Edit> edits) {
+  fills_.clear();
+  for (const Edit& e : edits)
+    if (fills(e, options_.surface.materials)) fills_.push_back(e.shape);
+}
+
+// The box meets a filling shape's interior where the edits left solid (before any of it fell as
+// debris): the shape cut to the box (the clipper's one rounding), then overlaps().
+bool GameState::buried(const Box64& box) const {
+  if (box.min.x >= box.max.x || box.min.y >= box.max.y) return false;
+  for (const ValidSet& shape : fills_) {
+    const std::optional<Box64> bounds = bounding_box(shape.polygons());
+    if (!bounds || !bounds->overlaps_open(box)) continue;
+    const ValidClipResult inside = clip_to_box(shape, box);
+    if (inside.set.polygons().empty()) continue;
+    for (Material m : filled_.overlaps(inside.set))
+      if (options_.surface.materials.is_solid(m)) return true;
+  }
+  return false;
+}
+
+}  // namespace edgeland::game_detail

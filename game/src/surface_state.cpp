@@ -1,0 +1,236 @@
+#include "surface_state.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace edgeland::game_detail {
+namespace {
+
+// The segment of the box's side as a flat box (a query for the cells across it).
+Box64 side_box(const Box64& box, Side side) {
+  const Span e = side_extent(box, side);
+  return segment_box(point_on(box, side, e.lo), point_on(box, side, e.hi));
+}
+
+// Whether `other` lies across `side` of `box` along a stretch of positive length.
+bool shares_side(const Box64& box, Side side, const Box64& other) {
+  if (!across(box, side, other)) return false;
+  const bool horizontal = side == Side::kBottom || side == Side::kTop;
+  return horizontal ? std::min(box.max.x, other.max.x) > std::max(box.min.x, other.min.x)
+                    : std::min(box.max.y, other.max.y) > std::max(box.min.y, other.min.y);
+}
+
+void add_ends(const SurfaceChain& c, std::vector<Point64>& out) {
+  if (c.closed) return;
+  out.push_back(c.points.front());
+  out.push_back(c.points.back());
+}
+
+}  // namespace
+
+// Whether the cell with this box was traced by this update (a gone cell's box that the
+// landscape still has: its old chains are the computed cell's).
+bool SurfaceState::traced_now(const CellStore& store, const Box64& box) const {
+  const CellRecord* r = store.find(box);
+  return r != nullptr && r->traced_in == stamp_;
+}
+
+ChainUpdate SurfaceState::update(const Landscape& world, CellStore& store,
+                                 std::span<const GoneCell> gone, std::span<const Box64> fresh) {
+  ChainUpdate update;
+  ++stamp_;
+  gone_.clear();
+  for (const GoneCell& g : gone) gone_.emplace(g.box, &g);
+  compute_covers(world, store, fresh);
+  trace(world, store);
+  unindex(store, gone);
+  set_ghosts(world.world());
+  reghost_kept(world.world(), store, update);
+  commit(store, gone, update);
+  std::sort(update.removed.begin(), update.removed.end());
+  return update;
+}
+
+// Stage "covers": the fresh cells are computed; a neighbour across a side whose port spans
+// changed (every side of a box the landscape did not have before) is computed when its covers
+// changed.
+void SurfaceState::compute_covers(const Landscape& world, CellStore& store,
+                                  std::span<const Box64> fresh) {
+  computed_.clear();
+  for (const Box64& box : fresh) {
+    CellRecord& record = store.at(box);
+    covers_of(world, store, box, record.covers);
+    const auto before = gone_.find(box);
+    add_computed(record, box,
+                 before == gone_.end() ? std::vector<ChainId>{} : before->second->chains);
+  }
+  for (const Box64& box : fresh) {
+    const auto before = gone_.find(box);
+    const SideSpans& now = store.at(box).scan.port_spans;
+    for (Side side : kSides) {
+      const auto s = static_cast<std::size_t>(side);
+      if (before != gone_.end() && before->second->port_spans.sides[s] == now.sides[s]) continue;
+      world.cells_in(side_box(box, side), [&](const CellView& c) {
+        if (!shares_side(box, side, c.box)) return true;
+        CellRecord& next = store.at(c.box);
+        if (next.traced_in != stamp_ && covers_changed(world, store, c.box))
+          add_computed(next, c.box, next.chains);
+        return true;
+      });
+    }
+  }
+}
+
+void SurfaceState::add_computed(CellRecord& record, const Box64& box, std::vector<ChainId> old) {
+  record.traced_in = stamp_;
+  computed_.push_back({box, std::move(old), 0, 0});
+}
+
+bool SurfaceState::covers_changed(const Landscape& world, CellStore& store, const Box64& box) {
+  covers_of(world, store, box, covers_);
+  CellRecord& record = store.at(box);
+  if (covers_ == record.covers) return false;
+  std::swap(record.covers, covers_);
+  return true;
+}
+
+void SurfaceState::covers_of(const Landscape& world, const CellStore& store, const Box64& box,
+                             SideSpans& out) {
+  neighbours_.clear();
+  world.cells_in(box, [&](const CellView& c) {
+    if (c.box == box) return true;
+    const CellRecord* r = store.find(c.box);
+    if (r == nullptr) throw std::logic_error("game layer: a cell without a record");
+    neighbours_.push_back({c.box, &r->scan.port_spans});
+    return true;
+  });
+  covers_from_ports(box, neighbours_, out);
+}
+
+// Stage "trace": stages 2-3 of each computed cell from its record.
+void SurfaceState::trace(const Landscape& world, const CellStore& store) {
+  pending_.clear();
+  for (Computed& c : computed_) {
+    const CellRecord& r = *store.find(c.box);
+    surface_segments(r.scan, r.covers, world.world(), options_.border_wall, segments_);
+    traced_.clear();
+    trace_chains(segments_, c.box, world.world(), options_.border_wall, trace_scratch_, traced_);
+    c.first = pending_.size();
+    c.count = traced_.size();
+    for (TracedChain& t : traced_) {
+      SurfaceChain chain;
+      chain.points = std::move(t.points);
+      chain.materials = std::move(t.materials);
+      chain.closed = t.closed;
+      chain.cell = c.box;
+      if (chain.closed) {
+        chain.ghost_prev = chain.points.back();
+        chain.ghost_next = chain.points.front();
+      }
+      pending_.push_back(std::move(chain));
+    }
+  }
+}
+
+// Stage "unindex": the chains being replaced leave the end index (the computed cells' old
+// chains, and those of gone cells whose box is gone too).
+void SurfaceState::unindex(const CellStore& store, std::span<const GoneCell> gone) {
+  affected_.clear();
+  const auto out = [&](ChainId id) {
+    const SurfaceChain& c = chains_.at(id);
+    ends_.remove(c);
+    add_ends(c, affected_);
+  };
+  for (const Computed& c : computed_)
+    for (ChainId id : c.old) out(id);
+  for (const GoneCell& g : gone)
+    if (!traced_now(store, g.box))
+      for (ChainId id : g.chains) out(id);
+}
+
+// Stage "ghosts": the new chains enter the index, then each open one takes its ghosts.
+void SurfaceState::set_ghosts(const Box64& world) {
+  for (const SurfaceChain& c : pending_) {
+    ends_.add(c);
+    add_ends(c, affected_);
+  }
+  const ChainsAround around = ends_.lookup();
+  for (SurfaceChain& c : pending_) game_detail::set_ghosts(c, around, world, options_.border_wall);
+}
+
+// A kept chain with an end where chains left or entered the index takes its ghosts again; one
+// whose ghosts moved is replaced: a new id for the same map node (so the index, which points at
+// the node, stays right). A ghost depends only on the chains' points, so the order is free.
+void SurfaceState::reghost_kept(const Box64& world, CellStore& store, ChainUpdate& update) {
+  std::sort(affected_.begin(), affected_.end());
+  affected_.erase(std::unique(affected_.begin(), affected_.end()), affected_.end());
+  const ChainsAround around = ends_.lookup();
+  const SurfaceChain* pending_begin = pending_.data();
+  const SurfaceChain* pending_end = pending_begin + pending_.size();
+  for (const Point64 p : affected_) {
+    around_.clear();
+    ends_.chains_at(p, around_);
+    for (const SurfaceChain* kept : around_) {
+      if (kept >= pending_begin && kept < pending_end) continue;
+      SurfaceChain again = *kept;
+      game_detail::set_ghosts(again, around, world, options_.border_wall);
+      if (!(again == *kept)) rekey(*kept, again, store, update);
+    }
+  }
+}
+
+void SurfaceState::rekey(const SurfaceChain& kept, const SurfaceChain& again, CellStore& store,
+                         ChainUpdate& update) {
+  std::vector<ChainId>& ids = store.at(kept.cell).chains;
+  const auto at =
+      std::find_if(ids.begin(), ids.end(), [&](ChainId id) { return &chains_.at(id) == &kept; });
+  auto node = chains_.extract(*at);
+  update.removed.push_back(node.key());
+  node.key() = next_id_++;
+  node.mapped().ghost_prev = again.ghost_prev;
+  node.mapped().ghost_next = again.ghost_next;
+  *at = node.key();
+  update.added.emplace_back(node.key(), node.mapped());
+  chains_.insert(std::move(node));
+}
+
+// Stage "commit": each computed cell's new chains take the id of an equal old chain of the same
+// box, or a fresh one (moved into the map, the index pointed at the map's node); old chains not
+// taken, and those of gone cells whose box is gone, are removed.
+void SurfaceState::commit(CellStore& store, std::span<const GoneCell> gone, ChainUpdate& update) {
+  for (Computed& c : computed_) {
+    std::vector<ChainId>& ids = store.at(c.box).chains;
+    ids.clear();
+    for (std::size_t k = c.first; k < c.first + c.count; ++k)
+      ids.push_back(take(pending_[k], c.old, update));
+    for (ChainId id : c.old) remove(id, update);
+  }
+  for (const GoneCell& g : gone)
+    if (!traced_now(store, g.box))
+      for (ChainId id : g.chains) remove(id, update);
+}
+
+// The id of a new chain: an equal old one's (taken out of `old`), or a fresh one.
+ChainId SurfaceState::take(SurfaceChain& chain, std::vector<ChainId>& old, ChainUpdate& update) {
+  const auto same =
+      std::find_if(old.begin(), old.end(), [&](ChainId id) { return chains_.at(id) == chain; });
+  if (same != old.end()) {
+    const ChainId id = *same;
+    old.erase(same);
+    const SurfaceChain& kept = chains_.at(id);
+    ends_.replace(&chain, kept);
+    return id;
+  }
+  const ChainId id = next_id_++;
+  const auto it = chains_.emplace(id, std::move(chain)).first;
+  ends_.replace(&chain, it->second);
+  update.added.emplace_back(id, it->second);
+  return id;
+}
+
+void SurfaceState::remove(ChainId id, ChainUpdate& update) {
+  chains_.erase(id);
+  update.removed.push_back(id);
+}
+
+}  // namespace edgeland::game_detail
