@@ -100,9 +100,9 @@ inline constexpr std::uint64_t kKdTreeHash = 0x88c6cb00a6c83cd3ull;
 // Pinned when regions came (issue 37); the two above are the same with them off.
 inline constexpr std::uint64_t kRegionsHash = 0x1cadce143d958fc8ull;
 // The same edits in frame batches (run_batches): pinned when batches came (issue 35 point 2).
-inline constexpr std::uint64_t kQuadtreeBatchHash = 0x0ull;
-inline constexpr std::uint64_t kKdTreeBatchHash = 0x0ull;
-inline constexpr std::uint64_t kRegionsBatchHash = 0x0ull;
+inline constexpr std::uint64_t kQuadtreeBatchHash = 0xdccf7cada8d4e794ull;
+inline constexpr std::uint64_t kKdTreeBatchHash = 0xa992c3fd480eb2cfull;
+inline constexpr std::uint64_t kRegionsBatchHash = 0x18af83bb1a78398aull;
 // The algorithm version (delta.hpp) these hashes belong to: a change of the pins is a change of
 // how edits round, so kAlgorithmVersion goes up with it (peers of different versions must not
 // exchange COMMAND deltas). LandscapeDeterminism.PinsBelongToTheAlgorithmVersion checks both

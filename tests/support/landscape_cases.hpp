@@ -89,7 +89,7 @@ inline Landscape run_case(const LandscapeCase& c, const LandscapeConfig& config,
 
 // The edit as a batch takes it (types.hpp Edit).
 inline Edit as_edit(const LandscapeEdit& e) {
-  ValidSet shape(e.shape);
+  ValidSet shape(e.shape, Operand::kClip);
   switch (e.kind) {
     case LandscapeEdit::Kind::kCarve:
       return Edit::carve(std::move(shape));
