@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "edgeland/box2d/terrain.hpp"
-#include "edgeland/demo/splitmix64.hpp"
+#include "edgeland/kernel/splitmix64.hpp"
 
 namespace edgeland::box2d {
 
@@ -72,7 +72,7 @@ class PhysicsScene {
     std::int64_t in(std::int64_t lo, std::int64_t hi);  // [lo, hi]
 
    private:
-    demo::SplitMix64 source_;
+    edgeland::SplitMix64 source_;
   };
 
   void drop_bodies(int count);
