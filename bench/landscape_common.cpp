@@ -98,16 +98,54 @@ std::vector<double> time_edits(World& world, const std::vector<Edit>& edits) {
   return seconds;
 }
 
+namespace {
+
+// A workload's edit as the landscape's Edit (types.hpp), for a batch.
+edgeland::Edit landscape_edit(const Edit& e) {
+  switch (e.kind) {
+    case EditKind::kCarve:
+      return edgeland::Edit::carve(e.shape);
+    case EditKind::kFill:
+      return edgeland::Edit::fill(e.shape, e.material);
+    case EditKind::kReplace:
+      break;
+  }
+  return edgeland::Edit::replace(e.shape, e.from, e.material);
+}
+
+// The edits [from, to) as one batch: made before the clock starts.
+double time_batch(World& world, const std::vector<Edit>& edits, std::size_t from,
+                  std::size_t to) {
+  if (auto* l = std::get_if<Landscape>(&world)) {
+    std::vector<edgeland::Edit> batch;
+    for (std::size_t i = from; i < to; ++i) batch.push_back(landscape_edit(edits[i]));
+    return seconds_of([&] { l->apply_batch(batch); });
+  }
+  return seconds_of([&] {
+    for (std::size_t i = from; i < to; ++i) apply_edit(world, edits[i]);
+  });
+}
+
+}  // namespace
+
+std::vector<double> time_batches(World& world, const std::vector<Edit>& edits, std::size_t size) {
+  if (size <= 1) return time_edits(world, edits);
+  std::vector<double> seconds;
+  for (std::size_t from = 0; from < edits.size(); from += size)
+    seconds.push_back(time_batch(world, edits, from, std::min(from + size, edits.size())));
+  return seconds;
+}
+
 std::size_t repeats() {
   return std::max<std::size_t>(1, env_count("EDGELAND_LANDSCAPE_REPEATS", 5));
 }
 
 std::vector<double> fastest_edits(const World& start, const std::vector<Edit>& edits,
-                                  std::optional<World>& end) {
+                                  std::optional<World>& end, std::size_t batch) {
   std::vector<double> fastest;
   for (std::size_t r = 0; r < repeats(); ++r) {
     end.emplace(start);
-    const std::vector<double> seconds = time_edits(*end, edits);
+    const std::vector<double> seconds = time_batches(*end, edits, batch);
     if (r == 0) fastest = seconds;
     for (std::size_t i = 0; i < seconds.size(); ++i) fastest[i] = std::min(fastest[i], seconds[i]);
   }

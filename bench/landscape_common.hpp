@@ -65,16 +65,20 @@ double seconds_of(F&& f) {
 
 // Applies every edit in turn, timing each one.
 std::vector<double> time_edits(World& world, const std::vector<Edit>& edits);
+// Applies the edits in frame batches of `size` (the last may be shorter), timing each batch: a
+// landscape applies a batch as one edit (Landscape::apply_batch, rounded once), the bitmap paints
+// its edits in turn. A size of 1 is time_edits.
+std::vector<double> time_batches(World& world, const std::vector<Edit>& edits, std::size_t size);
 
 // EDGELAND_LANDSCAPE_REPEATS (default 5): how often a timed run is repeated from the same start,
 // keeping each edit's (or batch's) fastest time. The edits are deterministic, so every repeat
 // does the same work; on a shared machine a preemption rarely hits the same edit twice.
 std::size_t repeats();
 
-// time_edits from `start`, repeats() times; each edit's fastest time. `end` receives the world
-// after the edits.
+// time_batches from `start`, repeats() times; each edit's (batch's) fastest time. `end`
+// receives the world after the edits.
 std::vector<double> fastest_edits(const World& start, const std::vector<Edit>& edits,
-                                  std::optional<World>& end);
+                                  std::optional<World>& end, std::size_t batch = 1);
 
 // Query timing: per-query seconds of each batch of kQueryBatch queries (one steady_clock read
 // costs ~30 ns, more than a bitmap lookup), each batch the fastest of repeats() passes.

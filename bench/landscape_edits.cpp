@@ -4,7 +4,9 @@
 // the landscape as quadtree, kd-tree and uniform grid, and for the bitmap. The workloads
 // (carve, dig, fill, spot) are landscape_workloads.hpp's.
 //
-// Names landscape_edit/WORKLOAD/RIVAL/EDITS, EDITS from EDGELAND_LANDSCAPE_EDITS (default
+// Names landscape_edit/WORKLOAD/RIVAL/EDITS, and landscape_batch/WORKLOAD/RIVAL/EDITS/3 for the
+// workloads at one place (dig, spot, pit, hotspot) in frame batches of 3 (times per batch: the
+// landscape's apply_batch against the bitmap painting the same three); EDITS from EDGELAND_LANDSCAPE_EDITS (default
 // 10000), blocks of EDGELAND_LANDSCAPE_BLOCK (1000); each edit's time is its fastest of
 // EDGELAND_LANDSCAPE_REPEATS runs from the same start (landscape_common.hpp). Every rival gets the
 // same shapes as ValidSets built before any clock starts (the bitmap reads their polygons): neither
@@ -54,23 +56,29 @@ struct RunResult {
   std::optional<World> world;
 };
 
-RunResult run_once(Workload w, Rival rival) {
+// Frame batches of this many edits (Landscape::apply_batch) in the landscape_batch rows.
+constexpr std::size_t kBatchSize = 3;
+
+RunResult run_once(Workload w, Rival rival, std::size_t batch) {
   RunResult r;
-  r.seconds = fastest_edits(start_world(w, rival), edits(w), r.world);
+  r.seconds = fastest_edits(start_world(w, rival), edits(w), r.world, batch);
   return r;
 }
 
-// The bitmap's summary of a workload, from its own benchmark or made here.
-std::map<Workload, EditSummary>& bitmap_summaries() {
-  static std::map<Workload, EditSummary> cache;
+// The bitmap's summary of a workload in batches of a size, from its own benchmark or made here.
+using BitmapKey = std::pair<Workload, std::size_t>;
+std::map<BitmapKey, EditSummary>& bitmap_summaries() {
+  static std::map<BitmapKey, EditSummary> cache;
   return cache;
 }
 
-const EditSummary& bitmap_summary(Workload w, std::size_t block) {
+const EditSummary& bitmap_summary(Workload w, std::size_t batch, std::size_t block) {
   auto& cache = bitmap_summaries();
-  auto it = cache.find(w);
+  auto it = cache.find({w, batch});
   if (it == cache.end())
-    it = cache.emplace(w, summarize(run_once(w, Rival::kBitmap).seconds, block)).first;
+    it = cache.emplace(BitmapKey{w, batch},
+                       summarize(run_once(w, Rival::kBitmap, batch).seconds, block))
+             .first;
   return it->second;
 }
 
@@ -80,11 +88,11 @@ void report_ratios(benchmark::State& state, const EditSummary& s, const EditSumm
   state.counters["mean_vs_bitmap"] = s.mean_us / bitmap.mean_us;
 }
 
-void run_edit_benchmark(benchmark::State& state, Workload w, Rival rival) {
-  const std::size_t block = env_count("EDGELAND_LANDSCAPE_BLOCK", 1000);
+void run_edit_benchmark(benchmark::State& state, Workload w, Rival rival, std::size_t batch) {
+  const std::size_t block = env_count("EDGELAND_LANDSCAPE_BLOCK", 1000) / batch;
   RunResult r;
   for (auto _ : state) {
-    if (!guarded(state, [&] { r = run_once(w, rival); })) return;
+    if (!guarded(state, [&] { r = run_once(w, rival, batch); })) return;
     double total = 0;
     for (double s : r.seconds) total += s;
     state.SetIterationTime(total);
@@ -93,12 +101,21 @@ void run_edit_benchmark(benchmark::State& state, Workload w, Rival rival) {
   const EditSummary s = summarize(r.seconds, block);
   report(state, s);
   report_stats(state, *r.world);
-  if (w == Workload::kCarve) carved_worlds().insert_or_assign(rival, *r.world);
+  if (w == Workload::kCarve && batch == 1) carved_worlds().insert_or_assign(rival, *r.world);
   if (rival == Rival::kBitmap) {
-    bitmap_summaries().insert_or_assign(w, s);
+    bitmap_summaries().insert_or_assign({w, batch}, s);
     return;
   }
-  if (!guarded(state, [&] { report_ratios(state, s, bitmap_summary(w, block)); })) return;
+  if (!guarded(state, [&] { report_ratios(state, s, bitmap_summary(w, batch, block)); })) return;
+}
+
+void register_edit_benchmark(const std::string& name, Workload w, Rival rival, std::size_t batch) {
+  benchmark::RegisterBenchmark(
+      name.c_str(),
+      [w, rival, batch](benchmark::State& state) { run_edit_benchmark(state, w, rival, batch); })
+      ->Iterations(1)
+      ->UseManualTime()
+      ->Unit(benchmark::kMillisecond);
 }
 
 }  // namespace
@@ -108,17 +125,18 @@ World carve_workload_end(Rival rival) { return start_world(Workload::kFill, riva
 void register_edit_benchmarks() {
   const std::string edits = std::to_string(edit_count());
   for (Workload w : kWorkloads) {
-    for (Rival rival : {Rival::kBitmap, Rival::kQuadtree, Rival::kKdTree, Rival::kGrid}) {
-      const std::string name =
-          std::string("landscape_edit/") + workload_name(w) + "/" + rival_name(rival) + "/" + edits;
-      benchmark::RegisterBenchmark(
-          name.c_str(),
-          [w, rival](benchmark::State& state) { run_edit_benchmark(state, w, rival); })
-          ->Iterations(1)
-          ->UseManualTime()
-          ->Unit(benchmark::kMillisecond);
-    }
+    for (Rival rival : {Rival::kBitmap, Rival::kQuadtree, Rival::kKdTree, Rival::kGrid})
+      register_edit_benchmark(
+          std::string("landscape_edit/") + workload_name(w) + "/" + rival_name(rival) + "/" + edits,
+          w, rival, 1);
   }
+  // Frame batches where a game edits one place several times a frame: times per batch.
+  for (Workload w : {Workload::kDig, Workload::kSpot, Workload::kPit, Workload::kHotSpot})
+    for (Rival rival : {Rival::kBitmap, Rival::kQuadtree})
+      register_edit_benchmark(std::string("landscape_batch/") + workload_name(w) + "/" +
+                                  rival_name(rival) + "/" + edits + "/" +
+                                  std::to_string(kBatchSize),
+                              w, rival, kBatchSize);
 }
 
 }  // namespace edgeland::bench

@@ -19,7 +19,7 @@ lanes="${EDGELAND_JOBS:-$(nproc)}"
 results="$(mktemp -d)"
 trap 'rm -rf "$results"' EXIT
 targets=(clip_sequence clip_pair normalize parse edit_sequence game_sequence load polygon_pieces delta
-  int128_portable)
+  int128_portable net_message)
 printf '%s\n' "${targets[@]}" |
   xargs -P "$lanes" -I{} sh -c \
     'if EDGELAND_FUZZ_RECORD=0 fuzz/campaign "$1" "$2"; then touch "$3/$1.passed"; else touch "$3/$1.failed"; fi' \

@@ -1,7 +1,7 @@
 // The fuzz targets by name (decoders.hpp): each target's decoding and checks live in its own
 // file (clip_pair_decoders.cpp, clip_sequence_decoders.cpp, normalize_decoders.cpp,
 // parse_decoders.cpp, landscape_decoders.cpp, polygon_decoders.cpp, game_decoders.cpp,
-// delta_decoders.cpp, int128_decoders.cpp).
+// delta_decoders.cpp, int128_decoders.cpp, net_decoders.cpp).
 #include "decoders.hpp"
 
 #include <exception>
@@ -19,7 +19,18 @@ Runner runner_for(std::string_view target) {
   if (target == "game_sequence") return run_game_sequence;
   if (target == "delta") return run_delta;
   if (target == "int128_portable") return run_int128_portable;
+#ifdef EDGELAND_FUZZ_NET
+  if (target == "net_message") return run_net_message;
+#endif
   return nullptr;
+}
+
+std::vector<std::string> seeds_for(std::string_view target) {
+  if (target == "delta") return delta_seeds();
+#ifdef EDGELAND_FUZZ_NET
+  if (target == "net_message") return net_message_seeds();
+#endif
+  return {};
 }
 
 std::string input_as_log(std::string_view target, const std::uint8_t* data, std::size_t size) {

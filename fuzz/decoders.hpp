@@ -104,6 +104,23 @@ std::vector<std::string> delta_seeds();
 // float and narrower integers, from double). int128_decoders.cpp.
 std::optional<Finding> run_int128_portable(const std::uint8_t* data, std::size_t size);
 
+// Arbitrary bytes as one message a client sends the server (issue 37, item 5; after the first
+// byte, whose bit 0 asks for an EDIT's delta checksum to be made right, bit 1 picks the server's
+// world: every region held, or half of them as stubs, and bit 2 grants the client the lower half
+// of the world only): decode_message gives a ProtocolError or a message that round-trips,
+// having held at most a constant times its size; then handled as the server handles it
+// (net/request_checks.hpp): an EDIT refused with a typed reason and the world unchanged, or
+// applied in checked mode leaving check() ok; a HASHES or PATCH_REQUEST refused, or answered
+// within a bound (a PATCH no bigger than the world, and changing nothing applied to it).
+// net_decoders.cpp; built when net/ is (EDGELAND_FUZZ_NET).
+std::optional<Finding> run_net_message(const std::uint8_t* data, std::size_t size);
+// Inputs of run_net_message: real EDITs, repair requests and other messages.
+std::vector<std::string> net_message_seeds();
+
+// The seeds a target writes for its corpus (regress_replay TARGET --write-seeds DIR): delta's and
+// net_message's; none for the others.
+std::vector<std::string> seeds_for(std::string_view target);
+
 // The logs the inputs of clip_pair (its four operations) and clip_sequence (the steps as
 // recorded) decode to, as continuous-clip logs.
 std::string clip_pair_log(const std::uint8_t* data, std::size_t size);

@@ -7,13 +7,11 @@
 
 #include "allocation_meter.hpp"
 #include "decoders.hpp"
+#include "delta_worlds.hpp"
 #include "edgeland/spatial/delta.hpp"
 
 namespace edgeland::fuzz {
-namespace {
 
-// Small limits: a hostile PATCH may describe any world these allow, and the fuzzer must stay
-// fast.
 LandscapeLimits delta_limits() {
   LandscapeLimits l;
   l.max_cells = 1 << 12;
@@ -26,7 +24,6 @@ Polygon square(Point64 c, std::int64_t r) {
   return {{c.x - r, c.y - r}, {c.x + r, c.y - r}, {c.x + r, c.y + r}, {c.x - r, c.y + r}};
 }
 
-// A world of 1024^2 filled and edited a little; with regions (depth 2, ids per region) when asked.
 Landscape edited_world(bool regions) {
   LandscapeConfig c;
   if (regions) {
@@ -41,6 +38,16 @@ Landscape edited_world(bool regions) {
   return w;
 }
 
+void fix_checksum(std::string& bytes) {
+  if (bytes.size() < 8) return;
+  std::uint64_t h = 0xcbf29ce484222325ull;
+  for (std::size_t i = 0; i + 8 < bytes.size(); ++i)
+    h = (h ^ static_cast<unsigned char>(bytes[i])) * 0x100000001b3ull;
+  for (int i = 0; i < 8; ++i) bytes[bytes.size() - 8 + i] = static_cast<char>(h >> (8 * i));
+}
+
+namespace {
+
 // The worlds deltas are applied to: filled and edited a little, empty, with regions, and with
 // regions one of which is unloaded (edits skip it: a client watching the others).
 const std::vector<Landscape>& base_worlds() {
@@ -53,16 +60,6 @@ const std::vector<Landscape>& base_worlds() {
                                   edited_world(true), partial};
   }();
   return worlds;
-}
-
-// The bytes with their checksum made right (the fuzzer's first byte asks for it): mutations then
-// reach the payload instead of stopping at the checksum.
-void fix_checksum(std::string& bytes) {
-  if (bytes.size() < 8) return;
-  std::uint64_t h = 0xcbf29ce484222325ull;
-  for (std::size_t i = 0; i + 8 < bytes.size(); ++i)
-    h = (h ^ static_cast<unsigned char>(bytes[i])) * 0x100000001b3ull;
-  for (int i = 0; i < 8; ++i) bytes[bytes.size() - 8 + i] = static_cast<char>(h >> (8 * i));
 }
 
 // Decoding holds at most a constant times the delta (a Polygon per byte of a count is the

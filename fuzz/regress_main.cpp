@@ -3,7 +3,8 @@
 // seed corpora in the normal build.
 //   regress_replay TARGET PATH...        run every file (directories: every file in them)
 //   regress_replay TARGET --log FILE     print the continuous-clip log the input decodes to
-//   regress_replay delta --write-seeds DIR   write the delta target's seeds (fuzz/corpus/delta)
+//   regress_replay TARGET --write-seeds DIR  write the seeds of delta or net_message
+//                                            (fuzz/corpus/TARGET)
 // Exit status: 0 all passed, 1 a finding (printed with its log), 2 bad usage or unreadable.
 #include <algorithm>
 #include <cstdint>
@@ -58,8 +59,12 @@ int main(int argc, char** argv) {
     return 2;
   }
   std::vector<std::uint8_t> bytes;
-  if (target == "delta" && std::string(argv[2]) == "--write-seeds" && argc == 4) {
-    const std::vector<std::string> seeds = edgeland::fuzz::delta_seeds();
+  if (std::string(argv[2]) == "--write-seeds" && argc == 4) {
+    const std::vector<std::string> seeds = edgeland::fuzz::seeds_for(target);
+    if (seeds.empty()) {
+      std::cerr << "regress_replay: " << target << " writes no seeds\n";
+      return 2;
+    }
     for (std::size_t i = 0; i < seeds.size(); ++i) {
       std::ofstream out(std::filesystem::path(argv[3]) / ("seed-" + std::to_string(i)),
                         std::ios::binary);

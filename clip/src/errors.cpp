@@ -18,6 +18,10 @@ const char* reason_text(InvalidOverlay::Reason r) {
       return "a window is not a box of positive area within the coordinate bound";
     case InvalidOverlay::Reason::kWindowsOverlap:
       return "two windows overlap";
+    case InvalidOverlay::Reason::kTooManySteps:
+      return "more batch steps than one overlay takes";
+    case InvalidOverlay::Reason::kNoShape:
+      return "a batch step has no shape";
   }
   return "?";  // Not reached by tests: the switch covers every Reason.
 }

@@ -4,6 +4,7 @@
 // std::function: assembly asks twice per edge, and an indirect call each time was a few
 // percent of a small operation.
 #include <cstdint>
+#include <span>
 
 #include "edgeland/clip/types.hpp"
 #include "labeling.hpp"
@@ -67,6 +68,27 @@ struct RelabelTable {
   }
 };
 
+// The new label of a face of a batch overlay (relabel.hpp, relabel_batch): channel 0 names the
+// region polygon covering the face, channel 1 sums, for each step k, its shape's rings around the
+// face weighted by 4^k, and the window's (when needed) by 4^steps: two bits per shape, each 0 or
+// 1 (a valid set's rings wind once round its inside; the second bit only keeps a count a
+// rounding might double from spilling into the next shape's). Inside the window, the region's
+// label is passed through the table of every step whose shape holds the face, in order.
+struct BatchTable {
+  const std::uint32_t* region_labels = nullptr;            // per region polygon
+  const std::span<const std::uint32_t>* tables = nullptr;  // per step
+  std::uint32_t steps = 0;
+  bool window_ring = false;  // the window's ring is in the arrangement (weight 4^steps)
+  FaceLabel operator()(const SideState& st) const {
+    std::uint32_t label = st.by_channel[0] >= 0 ? region_labels[st.by_channel[0]] : 0;
+    const auto inside = static_cast<std::uint32_t>(st.by_channel[1]);
+    if (!window_ring || (inside >> (2 * steps)) != 0)
+      for (std::uint32_t k = 0; k < steps; ++k)
+        if ((inside >> (2 * k)) & 3u) label = label < tables[k].size() ? tables[k][label] : label;
+    return label == 0 ? -1 : static_cast<FaceLabel>(label);
+  }
+};
+
 // The label of a face cut into windows (relabel.hpp, cut_to_windows): the window (channel 1
 // owner) in the high half, the region's label in the low half; -1 outside either.
 inline FaceLabel window_label(const std::uint32_t* region_labels, const SideState& st) {
@@ -81,6 +103,11 @@ class LabelOf {
   static LabelOf relabel(const RelabelTable& table) {
     LabelOf l(Kind::kRelabel, ClipOp::kUnion, FillRule::kEvenOdd);
     l.relabel_ = table;
+    return l;
+  }
+  static LabelOf batch(const BatchTable* table) {
+    LabelOf l(Kind::kBatch, ClipOp::kUnion, FillRule::kEvenOdd);
+    l.batch_ = table;
     return l;
   }
   static LabelOf windows(const std::uint32_t* region_labels) {
@@ -98,17 +125,20 @@ class LabelOf {
         return relabel_(s);
       case Kind::kWindows:
         return window_label(relabel_.region_labels, s);
+      case Kind::kBatch:
+        return (*batch_)(s);
     }
     return -1;  // Not reached by tests: the switch covers every Kind.
   }
 
  private:
-  enum class Kind : std::uint8_t { kOperation, kFill, kRelabel, kWindows };
+  enum class Kind : std::uint8_t { kOperation, kFill, kRelabel, kWindows, kBatch };
   LabelOf(Kind kind, ClipOp op, FillRule rule) : kind_(kind), op_(op), rule_(rule) {}
   Kind kind_;
   ClipOp op_;
   FillRule rule_;
   RelabelTable relabel_;
+  const BatchTable* batch_ = nullptr;  // the caller's, alive while the pipeline runs
 };
 
 }  // namespace edgeland::detail

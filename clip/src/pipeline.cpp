@@ -48,10 +48,11 @@ std::size_t overlap_budget(const Pipeline& p) {
 }
 
 // Whether the small overlay's noding and snap rounding take the edge list (small_overlay.hpp):
-// asked for, and few segments of validated rings, each counting once, labeled by owners.
+// asked for, and few segments of validated rings labeled by owners (weights, a batch overlay's,
+// play no part in noding and snap rounding).
 bool small_arrangement(const Pipeline& p) {
   return p.small_overlay && p.edges.size() <= kSmallOverlayUpTo && p.mode != LabelMode::kWinding &&
-         !p.screening && p.simple_rings && p.edges.weight.empty();
+         !p.screening && p.simple_rings;
 }
 
 // The small overlay's noding and snap rounding, if it takes the edge list and its re-check finds

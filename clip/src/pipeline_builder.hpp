@@ -47,6 +47,15 @@ class PipelineBuilder {
     append_box_edges(box, kClipChannel, tag, p_.edges);
     return *this;
   }
+  // The edges appended since `from` count `weight` times each (EdgeList::weight), the edges
+  // before them once: a batch overlay's shapes, each counted with its own power of four
+  // (relabel_pipeline.hpp).
+  PipelineBuilder& weighted_from(std::size_t from, std::int32_t weight) {
+    if (p_.edges.weight.empty()) p_.edges.weight.assign(from, 1);
+    p_.edges.weight.resize(p_.edges.size(), weight);
+    return *this;
+  }
+  std::size_t edge_count() const { return p_.edges.size(); }
   // normalize()'s rings: one untagged operand (winding numbers), rings that may cross
   // themselves.
   PipelineBuilder& winding_rings(const std::vector<Ring>& rings) {

@@ -91,39 +91,60 @@ ShapeNearWindow shape_near_window(const ValidSet& shape, const Box64& window) {
   return near;
 }
 
+namespace {
+
+// The arrangement of a call (relabel_pipeline.hpp): the regions in play (channel 0), each step's
+// near members (channel 1; with several steps, step k's edges weighted 4^k) and, when needed,
+// the window's ring (with several steps weighted 4^steps), labeled by `label_of`.
+PipelineBuilder describe(const RelabelCall& call, const LabelOf& label_of,
+                         const std::vector<std::uint32_t>* in_play) {
+  const bool batch = call.steps.size() > 1;
+  PipelineBuilder p(LabelMode::kOwnerAndCount, label_of, call.options.checked);
+  p.subject(call.regions.polygons(), in_play);
+  bool collinear_free = ValidSetFactory::collinear_free(call.regions);
+  for (std::size_t k = 0; k < call.steps.size(); ++k) {
+    const std::size_t from = p.edge_count();
+    p.clip(call.steps[k].shape->polygons(), &call.steps[k].near.members);
+    if (batch) p.weighted_from(from, std::int32_t{1} << (2 * k));
+    collinear_free = collinear_free && ValidSetFactory::collinear_free(*call.steps[k].shape);
+  }
+  if (call.window_ring()) {
+    const std::size_t from = p.edge_count();
+    p.clip_box(call.window);
+    if (batch) p.weighted_from(from, std::int32_t{1} << (2 * call.steps.size()));
+  }
+  p.collinear_free(collinear_free).corner_bridges().small_overlay(call.small);
+  return p;
+}
+
+}  // namespace
+
 PipelineResult run_relabel(const RelabelCall& call, const std::vector<std::uint32_t>* in_play,
                            std::vector<Box64>* moved) {
-  // (Plain references, not a structured binding: clang 14 cannot capture one in a lambda.)
-  const ValidSet &regions = call.regions, &shape = call.shape;
-  const ShapeNearWindow& near = call.near;
+  const PolygonSet& members = call.regions.polygons();
   const Box64& window = call.window;
-  const ClipOptions& options = call.options;
-  const std::span<const RegionLabel> labels = call.labels, table = call.table;
-  const PolygonSet& members = regions.polygons();
-  // When all the near members lie in the window, being inside one of them is being inside
-  // shape ∩ window and the window's own ring is not needed; otherwise it joins them and
-  // "inside both" is a count of two.
-  RelabelTable rt{labels.data(), table.data(), table.size(), near.all_inside ? 1 : 2};
+  // One step: when all its near members lie in the window, being inside one of them is being
+  // inside shape ∩ window and the window's own ring is not needed; otherwise it joins them and
+  // "inside both" is a count of two. Several: BatchTable (face_label.hpp).
+  const StepNear& first = call.steps.front();
+  const RelabelTable one{call.labels.data(), first.table.data(), first.table.size(),
+                         call.window_ring() ? 2 : 1};
+  ScratchVector<std::span<const RegionLabel>> tables;
+  for (const StepNear& step : call.steps) tables.push_back(step.table);
+  const BatchTable several{call.labels.data(), tables.data(),
+                           static_cast<std::uint32_t>(tables.size()), call.window_ring()};
+  const LabelOf label_of = tables.size() > 1 ? LabelOf::batch(&several) : LabelOf::relabel(one);
   // The two lambdas are called, and the unwinding of the builder below runs, only for an
   // internal error: not reached by tests.
   auto inputs = [&] { return to_wkt(members); };
   auto shape_wkt = [&] {
-    return to_wkt(shape.polygons()) + " within " + to_wkt(PolygonSet{box_ring(window)});
+    std::string text;
+    for (const StepNear& step : call.steps) text += to_wkt(step.shape->polygons()) + " ";
+    return text + "within " + to_wkt(PolygonSet{box_ring(window)});
   };
-  PipelineResult r = guarded(
-      [&] {
-        PipelineBuilder p(LabelMode::kOwnerAndCount, LabelOf::relabel(rt), options.checked);
-        p.subject(members, in_play).clip(shape.polygons(), &near.members);
-        if (!near.all_inside) p.clip_box(window);
-        return p
-            .collinear_free(ValidSetFactory::collinear_free(regions) &&
-                            ValidSetFactory::collinear_free(shape))
-            .corner_bridges()
-            .small_overlay(call.small)
-            .run(moved, true);
-      },
-      options, "relabel", inputs, shape_wkt);
-  if (options.checked) check_inside(r.clipped.polygons, window, "relabel", inputs);
+  PipelineResult r = guarded([&] { return describe(call, label_of, in_play).run(moved, true); },
+                             call.options, "relabel", inputs, shape_wkt);
+  if (call.options.checked) check_inside(r.clipped.polygons, window, "relabel", inputs);
   return r;
 }
 
@@ -140,9 +161,9 @@ LabeledClipResult relabel(const ValidSet& regions, std::span<const RegionLabel> 
                           const ValidSet& shape, const Box64& window,
                           std::span<const RegionLabel> table, const ClipOptions& options) {
   detail::require_relabel_input(regions, labels, window);
-  const detail::ShapeNearWindow near = detail::shape_near_window(shape, window);
-  detail::PipelineResult r =
-      detail::run_relabel({regions, labels, shape, near, window, table, options}, nullptr, nullptr);
+  const detail::StepNear step{&shape, table, detail::shape_near_window(shape, window)};
+  detail::PipelineResult r = detail::run_relabel(
+      {regions, labels, std::span(&step, 1), window, options}, nullptr, nullptr);
   return detail::relabeled_regions(r);
 }
 

@@ -187,7 +187,7 @@ LabeledClipResult relabel_near(const RelabelCall& call, std::span<const Box64> p
   boxes.assign(piece_boxes.begin(), piece_boxes.end());
   ScratchVector<std::uint8_t> in;
   in.assign(pieces.size(), 0);
-  bring_in_near(boxes, call.near.boxes, in);
+  bring_in_near(boxes, call.member_boxes(), in);
   if (!all_in(in)) return overlay_groups_in_reach(call, boxes, in);
   return overlay_all(call);  // the shape reaches every piece
 }
@@ -198,12 +198,12 @@ LabeledClipResult relabel_near(const ValidSet& regions, std::span<const RegionLa
                                const ValidSet& shape, const Box64& window,
                                std::span<const RegionLabel> table, const ClipOptions& options) {
   detail::require_relabel_input(regions, labels, window);
-  const detail::ShapeNearWindow near = detail::shape_near_window(shape, window);
+  const detail::StepNear step{&shape, table, detail::shape_near_window(shape, window)};
   const PolygonSet& pieces = regions.polygons();
   ScratchVector<Box64> boxes;
   boxes.resize(pieces.size());
   for (std::size_t i = 0; i < pieces.size(); ++i) boxes[i] = *bounding_box(pieces[i]);
-  return detail::relabel_near({regions, labels, shape, near, window, table, options}, boxes);
+  return detail::relabel_near({regions, labels, std::span(&step, 1), window, options}, boxes);
 }
 
 }  // namespace edgeland

@@ -25,17 +25,35 @@ struct ShapeNearWindow {
 };
 ShapeNearWindow shape_near_window(const ValidSet& shape, const Box64& window);
 
-// One labeled overlay as relabel() and relabel_near() are asked for it. `small`: few segments take
-// the small overlay's noding and snap rounding (small_overlay.hpp), with the same result.
+// One step of an overlay: a shape, its members near the window, and its table.
+struct StepNear {
+  const ValidSet* shape = nullptr;
+  std::span<const RegionLabel> table;
+  ShapeNearWindow near;
+};
+
+// The steps whose shapes have members near the window, in order (the others change nothing
+// there).
+ScratchVector<StepNear> steps_near(std::span<const RelabelStep> steps, const Box64& window);
+
+// Throws InvalidOverlay (kNoShape) unless every step has a shape.
+void require_shapes(std::span<const RelabelStep> steps);
+
+// One labeled overlay as relabel(), relabel_batch() and relabel_near() are asked for it: one
+// step (relabel's arrangement and face label) or up to kMaxBatchSteps (relabel_batch's).
+// `small`: few segments take the small overlay's noding and snap rounding (small_overlay.hpp),
+// with the same result.
 struct RelabelCall {
   const ValidSet& regions;
   std::span<const RegionLabel> labels;
-  const ValidSet& shape;
-  const ShapeNearWindow& near;
+  std::span<const StepNear> steps;
   const Box64& window;
-  std::span<const RegionLabel> table;
   const ClipOptions& options;
   bool small = false;
+  // Whether some near member reaches past the window: then its ring joins the arrangement.
+  bool window_ring() const;
+  // The boxes of every step's near members.
+  ScratchVector<Box64> member_boxes() const;
 };
 
 // The arrangement of the region polygons listed in `in_play` (all of them when null), the

@@ -20,27 +20,6 @@ bool fills(const Edit& e, const PhysicsMaterials& materials) {
   return false;
 }
 
-// One edit by its kind, so the landscape's log records it as asked for.
-ChangeSet apply_one(Landscape& land, const Edit& e) {
-  switch (e.kind) {
-    case Edit::Kind::kCarve:
-      return land.carve(e.shape);
-    case Edit::Kind::kFill:
-      return land.fill(e.shape, e.map[kEmpty]);
-    case Edit::Kind::kFillEmpty:
-      return land.fill_empty(e.shape, e.map[kEmpty]);
-    case Edit::Kind::kReplace:
-      for (std::size_t m = 0; m < kMaterialCount; ++m) {
-        const Material from = static_cast<std::uint8_t>(m);
-        if (e.map[from] != from) return land.replace(e.shape, from, e.map[from]);
-      }
-      return land.relabel(e.shape, e.map);
-    case Edit::Kind::kRelabel:
-      break;
-  }
-  return land.relabel(e.shape, e.map);
-}
-
 // One polygon of a cell, for comparing the cells before and after a reset.
 struct Held {
   PolygonId id;
@@ -108,14 +87,9 @@ GameState::GameState(Landscape world, const GameOptions& options)
   queue_islands(islands_of(land_, store_, islands_->islands()));
 }
 
-// Stage "edit": the edits in order on a copy (O(1)), kept only when all of them succeed.
-ChangeSet GameState::edit(std::span<const Edit> edits) {
-  Landscape next = land_;
-  ChangeSet changes;
-  for (const Edit& e : edits) take_changes(changes, apply_one(next, e));
-  land_ = std::move(next);
-  return changes;
-}
+// Stage "edit": the frame's edits as one batch (Landscape::apply_batch: one overlay per touched
+// cell, rounded once; a batch of one is that edit), kept only when it succeeds.
+ChangeSet GameState::edit(std::span<const Edit> edits) { return land_.apply_batch(edits); }
 
 GameUpdate GameState::apply(std::span<const Edit> edits) {
   const Landscape before = land_;

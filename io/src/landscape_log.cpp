@@ -1,5 +1,6 @@
 #include "edgeland/io/landscape_log.hpp"
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <utility>
@@ -113,6 +114,31 @@ LandscapeEdit parse_edit(const EditKeyword& keyword, std::string_view raw, std::
   return edit;
 }
 
+// `batch EDIT | EDIT | ...`: each part an edit line's words (its WKT a part of `raw`, so that a
+// bad shape's column is the log line's). Every edit carries the line and the batch's size.
+LandscapeBatch parse_batch(std::string_view raw, std::string_view rest, std::size_t line) {
+  LandscapeBatch batch;
+  batch.line = line;
+  for (bool more = true; more;) {
+    const std::size_t bar = rest.find(kBatchSeparator);
+    more = bar != std::string_view::npos;
+    std::string_view part = trim_blanks(rest.substr(0, bar));
+    if (more) rest.remove_prefix(bar + 1);
+    const std::string_view word = take_word(part);
+    if (word.empty())
+      throw bad_argument(line, "batch: edit " + std::to_string(batch.edits.size() + 1) +
+                                   " is empty (expected EDIT | EDIT | ...)");
+    const EditKeyword* keyword = find_edit_keyword(word);
+    if (!keyword)
+      throw LandscapeLogError(LandscapeLogErrorKind::kUnknownCommand, line,
+                              "batch: unknown edit '" + printable_excerpt(word) +
+                                  "' (expected carve, fill, fill_empty, replace or relabel)");
+    batch.edits.push_back(parse_edit(*keyword, raw, part, line));
+  }
+  for (LandscapeEdit& e : batch.edits) e.batch = batch.edits.size();
+  return batch;
+}
+
 // The first command word of the text, or empty when it has no command.
 std::string_view first_command(std::string_view text) {
   while (!text.empty()) {
@@ -139,6 +165,10 @@ void add_command(ParsedLandscapeLog& parsed, LandscapeCommand command, std::size
     return;
   }
   if (!parsed.world) throw missing_world(line);
+  if (auto* batch = std::get_if<LandscapeBatch>(&command)) {
+    for (LandscapeEdit& e : batch->edits) parsed.edits.push_back(std::move(e));
+    return;
+  }
   parsed.edits.push_back(std::get<LandscapeEdit>(std::move(command)));
 }
 
@@ -179,12 +209,14 @@ std::optional<LandscapeCommand> parse_landscape_line(std::string_view raw,
   if (is_skipped_line(rest)) return std::nullopt;
   const std::string_view word = take_word(rest);
   if (word == kWorldKeyword) return parse_world(rest, line_number);
+  if (word == kBatchKeyword) return parse_batch(raw, rest, line_number);
   if (const EditKeyword* keyword = find_edit_keyword(word)) {
     return parse_edit(*keyword, raw, rest, line_number);
   }
-  throw LandscapeLogError(LandscapeLogErrorKind::kUnknownCommand, line_number,
-                          "unknown command '" + printable_excerpt(word) +
-                              "' (expected world, carve, fill, fill_empty, replace or relabel)");
+  throw LandscapeLogError(
+      LandscapeLogErrorKind::kUnknownCommand, line_number,
+      "unknown command '" + printable_excerpt(word) +
+          "' (expected world, carve, fill, fill_empty, replace, relabel or batch)");
 }
 
 ParsedLandscapeLog parse_landscape_log(std::string_view text) {
@@ -229,6 +261,42 @@ ChangeSet apply_edit(Landscape& landscape, LandscapeEditKind kind, const Polygon
       break;
   }
   return landscape.replace(shape, from, material);
+}
+
+namespace {
+
+// The edit as Landscape::apply_batch takes it, its shape read as apply_edit reads it.
+Edit as_edit(const LandscapeEdit& e, const ClipOptions& options) {
+  ValidSet shape = edit_shape(shape_to_set(e.shape, options));
+  switch (e.kind) {
+    case LandscapeEditKind::kCarve:
+      return Edit::carve(std::move(shape));
+    case LandscapeEditKind::kFill:
+      return Edit::fill(std::move(shape), e.material);
+    case LandscapeEditKind::kFillEmpty:
+      return Edit::fill_empty(std::move(shape), e.material);
+    case LandscapeEditKind::kReplace:
+      return Edit::replace(std::move(shape), e.from, e.material);
+    case LandscapeEditKind::kRelabel:
+      break;
+  }
+  return Edit::relabel(std::move(shape), e.map);
+}
+
+}  // namespace
+
+std::size_t step_size(std::span<const LandscapeEdit> edits) noexcept {
+  if (edits.empty()) return 0;
+  return std::clamp<std::size_t>(edits.front().batch, 1, edits.size());
+}
+
+ChangeSet apply_step(Landscape& landscape, std::span<const LandscapeEdit> step) {
+  if (step.size() == 1 && step.front().batch == 0) return apply_edit(landscape, step.front());
+  std::vector<Edit> batch;
+  batch.reserve(step.size());
+  for (const LandscapeEdit& e : step)
+    batch.push_back(as_edit(e, ClipOptions{.checked = landscape.checked()}));
+  return landscape.apply_batch(batch);
 }
 
 }  // namespace edgeland::log

@@ -21,17 +21,21 @@ std::string one_line(std::string text) {
 }
 
 ReplayFailure edit_failure(const LandscapeEdit& edit, const std::string& what, Kind kind) {
-  const std::string prefix =
-      "line " + std::to_string(edit.line) + ": " + landscape_edit_keyword(edit.kind) + ": ";
+  const std::string keyword =
+      edit.batch > 0 ? std::string(kBatchKeyword) : landscape_edit_keyword(edit.kind);
+  const std::string prefix = "line " + std::to_string(edit.line) + ": " + keyword + ": ";
   return {kind, edit.line,
           prefix + (kind == Kind::kInternal ? "internal error: " : "") + one_line(what)};
 }
 
-// One edit; the failure if it throws. A shape the kernel refuses is the log's fault; an
-// internal error of the landscape or of the OGC import is edgeland's.
-std::optional<ReplayFailure> apply_one(Landscape& landscape, const LandscapeEdit& edit) {
+// One step (an edit line, or a batch line's edits); the failure if it throws. A shape the
+// kernel refuses is the log's fault; an internal error of the landscape or of the OGC import is
+// edgeland's.
+std::optional<ReplayFailure> apply_one(Landscape& landscape,
+                                       std::span<const LandscapeEdit> step) {
+  const LandscapeEdit& edit = step.front();
   try {
-    apply_edit(landscape, edit);
+    apply_step(landscape, step);
   } catch (const LandscapeInternalError& error) {
     return edit_failure(edit, error.what(), Kind::kInternal);
   } catch (const InternalError& error) {
@@ -48,10 +52,13 @@ std::optional<ReplayFailure> apply_one(Landscape& landscape, const LandscapeEdit
 // The edits in order until one throws; the time they took.
 void apply_edits(LandscapeReplay& replay, const std::vector<LandscapeEdit>& edits) {
   const auto start = std::chrono::steady_clock::now();
-  for (const LandscapeEdit& edit : edits) {
-    replay.failure = apply_one(*replay.landscape, edit);
+  const std::span<const LandscapeEdit> all(edits);
+  for (std::size_t i = 0; i < all.size();) {
+    const std::span<const LandscapeEdit> step = all.subspan(i, step_size(all.subspan(i)));
+    replay.failure = apply_one(*replay.landscape, step);
     if (replay.failure) break;
-    ++replay.edits;
+    replay.edits += step.size();
+    i += step.size();
   }
   replay.edit_time = std::chrono::steady_clock::now() - start;
 }

@@ -69,11 +69,19 @@ void Client::receive(const std::string& bytes) {
   if (const auto* c = std::get_if<Checkpoint>(&m)) return checkpoint(*c);
   if (const auto* d = std::get_if<Digests>(&m)) return digests(*d);
   if (const auto* p = std::get_if<PatchReply>(&m)) return patched(*p);
-  if (const auto* r = std::get_if<Reject>(&m)) {
-    ++stats_.edits_rejected;
-    ++stats_.rejects[r->reason];
-    pending_.erase(r->number);
+  if (const auto* r = std::get_if<Reject>(&m)) return rejected(*r);
+}
+
+// Edit numbers start at 1: a REJECT of number 0 refuses another request, a repair's when one is
+// under way (over the repair rate): the next checkpoint that differs starts it again.
+void Client::rejected(const Reject& r) {
+  ++stats_.rejects[r.reason];
+  if (r.number == 0) {
+    search_.reset();
+    return;
   }
+  ++stats_.edits_rejected;
+  pending_.erase(r.number);
 }
 
 // --- joining -----------------------------------------------------------------------------------

@@ -6,6 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "edgeland/net/request_checks.hpp"
 #include "edgeland/spatial/delta.hpp"
 #include "enet_host.hpp"
 #include "server_debris.hpp"
@@ -14,14 +15,18 @@ namespace edgeland::net {
 
 struct Server::Client {
   Client(std::uint32_t number, std::uint32_t enet_peer, const EditPolicy& p, Clock::time_point now)
-      : id(number), peer(enet_peer), rate(p.edits_per_second, p.burst, now), flood(p.flood_limit) {}
+      : id(number),
+        peer(enet_peer),
+        rate(p.edits_per_second, p.burst, now),
+        repairs(p.repairs_per_second, p.repair_burst, now),
+        flood(p.flood_limit) {}
   std::uint32_t id, peer;
   bool greeted = false;
   Role role = Role::kFull;
   bool watch_all = true;
   std::set<std::uint32_t> watched;  // region indices (when not watch_all)
   Box64 granted{{1, 1}, {0, 0}};
-  RateLimiter rate;
+  RateLimiter rate, repairs;  // edits, repair requests
   FloodCounter flood;
   bool dropped = false;
   bool watches(std::uint32_t region) const { return watch_all || watched.count(region) != 0; }
@@ -224,42 +229,20 @@ void Server::refresh_snapshot() {
 
 // --- edits -------------------------------------------------------------------------------------
 void Server::edit(Client& c, const EditRequest& m) {
-  const EditPolicy& p = options_.policy;
   if (!c.rate.take(Clock::now())) return reject(c, m.number, RejectReason::kRate, "over the rate");
-  if (m.delta.size() > p.max_message)
-    return reject(c, m.number, RejectReason::kTooLarge, "message over the limit");
-  Delta d;
-  try {
-    d = decode_delta(m.delta);
-  } catch (const DeltaError& e) {
-    return reject(c, m.number, RejectReason::kMalformed, e.what());
-  } catch (const CoordinateOutOfRange& e) {
-    return reject(c, m.number, RejectReason::kOutOfRange, e.what());
-  } catch (const InvalidInput& e) {
-    return reject(c, m.number, RejectReason::kInvalidShape, e.what());
-  }
-  if (d.header.kind != DeltaKind::kCommand || d.header.world != world_.world_hash() ||
-      d.header.algorithm != kAlgorithmVersion)
-    return reject(c, m.number, RejectReason::kOtherWorld,
-                  "not a COMMAND of this world and version");
-  const std::optional<Box64> box = bounding_box(d.edits.front().shape.polygons());
-  if (box && !permitted(c.granted, *box))
-    return reject(c, m.number, RejectReason::kNotPermitted, "outside the box granted");
-  try {
-    apply_and_broadcast(c.id, m.number, d.edits.front());
-  } catch (const LimitExceeded& e) {
-    const bool shape = e.limit == LimitExceeded::Limit::kShapeVertices;
-    reject(c, m.number, shape ? RejectReason::kTooLarge : RejectReason::kLimit, e.what());
-  }
+  EditVerdict verdict = check_edit_request(world_, c.granted, options_.policy, m.delta);
+  if (!verdict.edit) return reject(c, m.number, verdict.refusal.reason, verdict.refusal.message);
+  apply_and_broadcast(c, m.number, verdict);
 }
 
-void Server::apply_and_broadcast(std::uint32_t origin, std::uint32_t number, const Edit& edit) {
+void Server::apply_and_broadcast(Client& c, std::uint32_t number, EditVerdict& verdict) {
   const Landscape before = world_;
-  const ChangeSet changes = apply_edit(world_, edit);
+  const std::optional<ChangeSet> changes = apply_accepted(world_, *verdict.edit, verdict.refusal);
+  if (!changes) return reject(c, number, verdict.refusal.reason, verdict.refusal.message);
   ++sequence_;
   ++stats_.edits;
-  broadcast(origin, number, before, edit, changes);
-  if (debris_) detach_debris(changes);
+  broadcast(c.id, number, before, *verdict.edit, *changes);
+  if (debris_) detach_debris(*changes);
 }
 
 // Each detachment is an edit of its own (origin 0), with its own sequence number.
@@ -338,28 +321,35 @@ Checkpoint Server::checkpoint_for(const Client& c) {
 }
 
 void Server::hashes(Client& c, const HashesRequest& m) {
+  if (const std::optional<Refusal> no = repair_refusal(c, m.paths, false))
+    return reject(c, 0, no->reason, no->message);
   Digests d{m.request, {}};
-  for (const TreePath& p : m.paths) {
-    if (!may_patch(c, p)) return reject(c, 0, RejectReason::kNotPermitted, "a path not watched");
-    d.digests.push_back(world_.node_digest(p));
-  }
+  for (const TreePath& p : m.paths) d.digests.push_back(world_.node_digest(p));
   const std::string bytes = encode_message(d);
   stats_.repair_bytes += bytes.size();
   host_->send(c.peer, bytes);
 }
 
 void Server::patch(Client& c, const PatchRequest& m) {
-  for (const TreePath& p : m.paths)
-    if (!may_patch(c, p) || !world_.node_digest(p))
-      return reject(c, 0, RejectReason::kNotPermitted, "a path not watched or not a node");
+  if (const std::optional<Refusal> no = repair_refusal(c, m.paths, true))
+    return reject(c, 0, no->reason, no->message);
   try {
     const std::string bytes = encode_message(
         PatchReply{m.request, encode_delta(patch_delta(world_, sequence_, m.paths))});
     stats_.repair_bytes += bytes.size();
     host_->send(c.peer, bytes);
-  } catch (const LandscapeError& e) {  // nested paths, or a region this server does not hold
+  } catch (const LandscapeError& e) {  // a region this server does not hold
     reject(c, 0, RejectReason::kMalformed, e.what());
   }
+}
+
+// Repair requests have a rate of their own (EditPolicy::repairs_per_second), then the checks.
+std::optional<Refusal> Server::repair_refusal(Client& c, const std::vector<TreePath>& paths,
+                                              bool patch) {
+  if (!c.repairs.take(Clock::now()))
+    return Refusal{RejectReason::kRate, "repair requests over the rate"};
+  return check_repair_request(world_, paths, patch, options_.policy,
+                              [&](const TreePath& p) { return may_patch(c, p); });
 }
 
 // A client watching every region may ask for any node; another only for nodes in its regions.

@@ -38,9 +38,8 @@ namespace {
 ChangeSet apply_command(Landscape& next, const Delta& d) {
   if (d.header.algorithm != kAlgorithmVersion)
     throw DeltaMismatch(DeltaMismatch::Field::kAlgorithm, d.header.algorithm, kAlgorithmVersion);
-  if (d.edits.size() != 1)
-    throw DeltaError("a command of " + std::to_string(d.edits.size()) + " edits", 0);
-  return apply_edit(next, d.edits.front());
+  if (d.edits.empty()) throw DeltaError("a command of no edit", 0);
+  return next.apply_batch(d.edits);  // one edit: apply_edit
 }
 
 }  // namespace

@@ -88,7 +88,7 @@ void write_changes(ByteWriter& w, const Delta& d) {
 void write_payload(ByteWriter& w, const Delta& d) {
   switch (d.header.kind) {
     case DeltaKind::kCommand:
-      w.u8(format::kSingleEdit);
+      w.u8(d.edits.size() == 1 ? format::kSingleEdit : format::kBatch);
       w.varint(d.edits.size());
       for (const Edit& e : d.edits) write_edit(w, e);
       return;
@@ -154,11 +154,17 @@ class DeltaReader {
     }
   }
 
+  // One edit, or a batch of two or more (a batch of one is that edit: it is sent as one).
   void read_command(Delta& d) {
-    if (in_.fixed(1) != format::kSingleEdit) in_.fail("unknown command form");
+    const auto form = in_.fixed(1);
+    if (form != format::kSingleEdit && form != format::kBatch) in_.fail("unknown command form");
     const std::size_t n = in_.count(format::kMinEditBytes);
-    if (n != 1) in_.fail("a single-edit command holds " + std::to_string(n) + " edits");
-    d.edits.push_back(read_edit());
+    if (form == format::kSingleEdit && n != 1)
+      in_.fail("a single-edit command holds " + std::to_string(n) + " edits");
+    if (form == format::kBatch && n < 2)
+      in_.fail("a batch command holds " + std::to_string(n) + " edits (two or more)");
+    d.edits.reserve(n);
+    for (std::size_t i = 0; i < n; ++i) d.edits.push_back(read_edit());
   }
 
   Edit read_edit() {
@@ -177,17 +183,7 @@ class DeltaReader {
     if (kind == Kind::kRelabel) map = read_map();
     PolygonSet shape(in_.count(format::kMinPolygonBytes));
     for (Polygon& p : shape) p = read_shape_ring();
-    return Edit{kind, valid_shape(std::move(shape)), map};
-  }
-
-  // What an edit does with a shape: a coordinate beyond the bound is CoordinateOutOfRange, any
-  // other violation InvalidInput naming the shape as the clip operand.
-  static ValidSet valid_shape(PolygonSet shape) {
-    for (std::size_t i = 0; i < shape.size(); ++i)
-      for (std::size_t j = 0; j < shape[i].size(); ++j)
-        if (!in_range(shape[i][j]))
-          throw CoordinateOutOfRange(Operand::kClip, i, 0, j, shape[i][j]);
-    return ValidSet(std::move(shape), Operand::kClip);
+    return Edit{kind, edit_shape(std::move(shape)), map};  // validated as an edit validates it
   }
 
   MaterialMap read_map() {

@@ -12,8 +12,10 @@ inline constexpr char kMagic[8] = {'E', 'D', 'G', 'E', 'D', 'L', 'T', 'A'};
 inline constexpr std::uint32_t kVersion = 1;
 inline constexpr std::size_t kHeaderBytes = 8 + 4 + 1 + 4 + 4 * 8;
 inline constexpr std::size_t kChecksumBytes = 8;
-// COMMAND forms: one edit (a batch form is reserved for batch edits).
+// COMMAND forms: one edit (Landscape's edits, apply_edit), or a frame batch of two or more
+// (Landscape::apply_batch: one edit of several steps, rounded once).
 inline constexpr std::uint8_t kSingleEdit = 0;
+inline constexpr std::uint8_t kBatch = 1;
 // Shape coordinates are refused from this magnitude on while reading, so that a sum of deltas
 // cannot overflow; anything beyond kCoordBound (but below this) reaches the edit, which refuses
 // it with CoordinateOutOfRange as it refuses any shape's.

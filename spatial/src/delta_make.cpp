@@ -15,9 +15,14 @@ DeltaHeader header_of(DeltaKind kind, const Landscape& before, std::uint64_t bas
 
 Delta command_delta(const Landscape& before, const Landscape& after, std::uint64_t sequence,
                     const Edit& edit) {
+  return command_delta(before, after, sequence, std::span(&edit, 1));
+}
+
+Delta command_delta(const Landscape& before, const Landscape& after, std::uint64_t sequence,
+                    std::span<const Edit> batch) {
   Delta d;
   d.header = header_of(DeltaKind::kCommand, before, before.state_hash(), after, sequence);
-  d.edits.push_back(edit);
+  d.edits.assign(batch.begin(), batch.end());
   return d;
 }
 

@@ -32,23 +32,24 @@ std::size_t vertices_of(const ValidSet& s) {
 
 }  // namespace
 
-EditBuilder::EditBuilder(const LandscapeState& state, const EditTable& table)
+EditBuilder::EditBuilder(const LandscapeState& state, std::span<const RelabelStep> steps)
     : s_(state),
-      table_(table),
+      steps_(steps),
       next_id_(state.next_id),
       id_end_(std::numeric_limits<PolygonId>::max()) {}
 
-// Steps 1 and 2-7 of the README: the shape's size against the limits, the new tree, its limits,
-// what changed (checked in checked mode), and the next state.
-EditResult EditBuilder::build(const ValidSet& shape) {
-  require_shape_size(vertices_of(shape));
-  return result(new_root(shape));
+// Steps 1 and 2-7 of the README: each shape's size against the limits, the new tree, its
+// limits, what changed (checked in checked mode), and the next state.
+EditResult EditBuilder::build() {
+  for (const RelabelStep& step : steps_) require_shape_size(vertices_of(*step.shape));
+  return result(new_root());
 }
 
 EditResult EditBuilder::build(ShapeCut cut, const Box64& box, std::size_t vertices) {
-  static const ValidSet kNothingElse;  // cells the cut does not reach take no shape
   require_shape_size(vertices);
-  reach_ = Reach{&kNothingElse, box, std::move(cut)};
+  reach_.clear();
+  reach_.push_back(Reach{box, true, std::move(cut)});
+  cut_given_ = true;
   return result(rebuilt_root());
 }
 
@@ -73,20 +74,37 @@ EditResult EditBuilder::result(NodePtr root) {
   return {next_state(std::move(root), out), std::move(out)};
 }
 
-// Steps 2-6: the touched cells found, the shape cut to them (big shapes), overlaid, split and
+// Steps 2-6: the touched cells found, each shape cut to them (big shapes), overlaid, split and
 // merged as a draft, then given ids. The clipper's internal failures become EditFailure.
-NodePtr EditBuilder::new_root(const ValidSet& shape) {
-  reach_ = Reach{&shape, bounding_box(shape.polygons()).value_or(Box64{}), std::nullopt};
-  if (shape.polygons().empty() || !s_.world.overlaps_open(reach_.box)) return s_.root;
+NodePtr EditBuilder::new_root() {
+  reach_.clear();
+  bool any = false;
+  for (const RelabelStep& step : steps_) {
+    const PolygonSet& shape = step.shape->polygons();
+    const Box64 box = bounding_box(shape).value_or(Box64{});
+    reach_.push_back(Reach{box, !shape.empty() && s_.world.overlaps_open(box), std::nullopt});
+    any = any || reach_.back().in_world;
+  }
+  if (!any) return s_.root;
   try {
-    // With regions, each region cuts the shape to its own cells (rebuild_region).
-    if (!regions_on(s_.config))
-      reach_.cut = cut_shape_to_cells(s_.root, shape, reach_.box, clip_options());
+    // With regions, each region cuts the shapes to its own cells (rebuild_region).
+    if (!regions_on(s_.config)) cut_shapes(s_.root);
   } catch (const InternalError& e) {
     throw EditFailure{std::string(e.what()) + "\n  subject = " + e.subject_wkt +
                       "\n  clip = " + e.clip_wkt};
   }
   return rebuilt_root();
+}
+
+void EditBuilder::cut_shapes(const NodePtr& node) {
+  for (std::size_t k = 0; k < steps_.size(); ++k)
+    if (reach_[k].in_world && node->box.overlaps_open(reach_[k].box))
+      reach_[k].cut = cut_shape_to_cells(node, *steps_[k].shape, reach_[k].box, clip_options());
+}
+
+bool EditBuilder::reaches(const Box64& box) const {
+  return std::any_of(reach_.begin(), reach_.end(),
+                     [&](const Reach& r) { return r.in_world && box.overlaps_open(r.box); });
 }
 
 // Steps 3-6 over the reach set up: overlays, splits and merges, ids. The clipper's internal
@@ -159,14 +177,19 @@ EditBuilder::Draft EditBuilder::Draft::inner(const Box64& box, std::uint32_t dep
   return d;
 }
 
-const ValidSet& EditBuilder::shape_in(const Node& cell) const {
-  const ValidSet* pieces = reach_.cut ? reach_.cut->of(cell) : nullptr;
-  return pieces ? *pieces : *reach_.shape;
+const ValidSet& EditBuilder::shape_in(std::size_t k, const Node& cell) const {
+  const ValidSet* pieces = reach_[k].cut ? reach_[k].cut->of(cell) : nullptr;
+  return pieces ? *pieces : *steps_[k].shape;
 }
 
+// The steps whose shapes reach the cell, in order, in one overlay (relabel_cell).
 EditBuilder::Draft EditBuilder::edit_cell(const NodePtr& cell) {
+  cell_steps_.clear();
+  for (std::size_t k = 0; k < steps_.size(); ++k)
+    if (reach_[k].in_world && cell->box.overlaps_open(reach_[k].box))
+      cell_steps_.push_back({&shape_in(k, *cell), steps_[k].table});
   std::optional<LabeledSet> content =
-      relabel_cell(cell->content, shape_in(*cell), cell->box, table_.table, clip_options()).content;
+      relabel_cell(cell->content, cell_steps_, cell->box, clip_options()).content;
   if (!content) return Draft::keep(cell);
   Draft edited = Draft::cell(cell->box, cell->depth, std::move(*content));
   grow(cell->vertices, edited.vertices);
@@ -214,7 +237,7 @@ EditBuilder::Draft EditBuilder::merge_if_small(const NodePtr& old, std::vector<D
 }
 
 EditBuilder::Draft EditBuilder::rebuild(const NodePtr& node) {
-  if (!node->box.overlaps_open(reach_.box)) return Draft::keep(node);
+  if (!reaches(node->box)) return Draft::keep(node);
   if (node->is_stub()) return unloaded(node);
   if (is_region(s_.config, node->depth)) return rebuild_region(node);
   return rebuild_loaded(node);
@@ -227,10 +250,10 @@ EditBuilder::Draft EditBuilder::unloaded(const NodePtr& stub) const {
 
 EditBuilder::Draft EditBuilder::rebuild_region(const NodePtr& region) {
   // A cut handed in whole (build(ShapeCut, ...): Landscape::remove) already keeps to cells.
-  if (reach_.cut) return rebuild_loaded(region);
-  reach_.cut = cut_shape_to_cells(region, *reach_.shape, reach_.box, clip_options());
+  if (cut_given_) return rebuild_loaded(region);
+  cut_shapes(region);
   Draft draft = rebuild_loaded(region);
-  reach_.cut.reset();
+  for (Reach& r : reach_) r.cut.reset();
   return draft;
 }
 

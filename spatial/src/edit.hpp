@@ -1,6 +1,7 @@
 #pragma once
 // One edit of the landscape as a rebuild of the touched part of the tree (edit.cpp).
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -49,15 +50,18 @@ struct EditFailure {
   std::string what;
 };
 
-// Builds the state after one edit from the current one, never changing it: the steps of
-// spatial/README.md "An edit" from finding the cells to the change set. Throws LimitExceeded
-// or EditFailure.
+// Builds the state after one edit, or one batch of edits, from the current one, never changing
+// it: the steps of spatial/README.md "An edit" from finding the cells to the change set. An
+// edit is one step (its shape and table); a batch (Landscape::apply_batch) several, applied in
+// order in one overlay per touched cell (clip's relabel_cell of several steps). The steps, their
+// shapes and tables stay the caller's. Throws LimitExceeded or EditFailure.
 class EditBuilder {
  public:
-  EditBuilder(const LandscapeState& state, const EditTable& table);
-  EditResult build(const ValidSet& shape);
-  // An edit whose shape comes already cut to the cells it reaches (the pieces within each cell's
-  // box; `box` bounds them all, `vertices` counts them): Landscape::remove.
+  EditBuilder(const LandscapeState& state, std::span<const RelabelStep> steps);
+  EditResult build();
+  // An edit of one step whose shape comes already cut to the cells it reaches (the pieces within
+  // each cell's box; `box` bounds them all, `vertices` counts them): Landscape::remove. The
+  // step's own shape is what the cells the cut does not reach take.
   EditResult build(ShapeCut cut, const Box64& box, std::size_t vertices);
 
  private:
@@ -79,14 +83,18 @@ class EditBuilder {
     bool is_cell() const { return kept ? kept->is_cell() : children.empty(); }
     const LabeledSet& cell_content() const { return kept ? kept->content : content; }
   };
-  // The shape of the edit being built, and what of it each cell takes.
+  // The shape of one step of the edit being built, and what of it each cell takes.
   struct Reach {
-    const ValidSet* shape = nullptr;
     Box64 box;
+    bool in_world = false;        // the shape meets the world's interior
     std::optional<ShapeCut> cut;  // the shape cut to the touched cells (big shapes only)
   };
 
-  NodePtr new_root(const ValidSet& shape);
+  NodePtr new_root();
+  // Whether some step's shape box meets the box's interior (the nodes an edit descends to).
+  bool reaches(const Box64& box) const;
+  // Each step's shape cut to the cells below `node` (cut_shape_to_cells; big shapes only).
+  void cut_shapes(const NodePtr& node);
   NodePtr rebuilt_root();
   EditResult result(NodePtr root);
   void require_shape_size(std::size_t vertices) const;
@@ -97,9 +105,9 @@ class EditBuilder {
   Draft rebuild_region(const NodePtr& region);
   Draft unloaded(const NodePtr& stub) const;
   Draft edit_cell(const NodePtr& cell);
-  // What of the shape a cell's overlay takes: its pieces when the shape was cut to the cells
-  // (shape_cut.hpp), else the whole shape.
-  const ValidSet& shape_in(const Node& cell) const;
+  // What of step k's shape a cell's overlay takes: its pieces when the shape was cut to the
+  // cells (shape_cut.hpp), else the whole shape.
+  const ValidSet& shape_in(std::size_t k, const Node& cell) const;
   Draft split_if_needed(Draft cell);
   Draft merge_if_small(const NodePtr& old, std::vector<Draft> children);
   NodePtr finish(Draft& draft, const NodePtr& old);
@@ -117,8 +125,10 @@ class EditBuilder {
   void grow_cells(std::size_t added);
 
   const LandscapeState& s_;
-  const EditTable& table_;
-  Reach reach_;
+  std::span<const RelabelStep> steps_;
+  std::vector<Reach> reach_;             // per step
+  bool cut_given_ = false;               // build(ShapeCut, ...): the cut came in whole
+  std::vector<RelabelStep> cell_steps_;  // the steps reaching the cell being overlaid
   PolygonId next_id_;
   PolygonId id_end_;  // the end of the id space next_id_ counts in
   std::size_t growth_ = 0;

@@ -1,5 +1,7 @@
 #include "edit_form.hpp"
 
+#include "edgeland/kernel/errors.hpp"
+
 namespace edgeland::detail {
 namespace {
 
@@ -39,3 +41,14 @@ std::pair<Material, Material> replaced(const MaterialMap& map) {
 }
 
 }  // namespace edgeland::detail
+
+namespace edgeland {
+
+ValidSet edit_shape(PolygonSet shape) {
+  for (std::size_t i = 0; i < shape.size(); ++i)
+    for (std::size_t j = 0; j < shape[i].size(); ++j)
+      if (!in_range(shape[i][j])) throw CoordinateOutOfRange(Operand::kClip, i, 0, j, shape[i][j]);
+  return ValidSet(std::move(shape), Operand::kClip);
+}
+
+}  // namespace edgeland

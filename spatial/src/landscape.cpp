@@ -4,6 +4,7 @@
 #include "cell_split.hpp"
 #include "check.hpp"
 #include "edgeland/kernel/area.hpp"
+#include "edgeland/spatial/delta.hpp"
 #include "edgeland/spatial/log_format.hpp"
 #include "edit.hpp"
 #include "edit_log.hpp"
@@ -13,14 +14,6 @@
 namespace edgeland {
 namespace {
 
-// A coordinate beyond the bound is its own error (CoordinateOutOfRange); anything else that
-// validate() rejects is InvalidInput naming the shape as the clip operand.
-ValidSet shape_of(const PolygonSet& shape) {
-  for (std::size_t i = 0; i < shape.size(); ++i)
-    for (std::size_t j = 0; j < shape[i].size(); ++j)
-      if (!in_range(shape[i][j])) throw CoordinateOutOfRange(Operand::kClip, i, 0, j, shape[i][j]);
-  return ValidSet(shape, Operand::kClip);
-}
 
 // The grid of thesis 4.4 (and the tree down to the region depth): the world cut to `depth`
 // levels at once (one arrangement per level). `cells` counts the cells made, against the limit.
@@ -119,11 +112,26 @@ ChangeSet Landscape::relabel(const ValidSet& shape, const MaterialMap& map) {
                [&] { return log::relabel_line(shape.polygons(), map); });
 }
 
+// A batch of one is that edit (apply_edit: the same state and log line); more are one edit of
+// several steps, each a relabel by its edit's map (what the kinds' tables are).
+ChangeSet Landscape::apply_batch(std::span<const Edit> edits) {
+  if (edits.empty()) return {};
+  if (edits.size() == 1) return apply_edit(*this, edits.front());
+  std::vector<detail::EditTable> tables;
+  tables.reserve(edits.size());
+  for (const Edit& e : edits) tables.push_back(detail::EditTable::relabel(e.map));
+  std::vector<RelabelStep> steps;
+  for (std::size_t k = 0; k < edits.size(); ++k) steps.push_back({&edits[k].shape, tables[k].table});
+  return apply([&] { return detail::EditBuilder(s_, steps).build(); },
+               [&] { return log::batch_line(edits); });
+}
+
 // Every edit: the next state built (edit.cpp; s_ untouched, so a throw leaves the landscape as
 // it was), the edit's line recorded, and the commit, one assignment.
 ChangeSet Landscape::apply(const ValidSet& shape, const detail::EditTable& table,
                            const std::function<std::string()>& log_line) {
-  return apply([&] { return detail::EditBuilder(s_, table).build(shape); }, log_line);
+  const RelabelStep step{&shape, table.table};
+  return apply([&] { return detail::EditBuilder(s_, std::span(&step, 1)).build(); }, log_line);
 }
 
 ChangeSet Landscape::apply(const std::function<detail::EditResult()>& build,
@@ -139,16 +147,16 @@ ChangeSet Landscape::apply(const std::function<detail::EditResult()>& build,
   s_ = std::move(edit.next);
   return std::move(edit.changes);
 }
-ChangeSet Landscape::carve(const PolygonSet& shape) { return carve(shape_of(shape)); }
-ChangeSet Landscape::fill(const PolygonSet& shape, Material m) { return fill(shape_of(shape), m); }
+ChangeSet Landscape::carve(const PolygonSet& shape) { return carve(edit_shape(shape)); }
+ChangeSet Landscape::fill(const PolygonSet& shape, Material m) { return fill(edit_shape(shape), m); }
 ChangeSet Landscape::fill_empty(const PolygonSet& shape, Material m) {
-  return fill_empty(shape_of(shape), m);
+  return fill_empty(edit_shape(shape), m);
 }
 ChangeSet Landscape::replace(const PolygonSet& shape, Material from, Material to) {
-  return replace(shape_of(shape), from, to);
+  return replace(edit_shape(shape), from, to);
 }
 ChangeSet Landscape::relabel(const PolygonSet& shape, const MaterialMap& map) {
-  return relabel(shape_of(shape), map);
+  return relabel(edit_shape(shape), map);
 }
 
 Int128 Landscape::twice_area(Material m) const {

@@ -52,4 +52,15 @@ std::string edit_line(const Edit& edit) {
   return edit_line(edit.kind, shape, material, from);
 }
 
+std::string batch_line(std::span<const Edit> edits) {
+  std::string line(kBatchKeyword);
+  for (std::size_t i = 0; i < edits.size(); ++i) {
+    if (i > 0) (line += ' ') += kBatchSeparator;
+    std::string one = edit_line(edits[i]);
+    one.pop_back();  // its '\n'
+    (line += ' ') += one;
+  }
+  return line + "\n";
+}
+
 }  // namespace edgeland::log

@@ -7,6 +7,7 @@
 
 #include "cell_split.hpp"
 #include "edgeland/spatial/byte_codec.hpp"
+#include "edgeland/spatial/delta.hpp"
 #include "edgeland/spatial/landscape.hpp"
 #include "region_record.hpp"
 #include "regions.hpp"
@@ -169,7 +170,7 @@ namespace edgeland {
 namespace {
 
 struct PathLess {
-  bool operator()(const TreePath& a, const TreePath& b) const { return detail::path_less(a, b); }
+  bool operator()(const TreePath& a, const TreePath& b) const { return path_less(a, b); }
 };
 
 // The tree above the regions, every region a stub made from its summary.
@@ -177,7 +178,7 @@ class StubWorld {
  public:
   StubWorld(const LandscapeConfig& config, std::uint64_t world_hash,
             const std::vector<RegionSummary>& regions)
-      : config_(config), world_hash_(world_hash) {
+      : config_(config) {
     for (const RegionSummary& r : regions) {
       if (r.world != world_hash) refuse(r.path, "a region of another world");
       if (!by_path_.emplace(r.path, &r).second) refuse(r.path, "a region given twice");
@@ -221,7 +222,6 @@ class StubWorld {
   }
 
   const LandscapeConfig& config_;
-  std::uint64_t world_hash_;
   std::map<TreePath, const RegionSummary*, PathLess> by_path_;
   std::size_t used_ = 0;
 };

@@ -75,8 +75,11 @@ ChangeSet Landscape::remove(std::span<const PolygonRef> polygons) {
     std::sort(all.begin(), all.end());
     return log::edit_line(log::LandscapeEditKind::kCarve, all);
   };
+  static const ValidSet kNothingElse;  // what cells the cut does not reach take: no shape
+  const detail::EditTable carve = detail::EditTable::carve();
+  const RelabelStep step{&kNothingElse, carve.table};
   const auto build = [&] {
-    return detail::EditBuilder(s_, detail::EditTable::carve()).build(std::move(cut), box, vertices);
+    return detail::EditBuilder(s_, std::span(&step, 1)).build(std::move(cut), box, vertices);
   };
   return apply(build, line);
 }

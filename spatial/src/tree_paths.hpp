@@ -15,11 +15,4 @@ std::vector<NodePtr> nodes_on(const NodePtr& root, const TreePath& path);
 // ancestor rebuilt by make_inner (keeping its id counter).
 NodePtr replace_node(const std::vector<NodePtr>& chain, const TreePath& path, NodePtr node);
 
-// Tree order of paths (a parent before its children). A loop rather than vector's <=>, whose
-// memcmp g++ 12 -O3 warns about (-Wstringop-overread, a false positive).
-bool path_less(const TreePath& a, const TreePath& b);
-
-// Whether `a` is `b` or lies below it.
-bool path_within(const TreePath& a, const TreePath& b);
-
 }  // namespace edgeland::detail

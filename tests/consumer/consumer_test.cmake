@@ -16,4 +16,6 @@ add_test(NAME install.consumer
     -DBUILD_TYPE=${CMAKE_BUILD_TYPE}
     "-DCXX_FLAGS=${consumer_flags}"
     -P ${CMAKE_CURRENT_LIST_DIR}/run_consumer_test.cmake)
-set_tests_properties(install.consumer PROPERTIES LABELS install TIMEOUT 600)
+# RUN_SERIAL: `cmake --install` copies the build tree's libraries and programs; alone, it never
+# reads a file another test (or a build step a test starts) is writing.
+set_tests_properties(install.consumer PROPERTIES LABELS install TIMEOUT 600 RUN_SERIAL TRUE)

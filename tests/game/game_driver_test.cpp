@@ -79,21 +79,6 @@ GameOptions random_options() {
   return options;
 }
 
-Edit as_edit(const LandscapeEdit& e) {
-  ValidSet shape(e.shape, Operand::kClip);
-  switch (e.kind) {
-    case LandscapeEdit::Kind::kCarve:
-      return Edit::carve(std::move(shape));
-    case LandscapeEdit::Kind::kFill:
-      return Edit::fill(std::move(shape), e.a);
-    case LandscapeEdit::Kind::kFillEmpty:
-      return Edit::fill_empty(std::move(shape), e.a);
-    case LandscapeEdit::Kind::kReplace:
-      return Edit::replace(std::move(shape), e.a, e.b);
-  }
-  return Edit::carve(std::move(shape));
-}
-
 // The case's edits cut into frames of 1-3.
 std::vector<std::vector<Edit>> frames_of(const std::vector<LandscapeEdit>& edits) {
   std::vector<std::vector<Edit>> out;

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "edgeland/net/client.hpp"
+#include "edgeland/net/request_checks.hpp"
 #include "edgeland/net/server.hpp"
 
 namespace edgeland::net {
@@ -246,6 +247,60 @@ TEST(NetHostile, BadMessagesAreRejectedAndTheOthersGoOn) {
   EXPECT_EQ(h.rejects.at(RejectReason::kNotPermitted), 1u);
   EXPECT_EQ(honest.stats().edits_applied, honest.stats().edits_sent);
   EXPECT_EQ(honest.stats().mismatched, 0u);
+}
+
+// Repair requests abused: a PATCH_REQUEST naming the root 5,000 times (a reply of 5,000 whole
+// worlds were it answered), the root twice, a node inside another, a path to no node, and a
+// flood of HASHES past the repair rate. Each gets its typed rejection, no reply grows past a
+// save of the world, and the honest client's repair and edits go on.
+TEST(NetHostile, RepairRequestsThatWouldAmplifyOrFloodAreRefused) {
+  ServerOptions o = fast_checkpoints();
+  o.policy.flood_limit = 1000;
+  Server server(detailed_world(), o);
+  Client honest(options(server.port(), {{0, 0}, {2000, 2000}}, 20, 8));
+  Client hostile(options(server.port()));
+  Steps run{server, {&honest, &hostile}};
+  ASSERT_TRUE(run.until([&] { return honest.welcomed() && hostile.welcomed(); }));
+  hostile.send_raw(encode_message(PatchRequest{1, std::vector<TreePath>(5000, TreePath{})}));
+  hostile.send_raw(encode_message(PatchRequest{2, {{}, {}}}));
+  hostile.send_raw(encode_message(PatchRequest{3, {{1}, {1, 2}}}));
+  hostile.send_raw(encode_message(PatchRequest{4, {{1, 2, 3, 0, 0, 0, 0, 0, 0, 0, 0, 0}}}));
+  run.for_ms(300);
+  for (int i = 0; i < 100; ++i) hostile.send_raw(encode_message(HashesRequest{5, {{}}}));
+  honest.diverge(Edit::carve(ValidSet(PolygonSet{{{100, 100}, {300, 100}, {200, 300}}})));
+  run.for_ms(1500);
+  honest.stop_editing();
+  ASSERT_TRUE(run.until([&] { return settled(honest, server.sequence()); }));
+  const ClientStats h = hostile.stats();
+  EXPECT_EQ(h.rejects.at(RejectReason::kTooLarge), 1u);
+  EXPECT_EQ(h.rejects.at(RejectReason::kMalformed), 3u);
+  EXPECT_GE(h.rejects.at(RejectReason::kRate), 100u - o.policy.repair_burst);
+  std::ostringstream save;
+  server.world().save(save);
+  EXPECT_LT(server.stats().repair_bytes, save.str().size());  // 5,000 roots: 5,000 saves
+  EXPECT_GE(honest.stats().repairs, 1u);
+  EXPECT_EQ(honest.world()->state_hash(), server.world().state_hash());
+  EXPECT_EQ(honest.stats().edits_applied, honest.stats().edits_sent);
+}
+
+TEST(NetPolicy, ARepairRequestIsBoundedAndItsPatchPathsApart) {
+  const Landscape w = detailed_world();
+  const EditPolicy p;
+  const auto all = [](const TreePath&) { return true; };
+  const auto check = [&](std::vector<TreePath> paths, bool patch) {
+    return check_repair_request(w, paths, patch, p, all);
+  };
+  EXPECT_FALSE(check({{}, {0, 1}}, false));  // digests of nested nodes are fine
+  EXPECT_FALSE(check({{0}, {1, 2}, {1, 3}}, true));
+  EXPECT_EQ(check({{1, 2}, {0}, {1, 2, 0}}, true)->reason, RejectReason::kMalformed);
+  EXPECT_EQ(check({{3}, {3}}, true)->reason, RejectReason::kMalformed);
+  EXPECT_EQ(check({{0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}}, true)->reason,
+            RejectReason::kMalformed);
+  EXPECT_EQ(check(std::vector<TreePath>(p.max_repair_paths + 1, {0}), false)->reason,
+            RejectReason::kTooLarge);
+  const auto none = [](const TreePath&) { return false; };
+  EXPECT_EQ(check_repair_request(w, std::vector<TreePath>{{0}}, false, p, none)->reason,
+            RejectReason::kNotPermitted);
 }
 
 // A message over ENet's packet limit never reaches the server's code: ENet refuses its fragments,

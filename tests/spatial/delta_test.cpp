@@ -163,6 +163,31 @@ TEST(DeltaCommand, LockstepReachesTheServersHashAtEveryEdit) {
   EXPECT_TRUE(client.check().ok());
 }
 
+// Frame batches travel as one COMMAND (the batch form): a client applying the server's batches
+// runs apply_batch and reaches the server's hash at every batch; the bytes hold every edit in
+// order. An empty batch is no command: applying one is refused and changes nothing.
+TEST(DeltaCommand, BatchesReachTheServersHashAtEveryBatch) {
+  Landscape server = fresh_world(), client = fresh_world();
+  std::uint64_t seed = 23;
+  for (std::uint64_t sequence = 1; sequence <= 60; ++sequence) {
+    std::vector<Edit> batch;
+    for (std::uint64_t k = 0; k < 1 + sequence % 4; ++k) batch.push_back(edit_number(seed));
+    const Landscape before = server;
+    const ChangeSet expected = server.apply_batch(batch);
+    const Delta sent = decode_delta(encode_delta(command_delta(before, server, sequence, batch)));
+    ASSERT_EQ(sent.edits.size(), batch.size());
+    const ChangeSet got = client.apply_delta(sent);
+    ASSERT_EQ(client.state_hash(), server.state_hash()) << sequence;
+    EXPECT_EQ(got.removed, expected.removed);
+    EXPECT_EQ(got.added.size(), expected.added.size());
+  }
+  EXPECT_TRUE(client.check().ok());
+  const std::uint64_t hash = client.state_hash();
+  EXPECT_THROW(client.apply_delta(command_delta(server, server, 61, std::span<const Edit>())),
+               DeltaError);
+  EXPECT_EQ(client.state_hash(), hash);
+}
+
 TEST(DeltaCommand, AnotherWorldAlgorithmBaseOrResultIsRefusedAndChangesNothing) {
   Landscape server = fresh_world(), client = fresh_world();
   std::uint64_t seed = 3;

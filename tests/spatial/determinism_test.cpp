@@ -15,6 +15,13 @@ TEST(LandscapeDeterminism, PinnedSequenceGivesThePinnedHash) {
   EXPECT_EQ(pinned::run(pinned::regions_config()).state_hash(), pinned::kRegionsHash);
 }
 
+TEST(LandscapeDeterminism, PinnedBatchesGiveThePinnedHash) {
+  EXPECT_EQ(pinned::run_batches({}).state_hash(), pinned::kQuadtreeBatchHash);
+  EXPECT_EQ(pinned::run_batches(pinned::kd_tree_config()).state_hash(), pinned::kKdTreeBatchHash);
+  EXPECT_EQ(pinned::run_batches(pinned::regions_config()).state_hash(),
+            pinned::kRegionsBatchHash);
+}
+
 TEST(LandscapeDeterminism, PinsBelongToTheAlgorithmVersion) {
   EXPECT_EQ(kAlgorithmVersion, pinned::kPinnedAlgorithmVersion);
 }

@@ -211,6 +211,13 @@ Landscape worn() {
   return l;
 }
 
+// One edit's result as the builder makes it: one step of `shape` and `table`.
+detail::EditResult build_one(const detail::LandscapeState& state, const detail::EditTable& table,
+                             const ValidSet& shape) {
+  const RelabelStep step{&shape, table.table};
+  return detail::EditBuilder(state, std::span(&step, 1)).build();
+}
+
 // The builder's next state and change set are what the landscape's own edit commits and returns
 // (the same tree by hash, ids, areas, one more edit).
 TEST(EditBuilder, BuildsWhatTheLandscapesEditCommits) {
@@ -218,7 +225,7 @@ TEST(EditBuilder, BuildsWhatTheLandscapesEditCommits) {
   const detail::LandscapeState current = test::state_of(l);
   const PolygonSet shape{diamond({250, 250}, 140), diamond({60, 450}, 30)};
   const detail::EditTable table = detail::EditTable::replace(1, 5);
-  const detail::EditResult built = detail::EditBuilder(current, table).build(ValidSet(shape));
+  const detail::EditResult built = build_one(current, table, ValidSet(shape));
 
   const ChangeSet committed = l.replace(shape, 1, 5);
   const detail::LandscapeState after = test::state_of(l);
@@ -242,11 +249,11 @@ TEST(EditBuilder, AShapeMissingTheWorldKeepsTheTree) {
   const detail::LandscapeState current = test::state_of(worn());
   const detail::EditTable table = detail::EditTable::carve();
   const detail::EditResult outside =
-      detail::EditBuilder(current, table).build(ValidSet(PolygonSet{diamond({900, 900}, 50)}));
+      build_one(current, table, ValidSet(PolygonSet{diamond({900, 900}, 50)}));
   EXPECT_EQ(outside.next.root, current.root);
   EXPECT_TRUE(outside.changes.empty());
   EXPECT_EQ(outside.next.edits, current.edits + 1);
-  const detail::EditResult none = detail::EditBuilder(current, table).build(ValidSet());
+  const detail::EditResult none = build_one(current, table, ValidSet());
   EXPECT_EQ(none.next.root, current.root);
   EXPECT_TRUE(none.changes.empty());
 }
@@ -257,7 +264,7 @@ TEST(EditBuilder, AShapeOverTheLimitThrows) {
   current.limits.max_shape_vertices = 3;
   const detail::EditTable table = detail::EditTable::fill(7);
   EXPECT_THROW(
-      detail::EditBuilder(current, table).build(ValidSet(PolygonSet{diamond({100, 100}, 20)})),
+      build_one(current, table, ValidSet(PolygonSet{diamond({100, 100}, 20)})),
       LimitExceeded);
 }
 

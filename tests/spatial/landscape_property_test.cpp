@@ -32,52 +32,70 @@ std::map<PolygonId, FlatPolygon> by_id(const Landscape& l) {
   return out;
 }
 
+// Applies one edit or batch by `apply_it` to a checked landscape and checks its change set: ids
+// removed and added exactly, unchanged polygons keeping their ids, areas moved as it says.
+template <class Apply>
+void check_reported_change(Landscape& l, Apply&& apply_it) {
+  const std::map<PolygonId, FlatPolygon> before = by_id(l);
+  std::array<Int128, 6> area_before{};
+  for (int m = 0; m < 6; ++m) area_before[m] = l.twice_area(m);
+  const ChangeSet cs = apply_it();
+  const std::map<PolygonId, FlatPolygon> after = by_id(l);
+  std::map<PolygonId, FlatPolygon> expected = before;
+  for (PolygonId id : cs.removed) {
+    RC_ASSERT(before.count(id) == 1u);
+    RC_ASSERT(after.count(id) == 0u);
+    expected.erase(id);
+  }
+  for (const ChangeSet::Added& a : cs.added) {
+    RC_ASSERT(before.count(a.id) == 0u);
+    RC_ASSERT(after.count(a.id) == 1u);
+    RC_ASSERT(after.at(a.id).ring == a.polygon);
+    RC_ASSERT(after.at(a.id).material == a.material);
+    expected[a.id] = after.at(a.id);
+  }
+  RC_ASSERT(expected.size() == after.size());
+  // An unchanged polygon keeps its id (a game rebuilds only what changed).
+  std::map<std::pair<Material, Polygon>, PolygonId> old_ids;
+  for (const auto& [id, p] : before) old_ids[{p.material, p.ring}] = id;
+  for (const auto& [id, p] : after) {
+    const auto it = old_ids.find({p.material, p.ring});
+    if (it != old_ids.end()) RC_ASSERT(it->second == id);
+  }
+  for (const auto& [id, p] : after)
+    RC_ASSERT(expected.count(id) == 1u && expected.at(id).ring == p.ring);
+  std::map<Material, Int128> delta;
+  for (const auto& [m, d] : cs.twice_area_delta) delta[m] = d;
+  Int128 total = 0;
+  for (int m = 0; m < 6; ++m) {
+    RC_ASSERT(l.twice_area(m) - area_before[m] == delta[m]);
+    total += delta[m];
+  }
+  RC_ASSERT(total == 0);
+}
+
 RC_GTEST_PROP(LandscapeProperty, EditsKeepEveryInvariantAndReportWhatChanged, ()) {
   const LandscapeCase c = *landscape_case();
   Landscape l(c.world, c.fill, c.config);
   l.set_checked(true);
-  for (const LandscapeEdit& e : c.edits) {
-    const std::map<PolygonId, FlatPolygon> before = by_id(l);
-    std::array<Int128, 6> area_before{};
-    for (int m = 0; m < 6; ++m) area_before[m] = l.twice_area(m);
-    const ChangeSet cs = apply(l, e);
-    const std::map<PolygonId, FlatPolygon> after = by_id(l);
-    std::map<PolygonId, FlatPolygon> expected = before;
-    for (PolygonId id : cs.removed) {
-      RC_ASSERT(before.count(id) == 1u);
-      RC_ASSERT(after.count(id) == 0u);
-      expected.erase(id);
-    }
-    for (const ChangeSet::Added& a : cs.added) {
-      RC_ASSERT(before.count(a.id) == 0u);
-      RC_ASSERT(after.count(a.id) == 1u);
-      RC_ASSERT(after.at(a.id).ring == a.polygon);
-      RC_ASSERT(after.at(a.id).material == a.material);
-      expected[a.id] = after.at(a.id);
-    }
-    RC_ASSERT(expected.size() == after.size());
-    // An unchanged polygon keeps its id (a game rebuilds only what changed).
-    std::map<std::pair<Material, Polygon>, PolygonId> old_ids;
-    for (const auto& [id, p] : before) old_ids[{p.material, p.ring}] = id;
-    for (const auto& [id, p] : after) {
-      const auto it = old_ids.find({p.material, p.ring});
-      if (it != old_ids.end()) RC_ASSERT(it->second == id);
-    }
-    for (const auto& [id, p] : after)
-      RC_ASSERT(expected.count(id) == 1u && expected.at(id).ring == p.ring);
-    std::map<Material, Int128> delta;
-    for (const auto& [m, d] : cs.twice_area_delta) delta[m] = d;
-    Int128 total = 0;
-    for (int m = 0; m < 6; ++m) {
-      RC_ASSERT(l.twice_area(m) - area_before[m] == delta[m]);
-      total += delta[m];
-    }
-    RC_ASSERT(total == 0);
-  }
+  for (const LandscapeEdit& e : c.edits) check_reported_change(l, [&] { return apply(l, e); });
   const LandscapeReport report = l.check();
   if (!report.ok()) RC_FAIL(report.problems.front());
   RC_CLASSIFY(l.stats().cells > 1, "several cells");
   RC_CLASSIFY(l.stats().polygons > 10, "more than 10 polygons");
+}
+
+// The same for frame batches (Landscape::apply_batch): one change set says what the whole batch
+// changed.
+RC_GTEST_PROP(LandscapeProperty, BatchesKeepEveryInvariantAndReportWhatChanged, ()) {
+  const LandscapeCase c = *landscape_case();
+  Landscape l(c.world, c.fill, c.config);
+  l.set_checked(true);
+  for (const std::vector<Edit>& batch : batches_of(c))
+    check_reported_change(l, [&] { return l.apply_batch(batch); });
+  const LandscapeReport report = l.check();
+  if (!report.ok()) RC_FAIL(report.problems.front());
+  RC_CLASSIFY(l.stats().cells > 1, "several cells");
 }
 
 // A loose but sound drift bound: each snap rounding moves a boundary by at most sqrt(2)/2 < 3/4,
@@ -110,20 +128,16 @@ Polygon box_polygon(const Box64& b) {
   return {b.min, {b.max.x, b.min.y}, b.max, {b.min.x, b.max.y}};
 }
 
-RC_GTEST_PROP(LandscapeProperty, MaterialsAreTheExactHistoryAwayFromBoundaries, ()) {
-  const LandscapeCase c = *landscape_case(5);
-  std::uint32_t deepest = 0;
-  const Landscape tree = run_case(c, c.config, &deepest);
-  LandscapeConfig one_cell;
-  one_cell.edge_cap = 1u << 30;
-  one_cell.merge_below = 1u << 29;
-  const Landscape single = run_case(c, one_cell);
-  RC_ASSERT(single.stats().cells == 1u);
+// The landscapes (each after the case's edits, one by one or in batches) hold the materials of
+// the exact history at points farther than d from every boundary, and areas within the bands of
+// width d around the boundaries (against CGAL). Returns that band's area.
+Rational check_exact_history(const LandscapeCase& c, const std::vector<const Landscape*>& got,
+                             const Rational& d) {
   std::vector<ExactRegion> shapes;
   for (const LandscapeEdit& e : c.edits) shapes.push_back(ExactRegion::of(e.shape));
   const ExactRegion world = ExactRegion::of(box_polygon(c.world));
-  const Rational d = drift_bound(c.edits.size(), deepest);
-  const std::vector<FlatPolygon> tree_polys = flatten(tree), single_polys = flatten(single);
+  std::vector<std::vector<FlatPolygon>> polys;
+  for (const Landscape* l : got) polys.push_back(flatten(*l));
   std::size_t tested = 0;
   for (int k = 0; k < 150; ++k) {
     const QPoint q{Rational(*gen::coord(4 * c.world.min.x - 8, 4 * c.world.max.x + 8), 4),
@@ -131,8 +145,7 @@ RC_GTEST_PROP(LandscapeProperty, MaterialsAreTheExactHistoryAwayFromBoundaries, 
     if (!clear_of_boundaries(q, shapes, world, d)) continue;
     ++tested;
     const Material want = exact_material(c, shapes, world, q);
-    RC_ASSERT(material_brute(tree_polys, q) == want);
-    RC_ASSERT(material_brute(single_polys, q) == want);
+    for (const std::vector<FlatPolygon>& p : polys) RC_ASSERT(material_brute(p, q) == want);
   }
   RC_TAG(tested > 0 ? "points tested" : "no point clear of boundaries");
   // Areas against CGAL: the difference lies in the bands of width d around the boundaries.
@@ -162,10 +175,54 @@ RC_GTEST_PROP(LandscapeProperty, MaterialsAreTheExactHistoryAwayFromBoundaries, 
             Rational(22, 7) * d * d * Rational(static_cast<long long>(s.boundary_cycles()));
   band += 2 * d * Rational(world.perimeter_ceil()) + Rational(22, 7) * d * d;
   for (const auto& [m, r] : exact) {
-    for (const Landscape* l : {&tree, &single}) {
-      const Rational got = Rational(static_cast<long long>(l->twice_area(m))) / 2;
-      RC_ASSERT(abs(got - r.area()) <= band);
+    for (const Landscape* l : got) {
+      const Rational area = Rational(static_cast<long long>(l->twice_area(m))) / 2;
+      RC_ASSERT(abs(area - r.area()) <= band);
     }
+  }
+  return band;
+}
+
+LandscapeConfig one_cell_config() {
+  LandscapeConfig one_cell;
+  one_cell.edge_cap = 1u << 30;
+  one_cell.merge_below = 1u << 29;
+  return one_cell;
+}
+
+RC_GTEST_PROP(LandscapeProperty, MaterialsAreTheExactHistoryAwayFromBoundaries, ()) {
+  const LandscapeCase c = *landscape_case(5);
+  std::uint32_t deepest = 0;
+  const Landscape tree = run_case(c, c.config, &deepest);
+  const Landscape single = run_case(c, one_cell_config());
+  RC_ASSERT(single.stats().cells == 1u);
+  check_exact_history(c, {&tree, &single}, drift_bound(c.edits.size(), deepest));
+}
+
+// Frame batches (Landscape::apply_batch, spatial/README.md "Frame batches"): the edits in
+// batches of 1-4, each batch rounded once, hold the exact history within the drift bound of as
+// many edits as there are batches, in a deep tree and in one cell, where the same edits one by
+// one need the bound of all the edits. The edits one by one are still there and give their own
+// result: every material's area in the two differs by at most the sum of the two bands. Every
+// batch passes checked mode (run_batches) and check().
+RC_GTEST_PROP(LandscapeProperty, BatchesAreTheExactHistoryWithinOneRoundingPerBatch, ()) {
+  const LandscapeCase c = *landscape_case(6);
+  const std::vector<std::vector<Edit>> batches = batches_of(c);
+  std::uint32_t deepest = 0, deepest_one_by_one = 0;
+  const Landscape tree = run_batches(c, c.config, batches, &deepest);
+  const Landscape single = run_batches(c, one_cell_config(), batches);
+  const Landscape one_by_one = run_case(c, c.config, &deepest_one_by_one);
+  RC_ASSERT(single.stats().cells == 1u);
+  RC_ASSERT(tree.check().ok() && single.check().ok());
+  RC_CLASSIFY(batches.size() < c.edits.size(), "batches of several");
+  const Rational batch_band =
+      check_exact_history(c, {&tree, &single}, drift_bound(batches.size(), deepest));
+  const Rational one_band =
+      check_exact_history(c, {&one_by_one}, drift_bound(c.edits.size(), deepest_one_by_one));
+  for (int m = 0; m < 6; ++m) {
+    const Rational a = Rational(static_cast<long long>(tree.twice_area(m))) / 2;
+    const Rational b = Rational(static_cast<long long>(one_by_one.twice_area(m))) / 2;
+    RC_ASSERT(abs(a - b) <= batch_band + one_band);
   }
 }
 

@@ -6,6 +6,9 @@
 // different snap rounding) changes the pins: update them and say why in the commit.
 #include <cstdint>
 
+#include <vector>
+
+#include "edgeland/spatial/delta.hpp"
 #include "edgeland/spatial/landscape.hpp"
 
 namespace edgeland::pinned {
@@ -29,29 +32,44 @@ inline Polygon blob(Point64 c, std::int64_t r) {
   return p;
 }
 
-// 400 edits of every kind on a 4096^2 world filled with material 1.
+// The next edit of the sequence: a blob filled, replaced, filled where empty or carved.
+inline Edit next_edit(std::uint64_t& seed) {
+  const Point64 c{static_cast<std::int64_t>(splitmix64(seed) % 4400) - 150,
+                  static_cast<std::int64_t>(splitmix64(seed) % 4400) - 150};
+  const std::int64_t r = 20 + static_cast<std::int64_t>(splitmix64(seed) % 120);
+  ValidSet shape(PolygonSet{blob(c, r)});
+  switch (splitmix64(seed) % 5) {
+    case 0:
+      return Edit::fill(std::move(shape), 2);
+    case 1:
+      return Edit::replace(std::move(shape), 1, 3);
+    case 2:
+      return Edit::fill_empty(std::move(shape), 4);
+    default:
+      return Edit::carve(std::move(shape));
+  }
+}
+
+inline constexpr int kEdits = 400;
+
+// 400 edits of every kind on a 4096^2 world filled with material 1, one by one.
 inline Landscape run(const LandscapeConfig& config) {
   Landscape l({{0, 0}, {4096, 4096}}, 1, config);
   std::uint64_t seed = 15;
-  for (int i = 0; i < 400; ++i) {
-    const Point64 c{static_cast<std::int64_t>(splitmix64(seed) % 4400) - 150,
-                    static_cast<std::int64_t>(splitmix64(seed) % 4400) - 150};
-    const std::int64_t r = 20 + static_cast<std::int64_t>(splitmix64(seed) % 120);
-    const PolygonSet shape{blob(c, r)};
-    switch (splitmix64(seed) % 5) {
-      case 0:
-        l.fill(shape, 2);
-        break;
-      case 1:
-        l.replace(shape, 1, 3);
-        break;
-      case 2:
-        l.fill_empty(shape, 4);
-        break;
-      default:
-        l.carve(shape);
-        break;
-    }
+  for (int i = 0; i < kEdits; ++i) apply_edit(l, next_edit(seed));
+  return l;
+}
+
+// The same 400 edits as frame batches (Landscape::apply_batch) of 1-4 edits, the sizes drawn
+// from a stream of their own: each batch rounded once.
+inline Landscape run_batches(const LandscapeConfig& config) {
+  Landscape l({{0, 0}, {4096, 4096}}, 1, config);
+  std::uint64_t seed = 15, sizes = 35;
+  for (int i = 0; i < kEdits;) {
+    std::vector<Edit> batch;
+    const int n = 1 + static_cast<int>(splitmix64(sizes) % 4);
+    for (int k = 0; k < n && i < kEdits; ++k, ++i) batch.push_back(next_edit(seed));
+    l.apply_batch(batch);
   }
   return l;
 }
@@ -81,6 +99,10 @@ inline constexpr std::uint64_t kQuadtreeHash = 0xeaeb4f50cafef240ull;
 inline constexpr std::uint64_t kKdTreeHash = 0x88c6cb00a6c83cd3ull;
 // Pinned when regions came (issue 37); the two above are the same with them off.
 inline constexpr std::uint64_t kRegionsHash = 0x1cadce143d958fc8ull;
+// The same edits in frame batches (run_batches): pinned when batches came (issue 35 point 2).
+inline constexpr std::uint64_t kQuadtreeBatchHash = 0xdccf7cada8d4e794ull;
+inline constexpr std::uint64_t kKdTreeBatchHash = 0xa992c3fd480eb2cfull;
+inline constexpr std::uint64_t kRegionsBatchHash = 0x18af83bb1a78398aull;
 // The algorithm version (delta.hpp) these hashes belong to: a change of the pins is a change of
 // how edits round, so kAlgorithmVersion goes up with it (peers of different versions must not
 // exchange COMMAND deltas). LandscapeDeterminism.PinsBelongToTheAlgorithmVersion checks both

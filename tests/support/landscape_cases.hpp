@@ -87,4 +87,51 @@ inline Landscape run_case(const LandscapeCase& c, const LandscapeConfig& config,
   return l;
 }
 
+// The edit as a batch takes it (types.hpp Edit).
+inline Edit as_edit(const LandscapeEdit& e) {
+  ValidSet shape(e.shape, Operand::kClip);
+  switch (e.kind) {
+    case LandscapeEdit::Kind::kCarve:
+      return Edit::carve(std::move(shape));
+    case LandscapeEdit::Kind::kFill:
+      return Edit::fill(std::move(shape), e.a);
+    case LandscapeEdit::Kind::kFillEmpty:
+      return Edit::fill_empty(std::move(shape), e.a);
+    case LandscapeEdit::Kind::kReplace:
+      break;
+  }
+  return Edit::replace(std::move(shape), e.a, e.b);
+}
+
+// The case's edits cut into consecutive batches of 1-4 (sizes drawn here), in order.
+inline std::vector<std::vector<Edit>> batches_of(const LandscapeCase& c) {
+  std::vector<std::vector<Edit>> out;
+  for (std::size_t i = 0; i < c.edits.size();) {
+    const std::size_t n = std::min<std::size_t>(*rc::gen::inRange(1, 5), c.edits.size() - i);
+    std::vector<Edit>& batch = out.emplace_back();
+    for (std::size_t k = 0; k < n; ++k) batch.push_back(as_edit(c.edits[i + k]));
+    i += n;
+  }
+  return out;
+}
+
+// The landscape of a case after its edits applied as `batches` (Landscape::apply_batch), checked;
+// fails the property on any exception.
+inline Landscape run_batches(const LandscapeCase& c, const LandscapeConfig& config,
+                             const std::vector<std::vector<Edit>>& batches,
+                             std::uint32_t* deepest = nullptr) {
+  Landscape l(c.world, c.fill, config);
+  l.set_checked(true);
+  for (const std::vector<Edit>& batch : batches) {
+    try {
+      l.apply_batch(batch);
+    } catch (const std::exception& ex) {
+      RC_FAIL(std::string("batch threw: ") + ex.what());
+    }
+    if (deepest)
+      *deepest = std::max<std::uint32_t>(*deepest, static_cast<std::uint32_t>(l.stats().depth));
+  }
+  return l;
+}
+
 }  // namespace edgeland::test

@@ -80,12 +80,15 @@ void add_debris(WebUpdate& update, const Debris& debris) {
 Landscape replayed_world(const log::ParsedLandscapeLog& parsed) {
   Landscape world = log::make_landscape(*parsed.world);
   world.start_log();
-  for (const log::LandscapeEdit& edit : parsed.edits) {
+  const std::span<const log::LandscapeEdit> edits(parsed.edits);
+  for (std::size_t i = 0; i < edits.size();) {
+    const std::size_t n = log::step_size(edits.subspan(i));
     try {
-      log::apply_edit(world, edit);
+      log::apply_step(world, edits.subspan(i, n));
     } catch (const Error&) {
       break;  // as `edgeland replay` does: the world after the edits before the bad one
     }
+    i += n;
   }
   return world;
 }

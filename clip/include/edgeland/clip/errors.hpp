@@ -28,6 +28,8 @@ class EDGELAND_EXPORT InvalidOverlay : public Error {
     kOutsideWindow,   // a member of `regions` is not inside the window
     kBadWindow,       // a window is not a box with positive area within the coordinate bound
     kWindowsOverlap,  // two windows share interior points
+    kTooManySteps,    // a batch of more than kMaxBatchSteps steps (relabel_batch)
+    kNoShape,         // a batch step without a shape
   };
   InvalidOverlay(Reason reason, std::size_t index);
   Reason reason;

@@ -53,6 +53,16 @@ struct LabeledClipResult {
   std::size_t pieces_left_out = 0;  // relabel_near(): input pieces returned as they were
 };
 
+// One step of a batch overlay: inside `shape`, a point of label l becomes table[l] (as relabel()).
+struct RelabelStep {
+  const ValidSet* shape = nullptr;
+  std::span<const RegionLabel> table;
+};
+
+// Steps one batch overlay takes in one arrangement; relabel_cell() applies more in further
+// overlays of this many.
+inline constexpr std::size_t kMaxBatchSteps = 14;
+
 // Inside shape ∩ window, a point of label l becomes table[l] (l = 0: a point no member covers;
 // table[l] = 0 removes it; labels l >= table.size() are kept); elsewhere in the window labels
 // are kept. Every member of `regions` must lie in the window (closed box): the result lies in it.
@@ -114,6 +124,29 @@ EDGELAND_EXPORT CellOverlayResult relabel_cell(const LabeledSet& cell, const Val
                                                const Box64& window,
                                                std::span<const RegionLabel> table,
                                                const ClipOptions& options = {});
+// The same for a batch: relabel_batch() of the cell, the steps whose shapes reach the window in
+// one arrangement (kMaxBatchSteps at a time; more in further overlays, each rounded once), with
+// relabel_batch()'s result bit for bit. The quick cases answer when at most one step reaches
+// the window (that is relabel_cell() of that step). Checked mode compares every arrangement
+// with relabel_batch()'s.
+EDGELAND_EXPORT CellOverlayResult relabel_cell(const LabeledSet& cell,
+                                               std::span<const RelabelStep> steps,
+                                               const Box64& window,
+                                               const ClipOptions& options = {});
+
+// The steps applied in order in ONE arrangement of the regions, every step's shape and the
+// window, rounded once: inside the window a point of label l becomes the label l passed through
+// the table of every step whose shape holds it, in order (a point of no region has label 0).
+// The exact result is that of relabel() applied step by step; the result differs from the
+// step-by-step one only by snap rounding, done once here where steps in turn round each shape
+// and again every boundary a later shape passes near (clip/README.md, "Batch overlays").
+// One step is relabel(), bit for bit. Throws InvalidOverlay (also kTooManySteps past
+// kMaxBatchSteps, kNoShape for a step without a shape); InternalError as clip().
+EDGELAND_EXPORT LabeledClipResult relabel_batch(const ValidSet& regions,
+                                                std::span<const RegionLabel> labels,
+                                                std::span<const RelabelStep> steps,
+                                                const Box64& window,
+                                                const ClipOptions& options = {});
 
 // The regions cut into closed boxes with pairwise disjoint interiors, one labeled set per window,
 // from one arrangement of the regions and all windows: along a line two windows share, the

@@ -14,6 +14,9 @@
 //   replace FROM TO WKT            only material FROM inside becomes TO
 //   relabel [FROM TO]... WKT       inside, each FROM becomes its TO, all at once (a FROM at
 //                                  most once; materials not named stay)
+//   batch EDIT | EDIT | ...        a frame batch (Landscape::apply_batch): one or more of the
+//                                  five edits above, each written as its own line would be,
+//                                  separated by '|', applied in order as one edit
 //   # text                         a comment; blank lines are ignored too
 // Materials are decimal integers 0..255 everywhere, 0 being empty space: the library accepts
 // every one of them and its recorder writes them back as given, so a recorded log never holds
@@ -35,6 +38,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <variant>
@@ -70,16 +74,27 @@ struct LandscapeEdit {
   MaterialMap map;             // relabel: the pairs; otherwise unused (the identity)
   WktGeometry shape;           // as read
   std::size_t line = 0;        // 1-based line number in the log
+  // An edit of a `batch` line: how many edits that line holds (each of them says so, and has
+  // the line's number); 0 for an edit line of its own.
+  std::size_t batch = 0;
 };
 
-using LandscapeCommand = std::variant<WorldCommand, LandscapeEdit>;
+// A `batch` line: its edits in order.
+struct LandscapeBatch {
+  std::vector<LandscapeEdit> edits;
+  std::size_t line = 0;
+};
+
+using LandscapeCommand = std::variant<WorldCommand, LandscapeEdit, LandscapeBatch>;
 
 enum class LandscapeLogErrorKind : std::uint8_t {
-  kUnknownCommand,  // the first word is not one of the six keywords
+  kUnknownCommand,  // the first word is not one of the seven keywords (in a batch: not one of
+                    // the five edits')
   kMissingWorld,    // an edit (or the end of the log) before any world line
   kRepeatedWorld,   // a second world line
   kBadArgument,     // a material or coordinate that is not a decimal integer in its range,
-                    // the wrong number of world numbers, or an empty world box
+                    // the wrong number of world numbers, an empty world box, or an empty
+                    // edit in a batch
   kMissingShape,    // an edit with no WKT after its numbers
   kBadShape,        // the WKT was rejected by the reader (wkt_error holds why)
 };
@@ -111,7 +126,7 @@ EDGELAND_EXPORT std::optional<LandscapeCommand> parse_landscape_line(std::string
 // for a log without commands).
 struct ParsedLandscapeLog {
   std::optional<WorldCommand> world;
-  std::vector<LandscapeEdit> edits;
+  std::vector<LandscapeEdit> edits;  // a batch line's edits in a row (LandscapeEdit::batch)
   std::optional<LandscapeLogError> error;
 };
 
@@ -138,5 +153,15 @@ EDGELAND_EXPORT ChangeSet apply_edit(Landscape& landscape, const LandscapeEdit& 
 // to `material` alone (a replace: the whole map needs the LandscapeEdit). Throws as above.
 EDGELAND_EXPORT ChangeSet apply_edit(Landscape& landscape, LandscapeEditKind kind,
                                      const PolygonSet& shape, Material material, Material from);
+
+// How many edits, from the first of `edits`, the landscape takes as one step: 1 for an edit
+// line, a batch line's count for the first edit of a batch (never more than edits.size()).
+EDGELAND_EXPORT std::size_t step_size(std::span<const LandscapeEdit> edits) noexcept;
+
+// Applies one step (`step`: step_size of the edits from one on): an edit line as apply_edit,
+// a batch line's edits as one Landscape::apply_batch, every shape read as apply_edit reads it.
+// Throws as apply_edit (a shape refused by its edit's error, before anything changed); the
+// landscape's strong guarantee holds.
+EDGELAND_EXPORT ChangeSet apply_step(Landscape& landscape, std::span<const LandscapeEdit> step);
 
 }  // namespace edgeland::log

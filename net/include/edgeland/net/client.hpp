@@ -78,6 +78,7 @@ class EDGELAND_EXPORT Client {
 
  private:
   void receive(const std::string& bytes);
+  void rejected(const Reject& r);
   void welcome(const Welcome& m);
   void command(const Command& m);
   void changes(const Changes& m);

@@ -18,6 +18,12 @@ struct EditPolicy {
   std::uint32_t edits_per_second = 20;  // a client's sustained rate (kRate beyond)
   std::uint32_t burst = 40;             // edits it may send at once
   std::uint32_t flood_limit = 200;      // rejected messages within ten seconds: disconnect
+  // Repair requests (HASHES, PATCH_REQUEST): a rate of their own, so repairing never costs an
+  // edit, and paths per request (a repair round asks about the children of the nodes that
+  // differ: 4096 paths is 1,024 differing nodes at one level).
+  std::uint32_t repairs_per_second = 20;
+  std::uint32_t repair_burst = 40;
+  std::size_t max_repair_paths = 4096;
 };
 
 using Clock = std::chrono::steady_clock;

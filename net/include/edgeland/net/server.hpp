@@ -7,12 +7,14 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "edgeland/kernel/export.hpp"
 #include "edgeland/net/edit_policy.hpp"
 #include "edgeland/net/protocol.hpp"
+#include "edgeland/net/request_checks.hpp"
 #include "edgeland/spatial/landscape.hpp"
 
 namespace edgeland::net {
@@ -77,8 +79,9 @@ class EDGELAND_EXPORT Server {
   void edit(Client& c, const EditRequest& m);
   void hashes(Client& c, const HashesRequest& m);
   void patch(Client& c, const PatchRequest& m);
+  std::optional<Refusal> repair_refusal(Client& c, const std::vector<TreePath>& paths, bool patch);
   void reject(Client& c, std::uint32_t number, RejectReason reason, const std::string& message);
-  void apply_and_broadcast(std::uint32_t origin, std::uint32_t number, const Edit& edit);
+  void apply_and_broadcast(Client& c, std::uint32_t number, EditVerdict& verdict);
   void broadcast(std::uint32_t origin, std::uint32_t number, const Landscape& before,
                  const Edit& edit, const ChangeSet& changes);
   void send_changes(Client& c, const Landscape& before, const ChangeSet& changes);

@@ -25,6 +25,7 @@
 #include <cstdint>
 #include <map>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -80,9 +81,9 @@ struct DrawnPolygon {
 
 struct Delta {
   DeltaHeader header;
-  // kCommand: the edit (one; a batch form is reserved for batch edits). A COMMAND carries an
-  // edit's kind and the materials of its kind (fill: one; replace: from and to; relabel: the
-  // pairs its map changes) rather than the whole map.
+  // kCommand: the edit, or a frame batch of two or more (Landscape::apply_batch; a batch of one
+  // is that edit). A COMMAND carries each edit's kind and the materials of its kind (fill: one;
+  // replace: from and to; relabel: the pairs its map changes) rather than the whole map.
   std::vector<Edit> edits;
   // kPatch: the landscape's next id after the patch, and the subtrees (none: only the counter).
   PolygonId next_id = 0;
@@ -99,12 +100,23 @@ EDGELAND_EXPORT std::string encode_delta(const Delta& delta);
 // operand kClip). O(size log size): a COMMAND's shape is validated.
 EDGELAND_EXPORT Delta decode_delta(std::string_view bytes);
 
+// Tree order of paths (a parent before its children), and whether `a` is `b` or lies below it:
+// a PATCH's paths, sorted so, must not lie within their predecessors.
+EDGELAND_EXPORT bool path_less(const TreePath& a, const TreePath& b) noexcept;
+EDGELAND_EXPORT bool path_within(const TreePath& a, const TreePath& b) noexcept;
+
 // A COMMAND: `edit` took `before` to `after` (its result), as edit number `sequence`.
 EDGELAND_EXPORT Delta command_delta(const Landscape& before, const Landscape& after,
                                     std::uint64_t sequence, const Edit& edit);
+// A COMMAND of a frame batch: Landscape::apply_batch(batch) took `before` to `after`. Applied,
+// it runs apply_batch (a batch of one: apply_edit, and it is sent as that edit). An empty batch
+// is no command: decode_delta and apply_delta refuse one.
+EDGELAND_EXPORT Delta command_delta(const Landscape& before, const Landscape& after,
+                                    std::uint64_t sequence, std::span<const Edit> batch);
 // A PATCH of `source`'s subtrees at `paths` (each an existing node; none nesting another), as of
 // edit number `sequence`; `base` is the receiver's state hash when known (0 otherwise).
-// Throws std::invalid_argument for a path that is not a loaded node of `source`.
+// Throws InvalidPath for a path that names no node of `source`, RegionNotLoaded for one at or
+// in an unloaded region.
 EDGELAND_EXPORT Delta patch_delta(const Landscape& source, std::uint64_t sequence,
                                   const std::vector<TreePath>& paths, std::uint64_t base = 0);
 // A CHANGES delta from an edit's change set (`after`: the landscape after it).

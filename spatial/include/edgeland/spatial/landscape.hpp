@@ -124,6 +124,19 @@ class EDGELAND_EXPORT Landscape {
   // an unloaded region (under UnloadedRegions::kSkip such names are left out, as an edit leaves
   // a stub). O(depth per polygon + the cells' overlays).
   ChangeSet remove(std::span<const PolygonRef> polygons);
+  // A frame's edits (types.hpp Edit), applied in order as ONE edit: in every cell some of their
+  // shapes reach, one overlay of the cell with all of those shapes (clip's relabel_cell of
+  // several steps, relabel.hpp), rounded once; one change set, one log line (`batch`), one
+  // edit counted. Inside a touched cell a point of material m ends as m passed through the map
+  // of every edit whose shape holds it, in order: what the edits one by one give before
+  // rounding. The one-by-one edits round after each edit, so the two results differ near the
+  // shapes' boundaries, within the rounding bound spatial/README.md ("Frame batches") states
+  // and tests; both stay available (apply_edit, carve ... relabel, for a game that wants each
+  // edit rounded on its own). A batch of one is apply_edit of that edit (the same state, hash
+  // and log line); an empty batch changes nothing and counts no edit. Deterministic, valid,
+  // the strong guarantee and checked mode as every edit. Throws what an edit throws
+  // (LimitExceeded for any shape, or the landscape after the batch, past its limits).
+  ChangeSet apply_batch(std::span<const Edit> edits);
 
   // --- queries -------------------------------------------------------------------------------
   // Queries check their coordinates as edits check their shapes: a point, a segment end or a
@@ -215,7 +228,7 @@ class EDGELAND_EXPORT Landscape {
   std::optional<NodeDigest> node_digest(const TreePath& path) const;
   // The subtree at `path` as a PATCH carries it (patch_delta). Throws InvalidPath. O(subtree).
   PatchEntry patch_entry(const TreePath& path) const;
-  // Applies a COMMAND (the edit, as apply_edit) or a PATCH (its subtrees, ids and counters),
+  // Applies a COMMAND (the edit, as apply_edit; a batch, as apply_batch) or a PATCH (its subtrees, ids and counters),
   // after checking that it belongs to this world (DeltaMismatch kWorld; a COMMAND also kAlgorithm)
   // and, as `checks` asks, that this landscape is its base (kBase) and that the result is its
   // result (kResult). Returns what changed, as an edit does. Throws DeltaError (a CHANGES delta,
@@ -281,7 +294,7 @@ class EDGELAND_EXPORT Landscape {
   // shape and the table, appends `log_line` to the log when recording, then commits.
   ChangeSet apply(const ValidSet& shape, const detail::EditTable& table,
                   const std::function<std::string()>& log_line);
-  // The same for any way of building the next state (Landscape::remove's cut shape).
+  // The same for any way of building the next state (Landscape::remove's cut shape, a batch).
   ChangeSet apply(const std::function<detail::EditResult()>& build,
                   const std::function<std::string()>& log_line);
 

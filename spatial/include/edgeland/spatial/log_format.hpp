@@ -7,6 +7,7 @@
 // spatial cannot include io. An edit's kind is Edit::Kind (types.hpp): the kinds a log writes.
 #include <array>
 #include <cstdint>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -23,6 +24,11 @@ using LandscapeEditKind = Edit::Kind;
 
 // The first line's keyword: `world X0 Y0 X1 Y1 [MATERIAL]`.
 inline constexpr std::string_view kWorldKeyword = "world";
+
+// A frame batch's keyword (Landscape::apply_batch): `batch EDIT | EDIT | ...`, each EDIT an edit
+// line's words without its line break, separated by kBatchSeparator (no WKT holds one).
+inline constexpr std::string_view kBatchKeyword = "batch";
+inline constexpr char kBatchSeparator = '|';
 
 // An edit's keyword, and how many material numbers stand between it and the WKT shape: none
 // (carve), MATERIAL (fill, fill_empty), FROM TO (replace), or any number of FROM TO pairs
@@ -69,5 +75,9 @@ EDGELAND_EXPORT std::string relabel_line(const PolygonSet& shape, const Material
 // the relabel line when the map is not of its kind's form (what apply_edit then does too,
 // delta.hpp). A replace that changes nothing is "replace 0 0".
 EDGELAND_EXPORT std::string edit_line(const Edit& edit);
+
+// "batch EDIT | EDIT | ...\n": the edits of a batch in order, each as edit_line(const Edit&)
+// writes it, without its line break.
+EDGELAND_EXPORT std::string batch_line(std::span<const Edit> edits);
 
 }  // namespace edgeland::log

@@ -10,6 +10,7 @@
 
 #include "edgeland/clip/valid_set.hpp"
 #include "edgeland/kernel/bbox.hpp"
+#include "edgeland/kernel/export.hpp"
 #include "edgeland/kernel/fraction.hpp"
 #include "edgeland/kernel/int128.hpp"
 #include "edgeland/kernel/point.hpp"
@@ -118,6 +119,10 @@ struct Edit {
     return {Kind::kRelabel, std::move(shape), map};
   }
 };
+
+// A polygon set as an edit's shape, validated as every edit validates it: CoordinateOutOfRange
+// for a coordinate beyond kCoordBound, InvalidInput (operand kClip) for any other violation.
+EDGELAND_EXPORT ValidSet edit_shape(PolygonSet shape);
 
 // What an edit changed.
 struct ChangeSet {
