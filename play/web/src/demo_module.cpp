@@ -13,8 +13,8 @@
 
 #include "edgeland/demo/editor.hpp"
 #include "edgeland/demo/palette.hpp"
-#include "edgeland/demo/splitmix64.hpp"
 #include "edgeland/demo/world.hpp"
+#include "edgeland/kernel/splitmix64.hpp"
 
 namespace edgeland::demo {
 namespace {
