@@ -204,17 +204,18 @@ void GameState::start_work() {
 void GameState::note_fills(std::span<const Edit> edits) {
   fills_.clear();
   for (const Edit& e : edits)
-    if (fills(e, options_.surface.materials)) fills_.push_back(e.shape);
+    if (fills(e, options_.surface.materials))
+      if (const std::optional<Box64> box = bounding_box(e.shape.polygons()))
+        fills_.push_back({e.shape, *box});
 }
 
 // The box meets a filling shape's interior where the edits left solid (before any of it fell as
 // debris): the shape cut to the box (the clipper's one rounding), then overlaps().
 bool GameState::buried(const Box64& box) const {
   if (box.min.x >= box.max.x || box.min.y >= box.max.y) return false;
-  for (const ValidSet& shape : fills_) {
-    const std::optional<Box64> bounds = bounding_box(shape.polygons());
-    if (!bounds || !bounds->overlaps_open(box)) continue;
-    const ValidClipResult inside = clip_to_box(shape, box);
+  for (const Fill& fill : fills_) {
+    if (!fill.box.overlaps_open(box)) continue;
+    const ValidClipResult inside = clip_to_box(fill.shape, box);
     if (inside.set.polygons().empty()) continue;
     for (Material m : filled_.overlaps(inside.set))
       if (options_.surface.materials.is_solid(m)) return true;

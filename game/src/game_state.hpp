@@ -63,7 +63,12 @@ class GameState {
   SurfaceState surface_;
   std::unique_ptr<IslandTree> islands_;
   std::deque<Waiting> queue_;
-  std::vector<ValidSet> fills_;  // the last update's filling shapes (buried())
+  // The last update's filling shapes with their boxes (buried(): a game asks once per body).
+  struct Fill {
+    ValidSet shape;
+    Box64 box;
+  };
+  std::vector<Fill> fills_;
   // Per update (storage reused).
   std::vector<Box64> replaced_, fresh_;
   std::vector<GoneCell> gone_;
