@@ -46,8 +46,8 @@ std::vector<PolygonSet> shapes() {
   std::vector<PolygonSet> out;
   for (double r : {1.0, 2.5, 4.0, 9.0, 17.0, 40.0})
     out.push_back({ngon({20, 23}, r, game_sides(r))});
-  out.push_back({capsule({5, 5}, {31, 12}, 6, 32)});
-  out.push_back({capsule({-12, 40}, {60, 50}, 9, 20)});       // past the world on both sides
+  out.push_back({ngon_stroke({5, 5}, {31, 12}, 6, 32)});
+  out.push_back({ngon_stroke({-12, 40}, {60, 50}, 9, 20)});   // past the world on both sides
   out.push_back({{{10, 10}, {30, 20}, {10, 30}, {20, 20}}});  // concave arrow
   out.push_back({{{20, 0}, {40, 20}, {20, 40}, {0, 20}}});    // edges through square centres
   out.push_back(

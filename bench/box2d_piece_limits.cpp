@@ -24,8 +24,8 @@
 #include "box2d_piece.hpp"
 #include "edgeland/demo/landscape.hpp"
 #include "edgeland/kernel/convex_pieces.hpp"
+#include "edgeland/kernel/splitmix64.hpp"
 #include "landscape_polygons.hpp"
-#include "splitmix64.hpp"
 
 namespace edgeland::bench {
 namespace {

@@ -8,9 +8,9 @@
 #include "edgeland/box2d/terrain.hpp"
 #include "edgeland/game/render_meshes.hpp"
 #include "edgeland/kernel/shapes.hpp"
+#include "edgeland/kernel/splitmix64.hpp"
 #include "game_common.hpp"
 #include "pixel_terrain.hpp"
-#include "splitmix64.hpp"
 
 namespace edgeland::bench {
 namespace {

@@ -20,8 +20,8 @@
 
 #include "edgeland/box2d/terrain.hpp"
 #include "edgeland/kernel/shapes.hpp"
+#include "edgeland/kernel/splitmix64.hpp"
 #include "game_common.hpp"
-#include "splitmix64.hpp"
 
 namespace edgeland::bench {
 namespace {

@@ -114,7 +114,7 @@ const std::vector<Ray>& rays() {
   SplitMix64 random(0x4A7C);
   while (cache.size() < query_count()) {
     const Point64 from = random_points(random.next(), 1, kWorld).front();
-    const double angle = 2.0 * 3.14159265358979323846 * random.unit();
+    const double angle = 2.0 * 3.14159265358979323846 * unit_draw(random);
     const Point64 to{from.x + std::llround(kRayLength * std::cos(angle)),
                      from.y + std::llround(kRayLength * std::sin(angle))};
     if (!kWorld.contains(to) || l.material_at(from) != kEmpty) continue;

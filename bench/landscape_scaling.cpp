@@ -57,7 +57,7 @@ std::vector<std::pair<Point64, Point64>> rays(const World& reference, std::int64
   std::vector<std::pair<Point64, Point64>> out;
   for (std::size_t tries = 0; out.size() < n && tries < 100 * n; ++tries) {
     const Point64 from = random_points(random.next(), 1, world_of(side)).front();
-    const double angle = 2.0 * 3.14159265358979323846 * random.unit();
+    const double angle = 2.0 * 3.14159265358979323846 * unit_draw(random);
     const Point64 to{from.x + std::llround(200 * std::cos(angle)),
                      from.y + std::llround(200 * std::sin(angle))};
     if (world_of(side).contains(to) && material_at(reference, from) == kEmpty)

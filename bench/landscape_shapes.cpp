@@ -58,7 +58,7 @@ std::size_t game_sides(double radius) {
   return std::clamp<std::size_t>(sides, 16, 512);
 }
 
-Polygon capsule(Point64 a, Point64 b, double radius, std::size_t sides) {
+Polygon ngon_stroke(Point64 a, Point64 b, double radius, std::size_t sides) {
   std::vector<Point64> points;
   add_ngon_points(points, a, radius, sides);
   add_ngon_points(points, b, radius, sides);
@@ -82,10 +82,10 @@ std::vector<Point64> random_walk(std::uint64_t seed, std::size_t count, double s
   SplitMix64 random(seed);
   double x = static_cast<double>(box.min.x + box.max.x) / 2;
   double y = static_cast<double>(box.min.y + box.max.y) / 2;
-  double heading = 2.0 * kPi * random.unit();
+  double heading = 2.0 * kPi * unit_draw(random);
   std::vector<Point64> out{{std::llround(x), std::llround(y)}};
   while (out.size() <= count) {
-    heading += (random.unit() - 0.5) * (kPi / 9.0);
+    heading += (unit_draw(random) - 0.5) * (kPi / 9.0);
     const double nx = x + step * std::cos(heading), ny = y + step * std::sin(heading);
     if (nx < static_cast<double>(box.min.x) || nx > static_cast<double>(box.max.x) ||
         ny < static_cast<double>(box.min.y) || ny > static_cast<double>(box.max.y)) {
@@ -103,7 +103,7 @@ std::vector<Polygon> caves(std::uint64_t seed, std::size_t count, const Box64& b
   SplitMix64 random(seed ^ 0xCA7E5);
   std::vector<Polygon> out;
   for (const Point64& c : random_points(seed, count, box)) {
-    const double radius = 24.0 + 136.0 * random.unit();
+    const double radius = 24.0 + 136.0 * unit_draw(random);
     out.push_back(ngon(c, radius, game_sides(radius)));
   }
   return out;
@@ -129,7 +129,8 @@ std::vector<ValidSet> explosions(std::uint64_t seed, std::size_t count, const Bo
 std::vector<ValidSet> digger_strokes(std::uint64_t seed, std::size_t count, const Box64& world) {
   const std::vector<Point64> walk = random_walk(seed, count, 10.0, inset(world, 64));
   std::vector<Polygon> polygons;
-  for (std::size_t i = 0; i < count; ++i) polygons.push_back(capsule(walk[i], walk[i + 1], 20, 32));
+  for (std::size_t i = 0; i < count; ++i)
+    polygons.push_back(ngon_stroke(walk[i], walk[i + 1], 20, 32));
   return as_shapes(polygons);
 }
 

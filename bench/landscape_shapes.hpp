@@ -9,7 +9,7 @@
 #include "edgeland/clip/clip.hpp"
 #include "edgeland/kernel/bbox.hpp"
 #include "edgeland/kernel/polygon.hpp"
-#include "splitmix64.hpp"
+#include "unit_draw.hpp"
 
 namespace edgeland::bench {
 
@@ -23,8 +23,12 @@ Polygon ngon(Point64 centre, double radius, std::size_t sides);
 // circumference, at least 16, at most 512.
 std::size_t game_sides(double radius);
 
-// A stroke of the tunnel digger: the convex hull of the (rounded) n-gons at both ends.
-Polygon capsule(Point64 a, Point64 b, double radius, std::size_t sides);
+// A stroke of the tunnel digger: the convex hull of the rounded `sides`-gons of ngon() at both
+// ends. Not the kernel's capsule(), which takes its ends' corner count from circle_sides() (16 at
+// radius 20) and its corners from integer trigonometry: the `dig` workload and its published
+// figures (README.md, "Workloads") are strokes with 32-gon ends, and bitmap_world_check's
+// shapes want corner counts of their own, so the bench keeps this shape under its own name.
+Polygon ngon_stroke(Point64 a, Point64 b, double radius, std::size_t sides);
 
 // `count` integer points uniform in the closed box.
 std::vector<Point64> random_points(std::uint64_t seed, std::size_t count, const Box64& box);
@@ -48,8 +52,8 @@ std::vector<ValidSet> as_shapes(const std::vector<Polygon>& polygons);
 // The edit workloads of the landscape and game benchmarks (landscape_edits.cpp,
 // game_edits.cpp), so both measure the same edits:
 //   explosions: `count` 32-gons of radius 40 at random centres in the world box;
-//   digger strokes: `count` capsules of radius 20 (32-gon caps) along a random walk, 10 units per
-//   step, inside the world box less a 64-unit margin.
+//   digger strokes: `count` ngon_strokes of radius 20 (32-gon ends) along a random walk, 10 units
+//   per step, inside the world box less a 64-unit margin.
 inline constexpr std::uint64_t kCarveSeed = 0xCA4'F1A6;  // the carved explosions
 inline constexpr std::uint64_t kFillSeed = 0xF111'0002;  // the filled ones (other centres)
 inline constexpr std::uint64_t kDigSeed = 0xD16'6E2;

@@ -1,7 +1,7 @@
 #include "landscape_workloads.hpp"
 
 #include "landscape_shapes.hpp"
-#include "splitmix64.hpp"
+#include "unit_draw.hpp"
 
 namespace edgeland::bench {
 namespace {
@@ -15,7 +15,7 @@ std::vector<Edit> repeated_at(Point64 centre, double min_radius, double max_radi
   for (std::size_t i = 0; i < n; ++i) {
     const Point64 c{centre.x - 8 + static_cast<std::int64_t>(random.next() % 17),
                     centre.y - 8 + static_cast<std::int64_t>(random.next() % 17)};
-    const double radius = min_radius + (max_radius - min_radius) * random.unit();
+    const double radius = min_radius + (max_radius - min_radius) * unit_draw(random);
     const std::size_t sides = 16 + random.next() % 33;
     const bool fill = random.next() % 4 == 0;
     out.push_back({ValidSet(PolygonSet{ngon(c, radius, sides)}, Operand::kClip),
@@ -33,7 +33,7 @@ std::vector<Edit> mixed_at(Point64 centre, std::size_t n) {
   for (std::size_t i = 0; i < n; ++i) {
     const Point64 c{centre.x - 8 + static_cast<std::int64_t>(random.next() % 17),
                     centre.y - 8 + static_cast<std::int64_t>(random.next() % 17)};
-    const double radius = 5.0 + 55.0 * random.unit();
+    const double radius = 5.0 + 55.0 * unit_draw(random);
     const std::size_t sides = 7 + random.next() % 26;
     ValidSet shape(PolygonSet{ngon(c, radius, sides)}, Operand::kClip);
     switch (random.next() % 3) {

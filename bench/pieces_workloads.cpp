@@ -30,7 +30,7 @@ std::vector<PiecesWorkload> demo_workloads(std::size_t edits) {
 }
 
 std::vector<PiecesWorkload> synthetic_workloads() {
-  testing::SplitMix64 draw(26);
+  testing::SplitMixDraw draw(26);
   std::vector<PiecesWorkload> out;
   for (const std::int64_t n : {10'000, 100'000}) {
     const std::string size = std::to_string(n);

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "splitmix64.hpp"
+#include "unit_draw.hpp"
 #include "workloads.hpp"
 
 namespace edgeland::bench {
@@ -75,7 +75,7 @@ Operands star_minus_empty(std::size_t n) {
   SplitMix64 random(0x5CA1'E000 + n);
   Operands out;
   out.subject = {
-      star(n, 0.0, 0.0, 0.0, [&](std::size_t) { return 5.0e7 * (1.0 + random.unit()); })};
+      star(n, 0.0, 0.0, 0.0, [&](std::size_t) { return 5.0e7 * (1.0 + unit_draw(random)); })};
   require_valid(out.subject, "random star");
   return out;
 }

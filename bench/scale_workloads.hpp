@@ -1,8 +1,8 @@
 #pragma once
 // Inputs of the scale benchmarks (issue 16, point 1): large operands whose boundaries cross
 // many times, for edgeland and its peers side by side (scale_benchmarks.cpp, run_scale.sh).
-// Deterministic: fixed seeds (splitmix64.hpp) and std::cos/std::sin + llround in bench/ only;
-// the library never sees a double. Every operand is checked with edgeland::validate.
+// Deterministic: fixed seeds (the kernel's SplitMix64) and std::cos/std::sin + llround in bench/
+// only; the library never sees a double. Every operand is checked with edgeland::validate.
 #include <cstddef>
 #include <cstdint>
 

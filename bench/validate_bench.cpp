@@ -27,8 +27,8 @@
 #include <vector>
 
 #include "edgeland/clip/clip.hpp"
+#include "edgeland/kernel/splitmix64.hpp"
 #include "edgeland/kernel/validate.hpp"
-#include "splitmix64.hpp"
 
 namespace {
 
@@ -37,7 +37,7 @@ using edgeland::Point64;
 using edgeland::Polygon;
 using edgeland::PolygonSet;
 
-using edgeland::bench::SplitMix64;  // deterministic on every platform
+using edgeland::SplitMix64;  // deterministic on every platform
 
 // n vertices at angles 2 pi i / n and radius radius(angle) around `center`, repeated
 // points dropped.

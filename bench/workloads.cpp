@@ -5,7 +5,7 @@
 #include <string>
 
 #include "edgeland/kernel/validate.hpp"
-#include "splitmix64.hpp"
+#include "unit_draw.hpp"
 
 namespace edgeland::bench {
 namespace {
@@ -28,8 +28,8 @@ Polygon star(std::size_t n, double cx, double cy, double offset, RadiusFn radius
 }
 
 Polygon smooth_star(std::size_t n, double cx, double cy, double offset, Random& random) {
-  const double phase3 = 2.0 * kPi * random.unit();
-  const double phase7 = 2.0 * kPi * random.unit();
+  const double phase3 = 2.0 * kPi * unit_draw(random);
+  const double phase7 = 2.0 * kPi * unit_draw(random);
   return star(n, cx, cy, offset, [&](double angle) {
     return kStarRadius *
            (0.75 + 0.15 * std::sin(3.0 * angle + phase3) + 0.05 * std::sin(7.0 * angle + phase7));
@@ -37,7 +37,8 @@ Polygon smooth_star(std::size_t n, double cx, double cy, double offset, Random& 
 }
 
 Polygon spiky_star(std::size_t n, double cx, double cy, double offset, Random& random) {
-  return star(n, cx, cy, offset, [&](double) { return kStarRadius * (0.3 + 0.7 * random.unit()); });
+  return star(n, cx, cy, offset,
+              [&](double) { return kStarRadius * (0.3 + 0.7 * unit_draw(random)); });
 }
 
 }  // namespace

@@ -9,17 +9,13 @@
 #include <cstdio>
 #include <memory>
 
+#include "edgeland/demo/cairo_handles.hpp"
+
 namespace edgeland::cli {
 namespace {
 
-struct SurfaceCloser {
-  void operator()(cairo_surface_t* s) const { cairo_surface_destroy(s); }
-};
-struct ContextCloser {
-  void operator()(cairo_t* c) const { cairo_destroy(c); }
-};
-using Surface = std::unique_ptr<cairo_surface_t, SurfaceCloser>;
-using Context = std::unique_ptr<cairo_t, ContextCloser>;
+using Surface = demo::CairoSurface;
+using Context = demo::CairoContext;
 
 constexpr int kLegendWidth = 200;  // pixels right of the world
 constexpr int kLegendRow = 22;

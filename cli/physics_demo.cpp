@@ -9,7 +9,7 @@
 #include "commands.hpp"
 #include "edgeland/io/landscape_replay.hpp"
 #include "landscape_picture.hpp"
-#include "physics_scene.hpp"
+#include "physics_scenario.hpp"
 
 namespace edgeland::cli {
 namespace {
@@ -44,7 +44,7 @@ PictureOptions frame_picture(const box2d::PhysicsScene& scene) {
       .label = "balls and boxes", .colour = {250, 250, 250}, .line_width = 1.5, .fill = true};
   PictureLayer debris{.label = "debris", .colour = {255, 170, 40}, .line_width = 1.5, .fill = true};
   for (const box2d::SceneBody& b : scene.bodies())
-    add_outlines(scene, b.body, b.debris ? debris : bodies);
+    add_outlines(scene, b.body, b.kind == box2d::BodyKind::kDebris ? debris : bodies);
   PictureOptions options;
   options.max_long_side = 1024;
   options.legend = true;
@@ -69,22 +69,23 @@ std::string per(double seconds, double count, const char* unit) {
   return s.str();
 }
 
-void print_summary(const box2d::PhysicsScene& scene, int frames_written) {
-  const box2d::SceneStats& s = scene.stats();
-  print_line("frames", std::to_string(s.frames) + " steps of 1/60 s, " +
+void print_summary(const box2d::PhysicsScenario& scenario, int frames_written) {
+  const box2d::ScenarioStats& a = scenario.stats();
+  const box2d::SceneStats& s = scenario.scene().stats();
+  print_line("frames", std::to_string(s.steps) + " steps of 1/60 s, " +
                            std::to_string(frames_written) + " pictures");
-  print_line("edits", std::to_string(s.edits) + " (blasts and fills near the bodies)");
+  print_line("edits", std::to_string(a.edits) + " (blasts and fills near the bodies)");
   print_line("collider updates", std::to_string(s.chains_removed) + " chains removed, " +
                                      std::to_string(s.chains_added) + " added");
   print_line("islands detached", std::to_string(s.detached) + " (falling as debris bodies)");
-  print_line("bodies buried", std::to_string(s.buried) + " (a fill put solid on them)");
-  print_line("game time", per(s.game_seconds, s.frames - s.settled, "frame") +
+  print_line("bodies buried", std::to_string(a.buried) + " (a fill put solid on them)");
+  print_line("game time", per(a.game_seconds, a.frames, "frame") +
                               " (edits, chains, islands, meshes: GameDriver::apply)");
-  print_line("collider time", per(s.collider_seconds, s.frames - s.settled, "frame"));
-  print_line("debris time", per(s.debris_seconds, s.frames - s.settled, "frame"));
-  print_line("step time", per(s.step_seconds, s.frames, "step"));
-  print_line("bodies now", std::to_string(scene.bodies().size()));
-  print_line("state hash", log::state_hash_hex(scene.land().state_hash()));
+  print_line("collider time", per(s.collider_seconds, a.frames, "frame"));
+  print_line("debris time", per(s.debris_seconds, a.frames, "frame"));
+  print_line("step time", per(s.step_seconds, s.steps, "step"));
+  print_line("bodies now", std::to_string(scenario.scene().bodies().size()));
+  print_line("state hash", log::state_hash_hex(scenario.land().state_hash()));
 }
 
 }  // namespace
@@ -99,20 +100,21 @@ int run_physics_demo(const PhysicsDemoOptions& options) {
   }
   std::cout << "edgeland demo --physics: world 0 0 4096 4096, 200 balls and boxes, seed "
             << options.seed << '\n';
-  box2d::PhysicsScene scene(box2d::PhysicsSceneOptions{.seed = options.seed});
-  scene.settle(120);
+  box2d::PhysicsScenario scenario(box2d::PhysicsScenarioOptions{.seed = options.seed});
+  scenario.settle(120);
   int written = 0;
   try {
     for (int frame = 0; frame < options.frames; ++frame) {
-      scene.frame();
+      scenario.frame();
       if (frame % options.frame_every == 0)
-        write_landscape_png(scene.land(), frame_path(options.out, written++), frame_picture(scene));
+        write_landscape_png(scenario.land(), frame_path(options.out, written++),
+                            frame_picture(scenario.scene()));
     }
   } catch (const PictureError& e) {
     std::cerr << "edgeland demo: " << e.what() << '\n';
     return kExitUnreadable;
   }
-  print_summary(scene, written);
+  print_summary(scenario, written);
   print_line("pictures", frame_path(options.out, 0) + " ...");
   return kExitOk;
 }

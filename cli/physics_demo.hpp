@@ -1,7 +1,7 @@
 #pragma once
-// `edgeland demo --physics`: the demo's physics scene (demo/physics/physics_scene.hpp), the same
-// one tests/box2d checks, run for a number of frames with PNG frames of the terrain, the bodies
-// and the falling debris, and a summary of what it did and where the time went.
+// `edgeland demo --physics`: the demo's physics scenario (demo/physics/physics_scenario.hpp), the
+// same one tests/box2d checks, run for a number of frames with PNG frames of the terrain, the
+// bodies and the falling debris, and a summary of what it did and where the time went.
 #include <cstdint>
 #include <string>
 

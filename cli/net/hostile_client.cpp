@@ -7,8 +7,8 @@
 #include <nlohmann/json.hpp>
 #include <vector>
 
-#include "edgeland/demo/splitmix64.hpp"
 #include "edgeland/kernel/shapes.hpp"
+#include "edgeland/kernel/splitmix64.hpp"
 #include "edgeland/spatial/byte_codec.hpp"
 #include "edgeland/spatial/delta.hpp"
 #include "net_options.hpp"
@@ -59,7 +59,7 @@ struct Attack {
 
 std::vector<std::string> garbage() {
   std::vector<std::string> out;
-  demo::SplitMix64 random(37);
+  edgeland::SplitMix64 random(37);
   for (int i = 0; i < 20; ++i) {
     std::string m(1 + random.below(200), '\0');
     for (char& c : m) c = static_cast<char>(random.next());

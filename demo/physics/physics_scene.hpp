@@ -1,98 +1,93 @@
 #pragma once
-// The physics scene of the Box2D adapter's test and of `edgeland demo --physics` (one scene,
-// so the demo shows what the test checks): a layered world with hills (bedrock, rock, dirt), 200
-// balls and boxes resting and rolling on it, and a stream of blasts and fills near them. Each
-// frame's edits go to the game driver as one batch; its update goes to the terrain's fixtures,
-// its debris become bodies, and the bodies its fills buried leave the play. Deterministic: a
-// seeded generator, a fixed step.
+// The demos' one Box2D scene (issue 38): a Box2D 2.4 world whose static terrain follows a game
+// driver's updates (the Box2D adapter's Terrain: per-cell surface chains with ghost vertices, no
+// seams), the balls and boxes dropped on it, and a dynamic body for each debris island the
+// updates hand out (make_debris_body). PhysicsScene follows a driver that its owner keeps and
+// edits: the desktop demo's session (play/desktop), or the seeded scenario of tests/box2d and
+// `edgeland demo --physics` (physics_scenario.hpp).
 #include <box2d/box2d.h>
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "edgeland/box2d/terrain.hpp"
-#include "edgeland/demo/splitmix64.hpp"
 
 namespace edgeland::box2d {
 
-struct PhysicsSceneOptions {
-  std::uint64_t seed = 2026;
-  std::int64_t size = 4096;     // the world is size x size units
-  double units_per_metre = 32;  // 4096 units = 128 m
-  int bodies = 200;             // balls and boxes in play (buried ones are replaced)
-  int edits_per_frame = 3;
+enum class BodyKind : std::uint8_t { kBall, kBox, kDebris };
+
+// How a ball or a box meets the terrain and the other bodies (density 1).
+struct BodySurface {
+  float friction = 0.5f;
+  float restitution = 0;
 };
 
 struct SceneBody {
   b2Body* body = nullptr;
-  bool debris = false;
-  float start_y = 0;  // where a debris body was made (engine units)
+  BodyKind kind = BodyKind::kBall;
+  double size = 0;    // landscape units: a ball's radius, a box's half side (0 for debris)
+  float start_y = 0;  // engine units: where a debris body was made
+  // Debris, for drawing: the island's meshes (the driver's, in landscape coordinates) and its
+  // centroid, which is the body's origin.
+  std::vector<PolygonMesh> meshes{};
+  EngineVec centroid{};
 };
 
 // What the scene has done, and where its time went (wall clock; reporting only).
 struct SceneStats {
-  int frames = 0, settled = 0, edits = 0, detached = 0,
-      buried = 0;  // settled: frames without edits
+  int steps = 0, detached = 0;
   std::size_t chains_removed = 0, chains_added = 0;
-  double game_seconds = 0, collider_seconds = 0, debris_seconds = 0, step_seconds = 0;
+  double collider_seconds = 0, debris_seconds = 0, step_seconds = 0;
 };
 
 class PhysicsScene {
  public:
-  explicit PhysicsScene(const PhysicsSceneOptions& options = {});
+  // The terrain of `game`'s landscape; `game` must outlive the scene. Its owner makes the edits
+  // and hands each update to apply().
+  PhysicsScene(const GameDriver& game, const TerrainOptions& options);
   PhysicsScene(const PhysicsScene&) = delete;
   PhysicsScene& operator=(const PhysicsScene&) = delete;
 
-  // Steps without edits (the bodies land).
-  void settle(int frames);
-  // `edits_per_frame` edits near random bodies, then one step of 1/60 s.
-  void frame();
+  // One update of the driver, between two steps (no body ever sees a missing wall): the
+  // terrain's chains, and a body for each debris.
+  void apply(const GameUpdate& update);
+  // A ball of `radius`, or a box of half side `half` turned by `angle` radians (landscape units),
+  // centred at `at`.
+  void drop_ball(Point64 at, double radius, const BodySurface& surface = {});
+  void drop_box(Point64 at, double half, float angle = 0, const BodySurface& surface = {});
+  // One step of `seconds` (8 velocity and 3 position iterations).
+  void step(float seconds = 1.0f / 60.0f);
+  // Takes the bodies `which` picks out of the world, in order; returns how many.
+  std::size_t remove_bodies(const std::function<bool(const SceneBody&)>& which);
 
-  // The balls and boxes (not debris) whose centre lies in solid material.
+  // The balls and boxes (not debris: a centroid may lie outside its own shape) whose centre lies
+  // in material the driver takes as solid.
   std::vector<Point64> centres_in_solid() const;
   // Any body whose centre left the world's box.
   std::vector<Point64> centres_outside_world() const;
+  // A body's position as the nearest landscape point, and unrounded (for drawing).
   Point64 centre(const b2Body* body) const;
+  EngineVec position(const b2Body* body) const;
+  // The landscape box around a body's fixtures, one unit wider on every side.
+  Box64 box_of(const b2Body* body) const;
 
-  static PhysicsMaterials materials();  // bedrock (1) anchored
-  static GameOptions game_options();
-  static TerrainOptions terrain_options(const PhysicsSceneOptions& options);
-
-  const Landscape& land() const { return game_.landscape(); }
   const GameDriver& game() const { return game_; }
+  const Landscape& land() const { return game_.landscape(); }
   b2World& world() { return world_; }
   const Terrain& terrain() const { return terrain_; }
   const std::vector<SceneBody>& bodies() const { return bodies_; }
   const SceneStats& stats() const { return stats_; }
 
  private:
-  class Random {
-   public:
-    explicit Random(std::uint64_t seed) : source_(seed) {}
-    std::int64_t in(std::int64_t lo, std::int64_t hi);  // [lo, hi]
+  void add_body(const b2BodyDef& def, const b2Shape& shape, BodyKind kind, double size,
+                const BodySurface& surface);
 
-   private:
-    demo::SplitMix64 source_;
-  };
-
-  void drop_bodies(int count);
-  Edit edit_near_a_body();
-  void apply(const GameUpdate& update);
-  void bury_bodies();
-  Box64 box_of(b2Body* body) const;
-  Polygon blast(Point64 centre, std::int64_t radius);
-  int balls_and_boxes() const;
-
-  PhysicsSceneOptions options_;
-  Random random_;
-  GameDriver game_;
+  const GameDriver& game_;
   b2World world_;
   Terrain terrain_;
   std::vector<SceneBody> bodies_;
   SceneStats stats_;
 };
-
-// The world of the scene: rock (2) with hills over bedrock (1), dirt (3) on top, a few caves.
-Landscape scene_world(std::int64_t size);
 
 }  // namespace edgeland::box2d

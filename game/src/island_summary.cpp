@@ -2,19 +2,16 @@
 
 #include <algorithm>
 
+#include "edgeland/kernel/splitmix64.hpp"
 #include "solid_boundary.hpp"
 #include "union_find.hpp"
 
 namespace edgeland::game_detail {
 namespace {
 
-// splitmix64's finaliser: spreads ids so that sums of different sets rarely collide.
-std::uint64_t mixed(std::uint64_t x) {
-  x += 0x9E3779B97F4A7C15ull;
-  x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
-  x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
-  return x ^ (x >> 31);
-}
+// splitmix64's first output from state x: spreads ids so that sums of different sets rarely
+// collide.
+std::uint64_t mixed(std::uint64_t x) { return mix64(x + kSplitMix64Gamma); }
 
 // Ports of one group that abut along a side become one: a port overlaps another over a positive
 // length exactly when one of its parts does, so matching gives the same unions, and a node's

@@ -4,14 +4,6 @@
 
 namespace edgeland::net {
 
-// splitmix64.
-std::uint64_t EditStream::random() {
-  std::uint64_t z = (state_ += 0x9E3779B97F4A7C15ull);
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  return z ^ (z >> 31);
-}
-
 Edit EditStream::next() {
   const auto r = static_cast<std::int64_t>(8 + random() % 33);
   const auto at = [&](std::int64_t lo, std::int64_t hi) {

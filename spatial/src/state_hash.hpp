@@ -5,6 +5,7 @@
 #include <cstdint>
 
 #include "edgeland/kernel/bbox.hpp"
+#include "edgeland/kernel/splitmix64.hpp"
 #include "edgeland/spatial/types.hpp"
 
 namespace edgeland::detail {
@@ -13,10 +14,7 @@ class StateHash {
  public:
   explicit StateHash(std::uint64_t seed = 0x6564676c616e6421ull) : h_(seed) {}
   StateHash& add(std::uint64_t v) noexcept {
-    std::uint64_t z = h_ ^ (v + 0x9E3779B97F4A7C15ull + (h_ << 6) + (h_ >> 2));
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    h_ = z ^ (z >> 31);
+    h_ = mix64(h_ ^ (v + kSplitMix64Gamma + (h_ << 6) + (h_ >> 2)));
     return *this;
   }
   StateHash& add(std::int64_t v) noexcept { return add(static_cast<std::uint64_t>(v)); }

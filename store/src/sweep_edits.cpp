@@ -1,17 +1,12 @@
 #include "edgeland/store/sweep_edits.hpp"
 
 #include "edgeland/kernel/shapes.hpp"
+#include "edgeland/kernel/splitmix64.hpp"
 
 namespace edgeland::store {
 namespace {
 
 constexpr std::int64_t kSpacing = 128;
-
-std::uint64_t mix(std::uint64_t z) {
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  return z ^ (z >> 31);
-}
 
 }  // namespace
 
@@ -42,7 +37,7 @@ Point64 SweepEdits::slot(std::size_t k) const {
 }
 
 Edit SweepEdits::at(std::size_t i) const {
-  const std::uint64_t r = mix(i + 0x5EED);
+  const std::uint64_t r = mix64(i + 0x5EED);
   if (i < slots_) {
     const std::int64_t radius = 40 + static_cast<std::int64_t>(r % 20);
     return Edit::fill(ValidSet(PolygonSet{regular_polygon(slot(i), radius, sides_)}),

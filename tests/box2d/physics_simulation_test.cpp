@@ -10,7 +10,7 @@
 #include <memory>
 
 #include "edgeland/box2d/terrain.hpp"
-#include "physics_scene.hpp"
+#include "physics_scenario.hpp"
 
 namespace edgeland::test {
 namespace {
@@ -45,13 +45,14 @@ std::vector<FixtureShape> fixtures_of(const box2d::Terrain& terrain) {
   return out;
 }
 
-// The scene of `edgeland demo --physics` (demo/physics): 200 balls and boxes on a
+// The scenario of `edgeland demo --physics` (demo/physics): 200 balls and boxes on a
 // layered world with hills, 3 blasts or fills near them per frame for 1,200 frames.
 TEST(PhysicsSimulation, BodiesStayOutOfSolidWhileTheTerrainChangesUnderThem) {
-  box2d::PhysicsScene scene;
-  scene.settle(120);  // let them land
+  box2d::PhysicsScenario scenario;
+  const box2d::PhysicsScene& scene = scenario.scene();
+  scenario.settle(120);  // let them land
   for (int frame = 0; frame < 1200; ++frame) {
-    scene.frame();
+    scenario.frame();
     const std::vector<Point64> inside = scene.centres_in_solid();
     ASSERT_TRUE(inside.empty()) << "frame " << frame
                                 << ": a body's centre is in solid material at (" << inside.front().x
@@ -60,23 +61,25 @@ TEST(PhysicsSimulation, BodiesStayOutOfSolidWhileTheTerrainChangesUnderThem) {
     ASSERT_TRUE(outside.empty()) << "frame " << frame << ": a body left the world at ("
                                  << outside.front().x << " " << outside.front().y << ")";
   }
-  EXPECT_GE(scene.stats().edits, 3600);
+  EXPECT_GE(scenario.stats().edits, 3600);
   EXPECT_GT(scene.stats().detached, 0);
   // The debris fell: most debris bodies still in play are below where they were made.
   std::size_t debris = 0, fell = 0;
   for (const box2d::SceneBody& b : scene.bodies()) {
-    debris += b.debris;
-    fell += b.debris && b.body->GetPosition().y < b.start_y - 0.1f;
+    const bool is_debris = b.kind == box2d::BodyKind::kDebris;
+    debris += is_debris;
+    fell += is_debris && b.body->GetPosition().y < b.start_y - 0.1f;
   }
   EXPECT_GT(debris, 0u);
   EXPECT_GT(2 * fell, debris);
   // The fixtures kept from change sets equal those of a terrain built from scratch.
   b2World fresh_world(b2Vec2(0, -10));
-  GameOptions options = box2d::PhysicsScene::game_options();
+  GameOptions options = box2d::PhysicsScenario::game_options();
   options.debris = false;
   const GameDriver fresh_game(scene.land(), options);
-  const box2d::Terrain fresh(fresh_world, fresh_game,
-                             box2d::PhysicsScene::terrain_options(box2d::PhysicsSceneOptions{}));
+  const box2d::Terrain fresh(
+      fresh_world, fresh_game,
+      box2d::PhysicsScenario::terrain_options(box2d::PhysicsScenarioOptions{}));
   EXPECT_EQ(fixtures_of(scene.terrain()), fixtures_of(fresh));
   // A static body per region with chains: none left empty by the updates, none missing.
   EXPECT_EQ(scene.terrain().bodies().size(), fresh.bodies().size());

@@ -5,16 +5,16 @@
 #include <cstdint>
 #include <functional>
 
-#include "edgeland/demo/splitmix64.hpp"
+#include "edgeland/kernel/splitmix64.hpp"
 #include "edgeland/spatial/landscape.hpp"
 #include "shape_builders.hpp"
 
 namespace edgeland::test {
 
-// The project's one seeded generator (demo/: splitmix64.hpp) with draws in [lo, hi].
-class SplitMix : public demo::SplitMix64 {
+// The project's one seeded generator (kernel/: splitmix64.hpp) with draws in [lo, hi].
+class SplitMix : public edgeland::SplitMix64 {
  public:
-  using demo::SplitMix64::SplitMix64;
+  using edgeland::SplitMix64::SplitMix64;
   std::int64_t in(std::int64_t lo, std::int64_t hi) {  // [lo, hi]
     return lo + static_cast<std::int64_t>(below(static_cast<std::uint64_t>(hi - lo + 1)));
   }

@@ -14,8 +14,8 @@
 
 #include "edgeland/clip/clip.hpp"
 #include "edgeland/demo/integer_trig.hpp"
-#include "edgeland/demo/splitmix64.hpp"
 #include "edgeland/io/log_kind.hpp"
+#include "edgeland/kernel/splitmix64.hpp"
 #include "edgeland/spatial/delta.hpp"
 #include "edgeland/spatial/log_format.hpp"
 
@@ -296,7 +296,7 @@ TEST(LandscapeLogApply, WorldMaterialFillsTheWorld) {
 
 // A ring of n points around c with radii in [r/2, r] from the integer table: rough enough to
 // snap, many-sided enough to split cells (edge_cap 128) and small enough to merge them again.
-Ring random_ring(demo::SplitMix64& random, const Box64& area) {
+Ring random_ring(edgeland::SplitMix64& random, const Box64& area) {
   const Point64 c{random.between(area.min.x, area.max.x), random.between(area.min.y, area.max.y)};
   const std::int64_t r = random.between(3, 120);
   const int n = static_cast<int>(random.between(3, 40));
@@ -311,7 +311,7 @@ Ring random_ring(demo::SplitMix64& random, const Box64& area) {
 // relabels of random maps of 0..6),
 // each shape a valid set made by the OGC import; some reach past the world box.
 void random_edits(Landscape& l, std::uint64_t seed, int count) {
-  demo::SplitMix64 random(seed);
+  edgeland::SplitMix64 random(seed);
   const Box64 area{{l.world().min.x - 50, l.world().min.y - 50},
                    {l.world().max.x + 50, l.world().max.y + 50}};
   for (int i = 0; i < count; ++i) {

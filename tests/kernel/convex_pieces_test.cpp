@@ -176,7 +176,7 @@ TEST(ConvexPiecesExhaustive, EveryPolygonOnSmallGrids) {
 }
 
 TEST(ConvexPiecesLarge, HundredThousandVertices) {
-  SplitMix64 draw(26);
+  SplitMixDraw draw(26);
   const std::vector<Polygon> polygons{
       random_star(draw, {0, 0}, 1'000'000, 100'000),
       unit_comb(25'000, 3),

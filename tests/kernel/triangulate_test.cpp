@@ -212,7 +212,7 @@ RC_GTEST_PROP(TriangulateProperty, AnyStartingVertex, ()) {
 // 10^5 vertices: the sweep stays O(n log n) (a quadratic step would not finish in the test's
 // time), and every property holds.
 TEST(TriangulateLarge, HundredThousandVertices) {
-  SplitMix64 draw(26);
+  SplitMixDraw draw(26);
   const std::vector<Polygon> polygons{
       random_star(draw, {0, 0}, 1'000'000, 100'000),
       unit_comb(25'000, 3),

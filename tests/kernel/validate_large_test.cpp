@@ -28,7 +28,7 @@ struct LargeSet {
 
 const LargeSet& large_set() {
   static const LargeSet large = [] {
-    testing::SplitMix64 draw(20261122);
+    testing::SplitMixDraw draw(20261122);
     LargeSet l;
     l.set = testing::random_grid_set(draw, kCells, kCell, Point64{0, 0});
     // Far to the right of the grid, with radii from 1 to 10^8: a very spiky ring.
@@ -64,7 +64,7 @@ TEST(ValidateLarge, SweepAcceptsGridAndStarOfMoreThan1e5Vertices) {
 
 TEST(ValidateLarge, BruteForceAgreesOnWindowsOfTheGrid) {
   const LargeSet& l = large_set();
-  testing::SplitMix64 draw(7);
+  testing::SplitMixDraw draw(7);
   for (int k = 0; k < 8; ++k) {
     const PolygonSet part =
         window(l.set, draw(0, kCells - 8) * kCell, draw(0, kCells - 8) * kCell, 8 * kCell);
@@ -77,7 +77,7 @@ TEST(ValidateLarge, BruteForceAgreesOnWindowsOfTheGrid) {
 TEST(ValidateLarge, BruteForceFindsNoContactBetweenRandomEdgesOfTheStar) {
   const Polygon& star = large_set().set[large_set().star];
   const auto n = static_cast<std::int64_t>(star.size());
-  testing::SplitMix64 draw(11);
+  testing::SplitMixDraw draw(11);
   for (int k = 0; k < 200'000; ++k) {
     const auto i = draw(0, n), j = draw(0, n);
     const auto gap = (j - i + n) % n;

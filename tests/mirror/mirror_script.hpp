@@ -8,28 +8,23 @@
 #include <vector>
 
 #include "edgeland/kernel/shapes.hpp"
+#include "edgeland/kernel/splitmix64.hpp"
 #include "edgeland/spatial/landscape.hpp"
 
 namespace edgeland::mirror {
 
 inline constexpr int kFrames = 5000;
 
-// splitmix64 (README.md, "Random numbers").
+// splitmix64 from s = 36 (README.md, "Random numbers"): the kernel's generator; the other
+// languages write it out.
 class Random {
  public:
-  std::uint64_t next() {
-    s_ += 0x9E3779B97F4A7C15ULL;
-    std::uint64_t z = s_;
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-    return z ^ (z >> 31);
-  }
   std::int64_t below(std::int64_t n) {
-    return static_cast<std::int64_t>(next() % static_cast<std::uint64_t>(n));
+    return static_cast<std::int64_t>(random_.below(static_cast<std::uint64_t>(n)));
   }
 
  private:
-  std::uint64_t s_ = 36;
+  SplitMix64 random_{36};
 };
 
 // The polygons by id, kept from change sets only.

@@ -3,7 +3,7 @@
 // convex_pieces.hpp): polyominoes whose boundaries keep every lattice point (long runs of
 // collinear vertices, like the landscape's cell-cut pieces), spirals, combs, zigzags, sawtooth
 // boxes. Written over a `draw(lo, hi)` callable returning an integer in [lo, hi) (RcDraw in
-// properties, SplitMix64 in the large deterministic tests); independent of the code under test.
+// properties, SplitMixDraw in the large deterministic tests); independent of the code under test.
 #include <cstddef>
 #include <cstdint>
 #include <optional>

@@ -5,14 +5,14 @@
 #include <limits>
 #include <utility>
 
-#include "edgeland/demo/splitmix64.hpp"
+#include "edgeland/kernel/splitmix64.hpp"
 #include "save_file.hpp"
 
 namespace edgeland::fuzz {
 namespace {
 
-// The project's one seeded generator (demo/: splitmix64.hpp); below(n) draws in [0, n).
-using Rng = demo::SplitMix64;
+// The project's one seeded generator (kernel/: splitmix64.hpp); below(n) draws in [0, n).
+using Rng = edgeland::SplitMix64;
 
 // Values where the rules change: 0, 1, the ends of the ranges, off by one.
 std::int64_t edge_value(Rng& rng, std::int64_t around) {

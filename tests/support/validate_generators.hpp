@@ -1,21 +1,21 @@
 #pragma once
 // Generators of valid polygons and polygon sets for the validate() tests, written over a
 // `draw(lo, hi)` callable returning an integer in [lo, hi): RapidCheck draws in properties,
-// a fixed-seed SplitMix64 in the large deterministic tests.
+// a fixed-seed SplitMixDraw in the large deterministic tests.
 #include <cstddef>
 #include <cstdint>
 #include <vector>
 
-#include "edgeland/demo/splitmix64.hpp"
 #include "edgeland/kernel/polygon.hpp"
+#include "edgeland/kernel/splitmix64.hpp"
 
 namespace edgeland::testing {
 
-// Deterministic integers for large inputs: the project's one seeded generator (demo/:
+// Deterministic integers for large inputs: the project's one seeded generator (kernel/:
 // splitmix64.hpp) as a `draw(lo, hi)` in [lo, hi), the same sequence on every platform.
-class SplitMix64 : public demo::SplitMix64 {
+class SplitMixDraw : public SplitMix64 {
  public:
-  using demo::SplitMix64::SplitMix64;
+  using SplitMix64::SplitMix64;
   std::int64_t operator()(std::int64_t lo, std::int64_t hi) {
     return lo + static_cast<std::int64_t>(below(static_cast<std::uint64_t>(hi - lo)));
   }

@@ -13,15 +13,28 @@
 namespace edgeland::play {
 namespace {
 
+using box2d::BodyKind;
+using box2d::SceneBody;
 using demo::kWater;
 
 bool solid(Material m) { return m != kEmpty && m != kWater; }
+
+// The balls bounce a little; the boxes fall turned, so that they tumble.
+constexpr box2d::BodySurface kBallSurface{.friction = 0.4f, .restitution = 0.2f};
+constexpr float kBoxAngle = 0.3f;
 
 // Water is no obstacle; the world's border is a wall, so that nothing rolls out of the world.
 GameOptions game_options() {
   GameOptions options;
   options.surface.materials.set_solid(kWater, false);
   options.surface.border_wall = true;
+  return options;
+}
+
+// Box2D in metres of `units_per_metre` world units, from the world box's corner.
+box2d::TerrainOptions terrain_options(double units_per_metre) {
+  box2d::TerrainOptions options;
+  options.units_per_metre = units_per_metre;
   return options;
 }
 
@@ -51,7 +64,7 @@ App::App(SDL_Renderer* renderer, const AppOptions& options)
       view_{options.world, options.width, options.height},
       session_(demo::demo_landscape(options.world, options.seed), game_options()),
       mesh_(view_),
-      physics_(session_.game(), options.units_per_metre) {
+      physics_(session_.game(), terrain_options(options.units_per_metre)) {
   mesh_.reset(session_.world());
   take(session_.settle(), true);  // the islands the world starts with fall
 }
@@ -110,9 +123,9 @@ void App::handle(const InputEvent& e) {
 void App::use_tool(Point64 from, Point64 to) {
   if (tool_ == "ball" || tool_ == "box") {
     if (tool_ == "ball")
-      physics_.drop_ball(to, 24);
+      physics_.drop_ball(to, 24, kBallSurface);
     else
-      physics_.drop_box(to, 20);
+      physics_.drop_box(to, 20, kBoxAngle);
     ++report_.bodies_dropped;
     return;
   }
@@ -159,9 +172,9 @@ void App::press_key(const std::string& key) {
     show_dirty_ = !show_dirty_;
   } else if (key == "b" || key == "x") {
     if (key == "b")
-      physics_.drop_ball(mouse_, 24);
+      physics_.drop_ball(mouse_, 24, kBallSurface);
     else
-      physics_.drop_box(mouse_, 20);
+      physics_.drop_box(mouse_, 20, kBoxAngle);
     ++report_.bodies_dropped;
   }
 }
@@ -184,14 +197,16 @@ void App::take(const GameUpdate& update, bool may_bury) {
 // Undo, redo and load put the islands that were detached back into the landscape: their debris
 // goes, and those islands fall again with the update.
 void App::take_world(const GameUpdate& update) {
-  physics_.remove_debris();
+  physics_.remove_bodies([](const SceneBody& b) { return b.kind == BodyKind::kDebris; });
   take(update, true);
 }
 
 // A body whose centre an edit filled is buried: the game removes it.
 void App::bury() {
-  report_.bodies_buried +=
-      physics_.remove_buried([&](Point64 p) { return solid(session_.world().material_at(p)); });
+  report_.bodies_buried += physics_.remove_bodies([&](const SceneBody& b) {
+    return b.kind != BodyKind::kDebris &&
+           solid(session_.world().material_at(physics_.centre(b.body)));
+  });
 }
 
 void App::save() {
@@ -218,12 +233,11 @@ void App::load() {
 
 // --- frames ------------------------------------------------------------------------------------
 
+// A step, the bodies that fell 8 m below the world's floor gone, then the check.
 void App::step() {
-  physics_.step(1.0 / 60.0);
-  for (const DynamicBody& body : physics_.bodies()) {
-    if (body.kind == BodyKind::kDebris) continue;  // its centroid may lie outside its own shape
-    if (solid(session_.world().material_at(physics_.centre(body)))) ++report_.inside_solid;
-  }
+  physics_.step(1.0f / 60.0f);
+  physics_.remove_bodies([](const SceneBody& b) { return b.body->GetPosition().y <= -8.0f; });
+  report_.inside_solid += physics_.centres_in_solid().size();
 }
 
 void App::end_frame(double ms) {

@@ -11,7 +11,7 @@
 
 #include "edgeland/play/session.hpp"
 #include "input_script.hpp"
-#include "physics.hpp"
+#include "physics_scene.hpp"
 #include "terrain_mesh.hpp"
 
 namespace edgeland::play {
@@ -50,7 +50,7 @@ class App {
   void end_frame(double ms);
 
   const Landscape& world() const noexcept { return session_.world(); }
-  const Physics& physics() const noexcept { return physics_; }
+  const box2d::PhysicsScene& physics() const noexcept { return physics_; }
   const AppReport& report() const noexcept { return report_; }
   const TerrainMesh& mesh() const noexcept { return mesh_; }
 
@@ -63,7 +63,7 @@ class App {
   void load();
   void bury();
   void draw_bodies() const;
-  void draw_debris(const DynamicBody& debris) const;
+  void draw_debris(const box2d::SceneBody& debris) const;
   void draw_cells() const;
   void draw_overlay();
 
@@ -72,7 +72,7 @@ class App {
   ViewTransform view_;
   Session session_;
   TerrainMesh mesh_;
-  Physics physics_;
+  box2d::PhysicsScene physics_;
   AppReport report_;
   // Tool state.
   std::string tool_ = "explosion";

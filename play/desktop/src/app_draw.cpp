@@ -10,6 +10,9 @@
 namespace edgeland::play {
 namespace {
 
+using box2d::BodyKind;
+using box2d::SceneBody;
+
 // A filled convex polygon (a body's shape) around `centre`, in pixels.
 void fill_convex(SDL_Renderer* renderer, const std::vector<SDL_FPoint>& corners, SDL_Color c) {
   std::vector<SDL_Vertex> vertices;
@@ -22,10 +25,10 @@ void fill_convex(SDL_Renderer* renderer, const std::vector<SDL_FPoint>& corners,
                      fan.data(), static_cast<int>(fan.size()));
 }
 
-std::vector<SDL_FPoint> body_corners(const Physics& physics, const DynamicBody& d,
+std::vector<SDL_FPoint> body_corners(const box2d::PhysicsScene& physics, const SceneBody& d,
                                      const ViewTransform& view) {
-  const b2Vec2 p = d.body->GetPosition();
-  const float cx = view.x(physics.world_x(p.x)), cy = view.y(physics.world_y(p.y));
+  const EngineVec p = physics.position(d.body);
+  const float cx = view.x(p.x), cy = view.y(p.y);
   const float s = static_cast<float>(d.size) * view.scale();
   const float angle = d.body->GetAngle();
   std::vector<SDL_FPoint> corners;
@@ -76,26 +79,31 @@ void App::draw_cells() const {
   outline_boxes(renderer_, cells, view_);
 }
 
-// A debris body: its polygons' meshes in their materials' colours, turned and moved with it.
-void App::draw_debris(const DynamicBody& d) const {
-  const b2Vec2 p = d.body->GetPosition();
-  const double cx = physics_.world_x(p.x), cy = physics_.world_y(p.y);
+// A debris body: its polygons' meshes in their materials' colours, turned and moved with it
+// (the meshes are in landscape coordinates; the body's origin is the island's centroid).
+void App::draw_debris(const SceneBody& d) const {
+  const EngineVec at = physics_.position(d.body);
   const double c = std::cos(d.body->GetAngle()), s = std::sin(d.body->GetAngle());
-  for (const DynamicBody::Piece& piece : d.shape) {
-    const demo::Rgb colour = demo::material_colour(piece.material);
+  for (const PolygonMesh& mesh : d.meshes) {
+    const demo::Rgb colour = demo::material_colour(mesh.material);
     std::vector<SDL_Vertex> vertices;
-    for (const auto& [x, y] : piece.vertices) {
-      vertices.push_back({{view_.x(cx + c * x - s * y), view_.y(cy + s * x + c * y)},
+    for (const Point64& v : mesh.vertices) {
+      const double x = static_cast<double>(v.x) - d.centroid.x;
+      const double y = static_cast<double>(v.y) - d.centroid.y;
+      vertices.push_back({{view_.x(at.x + c * x - s * y), view_.y(at.y + s * x + c * y)},
                           {colour.r, colour.g, colour.b, 255},
                           {0, 0}});
     }
+    std::vector<int> indices;
+    for (const Triangle& t : mesh.triangles)
+      for (const std::uint32_t i : {t.a, t.b, t.c}) indices.push_back(static_cast<int>(i));
     SDL_RenderGeometry(renderer_, nullptr, vertices.data(), static_cast<int>(vertices.size()),
-                       piece.triangles.data(), static_cast<int>(piece.triangles.size()));
+                       indices.data(), static_cast<int>(indices.size()));
   }
 }
 
 void App::draw_bodies() const {
-  for (const DynamicBody& d : physics_.bodies()) {
+  for (const SceneBody& d : physics_.bodies()) {
     if (d.kind == BodyKind::kDebris) {
       draw_debris(d);
       continue;

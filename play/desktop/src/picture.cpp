@@ -6,16 +6,13 @@
 #include <algorithm>
 #include <memory>
 
+#include "edgeland/demo/cairo_handles.hpp"
+
 namespace edgeland::play {
 namespace {
 
-struct SurfaceCloser {
-  void operator()(cairo_surface_t* s) const { cairo_surface_destroy(s); }
-};
-struct ContextCloser {
-  void operator()(cairo_t* c) const { cairo_destroy(c); }
-};
-using Surface = std::unique_ptr<cairo_surface_t, SurfaceCloser>;
+using Surface = demo::CairoSurface;
+using Context = demo::CairoContext;
 
 constexpr double kFontSize = 13;
 constexpr int kLineHeight = 17;
@@ -29,7 +26,7 @@ SDL_Texture* text_texture(SDL_Renderer* renderer, const std::vector<std::string>
   const int height = static_cast<int>(lines.size()) * kLineHeight + 8;
   const Surface surface(cairo_image_surface_create(CAIRO_FORMAT_ARGB32, width, height));
   {
-    const std::unique_ptr<cairo_t, ContextCloser> cr(cairo_create(surface.get()));
+    const Context cr(cairo_create(surface.get()));
     cairo_set_source_rgba(cr.get(), 0, 0, 0, 0.6);
     cairo_paint(cr.get());
     cairo_select_font_face(cr.get(), "monospace", CAIRO_FONT_SLANT_NORMAL,

@@ -59,7 +59,7 @@ TEST(ConvexPiecesBox2d, LeastTurnPiecesWithinTheBoundAreKept) {
   // extent D and reach M with D (M + D) <= 2^22: slivers of area 1/2, kinked quadrilaterals and
   // 7-edge arcs, every corner turning by the lattice's least angle, in random directions.
   constexpr std::int64_t kBound = std::int64_t{1} << 22;
-  SplitMix64 draw(26);
+  SplitMixDraw draw(26);
   for (const std::int64_t d : {16, 64, 256, 1024, 1448}) {
     std::vector<Polygon> pieces;
     while (pieces.size() < 300) {
@@ -88,7 +88,7 @@ TEST(ConvexPiecesBox2d, TheCheckSeesADroppedVertex) {
 TEST(ConvexPiecesBox2d, FarBeyondTheBoundBox2dLosesVertices) {
   // Why the bound: extent 4096 at reach 65536 (D (M + D) about 2^28), and float loses corners
   // of most least-turn pieces (bench/README.md has the whole table).
-  SplitMix64 draw(27);
+  SplitMixDraw draw(27);
   std::vector<Polygon> pieces;
   while (pieces.size() < 30) {
     const Polygon p = least_turn_piece(LeastTurnKind::kKinkedQuad, 4096, draw(-2048, 2049), false);

@@ -6,8 +6,8 @@
 #include <cstddef>
 
 #include "edgeland/demo/editor.hpp"
-#include "edgeland/demo/splitmix64.hpp"
 #include "edgeland/demo/world.hpp"
+#include "edgeland/kernel/splitmix64.hpp"
 
 namespace edgeland::demo {
 

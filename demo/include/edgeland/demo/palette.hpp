@@ -5,7 +5,7 @@
 #include <array>
 #include <cstdint>
 
-#include "edgeland/demo/splitmix64.hpp"
+#include "edgeland/kernel/splitmix64.hpp"
 #include "edgeland/spatial/landscape.hpp"
 
 namespace edgeland::demo {
@@ -42,7 +42,7 @@ inline Rgb material_colour(Material m) {
   if (m.value() < kNamedMaterialColours.size()) return kNamedMaterialColours[m.value()];
   // The splitmix64 mix spreads neighbouring numbers over the colour cube; each channel
   // is kept in 80..239 so that no material is mistaken for the dark background.
-  const std::uint64_t z = mix64(m.value() + 0x9e3779b97f4a7c15ull);
+  const std::uint64_t z = mix64(m.value() + kSplitMix64Gamma);
   const auto channel = [&](int shift) {
     return static_cast<std::uint8_t>(80 + ((z >> shift) & 0xff) * 160 / 256);
   };

@@ -6,9 +6,9 @@
 #include <array>
 #include <cstdint>
 
-#include "edgeland/demo/splitmix64.hpp"
 #include "edgeland/kernel/bbox.hpp"
 #include "edgeland/kernel/polygon.hpp"
+#include "edgeland/kernel/splitmix64.hpp"
 
 namespace edgeland::demo {
 

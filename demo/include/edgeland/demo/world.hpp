@@ -4,7 +4,7 @@
 // in the lowest of them (`fill_empty`). About 50 edits, all from one seeded generator.
 #include "edgeland/demo/editor.hpp"
 #include "edgeland/demo/shapes.hpp"
-#include "edgeland/demo/splitmix64.hpp"
+#include "edgeland/kernel/splitmix64.hpp"
 
 namespace edgeland::demo {
 

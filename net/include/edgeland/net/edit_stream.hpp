@@ -5,6 +5,7 @@
 #include <cstdint>
 
 #include "edgeland/kernel/export.hpp"
+#include "edgeland/kernel/splitmix64.hpp"
 #include "edgeland/spatial/types.hpp"
 
 namespace edgeland::net {
@@ -12,12 +13,12 @@ namespace edgeland::net {
 class EDGELAND_EXPORT EditStream {
  public:
   // `box` must be at least 100 wide and high.
-  EditStream(std::uint64_t seed, const Box64& box) : state_(seed), box_(box) {}
+  EditStream(std::uint64_t seed, const Box64& box) : random_(seed), box_(box) {}
   Edit next();
 
  private:
-  std::uint64_t random();
-  std::uint64_t state_;
+  std::uint64_t random() { return random_.next(); }
+  SplitMix64 random_;
   Box64 box_;
 };
 
