@@ -42,6 +42,7 @@ class GameState {
  private:
   struct Waiting {
     DebrisJob job;
+    IslandKey key;        // the island's in IslandTree
     std::size_t age = 0;  // updates it has waited
   };
 
