@@ -129,9 +129,19 @@ int write_outputs(const Landscape& landscape, const DemoOptions& options) {
   return kExitOk;
 }
 
+// The output folder made (with its parents) for either demo; false, said on stderr, if it cannot be.
+bool output_folder_made(const std::string& out) {
+  std::error_code error;
+  std::filesystem::create_directories(out, error);
+  if (error)
+    std::cerr << "edgeland demo: cannot create '" << out << "': " << error.message() << '\n';
+  return !error;
+}
+
 int run_demo(const DemoOptions& options) {
   if (options.physics) {
 #ifdef EDGELAND_HAVE_BOX2D
+    if (!output_folder_made(options.out)) return kExitUnreadable;
     return run_physics_demo({options.out, options.frames, options.frame_every, options.seed});
 #else
     std::cerr << "edgeland demo: --physics needs Box2D: this edgeland was built without it "
@@ -139,13 +149,7 @@ int run_demo(const DemoOptions& options) {
     return kExitUnreadable;
 #endif
   }
-  std::error_code error;
-  std::filesystem::create_directories(options.out, error);
-  if (error) {
-    std::cerr << "edgeland demo: cannot create '" << options.out << "': " << error.message()
-              << '\n';
-    return kExitUnreadable;
-  }
+  if (!output_folder_made(options.out)) return kExitUnreadable;
   Landscape landscape(demo::kDemoWorld);
   landscape.set_checked(!options.unchecked);
   if (!options.log.empty()) landscape.start_log();

@@ -91,13 +91,6 @@ void print_summary(const box2d::PhysicsScenario& scenario, int frames_written) {
 }  // namespace
 
 int run_physics_demo(const PhysicsDemoOptions& options) {
-  std::error_code error;
-  std::filesystem::create_directories(options.out, error);
-  if (error) {
-    std::cerr << "edgeland demo: cannot create '" << options.out << "': " << error.message()
-              << '\n';
-    return kExitUnreadable;
-  }
   std::cout << "edgeland demo --physics: world 0 0 4096 4096, 200 balls and boxes, seed "
             << options.seed << '\n';
   box2d::PhysicsScenario scenario(box2d::PhysicsScenarioOptions{.seed = options.seed});

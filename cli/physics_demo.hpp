@@ -14,7 +14,8 @@ struct PhysicsDemoOptions {
   std::uint64_t seed = 1;
 };
 
-// Returns the exit status (commands.hpp): 0; 2 when a frame cannot be written.
+// Writes its frames into options.out, which must exist (run_demo makes it). Returns the exit
+// status (commands.hpp): 0; 2 when a frame cannot be written.
 int run_physics_demo(const PhysicsDemoOptions& options);
 
 }  // namespace edgeland::cli

@@ -49,8 +49,8 @@ std::optional<Finding> handle_edit(const Landscape& base, const Box64& granted, 
   world.set_checked(true);
   try {
     EditVerdict verdict = check_edit_request(world, granted, EditPolicy{}, delta);
-    if (!verdict.edit) return std::nullopt;
-    if (!apply_accepted(world, *verdict.edit, verdict.refusal)) {
+    if (!verdict.accepted()) return std::nullopt;
+    if (!apply_accepted(world, verdict.edits, verdict.refusal)) {
       if (world.state_hash() != base.state_hash())
         return Finding{"a refused edit changed the world", ""};
       return std::nullopt;

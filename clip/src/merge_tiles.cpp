@@ -5,6 +5,10 @@
 //      line the net direction of the edges over every stretch between their end points (+1,
 //      -1 or 0: two members covering a stretch the same way would overlap), so stretches two
 //      members share cancel and every stretch left has the union's inside on its left;
+//   1b. touching ends: a member's vertex may touch another member's edge inside it, off the
+//      edge's line (a T-junction: the members meet at that point only); the union's boundary
+//      passes that point twice, so each stretch is split at every stretch end lying inside it
+//      (the tracing then meets the point as a vertex, and splits the walk there);
 //   2. faces: the stretches traced by the sharpest-left-turn rule (face_tracing.hpp), walks
 //      split where they revisit a point: counter-clockwise outer rings and clockwise holes;
 //   3. the rings reduced to their corners and the points two rings touch at (what hole
@@ -13,11 +17,14 @@
 // Nothing is rounded: every output vertex is a member's vertex. In checked mode the result is
 // validated and its area compared with the members' sum, exactly.
 #include <algorithm>
+#include <cstdint>
+#include <utility>
 
 #include "canonical.hpp"
 #include "edgeland/clip/clip.hpp"
 #include "edgeland/kernel/area.hpp"
 #include "edgeland/kernel/assert.hpp"
+#include "edgeland/kernel/predicates.hpp"
 #include "edgeland/kernel/supporting_line.hpp"
 #include "face_tracing.hpp"
 #include "hole_splitting.hpp"
@@ -93,6 +100,37 @@ std::vector<Segment> boundary_stretches(const PolygonSet& members) {
   return out;
 }
 
+// The ends of `stretches` lying inside `s` (on_segment_interior), ordered from s.a to s.b.
+// `ends` is sorted (x, then y), so the candidates are the run between the box's x bounds.
+void ends_inside(const Segment& s, const std::vector<Point64>& ends, std::vector<Point64>& out) {
+  out.clear();
+  const std::int64_t lo = std::min(s.a.x, s.b.x), hi = std::max(s.a.x, s.b.x);
+  const auto first = std::lower_bound(ends.begin(), ends.end(), Point64{lo, INT64_MIN});
+  const auto last = std::upper_bound(first, ends.end(), Point64{hi, INT64_MAX});
+  for (auto it = first; it != last; ++it)
+    if (on_segment_interior(*it, s)) out.push_back(*it);
+  // Collinear points sort along the segment by (x, y); reversed when s runs the other way.
+  if (s.b < s.a) std::reverse(out.begin(), out.end());
+}
+
+// Stage 1b: every stretch split at the stretch ends lying inside it.
+void split_at_touching_ends(std::vector<Segment>& stretches) {
+  std::vector<Point64> ends;
+  ends.reserve(2 * stretches.size());
+  for (const Segment& s : stretches) ends.insert(ends.end(), {s.a, s.b});
+  std::sort(ends.begin(), ends.end());
+  ends.erase(std::unique(ends.begin(), ends.end()), ends.end());
+  std::vector<Segment> split;
+  std::vector<Point64> inside;
+  for (const Segment& s : stretches) {
+    ends_inside(s, ends, inside);
+    Point64 from = s.a;
+    for (const Point64& p : inside) split.push_back({std::exchange(from, p), p});
+    split.push_back({from, s.b});
+  }
+  stretches = std::move(split);
+}
+
 // Points of more than one ring, sorted: where hole splitting may bridge to beside corners.
 std::vector<Point64> shared_points(const std::vector<ScratchRing>& a,
                                    const std::vector<ScratchRing>& b) {
@@ -151,7 +189,8 @@ void check_tiles_merged(const ValidSet& members, const PolygonSet& merged) {
 
 ValidClipResult merge_tiles(const ValidSet& set, const ClipOptions& options) {
   ClipResult out;
-  const std::vector<Segment> stretches = detail::boundary_stretches(set.polygons());
+  std::vector<Segment> stretches = detail::boundary_stretches(set.polygons());
+  detail::split_at_touching_ends(stretches);
   out.polygons = detail::pieces_of(stretches, out.stats.holes_split);
   if (options.checked) detail::check_tiles_merged(set, out.polygons);
   return ValidSetFactory::from(std::move(out));

@@ -11,6 +11,13 @@
 namespace edgeland::game_detail {
 namespace {
 
+// The island's key as IslandTree keeps it: the fingerprint of its polygons' ids.
+IslandKey key_of(const Island& island) {
+  IslandKey key = IslandKey::of(island.pieces.front().id);
+  for (std::size_t i = 1; i < island.pieces.size(); ++i) key.add(IslandKey::of(island.pieces[i].id));
+  return key;
+}
+
 // An edit that turns some non-solid material solid (a fill, in the game's terms).
 bool fills(const Edit& e, const PhysicsMaterials& materials) {
   for (std::size_t m = 0; m < kMaterialCount; ++m) {
@@ -138,13 +145,18 @@ void GameState::follow(const Landscape& before, const ChangeSet& changes, GameUp
   replace_cells(replaced_, fresh_, out);
   if (!islands_) return;
   std::vector<Island> found = islands_of(land_, store_, islands_->update(land_, store_, fresh_));
+  // A waiting island the change altered or tied to anchored ground is no island any more: its
+  // job goes (what the change left of it, if still an island, is among those found).
+  std::erase_if(queue_, [&](const Waiting& w) { return !islands_->holds(w.key); });
   out.work.islands_found += found.size();
   queue_islands(std::move(found));
 }
 
 void GameState::queue_islands(std::vector<Island> islands) {
-  for (Island& island : islands)
-    queue_.push_back({DebrisJob(std::move(island), land_.checked()), 0});
+  for (Island& island : islands) {
+    const IslandKey key = key_of(island);
+    queue_.push_back({DebrisJob(std::move(island), land_.checked()), key, 0});
+  }
 }
 
 void GameState::replace_cells(std::span<const Box64> replaced, std::span<const Box64> fresh,
@@ -204,17 +216,18 @@ void GameState::start_work() {
 void GameState::note_fills(std::span<const Edit> edits) {
   fills_.clear();
   for (const Edit& e : edits)
-    if (fills(e, options_.surface.materials)) fills_.push_back(e.shape);
+    if (fills(e, options_.surface.materials))
+      if (const std::optional<Box64> box = bounding_box(e.shape.polygons()))
+        fills_.push_back({e.shape, *box});
 }
 
 // The box meets a filling shape's interior where the edits left solid (before any of it fell as
 // debris): the shape cut to the box (the clipper's one rounding), then overlaps().
 bool GameState::buried(const Box64& box) const {
   if (box.min.x >= box.max.x || box.min.y >= box.max.y) return false;
-  for (const ValidSet& shape : fills_) {
-    const std::optional<Box64> bounds = bounding_box(shape.polygons());
-    if (!bounds || !bounds->overlaps_open(box)) continue;
-    const ValidClipResult inside = clip_to_box(shape, box);
+  for (const Fill& fill : fills_) {
+    if (!fill.box.overlaps_open(box)) continue;
+    const ValidClipResult inside = clip_to_box(fill.shape, box);
     if (inside.set.polygons().empty()) continue;
     for (Material m : filled_.overlaps(inside.set))
       if (options_.surface.materials.is_solid(m)) return true;

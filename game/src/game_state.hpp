@@ -42,6 +42,7 @@ class GameState {
  private:
   struct Waiting {
     DebrisJob job;
+    IslandKey key;        // the island's in IslandTree
     std::size_t age = 0;  // updates it has waited
   };
 
@@ -63,7 +64,12 @@ class GameState {
   SurfaceState surface_;
   std::unique_ptr<IslandTree> islands_;
   std::deque<Waiting> queue_;
-  std::vector<ValidSet> fills_;  // the last update's filling shapes (buried())
+  // The last update's filling shapes with their boxes (buried(): a game asks once per body).
+  struct Fill {
+    ValidSet shape;
+    Box64 box;
+  };
+  std::vector<Fill> fills_;
   // Per update (storage reused).
   std::vector<Box64> replaced_, fresh_;
   std::vector<GoneCell> gone_;

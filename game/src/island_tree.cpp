@@ -107,6 +107,8 @@ std::vector<ClosedIsland> IslandTree::update(const Landscape& world, const CellS
   return fresh;
 }
 
+bool IslandTree::holds(const IslandKey& key) const { return registry_->all.contains(key); }
+
 std::vector<ClosedIsland> IslandTree::islands() const {
   std::vector<ClosedIsland> out;
   for (const auto& [key, island] : registry_->all) out.push_back(island);

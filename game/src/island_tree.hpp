@@ -26,6 +26,9 @@ class IslandTree {
 
   // Every island.
   std::vector<ClosedIsland> islands() const;
+  // Whether the island of this key is closed now (an edit that changed its polygons or tied it
+  // to anchored ground took it out).
+  bool holds(const IslandKey& key) const;
   // What the last update did: summaries made, ports looked at.
   std::size_t last_nodes() const { return last_nodes_; }
   std::size_t last_ports() const { return last_ports_; }

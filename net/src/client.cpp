@@ -214,10 +214,12 @@ void Client::send_due_edits() {
   for (; edits_due_sent_ < due; ++edits_due_sent_) request(stream_->next());
 }
 
-std::uint32_t Client::request(const Edit& edit) {
+std::uint32_t Client::request(const Edit& edit) { return request(std::span(&edit, 1)); }
+
+std::uint32_t Client::request(std::span<const Edit> batch) {
   Delta d;
   d.header = {DeltaKind::kCommand, kAlgorithmVersion, world_ ? world_->world_hash() : 0, 0, 0, 0};
-  d.edits.push_back(edit);
+  d.edits.assign(batch.begin(), batch.end());
   const std::uint32_t number = next_edit_++;
   pending_[number] = Clock::now();
   ++stats_.edits_sent;

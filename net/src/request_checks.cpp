@@ -48,19 +48,21 @@ EditVerdict check_edit_request(const Landscape& world, const Box64& granted,
     verdict.refusal = {RejectReason::kOtherWorld, "not a COMMAND of this world and version"};
     return verdict;
   }
-  Edit& edit = d->edits.front();
-  const std::optional<Box64> box = bounding_box(edit.shape.polygons());
-  if (box && !permitted(granted, *box)) {
-    verdict.refusal = {RejectReason::kNotPermitted, "outside the box granted"};
-    return verdict;
+  for (const Edit& edit : d->edits) {
+    const std::optional<Box64> box = bounding_box(edit.shape.polygons());
+    if (box && !permitted(granted, *box)) {
+      verdict.refusal = {RejectReason::kNotPermitted, "outside the box granted"};
+      return verdict;
+    }
   }
-  verdict.edit = std::move(edit);
+  verdict.edits = std::move(d->edits);
   return verdict;
 }
 
-std::optional<ChangeSet> apply_accepted(Landscape& world, const Edit& edit, Refusal& refusal) {
+std::optional<ChangeSet> apply_accepted(Landscape& world, std::span<const Edit> edits,
+                                        Refusal& refusal) {
   try {
-    return apply_edit(world, edit);
+    return world.apply_batch(edits);
   } catch (const LimitExceeded& e) {
     const bool shape = e.limit == LimitExceeded::Limit::kShapeVertices;
     refusal = {shape ? RejectReason::kTooLarge : RejectReason::kLimit, e.what()};

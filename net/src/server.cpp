@@ -231,17 +231,18 @@ void Server::refresh_snapshot() {
 void Server::edit(Client& c, const EditRequest& m) {
   if (!c.rate.take(Clock::now())) return reject(c, m.number, RejectReason::kRate, "over the rate");
   EditVerdict verdict = check_edit_request(world_, c.granted, options_.policy, m.delta);
-  if (!verdict.edit) return reject(c, m.number, verdict.refusal.reason, verdict.refusal.message);
+  if (!verdict.accepted())
+    return reject(c, m.number, verdict.refusal.reason, verdict.refusal.message);
   apply_and_broadcast(c, m.number, verdict);
 }
 
 void Server::apply_and_broadcast(Client& c, std::uint32_t number, EditVerdict& verdict) {
   const Landscape before = world_;
-  const std::optional<ChangeSet> changes = apply_accepted(world_, *verdict.edit, verdict.refusal);
+  const std::optional<ChangeSet> changes = apply_accepted(world_, verdict.edits, verdict.refusal);
   if (!changes) return reject(c, number, verdict.refusal.reason, verdict.refusal.message);
   ++sequence_;
   ++stats_.edits;
-  broadcast(c.id, number, before, *verdict.edit, *changes);
+  broadcast(c.id, number, before, verdict.edits, *changes);
   if (debris_) detach_debris(*changes);
 }
 
@@ -251,16 +252,23 @@ void Server::detach_debris(const ChangeSet& changes) {
                       [&](const Landscape& before, const Edit& carve, const ChangeSet& detached) {
                         ++sequence_;
                         ++stats_.debris;
-                        broadcast(0, 0, before, carve, detached);
+                        broadcast(0, 0, before, std::span(&carve, 1), detached);
                       });
 }
 
 void Server::broadcast(std::uint32_t origin, std::uint32_t number, const Landscape& before,
-                       const Edit& edit, const ChangeSet& changes) {
-  const std::optional<Box64> box = bounding_box(edit.shape.polygons());
+                       std::span<const Edit> edits, const ChangeSet& changes) {
+  std::optional<Box64> box;
+  for (const Edit& e : edits)
+    if (const std::optional<Box64> b = bounding_box(e.shape.polygons())) {
+      if (box)
+        box->expand(*b);
+      else
+        box = b;
+    }
   Logged logged{sequence_, box ? regions_of_box(*box) : std::vector<std::uint32_t>{}, {}};
   logged.message = encode_message(
-      Command{origin, number, encode_delta(command_delta(before, world_, sequence_, edit))});
+      Command{origin, number, encode_delta(command_delta(before, world_, sequence_, edits))});
   for (auto& [peer, c] : clients_) {
     if (!c->greeted) continue;
     if (c->role == Role::kThin) {

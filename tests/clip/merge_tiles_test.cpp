@@ -98,6 +98,31 @@ TEST(MergeTiles, ACornerOnAnotherTilesSideStaysApart) {
   EXPECT_TRUE(clip(ClipOp::kXor, fast.set, tiles).set.polygons().empty());
 }
 
+// Two members sharing a stretch and touching at a second point, where one's corner lies inside
+// the other's side (off its line): their union encloses a hole that touches the outside there.
+// The island of a game's property case (GameDriverProperty.NoIslandWaitsLongerThanItsLimit):
+// without the stretch split at that corner, the traced ring touched its own edge (invalid).
+TEST(MergeTiles, ACornerInsideASideClosingAHoleIsSplitThere) {
+  const ValidSet tiles(PolygonSet{{{-300, -298},
+                                   {-299, -298},
+                                   {-299, -300},
+                                   {-298, -299},
+                                   {-296, -299},
+                                   {-296, -297},
+                                   {-284, -285},
+                                   {-295, -300},
+                                   {-292, -299},
+                                   {-274, -276},
+                                   {-297, -295},
+                                   {-299, -291}},
+                                  {{-296, -298}, {-284, -285}, {-286, -287}}});
+  const ValidClipResult fast = merge_tiles(tiles, {.checked = true});
+  EXPECT_TRUE(validate(fast.set.polygons()).ok());
+  EXPECT_TRUE(is_canonical(fast.set.polygons()));
+  EXPECT_EQ(twice_signed_area(fast.set.polygons()), twice_signed_area(tiles.polygons()));
+  EXPECT_TRUE(clip(ClipOp::kXor, fast.set, merge(tiles).set).set.polygons().empty());
+}
+
 TEST(MergeTiles, EmptySetMergesToEmpty) {
   EXPECT_TRUE(merge_tiles(ValidSet(PolygonSet{})).set.polygons().empty());
 }

@@ -5,6 +5,9 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
+#include "edgeland/clip/clip.hpp"
+#include "edgeland/kernel/canonical_form.hpp"
+#include <map>
 #include "edgeland/kernel/area.hpp"
 #include "edgeland/kernel/centroid.hpp"
 #include "game_worlds.hpp"
@@ -171,6 +174,29 @@ TEST(Islands, DetachTakesAwayExactlyEachIsland) {
   gone.pieces.push_back({999999, 1, {{0, 0}, {1, 0}, {0, 1}}, world.world()});
   EXPECT_THROW(detach(world, gone), StaleIsland);
   EXPECT_EQ(world.state_hash(), hash);
+}
+
+// merge_tiles (the debris' outlines) on what a landscape really holds: each material's polygons
+// of a worn landscape, from every cell, in one batch and one by one. Cells' canonical pieces may
+// touch where one's corner lies inside another's side; the union then closes holes that touch
+// the outside at such a corner (the case MergeTiles.ACornerInsideASideClosingAHoleIsSplitThere
+// keeps). Checked mode validates; the region is merge()'s, the area the pieces' sum.
+RC_GTEST_PROP(MergeTilesProperty, EachMaterialOfALandscapeMergesToMergesRegion, ()) {
+  const LandscapeCase c = *landscape_case(10);
+  const Landscape l = run_case(c, c.config);
+  std::map<Material, PolygonSet> by_material;
+  l.polygons_in(l.world(), [&](const PolygonView& v) {
+    by_material[v.material].push_back(*v.polygon);
+    return true;
+  });
+  for (auto& [material, pieces] : by_material) {
+    const ValidSet tiles(std::move(pieces));
+    const ValidClipResult fast = merge_tiles(tiles, {.checked = true});
+    RC_ASSERT(is_canonical(fast.set.polygons()));
+    RC_ASSERT(twice_signed_area(fast.set.polygons()) == twice_signed_area(tiles.polygons()));
+    RC_ASSERT(clip(ClipOp::kXor, fast.set, merge(tiles).set).set.polygons().empty());
+  }
+  RC_CLASSIFY(by_material.size() > 1, "several materials");
 }
 
 }  // namespace

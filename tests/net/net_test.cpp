@@ -108,6 +108,35 @@ TEST(NetLockstep, ClientsMirrorTheServerAtEveryCheckpoint) {
   EXPECT_EQ(a.stats().latencies_us.size(), a.stats().edits_sent);
 }
 
+// A frame batch (Landscape::apply_batch) is one request and one COMMAND: the server applies it
+// rounded once, its sequence moves by one, and every client reaches the server's hash. A batch
+// with one edit outside the box granted is refused whole, and nothing of it is applied.
+TEST(NetLockstep, AFrameBatchIsOneCommandForEveryClient) {
+  Server server(region_world(), fast_checkpoints());
+  Client editor(options(server.port(), {{0, 0}, {2000, 2000}}));
+  Client watcher(options(server.port()));
+  Steps run{server, {&editor, &watcher}};
+  ASSERT_TRUE(run.until([&] { return editor.welcomed() && watcher.welcomed(); }));
+  const auto blob = [](std::int64_t x, std::int64_t y) {
+    return ValidSet(PolygonSet{{{x, y}, {x + 60, y + 10}, {x + 30, y + 70}}});
+  };
+  const std::vector<Edit> batch{Edit::carve(blob(500, 500)), Edit::fill(blob(520, 530), 3),
+                                Edit::replace(blob(490, 510), 3, 4)};
+  Landscape expected = server.world();
+  expected.apply_batch(batch);
+  editor.request(batch);
+  const std::vector<Edit> outside{Edit::carve(blob(700, 700)), Edit::carve(blob(3000, 3000))};
+  editor.request(outside);
+  ASSERT_TRUE(run.until([&] {
+    return settled(editor, server.sequence()) && settled(watcher, server.sequence());
+  }));
+  EXPECT_EQ(server.sequence(), 1u);
+  EXPECT_EQ(server.world().state_hash(), expected.state_hash());
+  EXPECT_EQ(editor.stats().rejects.at(RejectReason::kNotPermitted), 1u);
+  for (const Client* c : {&editor, &watcher})
+    EXPECT_EQ(c->world()->state_hash(), server.world().state_hash());
+}
+
 // Item 2 end to end: a client's cell corrupted on purpose (an edit only it made) is found at the
 // next checkpoint and repaired through digests and a PATCH; the bytes that cost are a small part
 // of the whole save the client would otherwise need.

@@ -62,6 +62,9 @@ class EDGELAND_EXPORT Client {
 
   // One edit request now; returns its number.
   std::uint32_t request(const Edit& edit);
+  // A frame batch as one request (Landscape::apply_batch on the server and every client, one
+  // COMMAND); refused whole if any edit is. Returns its number.
+  std::uint32_t request(std::span<const Edit> batch);
   // Raw bytes as one message (hostile clients and their tests).
   void send_raw(const std::string& bytes);
   // Applies an edit to this client's world only: a divergence the next checkpoint finds.

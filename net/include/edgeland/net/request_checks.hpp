@@ -7,6 +7,7 @@
 #include <functional>
 #include <optional>
 #include <span>
+#include <vector>
 #include <string>
 #include <string_view>
 
@@ -23,23 +24,28 @@ struct Refusal {
   std::string message;
 };
 
-// An edit accepted (`edit` set), or why not.
+// The edits of a COMMAND accepted (one edit, or a frame batch: Landscape::apply_batch), or why
+// not (`edits` empty).
 struct EditVerdict {
-  std::optional<Edit> edit;
+  std::vector<Edit> edits;
   Refusal refusal;
+  bool accepted() const { return !edits.empty(); }
 };
 
 // The message size against the policy, then the delta read (DeltaError: malformed,
 // CoordinateOutOfRange: out of range, InvalidInput: invalid shape), its kind, world and
-// algorithm version (another world), and the shape's box against the box granted (not
-// permitted). Never throws but std::bad_alloc. O(the delta).
+// algorithm version (another world), and every edit's shape box against the box granted (not
+// permitted: one edit of a batch outside refuses the whole batch). Never throws but
+// std::bad_alloc. O(the delta).
 EDGELAND_EXPORT EditVerdict check_edit_request(const Landscape& world, const Box64& granted,
                                                const EditPolicy& policy, std::string_view delta);
 
-// Applies an accepted edit: its change set, or the refusal when the world would pass its
-// limits (LimitExceeded: the shape's vertices, too large; the world's, limit), the world then
-// unchanged. Throws what apply_edit throws otherwise (a bug: LandscapeInternalError).
-EDGELAND_EXPORT std::optional<ChangeSet> apply_accepted(Landscape& world, const Edit& edit,
+// Applies accepted edits as the COMMAND's receivers will (apply_batch; a batch of one is
+// apply_edit): the change set, or the refusal when the world would pass its limits
+// (LimitExceeded: a shape's vertices, too large; the world's, limit), the world then unchanged.
+// Throws what apply_batch throws otherwise (a bug: LandscapeInternalError).
+EDGELAND_EXPORT std::optional<ChangeSet> apply_accepted(Landscape& world,
+                                                        std::span<const Edit> edits,
                                                         Refusal& refusal);
 
 // Whether the paths of a HASHES (`patch` false) or PATCH_REQUEST (`patch` true) may be answered:

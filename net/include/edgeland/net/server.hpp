@@ -83,7 +83,7 @@ class EDGELAND_EXPORT Server {
   void reject(Client& c, std::uint32_t number, RejectReason reason, const std::string& message);
   void apply_and_broadcast(Client& c, std::uint32_t number, EditVerdict& verdict);
   void broadcast(std::uint32_t origin, std::uint32_t number, const Landscape& before,
-                 const Edit& edit, const ChangeSet& changes);
+                 std::span<const Edit> edits, const ChangeSet& changes);
   void send_changes(Client& c, const Landscape& before, const ChangeSet& changes);
   void detach_debris(const ChangeSet& changes);
   void welcome_full(Client& c, Welcome& w);
