@@ -8,6 +8,7 @@
 
 #include <algorithm>
 
+#include "edgeland/kernel/splitmix64.hpp"
 #include "edgeland/spatial/landscape.hpp"
 #include "node.hpp"
 #include "state_of.hpp"
@@ -15,12 +16,7 @@
 namespace edgeland::test {
 namespace {
 
-std::uint64_t next(std::uint64_t& s) {
-  std::uint64_t z = (s += 0x9E3779B97F4A7C15ull);
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  return z ^ (z >> 31);
-}
+std::uint64_t next(std::uint64_t& s) { return mix64(s += kSplitMix64Gamma); }
 
 // Carves, fills and replaces of small quadrilaterals: caves (holes split by bridges) and layers.
 Landscape edited_world(std::uint64_t seed) {

@@ -8,17 +8,14 @@
 
 #include <vector>
 
+#include "edgeland/kernel/splitmix64.hpp"
 #include "edgeland/spatial/delta.hpp"
 #include "edgeland/spatial/landscape.hpp"
 
 namespace edgeland::pinned {
 
-inline std::uint64_t splitmix64(std::uint64_t& s) {
-  std::uint64_t z = (s += 0x9E3779B97F4A7C15ull);
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  return z ^ (z >> 31);
-}
+// The kernel's generator (splitmix64.hpp) over a state the sequence keeps in a plain integer.
+inline std::uint64_t splitmix64(std::uint64_t& s) { return mix64(s += kSplitMix64Gamma); }
 
 // 16 points on a circle of radius 1000 (rounded), counter-clockwise.
 inline constexpr std::int64_t kCircle[16][2] = {
