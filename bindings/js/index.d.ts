@@ -49,6 +49,16 @@ export class InvalidConfig extends EdgelandError {}
 export class LimitExceeded extends EdgelandError {}
 /** A save that cannot be read (`index`: the byte offset), or the line a replay stopped at. */
 export class LoadError extends EdgelandError {}
+/** A delta that cannot be read or applied (`index`: the byte offset). */
+export class DeltaError extends EdgelandError {}
+/** A delta of another world, version, base or result (`kind`: the field). */
+export class DeltaMismatch extends EdgelandError {}
+/** A tree path that names no node (`index`: the path's length). */
+export class InvalidPath extends EdgelandError {}
+/** An edit or query reached an unloaded region (`index`: its path's length). */
+export class RegionNotLoaded extends EdgelandError {}
+/** A polygon id the landscape no longer holds (`index`: the id). */
+export class UnknownPolygon extends EdgelandError {}
 /** The island changed since it was found (`index`: the first polygon id missing). */
 export class StaleIsland extends EdgelandError {}
 export class IndexOutOfRange extends EdgelandError {}

@@ -63,7 +63,8 @@ const STATUS_NAMES = {
   10: 'InvalidInput', 11: 'CoordinateOutOfRange', 12: 'InvalidBox', 13: 'TooManyVertices',
   14: 'InvalidArgument', 15: 'ArgumentOutOfRange', 16: 'NonPositiveArea', 17: 'InvalidOverlay',
   20: 'InvalidConfig', 21: 'InvalidMaterial', 22: 'LimitExceeded', 23: 'LoadError',
-  30: 'StaleIsland', 40: 'IndexOutOfRange', 41: 'BufferTooSmall',
+  24: 'DeltaError', 25: 'DeltaMismatch', 26: 'InvalidPath', 27: 'RegionNotLoaded',
+  28: 'UnknownPolygon', 30: 'StaleIsland', 40: 'IndexOutOfRange', 41: 'BufferTooSmall',
 };
 export const RULES = ['too-few-vertices', 'coordinate-out-of-range', 'repeated-vertex',
   'self-intersection', 'spike', 'not-counter-clockwise', 'overlapping-interiors', 'inverted-box'];
@@ -87,12 +88,18 @@ export class InvalidMaterial extends EdgelandError {}
 export class InvalidConfig extends EdgelandError {}
 export class LimitExceeded extends EdgelandError {}
 export class LoadError extends EdgelandError {}
+export class DeltaError extends EdgelandError {}
+export class DeltaMismatch extends EdgelandError {}
+export class InvalidPath extends EdgelandError {}
+export class RegionNotLoaded extends EdgelandError {}
+export class UnknownPolygon extends EdgelandError {}
 export class StaleIsland extends EdgelandError {}
 export class IndexOutOfRange extends EdgelandError {}
 export class InvalidArgument extends EdgelandError {}
 export class ArgumentOutOfRange extends EdgelandError {}
 const CLASSES = {10: InvalidInput, 11: CoordinateOutOfRange, 12: InvalidBox, 15: ArgumentOutOfRange,
   20: InvalidConfig, 21: InvalidMaterial, 22: LimitExceeded, 23: LoadError, 14: InvalidArgument,
+  24: DeltaError, 25: DeltaMismatch, 26: InvalidPath, 27: RegionNotLoaded, 28: UnknownPolygon,
   30: StaleIsland, 40: IndexOutOfRange};
 
 const ERROR_SIZE = 328;

@@ -141,6 +141,26 @@ el_error describe_current() {
     el_error e = base(EL_LOAD_ERROR, x.what());
     e.index = x.offset;
     return e;
+  } catch (const DeltaError& x) {
+    el_error e = base(EL_DELTA_ERROR, x.what());
+    e.index = x.offset;
+    return e;
+  } catch (const DeltaMismatch& x) {
+    el_error e = base(EL_DELTA_MISMATCH, x.what());
+    e.kind = static_cast<std::uint32_t>(x.field);
+    return e;
+  } catch (const InvalidPath& x) {
+    el_error e = base(EL_INVALID_PATH, x.what());
+    e.index = x.path.size();
+    return e;
+  } catch (const RegionNotLoaded& x) {
+    el_error e = base(EL_REGION_NOT_LOADED, x.what());
+    e.index = x.path.size();
+    return e;
+  } catch (const UnknownPolygon& x) {
+    el_error e = base(EL_UNKNOWN_POLYGON, x.what());
+    e.index = x.id;
+    return e;
   } catch (const StaleIsland& x) {
     el_error e = base(EL_STALE_ISLAND, x.what());
     e.index = x.polygon;
@@ -212,6 +232,16 @@ EL_API const char* el_status_name(el_status status) {
       return "EL_LIMIT_EXCEEDED";
     case EL_LOAD_ERROR:
       return "EL_LOAD_ERROR";
+    case EL_DELTA_ERROR:
+      return "EL_DELTA_ERROR";
+    case EL_DELTA_MISMATCH:
+      return "EL_DELTA_MISMATCH";
+    case EL_INVALID_PATH:
+      return "EL_INVALID_PATH";
+    case EL_REGION_NOT_LOADED:
+      return "EL_REGION_NOT_LOADED";
+    case EL_UNKNOWN_POLYGON:
+      return "EL_UNKNOWN_POLYGON";
     case EL_STALE_ISLAND:
       return "EL_STALE_ISLAND";
     case EL_INDEX_OUT_OF_RANGE:

@@ -44,6 +44,11 @@ static void test_version(void) {
   CHECK(el_check_version(EL_VERSION + (1u << 16)) == EL_VERSION_MISMATCH);
   CHECK(el_check_version(EL_VERSION + (1u << 8)) == EL_VERSION_MISMATCH);
   CHECK(strcmp(el_status_name(EL_INVALID_MATERIAL), "EL_INVALID_MATERIAL") == 0);
+  CHECK(strcmp(el_status_name(EL_DELTA_ERROR), "EL_DELTA_ERROR") == 0);
+  CHECK(strcmp(el_status_name(EL_DELTA_MISMATCH), "EL_DELTA_MISMATCH") == 0);
+  CHECK(strcmp(el_status_name(EL_INVALID_PATH), "EL_INVALID_PATH") == 0);
+  CHECK(strcmp(el_status_name(EL_REGION_NOT_LOADED), "EL_REGION_NOT_LOADED") == 0);
+  CHECK(strcmp(el_status_name(EL_UNKNOWN_POLYGON), "EL_UNKNOWN_POLYGON") == 0);
   CHECK(strcmp(el_status_name(12345), "EL_UNKNOWN") == 0);
 }
 

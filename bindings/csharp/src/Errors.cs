@@ -57,6 +57,11 @@ namespace Edgeland
                 case 21: return new InvalidMaterialException(status, e, message);
                 case 22: return new LimitExceededException(status, e, message);
                 case 23: return new LoadException(status, e, message);
+                case 24: return new DeltaException(status, e, message);
+                case 25: return new DeltaMismatchException(status, e, message);
+                case 26: return new InvalidPathException(status, e, message);
+                case 27: return new RegionNotLoadedException(status, e, message);
+                case 28: return new UnknownPolygonException(status, e, message);
                 case 30: return new StaleIslandException(status, e, message);
                 case 40: return new IndexRangeException(status, e, message);
                 case 41: return new BufferTooSmallException(status, e, message);
@@ -97,6 +102,16 @@ namespace Edgeland
     public class LimitExceededException : EdgelandException { internal LimitExceededException(int s, NativeError e, string m) : base(s, e, m) { } }
     // EL_LOAD_ERROR: Index is the byte offset [LoadError].
     public class LoadException : EdgelandException { internal LoadException(int s, NativeError e, string m) : base(s, e, m) { } }
+    // EL_DELTA_ERROR: Index is the byte offset [DeltaError].
+    public class DeltaException : EdgelandException { internal DeltaException(int s, NativeError e, string m) : base(s, e, m) { } }
+    // EL_DELTA_MISMATCH: Kind is the field that differs [DeltaMismatch].
+    public class DeltaMismatchException : EdgelandException { internal DeltaMismatchException(int s, NativeError e, string m) : base(s, e, m) { } }
+    // EL_INVALID_PATH: Index is the path's length [InvalidPath].
+    public class InvalidPathException : EdgelandException { internal InvalidPathException(int s, NativeError e, string m) : base(s, e, m) { } }
+    // EL_REGION_NOT_LOADED: Index is the region path's length [RegionNotLoaded].
+    public class RegionNotLoadedException : EdgelandException { internal RegionNotLoadedException(int s, NativeError e, string m) : base(s, e, m) { } }
+    // EL_UNKNOWN_POLYGON: Index is the polygon id [UnknownPolygon].
+    public class UnknownPolygonException : EdgelandException { internal UnknownPolygonException(int s, NativeError e, string m) : base(s, e, m) { } }
     // EL_STALE_ISLAND: Index is the polygon id [StaleIsland].
     public class StaleIslandException : EdgelandException { internal StaleIslandException(int s, NativeError e, string m) : base(s, e, m) { } }
     // EL_INDEX_OUT_OF_RANGE.

@@ -12,11 +12,12 @@ optional (Landscape.polygon_arrays, Shape from arrays). bindings/python/README.m
     update = game.apply([edgeland.Edit.fill(edgeland.Shape.circle((512, 400), 20), 2)])
 """
 from . import _native
-from .errors import (ArgumentOutOfRange, BufferTooSmall, CoordinateOutOfRange, EdgelandError,
-                     IndexOutOfRange, InternalError, InvalidArgument, InvalidBox, InvalidConfig,
-                     InvalidInput, InvalidMaterial, InvalidOverlay, LimitExceeded, LoadError,
-                     NonPositiveArea, NullArgument, OutOfMemory, StaleIsland, TooManyVertices,
-                     VersionMismatch, BY_STATUS)
+from .errors import (ArgumentOutOfRange, BufferTooSmall, CoordinateOutOfRange, DeltaError,
+                     DeltaMismatch, EdgelandError, IndexOutOfRange, InternalError,
+                     InvalidArgument, InvalidBox, InvalidConfig, InvalidInput, InvalidMaterial,
+                     InvalidOverlay, InvalidPath, LimitExceeded, LoadError, NonPositiveArea,
+                     NullArgument, OutOfMemory, RegionNotLoaded, StaleIsland, TooManyVertices,
+                     UnknownPolygon, VersionMismatch, BY_STATUS)
 from .driver import Debris, Edit, GameDriver, GameUpdate, MeshUpdate, Work
 from .game import (Chain, ChainUpdate, IslandTracker, Mesh, SurfaceTracker, all_meshes,
                    convex_pieces, detach, mesh_update)

@@ -109,6 +109,27 @@ class LoadError(EdgelandError, ValueError):
     """EL_LOAD_ERROR: a save that cannot be read; `index` is the byte offset [LoadError]."""
 
 
+class DeltaError(EdgelandError, ValueError):
+    """EL_DELTA_ERROR: a delta that cannot be read or applied; `index` is the byte offset."""
+
+
+class DeltaMismatch(EdgelandError):
+    """EL_DELTA_MISMATCH: a delta of another world, version, base or result; `kind` says which."""
+
+
+class InvalidPath(EdgelandError, ValueError):
+    """EL_INVALID_PATH: a tree path that names no node; `index` is the path's length."""
+
+
+class RegionNotLoaded(EdgelandError):
+    """EL_REGION_NOT_LOADED: an edit or query reached an unloaded region; `index` is its path's
+    length."""
+
+
+class UnknownPolygon(EdgelandError, LookupError):
+    """EL_UNKNOWN_POLYGON: a polygon id the landscape no longer holds; `index` is the id."""
+
+
 class StaleIsland(EdgelandError):
     """EL_STALE_ISLAND: the island changed since it was found; `index` is the polygon id."""
 
@@ -125,7 +146,9 @@ BY_STATUS = {1: NullArgument, 2: OutOfMemory, 3: VersionMismatch, 4: InternalErr
              10: InvalidInput, 11: CoordinateOutOfRange, 12: InvalidBox, 13: TooManyVertices,
              14: InvalidArgument, 15: ArgumentOutOfRange, 16: NonPositiveArea,
              17: InvalidOverlay, 20: InvalidConfig, 21: InvalidMaterial, 22: LimitExceeded,
-             23: LoadError, 30: StaleIsland, 40: IndexOutOfRange, 41: BufferTooSmall}
+             23: LoadError, 24: DeltaError, 25: DeltaMismatch, 26: InvalidPath,
+             27: RegionNotLoaded, 28: UnknownPolygon, 30: StaleIsland, 40: IndexOutOfRange,
+             41: BufferTooSmall}
 
 
 def call(function, *args):

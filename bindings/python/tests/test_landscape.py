@@ -130,3 +130,13 @@ def test_closed_objects_refuse_use(world):
     shape.close()
     with pytest.raises(edgeland.NullArgument):
         world.carve(shape)
+
+
+def test_every_status_the_library_names_has_its_exception():
+    # The C library names its statuses (el_status_name); each but EL_OK maps to its own class.
+    from edgeland import _native
+    named = {s for s in range(1, 256)
+             if _native.lib.el_status_name(s) != b"EL_UNKNOWN"}
+    assert {24, 25, 26, 27, 28} <= named
+    assert named == set(edgeland.BY_STATUS)
+    assert edgeland.BY_STATUS[27] is edgeland.RegionNotLoaded

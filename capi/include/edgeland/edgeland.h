@@ -89,6 +89,14 @@ enum {
   EL_INVALID_MATERIAL = 21,        /* a material number outside 0..255 [InvalidMaterial] */
   EL_LIMIT_EXCEEDED = 22,          /* [LimitExceeded] */
   EL_LOAD_ERROR = 23,              /* a save that cannot be read [LoadError] */
+  EL_DELTA_ERROR = 24,             /* a delta that cannot be read or applied [DeltaError] */
+  EL_DELTA_MISMATCH = 25,          /* a delta of another world, version, base or result
+                                      [DeltaMismatch] */
+  EL_INVALID_PATH = 26,            /* a tree path that names no node [InvalidPath] */
+  EL_REGION_NOT_LOADED = 27,       /* an edit or query reached an unloaded region
+                                      [RegionNotLoaded] */
+  EL_UNKNOWN_POLYGON = 28,         /* a polygon id the landscape no longer holds
+                                      [UnknownPolygon] */
   EL_STALE_ISLAND = 30,            /* the island changed since it was found [StaleIsland] */
   EL_INDEX_OUT_OF_RANGE = 40,      /* an index past a result's count */
   EL_BUFFER_TOO_SMALL = 41         /* copy_to: `cap` below `needed` */
@@ -149,10 +157,13 @@ typedef struct el_box {
 typedef struct el_error {
   uint32_t struct_size;
   el_status status;
-  uint32_t kind;     /* EL_RULE_*, EL_SETTING_*, EL_LIMIT_* or the overlay reason (above) */
+  uint32_t kind;     /* EL_RULE_*, EL_SETTING_*, EL_LIMIT_*, the overlay reason (above) or a
+                        delta mismatch's field (0 world, 1 algorithm, 2 base, 3 result,
+                        4 node hash) */
   uint32_t operand;  /* EL_OPERAND_* for input errors */
-  uint64_t index;    /* input: the polygon; load: the byte offset (a replay: the log's line);
-                        stale island: the polygon id;
+  uint64_t index;    /* input: the polygon; load, delta: the byte offset (a replay: the log's
+                        line); stale island, unknown polygon: the polygon id; a tree path or
+                        region: the path's length;
                         overlay: the member or window; argument errors: the argument's position */
   uint64_t vertex;   /* input: the vertex or edge (EL_NONE if none) */
   int64_t value;     /* the value given: a material number, a count requested, an argument */
