@@ -80,6 +80,37 @@ el_error count_error(el_status status, const char* what, std::uint32_t kind, std
   return e;
 }
 
+// The landscape's errors of deltas, tree paths, regions and polygon names, from the handler of
+// describe_current() (the exception being handled); any other LandscapeError left there is
+// LandscapeInternalError, a bug.
+el_error describe_tree_error() {
+  try {
+    throw;
+  } catch (const DeltaError& x) {
+    el_error e = base(EL_DELTA_ERROR, x.what());
+    e.index = x.offset;
+    return e;
+  } catch (const DeltaMismatch& x) {
+    el_error e = base(EL_DELTA_MISMATCH, x.what());
+    e.kind = static_cast<std::uint32_t>(x.field);
+    return e;
+  } catch (const InvalidPath& x) {
+    el_error e = base(EL_INVALID_PATH, x.what());
+    e.index = x.path.size();
+    return e;
+  } catch (const RegionNotLoaded& x) {
+    el_error e = base(EL_REGION_NOT_LOADED, x.what());
+    e.index = x.path.size();
+    return e;
+  } catch (const UnknownPolygon& x) {
+    el_error e = base(EL_UNKNOWN_POLYGON, x.what());
+    e.index = x.id;
+    return e;
+  } catch (const LandscapeError& x) {
+    return base(EL_INTERNAL, x.what());
+  }
+}
+
 // The innermost handler: the exception as an el_error, most derived classes first.
 el_error describe_current() {
   try {
@@ -141,31 +172,13 @@ el_error describe_current() {
     el_error e = base(EL_LOAD_ERROR, x.what());
     e.index = x.offset;
     return e;
-  } catch (const DeltaError& x) {
-    el_error e = base(EL_DELTA_ERROR, x.what());
-    e.index = x.offset;
-    return e;
-  } catch (const DeltaMismatch& x) {
-    el_error e = base(EL_DELTA_MISMATCH, x.what());
-    e.kind = static_cast<std::uint32_t>(x.field);
-    return e;
-  } catch (const InvalidPath& x) {
-    el_error e = base(EL_INVALID_PATH, x.what());
-    e.index = x.path.size();
-    return e;
-  } catch (const RegionNotLoaded& x) {
-    el_error e = base(EL_REGION_NOT_LOADED, x.what());
-    e.index = x.path.size();
-    return e;
-  } catch (const UnknownPolygon& x) {
-    el_error e = base(EL_UNKNOWN_POLYGON, x.what());
-    e.index = x.id;
-    return e;
   } catch (const StaleIsland& x) {
     el_error e = base(EL_STALE_ISLAND, x.what());
     e.index = x.polygon;
     return e;
-  } catch (const std::exception& x) {  // LandscapeInternalError, InternalError: bugs
+  } catch (const LandscapeError&) {
+    return describe_tree_error();
+  } catch (const std::exception& x) {  // InternalError: a bug
     return base(EL_INTERNAL, x.what());
   } catch (...) {
     return base(EL_INTERNAL, "an exception of unknown type");
