@@ -111,7 +111,15 @@ class ScratchVector : public std::vector<T> {
     return *this;
   }
   using std::vector<T>::operator=;  // assigning a plain vector's contents
-  ~ScratchVector() { SpareArrays<T>::give_back(*this); }
+  // The elements go first: a spare keeps storage, never live elements. An element that is a
+  // scratch array itself (a ring of points) then gives its storage back while its own spares
+  // still live, and no spare array is left holding one for the thread's exit, where spares are
+  // destroyed in an order of their own (a ring in a spare gave back to destroyed spares of
+  // points: a double free at exit, seen in game_tests).
+  ~ScratchVector() {
+    this->clear();
+    SpareArrays<T>::give_back(*this);
+  }
 };
 
 // Ends v's use before it dies: its storage goes where a dying ScratchVector's goes (a spare,
