@@ -114,8 +114,7 @@ edgeland::Edit landscape_edit(const Edit& e) {
 }
 
 // The edits [from, to) as one batch: made before the clock starts.
-double time_batch(World& world, const std::vector<Edit>& edits, std::size_t from,
-                  std::size_t to) {
+double time_batch(World& world, const std::vector<Edit>& edits, std::size_t from, std::size_t to) {
   if (auto* l = std::get_if<Landscape>(&world)) {
     std::vector<edgeland::Edit> batch;
     for (std::size_t i = from; i < to; ++i) batch.push_back(landscape_edit(edits[i]));

@@ -6,13 +6,13 @@
 //
 // Names landscape_edit/WORKLOAD/RIVAL/EDITS, and landscape_batch/WORKLOAD/RIVAL/EDITS/3 for the
 // workloads at one place (dig, spot, pit, hotspot) in frame batches of 3 (times per batch: the
-// landscape's apply_batch against the bitmap painting the same three); EDITS from EDGELAND_LANDSCAPE_EDITS (default
-// 10000), blocks of EDGELAND_LANDSCAPE_BLOCK (1000); each edit's time is its fastest of
-// EDGELAND_LANDSCAPE_REPEATS runs from the same start (landscape_common.hpp). Every rival gets the
-// same shapes as ValidSets built before any clock starts (the bitmap reads their polygons): neither
-// side validates on the clock. Ratios against the bitmap (X_vs_bitmap = landscape time / bitmap
-// time) come from the same process: the bitmap is registered first, and run here if it was filtered
-// out.
+// landscape's apply_batch against the bitmap painting the same three); EDITS from
+// EDGELAND_LANDSCAPE_EDITS (default 10000), blocks of EDGELAND_LANDSCAPE_BLOCK (1000); each edit's
+// time is its fastest of EDGELAND_LANDSCAPE_REPEATS runs from the same start
+// (landscape_common.hpp). Every rival gets the same shapes as ValidSets built before any clock
+// starts (the bitmap reads their polygons): neither side validates on the clock. Ratios against the
+// bitmap (X_vs_bitmap = landscape time / bitmap time) come from the same process: the bitmap is
+// registered first, and run here if it was filtered out.
 #include <map>
 #include <optional>
 #include <string>
@@ -76,8 +76,9 @@ const EditSummary& bitmap_summary(Workload w, std::size_t batch, std::size_t blo
   auto& cache = bitmap_summaries();
   auto it = cache.find({w, batch});
   if (it == cache.end())
-    it = cache.emplace(BitmapKey{w, batch},
-                       summarize(run_once(w, Rival::kBitmap, batch).seconds, block))
+    it = cache
+             .emplace(BitmapKey{w, batch},
+                      summarize(run_once(w, Rival::kBitmap, batch).seconds, block))
              .first;
   return it->second;
 }

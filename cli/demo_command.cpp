@@ -129,7 +129,8 @@ int write_outputs(const Landscape& landscape, const DemoOptions& options) {
   return kExitOk;
 }
 
-// The output folder made (with its parents) for either demo; false, said on stderr, if it cannot be.
+// The output folder made (with its parents) for either demo; false, said on stderr, if it cannot
+// be.
 bool output_folder_made(const std::string& out) {
   std::error_code error;
   std::filesystem::create_directories(out, error);

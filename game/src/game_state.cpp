@@ -14,7 +14,8 @@ namespace {
 // The island's key as IslandTree keeps it: the fingerprint of its polygons' ids.
 IslandKey key_of(const Island& island) {
   IslandKey key = IslandKey::of(island.pieces.front().id);
-  for (std::size_t i = 1; i < island.pieces.size(); ++i) key.add(IslandKey::of(island.pieces[i].id));
+  for (std::size_t i = 1; i < island.pieces.size(); ++i)
+    key.add(IslandKey::of(island.pieces[i].id));
   return key;
 }
 

@@ -31,8 +31,7 @@ ReplayFailure edit_failure(const LandscapeEdit& edit, const std::string& what, K
 // One step (an edit line, or a batch line's edits); the failure if it throws. A shape the
 // kernel refuses is the log's fault; an internal error of the landscape or of the OGC import is
 // edgeland's.
-std::optional<ReplayFailure> apply_one(Landscape& landscape,
-                                       std::span<const LandscapeEdit> step) {
+std::optional<ReplayFailure> apply_one(Landscape& landscape, std::span<const LandscapeEdit> step) {
   const LandscapeEdit& edit = step.front();
   try {
     apply_step(landscape, step);

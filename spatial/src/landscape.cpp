@@ -14,7 +14,6 @@
 namespace edgeland {
 namespace {
 
-
 // The grid of thesis 4.4 (and the tree down to the region depth): the world cut to `depth`
 // levels at once (one arrangement per level). `cells` counts the cells made, against the limit.
 class GridBuilder {
@@ -121,7 +120,8 @@ ChangeSet Landscape::apply_batch(std::span<const Edit> edits) {
   tables.reserve(edits.size());
   for (const Edit& e : edits) tables.push_back(detail::EditTable::relabel(e.map));
   std::vector<RelabelStep> steps;
-  for (std::size_t k = 0; k < edits.size(); ++k) steps.push_back({&edits[k].shape, tables[k].table});
+  for (std::size_t k = 0; k < edits.size(); ++k)
+    steps.push_back({&edits[k].shape, tables[k].table});
   return apply([&] { return detail::EditBuilder(s_, steps).build(); },
                [&] { return log::batch_line(edits); });
 }
@@ -148,7 +148,9 @@ ChangeSet Landscape::apply(const std::function<detail::EditResult()>& build,
   return std::move(edit.changes);
 }
 ChangeSet Landscape::carve(const PolygonSet& shape) { return carve(edit_shape(shape)); }
-ChangeSet Landscape::fill(const PolygonSet& shape, Material m) { return fill(edit_shape(shape), m); }
+ChangeSet Landscape::fill(const PolygonSet& shape, Material m) {
+  return fill(edit_shape(shape), m);
+}
 ChangeSet Landscape::fill_empty(const PolygonSet& shape, Material m) {
   return fill_empty(edit_shape(shape), m);
 }

@@ -12,15 +12,16 @@
 #include "edgeland/clip/relabel.hpp"
 #include "edgeland/kernel/point_in_polygon.hpp"
 #include "generators.hpp"
+#include "relabel_cells.hpp"
 
 namespace edgeland {
 namespace {
 
+using test::fill_table;
+
 Polygon square(std::int64_t x0, std::int64_t y0, std::int64_t x1, std::int64_t y1) {
   return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
 }
-
-std::vector<RegionLabel> fill_table(RegionLabel m) { return std::vector<RegionLabel>(256, m); }
 
 std::vector<RegionLabel> replace_table(RegionLabel from, RegionLabel to) {
   std::vector<RegionLabel> t(256);
@@ -86,19 +87,7 @@ TEST(RelabelBatch, RefusesTooManyStepsAndStepsWithoutAShape) {
 }
 
 // A cell: the canonical decomposition of a few random fills, as a landscape cell holds.
-LabeledSet random_cell(std::int64_t size) {
-  const Box64 box{{0, 0}, {size, size}};
-  LabeledSet content;
-  const int fills = *rc::gen::inRange(1, 5);
-  for (int i = 0; i < fills; ++i) {
-    const std::int64_t r = *rc::gen::element<std::int64_t>(3, size / 4, size / 2, size);
-    const Polygon p = *test::gen::shape(*test::gen::point_in({0, 0}, {size, size}), r);
-    const RegionLabel m = *rc::gen::inRange<RegionLabel>(1, 4);
-    content =
-        relabel(content.set, content.labels, ValidSet(PolygonSet{p}), box, fill_table(m)).regions;
-  }
-  return content;
-}
+LabeledSet random_cell(std::int64_t size) { return test::random_cell_content(size); }
 
 std::vector<RegionLabel> random_table() {
   std::vector<RegionLabel> table(256);

@@ -9,17 +9,19 @@
 
 #include "edgeland/clip/relabel.hpp"
 #include "generators.hpp"
+#include "relabel_cells.hpp"
 #include "relabel_quick.hpp"
 #include "small_overlay.hpp"
 
 namespace edgeland {
 namespace {
 
+using test::fill_table;
+
 Polygon square(std::int64_t x0, std::int64_t y0, std::int64_t x1, std::int64_t y1) {
   return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
 }
 
-std::vector<RegionLabel> fill_table(RegionLabel m) { return std::vector<RegionLabel>(256, m); }
 std::vector<RegionLabel> carve_table() { return fill_table(0); }
 
 // A cell: its box and the canonical decomposition of labeled polygons in it.
@@ -245,17 +247,7 @@ TEST(RelabelCell, ACellOfHundredsOfEdgesFallsBackToTheGeneralPipeline) {
 
 // A random cell: up to four fills of random shapes of materials 1-3 into a box of this size.
 Cell random_cell(std::int64_t size) {
-  const Box64 box{{0, 0}, {size, size}};
-  LabeledSet content;
-  const int fills = *rc::gen::inRange(1, 5);
-  for (int i = 0; i < fills; ++i) {
-    const std::int64_t r = *rc::gen::element<std::int64_t>(3, size / 4, size / 2, size);
-    const Polygon p = *test::gen::shape(*test::gen::point_in({0, 0}, {size, size}), r);
-    const RegionLabel m = *rc::gen::inRange<RegionLabel>(1, 4);
-    content =
-        relabel(content.set, content.labels, ValidSet(PolygonSet{p}), box, fill_table(m)).regions;
-  }
-  return {box, std::move(content)};
+  return {{{0, 0}, {size, size}}, test::random_cell_content(size)};
 }
 
 // A random edit's table: fill (carve when `to` is 0), fill_empty or replace 1.

@@ -5,10 +5,11 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
-#include "edgeland/clip/clip.hpp"
-#include "edgeland/kernel/canonical_form.hpp"
 #include <map>
+
+#include "edgeland/clip/clip.hpp"
 #include "edgeland/kernel/area.hpp"
+#include "edgeland/kernel/canonical_form.hpp"
 #include "edgeland/kernel/centroid.hpp"
 #include "game_worlds.hpp"
 #include "island_oracle.hpp"

@@ -127,9 +127,8 @@ TEST(NetLockstep, AFrameBatchIsOneCommandForEveryClient) {
   editor.request(batch);
   const std::vector<Edit> outside{Edit::carve(blob(700, 700)), Edit::carve(blob(3000, 3000))};
   editor.request(outside);
-  ASSERT_TRUE(run.until([&] {
-    return settled(editor, server.sequence()) && settled(watcher, server.sequence());
-  }));
+  ASSERT_TRUE(run.until(
+      [&] { return settled(editor, server.sequence()) && settled(watcher, server.sequence()); }));
   EXPECT_EQ(server.sequence(), 1u);
   EXPECT_EQ(server.world().state_hash(), expected.state_hash());
   EXPECT_EQ(editor.stats().rejects.at(RejectReason::kNotPermitted), 1u);

@@ -18,8 +18,7 @@ TEST(LandscapeDeterminism, PinnedSequenceGivesThePinnedHash) {
 TEST(LandscapeDeterminism, PinnedBatchesGiveThePinnedHash) {
   EXPECT_EQ(pinned::run_batches({}).state_hash(), pinned::kQuadtreeBatchHash);
   EXPECT_EQ(pinned::run_batches(pinned::kd_tree_config()).state_hash(), pinned::kKdTreeBatchHash);
-  EXPECT_EQ(pinned::run_batches(pinned::regions_config()).state_hash(),
-            pinned::kRegionsBatchHash);
+  EXPECT_EQ(pinned::run_batches(pinned::regions_config()).state_hash(), pinned::kRegionsBatchHash);
 }
 
 TEST(LandscapeDeterminism, PinsBelongToTheAlgorithmVersion) {

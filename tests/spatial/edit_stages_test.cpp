@@ -263,9 +263,8 @@ TEST(EditBuilder, AShapeOverTheLimitThrows) {
   detail::LandscapeState current = test::state_of(worn());
   current.limits.max_shape_vertices = 3;
   const detail::EditTable table = detail::EditTable::fill(7);
-  EXPECT_THROW(
-      build_one(current, table, ValidSet(PolygonSet{diamond({100, 100}, 20)})),
-      LimitExceeded);
+  EXPECT_THROW(build_one(current, table, ValidSet(PolygonSet{diamond({100, 100}, 20)})),
+               LimitExceeded);
 }
 
 }  // namespace

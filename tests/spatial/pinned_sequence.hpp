@@ -5,7 +5,6 @@
 // vary between builds. A deliberate change of results (a different canonical decomposition, a
 // different snap rounding) changes the pins: update them and say why in the commit.
 #include <cstdint>
-
 #include <vector>
 
 #include "edgeland/kernel/splitmix64.hpp"

@@ -7,9 +7,9 @@
 #include <functional>
 #include <optional>
 #include <span>
-#include <vector>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "edgeland/kernel/export.hpp"
 #include "edgeland/net/edit_policy.hpp"

@@ -228,14 +228,14 @@ class EDGELAND_EXPORT Landscape {
   std::optional<NodeDigest> node_digest(const TreePath& path) const;
   // The subtree at `path` as a PATCH carries it (patch_delta). Throws InvalidPath. O(subtree).
   PatchEntry patch_entry(const TreePath& path) const;
-  // Applies a COMMAND (the edit, as apply_edit; a batch, as apply_batch) or a PATCH (its subtrees, ids and counters),
-  // after checking that it belongs to this world (DeltaMismatch kWorld; a COMMAND also kAlgorithm)
-  // and, as `checks` asks, that this landscape is its base (kBase) and that the result is its
-  // result (kResult). Returns what changed, as an edit does. Throws DeltaError (a CHANGES delta,
-  // or a PATCH whose subtree breaks a rule of this world: the offset is within that subtree),
-  // DeltaMismatch, LimitExceeded, or what the COMMAND's edit throws; then the landscape is as
-  // it was. O(edit) for a COMMAND; O(patched subtrees + the polygons outside them) for a PATCH,
-  // which checks its ids against every other polygon.
+  // Applies a COMMAND (the edit, as apply_edit; a batch, as apply_batch) or a PATCH (its subtrees,
+  // ids and counters), after checking that it belongs to this world (DeltaMismatch kWorld; a
+  // COMMAND also kAlgorithm) and, as `checks` asks, that this landscape is its base (kBase) and
+  // that the result is its result (kResult). Returns what changed, as an edit does. Throws
+  // DeltaError (a CHANGES delta, or a PATCH whose subtree breaks a rule of this world: the offset
+  // is within that subtree), DeltaMismatch, LimitExceeded, or what the COMMAND's edit throws; then
+  // the landscape is as it was. O(edit) for a COMMAND; O(patched subtrees + the polygons outside
+  // them) for a PATCH, which checks its ids against every other polygon.
   ChangeSet apply_delta(const Delta& delta, const DeltaChecks& checks = {});
   // Sum of polygon_digest (delta.hpp) over every polygon below `path`: what a thin client's
   // DrawMirror holding that part of the world has as its digest. Throws InvalidPath. O(subtree).
