@@ -1,4 +1,3 @@
-include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
 install(TARGETS edgeland_kernel edgeland_clip edgeland_spatial edgeland_io edgeland_game
@@ -15,7 +14,8 @@ if(TARGET edgeland_c_shared)
   install(TARGETS edgeland_c_shared edgeland_c_static EXPORT edgelandTargets
     ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
     LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
-    RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+    RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
+    INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
   install(DIRECTORY capi/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 endif()
 install(EXPORT edgelandTargets NAMESPACE edgeland:: DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/edgeland)

@@ -19,3 +19,11 @@ add_test(NAME install.consumer
 # RUN_SERIAL: `cmake --install` copies the build tree's libraries and programs; alone, it never
 # reads a file another test (or a build step a test starts) is writing.
 set_tests_properties(install.consumer PROPERTIES LABELS install TIMEOUT 600 RUN_SERIAL TRUE)
+# The export set of a first configure (install.consumer installs from this tree, which may have
+# been configured more than once): fresh_configure_test.cmake.
+add_test(NAME install.fresh_configure_exports_include_dirs
+  COMMAND ${CMAKE_COMMAND} -DSOURCE_DIR=${PROJECT_SOURCE_DIR}
+    -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}/fresh_configure
+    -P ${CMAKE_CURRENT_LIST_DIR}/fresh_configure_test.cmake)
+set_tests_properties(install.fresh_configure_exports_include_dirs PROPERTIES LABELS install
+  TIMEOUT 300)
