@@ -124,11 +124,13 @@ std::optional<Point64> ray_candidate(Point64 o, const Obstacles& obstacles, int 
 }
 
 // The open segment o-t touches no obstacle and no obstacle overlaps it. Obstacles of the rows
-// the bridge meets whose box misses the bridge's box are passed over by comparisons alone.
+// the bridge meets whose box misses the bridge's box are passed over by comparisons alone; an
+// obstacle of several rows may be tested once per row (a yes or no: order and repeats do not
+// matter, and sorting them was a sixth of hole splitting).
 bool visible(Point64 o, Point64 t, const Obstacles& obstacles) {
   const Segment bridge{o, t};
   const Box64 reach = segment_box(bridge);
-  obstacles.rows.obstacles_in(reach.min.y, reach.max.y, obstacles.found);
+  obstacles.rows.obstacles_in(reach.min.y, reach.max.y, obstacles.found, false);
   for (std::uint32_t i : obstacles.found) {
     const Segment& e = obstacles.edges[i];
     if (!segment_box(e).overlaps(reach)) continue;
