@@ -86,7 +86,6 @@ void ObstacleRows::vertices_in(std::int64_t lo, std::int64_t hi,
   out.clear();
   const auto first = std::lower_bound(by_y_.begin(), by_y_.end(), std::make_pair(lo, 0u));
   for (auto it = first; it != by_y_.end() && it->first <= hi; ++it) out.push_back(it->second);
-  std::sort(out.begin(), out.end());
 }
 
 }  // namespace edgeland::detail

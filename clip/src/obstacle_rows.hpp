@@ -3,9 +3,9 @@
 // searches read only the rows they reach instead of every edge and vertex of the region: a
 // westward ray reads one row, a bridge's visibility test the rows of its y-range, a ray's
 // candidate triangle the vertices of its y-range. The rings' edges are filed once (flat rows);
-// the bridges, two per hole, are filed in the rows they cross as they come. A search that makes
-// choices gets its matches ascending, the order the linear scans met them, so every choice stays
-// as it was; a visibility test (a yes or no) takes them as the rows hold them.
+// the bridges, two per hole, are filed in the rows they cross as they come. The westward ray gets
+// its matches ascending, the order the linear scans met them; a visibility test (a yes or no)
+// and the candidate triangle (whose choice does not depend on order) take them as filed.
 // All storage is scratch (scratch.hpp): nothing allocated once a thread is warm.
 #include <cstddef>
 #include <cstdint>
@@ -29,7 +29,8 @@ class ObstacleRows {
   // not `ordered`, in row order with an obstacle of several rows once per row.
   void obstacles_in(std::int64_t lo, std::int64_t hi, ScratchVector<std::uint32_t>& out,
                     bool ordered = true) const;
-  // The vertices with y in [lo, hi], ascending.
+  // The vertices with y in [lo, hi], by y (the candidate triangle's choice, the vertex of least
+  // angle and then greatest x, is one point whatever the order: hole_splitting.cpp).
   void vertices_in(std::int64_t lo, std::int64_t hi, ScratchVector<std::uint32_t>& out) const;
 
  private:

@@ -3,7 +3,6 @@
 #include <map>
 
 #include "edgeland/clip/clip.hpp"
-#include "edgeland/game/render_meshes.hpp"
 #include "edgeland/kernel/centroid.hpp"
 #include "edgeland/kernel/convex_pieces.hpp"
 
@@ -56,10 +55,18 @@ void DebrisJob::step(const GameOptions& options) {
   }
   const IslandRegion& r = debris_.regions[region_];
   const Polygon& p = r.polygons[polygon_];
-  for (Polygon& piece : convex_pieces(p, options.max_piece_vertices))
-    debris_.pieces.push_back({r.material, std::move(piece)});
-  if (options.meshes) debris_.meshes.push_back(polygon_mesh(0, r.material, p));
+  if (options.meshes) {  // the mesh's triangles are the pieces' first stage: made once
+    TrianglesAndPieces both = triangles_and_convex_pieces(p, options.max_piece_vertices);
+    add_pieces(r.material, std::move(both.pieces));
+    debris_.meshes.push_back({0, r.material, p, std::move(both.triangles)});
+  } else {
+    add_pieces(r.material, convex_pieces(p, options.max_piece_vertices));
+  }
   if (++polygon_ == r.polygons.size()) ++region_, polygon_ = 0;
+}
+
+void DebrisJob::add_pieces(Material material, std::vector<Polygon> pieces) {
+  for (Polygon& piece : pieces) debris_.pieces.push_back({material, std::move(piece)});
 }
 
 bool DebrisJob::advance(const GameOptions& options, std::size_t& spent, bool all) {

@@ -33,6 +33,7 @@ class DebrisJob {
  private:
   std::size_t next_cost() const;
   void step(const GameOptions& options);
+  void add_pieces(Material material, std::vector<Polygon> pieces);
 
   Island island_;
   bool checked_;

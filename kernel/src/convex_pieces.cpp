@@ -51,18 +51,43 @@ std::vector<Polygon> pieces_of(const detail::PieceMesh& mesh) {
   return pieces;
 }
 
-}  // namespace
-
-std::vector<Polygon> convex_pieces(const Polygon& polygon, std::size_t max_vertices) {
-  if (max_vertices < 3) throw InvalidArgument("max_vertices", max_vertices, 3);
-  detail::require_valid_polygon(polygon);
-  const Polygon corners = corners_of(polygon);
-  detail::PieceMesh mesh(corners, detail::triangulate_valid(corners));
+// Stages 2 and 3 over the triangles of the polygon's corners.
+std::vector<Polygon> pieces_from(const Polygon& polygon, const Polygon& corners,
+                                 const std::vector<Triangle>& triangles,
+                                 std::size_t max_vertices) {
+  detail::PieceMesh mesh(corners, triangles);
   detail::merge_convex_pieces(mesh, max_vertices);
   std::vector<Polygon> pieces = pieces_of(mesh);
   if constexpr (EDGELAND_ASSERTS_ENABLED)
     detail::check_convex_pieces(polygon, pieces, max_vertices);
   return pieces;
+}
+
+void require_piece_size(std::size_t max_vertices) {
+  if (max_vertices < 3) throw InvalidArgument("max_vertices", max_vertices, 3);
+}
+
+}  // namespace
+
+std::vector<Polygon> convex_pieces(const Polygon& polygon, std::size_t max_vertices) {
+  require_piece_size(max_vertices);
+  detail::require_valid_polygon(polygon);
+  const Polygon corners = corners_of(polygon);
+  return pieces_from(polygon, corners, detail::triangulate_valid(corners), max_vertices);
+}
+
+// triangulate() keeps straight vertices and stage 1 drops them, so the triangles are shared only
+// when there are none.
+TrianglesAndPieces triangles_and_convex_pieces(const Polygon& polygon, std::size_t max_vertices) {
+  require_piece_size(max_vertices);
+  detail::require_valid_polygon(polygon);
+  TrianglesAndPieces out;
+  out.triangles = detail::triangulate_valid(polygon);
+  const Polygon corners = corners_of(polygon);
+  out.pieces = corners.size() == polygon.size()
+                   ? pieces_from(polygon, corners, out.triangles, max_vertices)
+                   : pieces_from(polygon, corners, detail::triangulate_valid(corners), max_vertices);
+  return out;
 }
 
 }  // namespace edgeland
