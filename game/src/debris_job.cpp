@@ -69,10 +69,11 @@ void DebrisJob::add_pieces(Material material, std::vector<Polygon> pieces) {
   for (Polygon& piece : pieces) debris_.pieces.push_back({material, std::move(piece)});
 }
 
-bool DebrisJob::advance(const GameOptions& options, std::size_t& spent, bool all) {
+bool DebrisJob::advance(const GameOptions& options, std::size_t& spent, Pace pace) {
   while (!done()) {
     const std::size_t cost = next_cost();
-    if (!all && spent != 0 && spent + cost > options.debris_budget) break;
+    const bool forced = pace == Pace::kFinish || (pace == Pace::kFirstStep && spent == 0);
+    if (!forced && spent + cost > options.debris_budget) break;
     step(options);
     spent += cost;
   }

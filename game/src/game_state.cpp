@@ -184,15 +184,22 @@ void GameState::drain_debris(GameUpdate& out) {
   for (Debris& d : detached.debris) out.debris.push_back(std::move(d));
 }
 
-// Oldest first, while the budget lasts (the first gets a step whatever it costs); a job that
-// has waited options_.max_debris_wait updates is finished whatever the budget. Queued later,
-// a job has waited no longer than those before it, so the first that stops ends the pass.
+// Oldest first, while the budget lasts; the first gets a step whatever it costs unless it was
+// found in this update (which already paid for the edit and for finding it: a big island's first
+// step, its merge, waits for the next), and a job that has waited options_.max_debris_wait
+// updates is finished whatever the budget. Queued later, a job has waited no longer than those
+// before it, so the first that stops ends the pass.
+DebrisJob::Pace GameState::pace_of(const Waiting& w) const {
+  if (w.age >= options_.max_debris_wait) return DebrisJob::Pace::kFinish;
+  return w.age == 0 ? DebrisJob::Pace::kWithinBudget : DebrisJob::Pace::kFirstStep;
+}
+
 std::vector<DebrisJob> GameState::advance_jobs() {
   std::vector<DebrisJob> finished;
   std::size_t spent = 0;
   while (!queue_.empty()) {
     Waiting& w = queue_.front();
-    if (!w.job.advance(options_, spent, w.age >= options_.max_debris_wait)) break;
+    if (!w.job.advance(options_, spent, pace_of(w))) break;
     finished.push_back(std::move(w.job));
     queue_.pop_front();
   }
