@@ -4,8 +4,8 @@
 
 #include "debris.hpp"
 #include "edgeland/clip/clip.hpp"
-#include "edgeland/game/render_meshes.hpp"
 #include "island_walk.hpp"
+#include "landscape_meshes.hpp"
 #include "update_merge.hpp"
 
 namespace edgeland::game_detail {
@@ -210,7 +210,7 @@ std::vector<DebrisJob> GameState::advance_jobs() {
 void GameState::finish(GameUpdate& out) const {
   finish_changes(out.changes, land_);
   finish_chains(out.chains);
-  if (options_.meshes) out.meshes = mesh_update(out.changes);
+  if (options_.meshes) out.meshes = landscape_mesh_update(out.changes);
   out.debris_waiting = queue_.size();
   out.work.cells_scanned = static_cast<std::size_t>(store_.scans() - scans_before_);
   out.work.boundary_passes = static_cast<std::size_t>(solid_boundary_runs() - passes_before_);

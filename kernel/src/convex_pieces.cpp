@@ -8,7 +8,7 @@
 #include "edgeland/kernel/predicates.hpp"
 #include "hertel_mehlhorn.hpp"
 #include "piece_mesh.hpp"
-#include "triangulation.hpp"
+#include "edgeland/kernel/triangulation.hpp"
 
 namespace edgeland {
 namespace {

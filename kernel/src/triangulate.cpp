@@ -8,7 +8,7 @@
 #include "monotone_partition.hpp"
 #include "monotone_triangulation.hpp"
 #include "polygon_faces.hpp"
-#include "triangulation.hpp"
+#include "edgeland/kernel/triangulation.hpp"
 #include "triangulation_checks.hpp"
 
 namespace edgeland {

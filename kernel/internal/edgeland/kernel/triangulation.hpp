@@ -1,5 +1,7 @@
 #pragma once
-// triangulate() without the input check, for convex_pieces(), which has checked the polygon.
+// triangulate() without the input check, for callers that know the polygon is valid:
+// convex_pieces(), which has checked it, and the game layer's meshes of a landscape's own
+// polygons (valid by the landscape's invariant I1; game/src/landscape_meshes.hpp).
 #include <vector>
 
 #include "edgeland/kernel/polygon.hpp"
