@@ -129,7 +129,8 @@ std::vector<std::pair<std::uint32_t, Point64>> ends_inside(const std::vector<Seg
   // Collinear points sort along a segment by (x, y); reversed where it runs the other way.
   std::sort(out.begin(), out.end());
   for (auto at = out.begin(); at != out.end();) {
-    const auto end = std::find_if(at, out.end(), [&](const auto& e) { return e.first != at->first; });
+    const auto end =
+        std::find_if(at, out.end(), [&](const auto& e) { return e.first != at->first; });
     const Segment& s = stretches[at->first];
     if (s.b < s.a) std::reverse(at, end);
     at = end;

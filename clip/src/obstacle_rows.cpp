@@ -65,8 +65,8 @@ void ObstacleRows::add_bridge(std::uint32_t index, const Segment& s) {
   }
 }
 
-void ObstacleRows::obstacles_in(std::int64_t lo, std::int64_t hi,
-                                ScratchVector<std::uint32_t>& out, bool ordered) const {
+void ObstacleRows::obstacles_in(std::int64_t lo, std::int64_t hi, ScratchVector<std::uint32_t>& out,
+                                bool ordered) const {
   out.clear();
   const std::size_t first = row(lo), last = row(hi);
   for (std::size_t r = first; r <= last; ++r) {

@@ -6,9 +6,9 @@
 #include "edgeland/kernel/assert.hpp"
 #include "edgeland/kernel/errors.hpp"
 #include "edgeland/kernel/predicates.hpp"
+#include "edgeland/kernel/triangulation.hpp"
 #include "hertel_mehlhorn.hpp"
 #include "piece_mesh.hpp"
-#include "edgeland/kernel/triangulation.hpp"
 
 namespace edgeland {
 namespace {
@@ -53,8 +53,7 @@ std::vector<Polygon> pieces_of(const detail::PieceMesh& mesh) {
 
 // Stages 2 and 3 over the triangles of the polygon's corners.
 std::vector<Polygon> pieces_from(const Polygon& polygon, const Polygon& corners,
-                                 const std::vector<Triangle>& triangles,
-                                 std::size_t max_vertices) {
+                                 const std::vector<Triangle>& triangles, std::size_t max_vertices) {
   detail::PieceMesh mesh(corners, triangles);
   detail::merge_convex_pieces(mesh, max_vertices);
   std::vector<Polygon> pieces = pieces_of(mesh);
@@ -84,9 +83,10 @@ TrianglesAndPieces triangles_and_convex_pieces(const Polygon& polygon, std::size
   TrianglesAndPieces out;
   out.triangles = detail::triangulate_valid(polygon);
   const Polygon corners = corners_of(polygon);
-  out.pieces = corners.size() == polygon.size()
-                   ? pieces_from(polygon, corners, out.triangles, max_vertices)
-                   : pieces_from(polygon, corners, detail::triangulate_valid(corners), max_vertices);
+  out.pieces =
+      corners.size() == polygon.size()
+          ? pieces_from(polygon, corners, out.triangles, max_vertices)
+          : pieces_from(polygon, corners, detail::triangulate_valid(corners), max_vertices);
   return out;
 }
 
