@@ -80,14 +80,23 @@ std::vector<Polygon> convex_pieces(const Polygon& polygon, std::size_t max_verti
 TrianglesAndPieces triangles_and_convex_pieces(const Polygon& polygon, std::size_t max_vertices) {
   require_piece_size(max_vertices);
   detail::require_valid_polygon(polygon);
+  return detail::triangles_and_convex_pieces_valid(polygon, max_vertices);
+}
+
+namespace detail {
+
+TrianglesAndPieces triangles_and_convex_pieces_valid(const Polygon& polygon,
+                                                     std::size_t max_vertices) {
+  require_piece_size(max_vertices);
+  if constexpr (EDGELAND_ASSERTS_ENABLED) require_valid_polygon(polygon);
   TrianglesAndPieces out;
-  out.triangles = detail::triangulate_valid(polygon);
+  out.triangles = triangulate_valid(polygon);
   const Polygon corners = corners_of(polygon);
-  out.pieces =
-      corners.size() == polygon.size()
-          ? pieces_from(polygon, corners, out.triangles, max_vertices)
-          : pieces_from(polygon, corners, detail::triangulate_valid(corners), max_vertices);
+  out.pieces = corners.size() == polygon.size()
+                   ? pieces_from(polygon, corners, out.triangles, max_vertices)
+                   : pieces_from(polygon, corners, triangulate_valid(corners), max_vertices);
   return out;
 }
 
+}  // namespace detail
 }  // namespace edgeland
