@@ -3,6 +3,7 @@
 
 #include <cstring>
 #include <memory>
+#include <new>
 #include <sstream>
 #include <streambuf>
 #include <string>
@@ -315,6 +316,10 @@ EL_API el_status el_landscape_save(const el_landscape* landscape, el_bytes** out
     need(out, "out");
     std::ostringstream bytes(std::ios::binary);
     object_of(landscape, "landscape").world.save(bytes);
+    // A string stream whose buffer cannot grow swallows the std::bad_alloc and sets badbit
+    // (iostreams catch what their buffer throws): without this the save would be cut short and
+    // handed out as EL_OK.
+    if (!bytes) throw std::bad_alloc();
     hand_out(bytes_of(std::move(bytes).str()), out);
   });
 }
