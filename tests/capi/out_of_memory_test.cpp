@@ -2,12 +2,14 @@
 // again with allocation 0, 1, 2, ... of the call failing (failing_allocator.hpp), once with only
 // that allocation failing and once with every allocation from it on failing, until a run in
 // which no allocation failed. Every run must keep the error contract of edgeland.h:
-// - the status is EL_OK or EL_OUT_OF_MEMORY, nothing else, and no crash or abort;
+// - the status is EL_OK or EL_OUT_OF_MEMORY, nothing else, and no crash or abort (one documented
+//   exception: el_landscape_load, AlsoAccepted below);
 // - on EL_OUT_OF_MEMORY, el_error says so, with std::bad_alloc's message;
 // - on failure the out-parameters are left as they were (NULL here);
-// - a failed call changes nothing: the landscapes it was given hash as before and pass check(),
-//   and the same call then succeeds on the same objects, with the result of a run that never
-//   met a fault (a driver, as documented, after a reset);
+// - a failed call changes nothing: the landscapes it was given hash as before (a failed carve's
+//   also passes check()), and the same call then succeeds on the same objects, with the result
+//   of a run that never met a fault (a failed driver apply: on a new driver, see
+//   DISABLED_GameDriverResetAfterApplyFails);
 // - a call that succeeded although an allocation failed (the library absorbed it) gave that
 //   same result too.
 // Everything is freed on every path: under the sanitizer build, LeakSanitizer checks the failure
@@ -218,18 +220,18 @@ ShapePtr box_shape(std::int64_t x0, std::int64_t y0, std::int64_t x1, std::int64
 
 const el_box kWorld = {{0, 0}, {1024, 512}};
 
-// 8 x 8 cells, so edits cross cell lines.
-el_landscape_config cells_config() {
+// A grid of 2^depth x 2^depth cells, so edits cross cell lines.
+el_landscape_config cells_config(std::int32_t depth = 3) {
   el_landscape_config c;
   el_landscape_config_init(&c);
-  c.grid_depth = 3;
+  c.grid_depth = depth;
   return c;
 }
 
 // Ground along the bottom with an ore vein and a crater: several materials and polygons in
 // several cells, and nothing that falls.
-LandscapePtr ground_world() {
-  const el_landscape_config config = cells_config();
+LandscapePtr ground_world(std::int32_t depth = 3) {
+  const el_landscape_config config = cells_config(depth);
   el_landscape* raw = nullptr;
   EXPECT_EQ(el_landscape_create(&kWorld, 0, &config, &raw, nullptr), EL_OK);
   LandscapePtr world(raw);
@@ -490,7 +492,7 @@ enum class Recovery {
 // and after a failure the same batch on the recovered driver gives the update of a driver that
 // never failed.
 void apply_with_faults(Recovery recovery) {
-  const LandscapePtr world = ground_world();
+  const LandscapePtr world = ground_world(2);  // 4 x 4 cells: a driver is made for every run
   const std::uint64_t world_hash = hash_of(world.get());
   const ShapePtr crater = circle_shape(300, 150, 75);
   const ShapePtr vein = circle_shape(300, 150, 55);
@@ -537,7 +539,7 @@ void apply_with_faults(Recovery recovery) {
 TEST(CapiOutOfMemory, GameDriverApply) { apply_with_faults(Recovery::kNewDriver); }
 
 // Disabled: a known bug of the game layer, outside the C border: after EL_OUT_OF_MEMORY from
-// apply, the reset edgeland.h prescribes does not bring the driver back. First at allocation 213
+// apply, the reset edgeland.h prescribes does not bring the driver back. First at allocation 160
 // of this batch: CellStore::remove (game/src/cell_store.cpp) moves a record's chains and contents
 // into the GoneCell it pushes before push_back allocates; the push_back throws, the record stays
 // in the store without contents, and reset dereferences them (differing_cells -> same_cell ->
