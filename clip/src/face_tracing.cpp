@@ -34,6 +34,41 @@ void split_at_repeats(const std::vector<Point64>& walk, std::vector<ScratchRing>
   if (!stack.empty()) out.emplace_back().assign(stack.begin(), stack.end());
 }
 
+// Where each point's group of leaving edges starts in the sorted `by_origin`: an open-addressing
+// table keyed by point key, so the walk finds the edges leaving a point in one or two probes
+// instead of a binary search over all edges (most of the tracing on a large region).
+class OriginIndex {
+ public:
+  explicit OriginIndex(const ScratchVector<std::pair<std::uint64_t, std::uint32_t>>& by_origin) {
+    std::size_t size = 16;
+    while (size < 2 * by_origin.size()) size *= 2;
+    mask_ = size - 1;
+    keys_.assign(size, 0);
+    first_.assign(size, kEmpty);
+    for (std::size_t i = 0; i < by_origin.size(); ++i) {
+      if (i > 0 && by_origin[i].first == by_origin[i - 1].first) continue;
+      const std::size_t at = slot(by_origin[i].first);
+      keys_[at] = by_origin[i].first;
+      first_[at] = static_cast<std::uint32_t>(i);
+    }
+  }
+  // The first index of the key's group in by_origin, or kEmpty when no edge leaves the point.
+  std::uint32_t first(std::uint64_t key) const { return first_[slot(key)]; }
+  static constexpr std::uint32_t kEmpty = 0xFFFFFFFFu;
+
+ private:
+  // The key's slot, or the empty slot where it would go (at most half the slots are taken).
+  std::size_t slot(std::uint64_t key) const {
+    std::size_t at = static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> 32) & mask_;
+    while (first_[at] != kEmpty && keys_[at] != key) at = (at + 1) & mask_;
+    return at;
+  }
+
+  std::size_t mask_ = 0;
+  ScratchVector<std::uint64_t> keys_;
+  ScratchVector<std::uint32_t> first_;
+};
+
 }  // namespace
 
 void trace_faces(const std::vector<Segment>& edges, std::vector<ScratchRing>& out) {
@@ -58,14 +93,15 @@ void trace_faces(const std::vector<Segment>& edges, std::vector<ScratchRing>& ou
                 });
     i = j;
   }
+  const OriginIndex origins(by_origin);
   // The edge after e: clockwise from e's reverse at its end, the first edge leaving there.
   auto next_of = [&](std::uint32_t e) {
     const std::uint64_t key = point_key(edges[e].b);
-    const auto lo =
-        std::lower_bound(by_origin.begin(), by_origin.end(), std::make_pair(key, std::uint32_t{0}));
+    const std::uint32_t at = origins.first(key);
+    if (at == OriginIndex::kEmpty) fail_stage("hole splitting", "a face does not close");
+    const auto lo = by_origin.begin() + at;
     auto hi = lo;
     while (hi != by_origin.end() && hi->first == key) ++hi;
-    if (lo == hi) fail_stage("hole splitting", "a face does not close");
     if (hi - lo == 1) return lo->second;
     const Point64 reverse{-direction(e).x, -direction(e).y};
     const auto it = std::lower_bound(lo, hi, reverse, [&](const auto& x, Point64 d) {

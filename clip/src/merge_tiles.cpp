@@ -24,6 +24,7 @@
 #include "edgeland/clip/clip.hpp"
 #include "edgeland/kernel/area.hpp"
 #include "edgeland/kernel/assert.hpp"
+#include "edgeland/kernel/bbox.hpp"
 #include "edgeland/kernel/predicates.hpp"
 #include "edgeland/kernel/supporting_line.hpp"
 #include "face_tracing.hpp"
@@ -100,33 +101,55 @@ std::vector<Segment> boundary_stretches(const PolygonSet& members) {
   return out;
 }
 
-// The ends of `stretches` lying inside `s` (on_segment_interior), ordered from s.a to s.b.
-// `ends` is sorted (x, then y), so the candidates are the run between the box's x bounds.
-void ends_inside(const Segment& s, const std::vector<Point64>& ends, std::vector<Point64>& out) {
-  out.clear();
-  const std::int64_t lo = std::min(s.a.x, s.b.x), hi = std::max(s.a.x, s.b.x);
-  const auto first = std::lower_bound(ends.begin(), ends.end(), Point64{lo, INT64_MIN});
-  const auto last = std::upper_bound(first, ends.end(), Point64{hi, INT64_MAX});
-  for (auto it = first; it != last; ++it)
-    if (on_segment_interior(*it, s)) out.push_back(*it);
-  // Collinear points sort along the segment by (x, y); reversed when s runs the other way.
-  if (s.b < s.a) std::reverse(out.begin(), out.end());
-}
-
-// Stage 1b: every stretch split at the stretch ends lying inside it.
-void split_at_touching_ends(std::vector<Segment>& stretches) {
+// The ends lying inside the stretches (on_segment_interior), as (stretch, point) pairs ordered
+// by stretch and then from its a to its b. The stretches are visited by the west side of their
+// box, so the sorted ends are read by one pointer that only moves east, without a search per
+// stretch (binary searches were most of this stage on a wide island); a stretch's candidates
+// are the ends between its box's x bounds, passed over by comparisons outside its y bounds.
+std::vector<std::pair<std::uint32_t, Point64>> ends_inside(const std::vector<Segment>& stretches) {
   std::vector<Point64> ends;
   ends.reserve(2 * stretches.size());
   for (const Segment& s : stretches) ends.insert(ends.end(), {s.a, s.b});
   std::sort(ends.begin(), ends.end());
   ends.erase(std::unique(ends.begin(), ends.end()), ends.end());
+  std::vector<std::pair<std::int64_t, std::uint32_t>> by_west(stretches.size());
+  for (std::uint32_t i = 0; i < stretches.size(); ++i)
+    by_west[i] = {std::min(stretches[i].a.x, stretches[i].b.x), i};
+  std::sort(by_west.begin(), by_west.end());
+  std::vector<std::pair<std::uint32_t, Point64>> out;
+  auto first = ends.begin();
+  for (const auto& [west, i] : by_west) {
+    const Segment& s = stretches[i];
+    const Box64 box = segment_box(s);
+    while (first != ends.end() && first->x < west) ++first;
+    for (auto it = first; it != ends.end() && it->x <= box.max.x; ++it)
+      if (it->y >= box.min.y && it->y <= box.max.y && on_segment_interior(*it, s))
+        out.push_back({i, *it});
+  }
+  // Collinear points sort along a segment by (x, y); reversed where it runs the other way.
+  std::sort(out.begin(), out.end());
+  for (auto at = out.begin(); at != out.end();) {
+    const auto end =
+        std::find_if(at, out.end(), [&](const auto& e) { return e.first != at->first; });
+    const Segment& s = stretches[at->first];
+    if (s.b < s.a) std::reverse(at, end);
+    at = end;
+  }
+  return out;
+}
+
+// Stage 1b: every stretch split at the stretch ends lying inside it.
+void split_at_touching_ends(std::vector<Segment>& stretches) {
+  const std::vector<std::pair<std::uint32_t, Point64>> inside = ends_inside(stretches);
+  if (inside.empty()) return;
   std::vector<Segment> split;
-  std::vector<Point64> inside;
-  for (const Segment& s : stretches) {
-    ends_inside(s, ends, inside);
-    Point64 from = s.a;
-    for (const Point64& p : inside) split.push_back({std::exchange(from, p), p});
-    split.push_back({from, s.b});
+  split.reserve(stretches.size() + inside.size());
+  auto next = inside.begin();
+  for (std::uint32_t i = 0; i < stretches.size(); ++i) {
+    Point64 from = stretches[i].a;
+    for (; next != inside.end() && next->first == i; ++next)
+      split.push_back({std::exchange(from, next->second), next->second});
+    split.push_back({from, stretches[i].b});
   }
   stretches = std::move(split);
 }

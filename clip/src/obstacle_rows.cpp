@@ -42,6 +42,8 @@ ObstacleRows::ObstacleRows(const std::vector<Segment>& edges,
   at.assign(first_.begin(), first_.end() - 1);
   for (std::size_t i = 0; i < edges.size(); ++i)
     each_row(edges[i], [&](std::size_t r) { filed_[at[r]++] = static_cast<std::uint32_t>(i); });
+  bridge_head_.assign(n, kNone);
+  bridge_tail_.assign(n, kNone);
 }
 
 std::size_t ObstacleRows::row(std::int64_t y) const {
@@ -49,22 +51,34 @@ std::size_t ObstacleRows::row(std::int64_t y) const {
   return std::min<std::size_t>(rows() - 1, offset(y, y_min_) / row_height_);
 }
 
+// Appended to the tail of each row it crosses, so every row's list stays ascending.
 void ObstacleRows::add_bridge(std::uint32_t index, const Segment& s) {
-  bridges_.push_back({s, index});
+  const std::size_t last = row(std::max(s.a.y, s.b.y));
+  for (std::size_t r = row(std::min(s.a.y, s.b.y)); r <= last; ++r) {
+    const auto at = static_cast<std::uint32_t>(bridges_.size());
+    bridges_.push_back({index, kNone, s});
+    if (bridge_tail_[r] == kNone)
+      bridge_head_[r] = at;
+    else
+      bridges_[bridge_tail_[r]].next = at;
+    bridge_tail_[r] = at;
+  }
 }
 
-void ObstacleRows::obstacles_in(std::int64_t lo, std::int64_t hi,
-                                ScratchVector<std::uint32_t>& out) const {
+void ObstacleRows::obstacles_in(std::int64_t lo, std::int64_t hi, ScratchVector<std::uint32_t>& out,
+                                bool ordered) const {
   out.clear();
   const std::size_t first = row(lo), last = row(hi);
-  for (std::size_t r = first; r <= last; ++r)
+  for (std::size_t r = first; r <= last; ++r) {
     out.insert(out.end(), filed_.begin() + first_[r], filed_.begin() + first_[r + 1]);
-  if (first != last) {  // an edge of several rows is filed in each
+    for (std::uint32_t b = bridge_head_[r]; b != kNone; b = bridges_[b].next)
+      if (meets(bridges_[b].s, lo, hi)) out.push_back(bridges_[b].index);
+  }
+  // One row: its ring edges, then its bridges, each ascending (bridges come after ring edges).
+  if (ordered && first != last) {  // an obstacle of several rows is filed in each
     std::sort(out.begin(), out.end());
     out.erase(std::unique(out.begin(), out.end()), out.end());
   }
-  for (const auto& [s, index] : bridges_)  // after every ring edge: still ascending
-    if (meets(s, lo, hi)) out.push_back(index);
 }
 
 void ObstacleRows::vertices_in(std::int64_t lo, std::int64_t hi,
@@ -72,7 +86,6 @@ void ObstacleRows::vertices_in(std::int64_t lo, std::int64_t hi,
   out.clear();
   const auto first = std::lower_bound(by_y_.begin(), by_y_.end(), std::make_pair(lo, 0u));
   for (auto it = first; it != by_y_.end() && it->first <= hi; ++it) out.push_back(it->second);
-  std::sort(out.begin(), out.end());
 }
 
 }  // namespace edgeland::detail

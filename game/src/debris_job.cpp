@@ -3,9 +3,10 @@
 #include <map>
 
 #include "edgeland/clip/clip.hpp"
-#include "edgeland/game/render_meshes.hpp"
+#include "edgeland/kernel/assert.hpp"
 #include "edgeland/kernel/centroid.hpp"
 #include "edgeland/kernel/convex_pieces.hpp"
+#include "edgeland/kernel/triangulation.hpp"
 
 namespace edgeland::game_detail {
 namespace {
@@ -18,8 +19,14 @@ std::size_t vertices_of(const PolygonSet& set) {
 
 }  // namespace
 
+// One piece is its own merge: a landscape polygon is in canonical form, as merge_tiles writes
+// it (most islands a game cuts loose are one polygon; checked mode compares the two).
 IslandRegion merged_region(Material material, PolygonSet pieces, bool checked) {
-  return {material, merge_tiles(ValidSet(std::move(pieces)), {.checked = checked}).set.polygons()};
+  if (pieces.size() == 1 && !checked) return {material, std::move(pieces)};
+  PolygonSet merged = merge_tiles(ValidSet(pieces), {.checked = checked}).set.polygons();
+  if (checked && pieces.size() == 1 && merged != pieces)
+    detail::fail_stage("debris", "a one-polygon island's merge is not the polygon itself");
+  return {material, std::move(merged)};
 }
 
 // The area, centroid and bounds are the island's (exact, O(n)); the rest waits for the steps.
@@ -56,16 +63,24 @@ void DebrisJob::step(const GameOptions& options) {
   }
   const IslandRegion& r = debris_.regions[region_];
   const Polygon& p = r.polygons[polygon_];
-  for (Polygon& piece : convex_pieces(p, options.max_piece_vertices))
-    debris_.pieces.push_back({r.material, std::move(piece)});
-  if (options.meshes) debris_.meshes.push_back(polygon_mesh(0, r.material, p));
+  // The mesh's triangles are the pieces' first stage: made once. The polygon is merge_tiles'
+  // output (or a landscape polygon): valid, so not validated again.
+  TrianglesAndPieces both =
+      detail::triangles_and_convex_pieces_valid(p, options.max_piece_vertices);
+  add_pieces(r.material, std::move(both.pieces));
+  if (options.meshes) debris_.meshes.push_back({0, r.material, p, std::move(both.triangles)});
   if (++polygon_ == r.polygons.size()) ++region_, polygon_ = 0;
 }
 
-bool DebrisJob::advance(const GameOptions& options, std::size_t& spent, bool all) {
+void DebrisJob::add_pieces(Material material, std::vector<Polygon> pieces) {
+  for (Polygon& piece : pieces) debris_.pieces.push_back({material, std::move(piece)});
+}
+
+bool DebrisJob::advance(const GameOptions& options, std::size_t& spent, Pace pace) {
   while (!done()) {
     const std::size_t cost = next_cost();
-    if (!all && spent != 0 && spent + cost > options.debris_budget) break;
+    const bool forced = pace == Pace::kFinish || (pace == Pace::kFirstStep && spent == 0);
+    if (!forced && spent + cost > options.debris_budget) break;
     step(options);
     spent += cost;
   }

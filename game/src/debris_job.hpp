@@ -7,6 +7,7 @@
 // meanwhile, the carve finds it stale and drops the job (the island tracker has queued what the
 // edit left).
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "edgeland/game/game_types.hpp"
@@ -22,9 +23,15 @@ class DebrisJob {
  public:
   DebrisJob(Island island, bool checked);
 
-  // Steps while their costs fit in options.debris_budget - `spent` (adding them to `spent`);
-  // one step whatever its cost when `spent` is 0, every step left when `all`. Returns done().
-  bool advance(const GameOptions& options, std::size_t& spent, bool all);
+  // How far advance() goes past the budget.
+  enum class Pace : std::uint8_t {
+    kWithinBudget,  // only steps that fit
+    kFirstStep,     // and one step whatever its cost when nothing is spent yet
+    kFinish,        // every step left
+  };
+  // Steps while their costs fit in options.debris_budget - `spent` (adding them to `spent`),
+  // as far as `pace` allows. Returns done().
+  bool advance(const GameOptions& options, std::size_t& spent, Pace pace);
   bool done() const noexcept;
   const Island& island() const noexcept { return island_; }
   std::size_t vertices() const noexcept { return vertices_; }
@@ -33,6 +40,7 @@ class DebrisJob {
  private:
   std::size_t next_cost() const;
   void step(const GameOptions& options);
+  void add_pieces(Material material, std::vector<Polygon> pieces);
 
   Island island_;
   bool checked_;

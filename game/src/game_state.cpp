@@ -4,8 +4,8 @@
 
 #include "debris.hpp"
 #include "edgeland/clip/clip.hpp"
-#include "edgeland/game/render_meshes.hpp"
 #include "island_walk.hpp"
+#include "landscape_meshes.hpp"
 #include "update_merge.hpp"
 
 namespace edgeland::game_detail {
@@ -184,15 +184,22 @@ void GameState::drain_debris(GameUpdate& out) {
   for (Debris& d : detached.debris) out.debris.push_back(std::move(d));
 }
 
-// Oldest first, while the budget lasts (the first gets a step whatever it costs); a job that
-// has waited options_.max_debris_wait updates is finished whatever the budget. Queued later,
-// a job has waited no longer than those before it, so the first that stops ends the pass.
+// Oldest first, while the budget lasts; the first gets a step whatever it costs unless it was
+// found in this update (which already paid for the edit and for finding it: a big island's first
+// step, its merge, waits for the next), and a job that has waited options_.max_debris_wait
+// updates is finished whatever the budget. Queued later, a job has waited no longer than those
+// before it, so the first that stops ends the pass.
+DebrisJob::Pace GameState::pace_of(const Waiting& w) const {
+  if (w.age >= options_.max_debris_wait) return DebrisJob::Pace::kFinish;
+  return w.age == 0 ? DebrisJob::Pace::kWithinBudget : DebrisJob::Pace::kFirstStep;
+}
+
 std::vector<DebrisJob> GameState::advance_jobs() {
   std::vector<DebrisJob> finished;
   std::size_t spent = 0;
   while (!queue_.empty()) {
     Waiting& w = queue_.front();
-    if (!w.job.advance(options_, spent, w.age >= options_.max_debris_wait)) break;
+    if (!w.job.advance(options_, spent, pace_of(w))) break;
     finished.push_back(std::move(w.job));
     queue_.pop_front();
   }
@@ -203,7 +210,7 @@ std::vector<DebrisJob> GameState::advance_jobs() {
 void GameState::finish(GameUpdate& out) const {
   finish_changes(out.changes, land_);
   finish_chains(out.chains);
-  if (options_.meshes) out.meshes = mesh_update(out.changes);
+  if (options_.meshes) out.meshes = landscape_mesh_update(out.changes);
   out.debris_waiting = queue_.size();
   out.work.cells_scanned = static_cast<std::size_t>(store_.scans() - scans_before_);
   out.work.boundary_passes = static_cast<std::size_t>(solid_boundary_runs() - passes_before_);

@@ -52,6 +52,7 @@ class GameState {
                      GameUpdate& out);
   void drain_debris(GameUpdate& out);
   std::vector<DebrisJob> advance_jobs();
+  DebrisJob::Pace pace_of(const Waiting& w) const;
   void queue_islands(std::vector<Island> islands);
   void finish(GameUpdate& out) const;
   void note_fills(std::span<const Edit> edits);

@@ -4,6 +4,7 @@
 
 #include "chain_tracing.hpp"
 #include "edgeland/kernel/around_vertex.hpp"
+#include "edgeland/kernel/scratch.hpp"
 
 namespace edgeland::game_detail {
 namespace {
@@ -12,13 +13,15 @@ Point64 minus(Point64 a, Point64 b) { return {a.x - b.x, a.y - b.y}; }
 
 // The chains around p whose first (starting) or last (ending) point is p, and for each the
 // direction of its segment at p.
+// Scratch storage (scratch.hpp): asked twice for every chain an update traces, these allocated
+// three arrays each time.
 struct Candidates {
-  std::vector<const SurfaceChain*> chains;
-  std::vector<Point64> directions;
+  detail::ScratchVector<const SurfaceChain*> chains;
+  detail::ScratchVector<Point64> directions;
 };
 
 Candidates candidates_at(const ChainsAround& around, Point64 p, bool starting) {
-  std::vector<const SurfaceChain*> all;
+  detail::ScratchVector<const SurfaceChain*> all;
   around(p, all);
   Candidates out;
   for (const SurfaceChain* c : all) {

@@ -2,12 +2,15 @@
 
 #include <algorithm>
 
+#include "edgeland/kernel/scratch.hpp"
 #include "edgeland/kernel/splitmix64.hpp"
 #include "solid_boundary.hpp"
 #include "union_find.hpp"
 
 namespace edgeland::game_detail {
 namespace {
+
+using detail::ScratchVector;
 
 // splitmix64's first output from state x: spreads ids so that sums of different sets rarely
 // collide.
@@ -28,17 +31,20 @@ void join_abutting(std::vector<Port>& side) {
 }
 
 // Groups 0..n-1 united into classes; keeps the classes that still have ports (renumbered in
-// order of first appearance along the sides) and closes the others.
-Summary finish(std::array<std::vector<Port>, 4> ports, std::vector<Group> groups, UnionFind& uf) {
+// order of first appearance along the sides) and closes the others. `out.ports` holds the ports
+// (groups numbered 0..n-1) on entry; its other lists are written anew, reusing their storage.
+void finish(std::span<Group> groups, ScratchUnionFind& uf, Summary& out) {
   for (std::uint32_t g = 0; g < groups.size(); ++g) {
     const std::uint32_t root = uf.find(g);
     if (root == g) continue;
     groups[root].anchored = groups[root].anchored || groups[g].anchored;
     groups[root].key.add(groups[g].key);
   }
-  Summary out;
-  std::vector<std::uint32_t> renumbered(groups.size(), kNotSolid);
-  for (std::vector<Port>& side : ports)
+  out.groups.clear();
+  out.closed.clear();
+  ScratchVector<std::uint32_t> renumbered;
+  renumbered.assign(groups.size(), kNotSolid);
+  for (std::vector<Port>& side : out.ports)
     for (Port& p : side) {
       std::uint32_t& n = renumbered[uf.find(p.group)];
       if (n == kNotSolid) {
@@ -47,20 +53,18 @@ Summary finish(std::array<std::vector<Port>, 4> ports, std::vector<Group> groups
       }
       p.group = n;
     }
-  for (std::vector<Port>& side : ports) join_abutting(side);
-  out.ports = std::move(ports);
+  for (std::vector<Port>& side : out.ports) join_abutting(side);
   for (std::uint32_t g = 0; g < groups.size(); ++g) {
     const Group& root = groups[g];
     if (uf.find(g) != g || renumbered[g] != kNotSolid || root.anchored) continue;
     out.closed.push_back({root.key, root.representative, root.representative_cell});
   }
-  return out;
 }
 
 // Unites the groups of two port lists facing each other across a line wherever they overlap
 // over a positive length (both ascending, disjoint within each).
 void match(std::span<const Port> a, std::uint32_t a_offset, std::span<const Port> b,
-           std::uint32_t b_offset, UnionFind& uf, std::size_t& matched) {
+           std::uint32_t b_offset, ScratchUnionFind& uf, std::size_t& matched) {
   matched += a.size() + b.size();
   std::size_t i = 0, j = 0;
   while (i < a.size() && j < b.size()) {
@@ -86,8 +90,9 @@ void IslandKey::add(const IslandKey& o) {
   mix += o.mix;
 }
 
-Summary leaf_summary(const CellScan& cell) {
-  std::vector<Group> groups(cell.groups);
+void leaf_summary(const CellScan& cell, Summary& out) {
+  ScratchVector<Group> groups;
+  groups.assign(cell.groups, Group{});
   const std::span<const PolygonId> ids = cell.ids();
   for (std::uint32_t i = 0; i < cell.group_of.size(); ++i) {
     const std::uint32_t g = cell.group_of[i];
@@ -99,19 +104,22 @@ Summary leaf_summary(const CellScan& cell) {
       groups[g].key.add(key);
     }
   }
-  UnionFind uf(groups.size());
-  return finish(cell.ports, std::move(groups), uf);
+  for (std::size_t k = 0; k < out.ports.size(); ++k)
+    out.ports[k].assign(cell.ports[k].begin(), cell.ports[k].end());
+  ScratchUnionFind uf(groups.size());
+  finish(groups, uf, out);
 }
 
-Summary combine(const Box64& node, std::span<const Box64> children,
-                std::span<const Summary* const> summaries, std::size_t& matched) {
-  std::vector<std::uint32_t> offset(children.size());
-  std::vector<Group> groups;
+void combine(const Box64& node, std::span<const Box64> children,
+             std::span<const Summary* const> summaries, std::size_t& matched, Summary& out) {
+  ScratchVector<std::uint32_t> offset;
+  ScratchVector<Group> groups;
+  offset.resize(children.size());
   for (std::size_t c = 0; c < children.size(); ++c) {
     offset[c] = static_cast<std::uint32_t>(groups.size());
     groups.insert(groups.end(), summaries[c]->groups.begin(), summaries[c]->groups.end());
   }
-  UnionFind uf(groups.size());
+  ScratchUnionFind uf(groups.size());
   for (std::size_t a = 0; a < children.size(); ++a)
     for (std::size_t b = 0; b < children.size(); ++b) {
       const Box64 &ba = children[a], &bb = children[b];
@@ -123,19 +131,19 @@ Summary combine(const Box64& node, std::span<const Box64> children,
         match(sa.ports[side_index(Side::kTop)], offset[a], sb.ports[side_index(Side::kBottom)],
               offset[b], uf, matched);
     }
-  std::array<std::vector<Port>, 4> ports;
   for (Side s : kSides) {
-    std::vector<Port>& out = ports[side_index(s)];
+    std::vector<Port>& side = out.ports[side_index(s)];
+    side.clear();
     for (std::size_t c = 0; c < children.size(); ++c) {
       if (!on_side_of(children[c], s, node)) continue;
       for (Port p : summaries[c]->ports[side_index(s)]) {
         p.group += offset[c];
-        out.push_back(p);
+        side.push_back(p);
       }
     }
-    std::sort(out.begin(), out.end(), [](const Port& l, const Port& r) { return l.lo < r.lo; });
+    std::sort(side.begin(), side.end(), [](const Port& l, const Port& r) { return l.lo < r.lo; });
   }
-  return finish(std::move(ports), std::move(groups), uf);
+  finish(groups, uf, out);
 }
 
 }  // namespace edgeland::game_detail

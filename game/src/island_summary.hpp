@@ -47,12 +47,13 @@ struct Summary {
   std::vector<ClosedIsland> closed;        // unanchored groups without ports
 };
 
-// A cell's summary from its scan. O(polygons).
-Summary leaf_summary(const CellScan& cell);
+// A cell's summary from its scan, written over `out` (its storage reused). O(polygons).
+void leaf_summary(const CellScan& cell, Summary& out);
 
-// A node's summary from its children's (boxes and summaries in the tree's order). O(ports of
-// the children). `matched` counts the ports looked at.
-Summary combine(const Box64& node, std::span<const Box64> children,
-                std::span<const Summary* const> summaries, std::size_t& matched);
+// A node's summary from its children's (boxes and summaries in the tree's order), written over
+// `out` (its storage reused; not one of the children's). O(ports of the children). `matched`
+// counts the ports looked at.
+void combine(const Box64& node, std::span<const Box64> children,
+             std::span<const Summary* const> summaries, std::size_t& matched, Summary& out);
 
 }  // namespace edgeland::game_detail

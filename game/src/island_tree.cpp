@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "edgeland/kernel/scratch.hpp"
 #include "edgeland/spatial/tree_boxes.hpp"
 
 namespace edgeland::game_detail {
@@ -78,15 +79,15 @@ void IslandTree::recompute(Node& n, const CellStore& store) {
   for (const auto& c : n.children) recompute(*c, store);
   ++last_nodes_;
   if (n.children.empty()) {
-    n.summary = leaf_summary(store.at(n.box).scan);
+    leaf_summary(store.at(n.box).scan, n.summary);
   } else {
-    std::vector<Box64> boxes;
-    std::vector<const Summary*> summaries;
+    detail::ScratchVector<Box64> boxes;
+    detail::ScratchVector<const Summary*> summaries;
     for (const auto& c : n.children) {
       boxes.push_back(c->box);
       summaries.push_back(&c->summary);
     }
-    n.summary = combine(n.box, boxes, summaries, last_ports_);
+    combine(n.box, boxes, summaries, last_ports_, n.summary);
   }
   registry_->put_in(n.summary);
   n.dirty = false;

@@ -2,7 +2,27 @@
 
 #include <algorithm>
 
+#include "edgeland/kernel/assert.hpp"
+#include "edgeland/kernel/triangulation.hpp"
+#include "landscape_meshes.hpp"
+
 namespace edgeland {
+namespace game_detail {
+
+PolygonMesh landscape_mesh(PolygonId id, Material material, const Polygon& polygon) {
+  if constexpr (EDGELAND_ASSERTS_ENABLED) detail::require_valid_polygon(polygon);
+  return {id, material, polygon, detail::triangulate_valid(polygon)};
+}
+
+MeshUpdate landscape_mesh_update(const ChangeSet& changes) {
+  MeshUpdate out;
+  out.dropped = changes.removed;
+  for (const ChangeSet::Added& a : changes.added)
+    out.built.push_back(landscape_mesh(a.id, a.material, a.polygon));
+  return out;
+}
+
+}  // namespace game_detail
 
 PolygonMesh polygon_mesh(PolygonId id, Material material, const Polygon& polygon) {
   return {id, material, polygon, triangulate(polygon)};
@@ -19,7 +39,7 @@ MeshUpdate mesh_update(const ChangeSet& changes) {
 std::vector<PolygonMesh> all_meshes(const Landscape& world) {
   std::vector<PolygonMesh> out;
   world.polygons_in(world.world(), [&](const PolygonView& v) {
-    out.push_back(polygon_mesh(v.id, v.material, *v.polygon));
+    out.push_back(game_detail::landscape_mesh(v.id, v.material, *v.polygon));
     return true;
   });
   std::sort(out.begin(), out.end(),

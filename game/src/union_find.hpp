@@ -5,11 +5,14 @@
 #include <cstdint>
 #include <vector>
 
+#include "edgeland/kernel/scratch.hpp"
+
 namespace edgeland::game_detail {
 
-class UnionFind {
+template <class Storage>
+class BasicUnionFind {
  public:
-  explicit UnionFind(std::size_t n = 0) { reset(n); }
+  explicit BasicUnionFind(std::size_t n = 0) { reset(n); }
   void reset(std::size_t n) {
     parent_.resize(n);
     for (std::size_t i = 0; i < n; ++i) parent_[i] = static_cast<std::uint32_t>(i);
@@ -26,7 +29,13 @@ class UnionFind {
   std::size_t size() const { return parent_.size(); }
 
  private:
-  std::vector<std::uint32_t> parent_;
+  Storage parent_;
 };
+
+// One kept in a long-lived object (a cell's scan).
+using UnionFind = BasicUnionFind<std::vector<std::uint32_t>>;
+// A temporary one on the thread's spare storage (scratch.hpp): no allocation once warm. Never a
+// member of a long-lived object (its storage goes back to the thread's spares when it dies).
+using ScratchUnionFind = BasicUnionFind<detail::ScratchVector<std::uint32_t>>;
 
 }  // namespace edgeland::game_detail

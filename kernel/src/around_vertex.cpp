@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "edgeland/kernel/predicates.hpp"
+#include "edgeland/kernel/scratch.hpp"
 
 namespace edgeland {
 namespace {
@@ -59,7 +60,8 @@ std::optional<std::size_t> first_clockwise(Point64 from, std::span<const Point64
 std::optional<std::size_t> first_counterclockwise(Point64 from, std::span<const Point64> dirs,
                                                   const BlockedQuadrants& blocked) {
   // Mirrored in the x axis a counter-clockwise sweep is a clockwise one; quadrant q becomes 3 - q.
-  std::vector<Point64> mirror(dirs.size());
+  detail::ScratchVector<Point64> mirror;
+  mirror.resize(dirs.size());
   for (std::size_t i = 0; i < dirs.size(); ++i) mirror[i] = mirrored(dirs[i]);
   const BlockedQuadrants flipped{blocked[3], blocked[2], blocked[1], blocked[0]};
   return first_clockwise(mirrored(from), mirror, flipped);

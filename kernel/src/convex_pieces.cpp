@@ -6,9 +6,9 @@
 #include "edgeland/kernel/assert.hpp"
 #include "edgeland/kernel/errors.hpp"
 #include "edgeland/kernel/predicates.hpp"
+#include "edgeland/kernel/triangulation.hpp"
 #include "hertel_mehlhorn.hpp"
 #include "piece_mesh.hpp"
-#include "triangulation.hpp"
 
 namespace edgeland {
 namespace {
@@ -51,13 +51,10 @@ std::vector<Polygon> pieces_of(const detail::PieceMesh& mesh) {
   return pieces;
 }
 
-}  // namespace
-
-std::vector<Polygon> convex_pieces(const Polygon& polygon, std::size_t max_vertices) {
-  if (max_vertices < 3) throw InvalidArgument("max_vertices", max_vertices, 3);
-  detail::require_valid_polygon(polygon);
-  const Polygon corners = corners_of(polygon);
-  detail::PieceMesh mesh(corners, detail::triangulate_valid(corners));
+// Stages 2 and 3 over the triangles of the polygon's corners.
+std::vector<Polygon> pieces_from(const Polygon& polygon, const Polygon& corners,
+                                 const std::vector<Triangle>& triangles, std::size_t max_vertices) {
+  detail::PieceMesh mesh(corners, triangles);
   detail::merge_convex_pieces(mesh, max_vertices);
   std::vector<Polygon> pieces = pieces_of(mesh);
   if constexpr (EDGELAND_ASSERTS_ENABLED)
@@ -65,4 +62,41 @@ std::vector<Polygon> convex_pieces(const Polygon& polygon, std::size_t max_verti
   return pieces;
 }
 
+void require_piece_size(std::size_t max_vertices) {
+  if (max_vertices < 3) throw InvalidArgument("max_vertices", max_vertices, 3);
+}
+
+}  // namespace
+
+std::vector<Polygon> convex_pieces(const Polygon& polygon, std::size_t max_vertices) {
+  require_piece_size(max_vertices);
+  detail::require_valid_polygon(polygon);
+  const Polygon corners = corners_of(polygon);
+  return pieces_from(polygon, corners, detail::triangulate_valid(corners), max_vertices);
+}
+
+// triangulate() keeps straight vertices and stage 1 drops them, so the triangles are shared only
+// when there are none.
+TrianglesAndPieces triangles_and_convex_pieces(const Polygon& polygon, std::size_t max_vertices) {
+  require_piece_size(max_vertices);
+  detail::require_valid_polygon(polygon);
+  return detail::triangles_and_convex_pieces_valid(polygon, max_vertices);
+}
+
+namespace detail {
+
+TrianglesAndPieces triangles_and_convex_pieces_valid(const Polygon& polygon,
+                                                     std::size_t max_vertices) {
+  require_piece_size(max_vertices);
+  if constexpr (EDGELAND_ASSERTS_ENABLED) require_valid_polygon(polygon);
+  TrianglesAndPieces out;
+  out.triangles = triangulate_valid(polygon);
+  const Polygon corners = corners_of(polygon);
+  out.pieces = corners.size() == polygon.size()
+                   ? pieces_from(polygon, corners, out.triangles, max_vertices)
+                   : pieces_from(polygon, corners, triangulate_valid(corners), max_vertices);
+  return out;
+}
+
+}  // namespace detail
 }  // namespace edgeland

@@ -14,6 +14,8 @@
 
 #include "edgeland/kernel/assert.hpp"
 #include "edgeland/kernel/predicates.hpp"
+#include "edgeland/kernel/scratch.hpp"
+#include "node_arena.hpp"
 #include "sweep_order.hpp"
 
 namespace edgeland::detail {
@@ -71,10 +73,10 @@ class MonotoneSweep {
   explicit MonotoneSweep(const Polygon& polygon)
       : p_(polygon),
         n_(static_cast<std::uint32_t>(polygon.size())),
-        status_(WestToEast{&polygon}),
-        kind_(n_),
-        helper_(n_),
-        where_(n_, status_.end()) {
+        status_(WestToEast{&polygon}, ArenaAllocator<std::uint32_t>(&arena_)) {
+    kind_.resize(n_);
+    helper_.resize(n_);
+    where_.assign(n_, status_.end());
     for (std::uint32_t i = 0; i < n_; ++i) kind_[i] = classify(p_, i);
   }
 
@@ -146,17 +148,22 @@ class MonotoneSweep {
     return *std::prev(it);
   }
 
+  // The status set's nodes from an arena, the arrays from the thread's spare storage
+  // (scratch.hpp): a landscape polygon's sweep allocates nothing once the thread is warm.
+  using Status = std::set<std::uint32_t, WestToEast, ArenaAllocator<std::uint32_t>>;
   const Polygon& p_;
   const std::uint32_t n_;
-  std::set<std::uint32_t, WestToEast> status_;
-  std::vector<VertexKind> kind_;
-  std::vector<std::uint32_t> helper_;  // per status edge
-  std::vector<std::set<std::uint32_t, WestToEast>::iterator> where_;
+  NodeArena arena_;
+  Status status_;
+  ScratchVector<VertexKind> kind_;
+  ScratchVector<std::uint32_t> helper_;  // per status edge
+  ScratchVector<Status::iterator> where_;
   std::vector<Diagonal> diagonals_;
 };
 
-std::vector<std::uint32_t> sweep_order(const Polygon& p) {
-  std::vector<std::uint32_t> order(p.size());
+ScratchVector<std::uint32_t> sweep_order(const Polygon& p) {
+  ScratchVector<std::uint32_t> order;
+  order.resize(p.size());
   for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
   std::sort(order.begin(), order.end(),
             [&](std::uint32_t a, std::uint32_t b) { return sweeps_before(p[a], p[b]); });

@@ -10,6 +10,7 @@
 
 #include "edgeland/kernel/assert.hpp"
 #include "edgeland/kernel/predicates.hpp"
+#include "edgeland/kernel/scratch.hpp"
 #include "sweep_order.hpp"
 
 namespace edgeland::detail {
@@ -22,14 +23,14 @@ struct ChainVertex {
 
 // The face's vertices in sweep order, each with its chain; the first and last on both chains
 // (marked left and right respectively, which no step depends on). O(m): two sorted chains.
-std::vector<ChainVertex> merge_chains(const Polygon& p, std::span<const std::uint32_t> face) {
+ScratchVector<ChainVertex> merge_chains(const Polygon& p, std::span<const std::uint32_t> face) {
   const std::size_t m = face.size();
   std::size_t top = 0, bottom = 0;
   for (std::size_t k = 1; k < m; ++k) {
     if (sweeps_before(p[face[k]], p[face[top]])) top = k;
     if (sweeps_before(p[face[bottom]], p[face[k]])) bottom = k;
   }
-  std::vector<ChainVertex> order;
+  ScratchVector<ChainVertex> order;
   order.reserve(m);
   order.push_back({face[top], true});
   std::size_t l = (top + 1) % m, r = (top + m - 1) % m;  // next down each chain
@@ -52,11 +53,11 @@ class StackTriangulator {
   StackTriangulator(const Polygon& p, std::vector<Triangle>& out) : p_(p), out_(out) {}
 
   void run(const std::vector<ChainVertex>& order) {
-    stack_ = {order[0], order[1]};
+    restart(order[0], order[1]);
     for (std::size_t j = 2; j + 1 < order.size(); ++j) {
       if (order[j].left != stack_.back().left) {
         fan_to(order[j]);
-        stack_ = {order[j - 1], order[j]};
+        restart(order[j - 1], order[j]);
       } else {
         cut_convex_corners(order[j]);
       }
@@ -101,9 +102,15 @@ class StackTriangulator {
     out_.push_back(t);
   }
 
+  void restart(const ChainVertex& a, const ChainVertex& b) {
+    stack_.clear();
+    stack_.push_back(a);
+    stack_.push_back(b);
+  }
+
   const Polygon& p_;
   std::vector<Triangle>& out_;
-  std::vector<ChainVertex> stack_;
+  ScratchVector<ChainVertex> stack_;  // scratch storage: a temporary of every face
 };
 
 }  // namespace

@@ -5,6 +5,7 @@
 // same, but Emscripten's libc++ (the browser build, TOOLCHAIN.md pitfall 16) has no
 // <memory_resource>.
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <memory>
 #include <vector>
@@ -17,23 +18,26 @@ class NodeArena {
   NodeArena(const NodeArena&) = delete;
   NodeArena& operator=(const NodeArena&) = delete;
 
-  // `align` at most alignof(std::max_align_t): a block from new[] starts aligned for it.
+  // `align` at most alignof(std::max_align_t): a block from new[], and the inline one, start
+  // aligned for it.
   void* allocate(std::size_t bytes, std::size_t align) {
     std::size_t at = (used_ + align - 1) / align * align;
-    if (blocks_.empty() || at + bytes > block_size_) {
+    if (at + bytes > block_size_) {
       // Blocks grow geometrically, as the standard monotonic resource's do.
       block_size_ = std::max(blocks_.empty() ? kFirstBlock : 2 * block_size_, bytes);
       blocks_.push_back(std::make_unique<std::byte[]>(block_size_));
       at = 0;
     }
     used_ = at + bytes;
-    return blocks_.back().get() + at;
+    return (blocks_.empty() ? inline_.data() : blocks_.back().get()) + at;
   }
 
  private:
+  static constexpr std::size_t kInlineBlock = 1024;  // a small polygon's sweep: no heap at all
   static constexpr std::size_t kFirstBlock = 4096;
+  alignas(std::max_align_t) std::array<std::byte, kInlineBlock> inline_;
   std::vector<std::unique_ptr<std::byte[]>> blocks_;
-  std::size_t block_size_ = 0;
+  std::size_t block_size_ = kInlineBlock;
   std::size_t used_ = 0;
 };
 

@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "edgeland/kernel/predicates.hpp"
+#include "edgeland/kernel/scratch.hpp"
 
 namespace edgeland::detail {
 namespace {
@@ -20,8 +21,8 @@ struct Side {
 // The sides leaving each vertex v, counter-clockwise from v's outgoing polygon edge: first the
 // edge to v + 1, then the diagonals, then the edge to v - 1. Rows are offsets into `sides`.
 struct SideRows {
-  std::vector<Side> sides;
-  std::vector<std::uint32_t> first;  // per vertex, and one past the end
+  ScratchVector<Side> sides;
+  ScratchVector<std::uint32_t> first;  // per vertex, and one past the end
 };
 
 // Whether w1 comes before w2 counter-clockwise around v, starting at direction v -> next. Both
@@ -43,7 +44,8 @@ SideRows side_rows(const Polygon& p, const std::vector<Diagonal>& diagonals) {
   }
   for (std::uint32_t v = 0; v < n; ++v) rows.first[v + 1] += rows.first[v] + 2;
   rows.sides.resize(rows.first[n]);
-  std::vector<std::uint32_t> fill(rows.first.begin(), rows.first.end() - 1);
+  ScratchVector<std::uint32_t> fill;
+  fill.assign(rows.first.begin(), rows.first.end() - 1);
   for (std::uint32_t v = 0; v < n; ++v) rows.sides[fill[v]++] = {v + 1 == n ? 0 : v + 1};
   for (std::uint32_t d = 0; d < diagonals.size(); ++d) {
     rows.sides[fill[diagonals[d].from]++] = {diagonals[d].to, d};
@@ -59,10 +61,11 @@ SideRows side_rows(const Polygon& p, const std::vector<Diagonal>& diagonals) {
 }
 
 // For each side u -> v, the index of its reverse v -> u.
-std::vector<std::uint32_t> reverse_sides(const SideRows& rows, std::size_t diagonal_count) {
+ScratchVector<std::uint32_t> reverse_sides(const SideRows& rows, std::size_t diagonal_count) {
   const auto n = static_cast<std::uint32_t>(rows.first.size() - 1);
-  std::vector<std::uint32_t> reverse(rows.sides.size());
-  std::vector<std::uint32_t> diagonal_side(2 * diagonal_count, kPolygonEdge);
+  ScratchVector<std::uint32_t> reverse, diagonal_side;
+  reverse.resize(rows.sides.size());
+  diagonal_side.assign(2 * diagonal_count, kPolygonEdge);
   for (std::uint32_t v = 0; v < n; ++v) {
     const std::uint32_t out = rows.first[v], last = rows.first[v + 1] - 1;
     const std::uint32_t next = v + 1 == n ? 0 : v + 1;
@@ -85,10 +88,11 @@ std::vector<std::uint32_t> reverse_sides(const SideRows& rows, std::size_t diago
 
 Faces faces_cut_by(const Polygon& polygon, const std::vector<Diagonal>& diagonals) {
   const SideRows rows = side_rows(polygon, diagonals);
-  const std::vector<std::uint32_t> reverse = reverse_sides(rows, diagonals.size());
+  const ScratchVector<std::uint32_t> reverse = reverse_sides(rows, diagonals.size());
   const auto n = static_cast<std::uint32_t>(polygon.size());
   // Sides with the interior on their left: all but each row's last (v -> v - 1, outside left).
-  std::vector<char> done(rows.sides.size(), 0);
+  ScratchVector<char> done;
+  done.assign(rows.sides.size(), 0);
   for (std::uint32_t v = 0; v < n; ++v) done[rows.first[v + 1] - 1] = 1;
   Faces faces;
   faces.vertices.reserve(n + 2 * diagonals.size());

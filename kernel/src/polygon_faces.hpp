@@ -5,15 +5,18 @@
 #include <vector>
 
 #include "edgeland/kernel/polygon.hpp"
+#include "edgeland/kernel/scratch.hpp"
 #include "monotone_partition.hpp"
 
 namespace edgeland::detail {
 
 // Faces as runs of vertex indices, each counter-clockwise: face f is
 // vertices[offsets[f] .. offsets[f + 1]).
+// Scratch storage (scratch.hpp): a temporary of triangulate(), made for every polygon meshed.
 struct Faces {
-  std::vector<std::uint32_t> vertices;
-  std::vector<std::uint32_t> offsets{0};
+  Faces() { offsets.push_back(0); }
+  ScratchVector<std::uint32_t> vertices;
+  ScratchVector<std::uint32_t> offsets;
 
   std::size_t count() const { return offsets.size() - 1; }
   std::span<const std::uint32_t> face(std::size_t f) const {

@@ -4,11 +4,11 @@
 
 #include "edgeland/kernel/assert.hpp"
 #include "edgeland/kernel/errors.hpp"
+#include "edgeland/kernel/triangulation.hpp"
 #include "edgeland/kernel/validate.hpp"
 #include "monotone_partition.hpp"
 #include "monotone_triangulation.hpp"
 #include "polygon_faces.hpp"
-#include "triangulation.hpp"
 #include "triangulation_checks.hpp"
 
 namespace edgeland {

@@ -1,5 +1,7 @@
 #include "canonical_cell.hpp"
 
+#include <vector>
+
 #include "edgeland/kernel/canonical_form.hpp"
 #include "edgeland/kernel/predicates.hpp"
 
@@ -29,12 +31,15 @@ std::optional<bool> share_a_segment(const Polygon& a, const Box64& a_box, const 
   return false;
 }
 
-// Whether every two polygons of one material meet at vertices at most. nullopt: too large to
-// tell this way.
-std::optional<bool> materials_meet_at_vertices_only(const Node& cell) {
+// Whether every two of these polygons (indices into the cell) of one material meet at vertices
+// at most. nullopt: too large to tell this way.
+std::optional<bool> materials_meet_at_vertices_only(const Node& cell,
+                                                    std::span<const std::size_t> members) {
   const PolygonSet& polys = cell.polygon_set();
-  for (std::size_t i = 0; i < polys.size(); ++i) {
-    for (std::size_t j = i + 1; j < polys.size(); ++j) {
+  for (std::size_t a = 0; a < members.size(); ++a) {
+    const std::size_t i = members[a];
+    for (std::size_t b = a + 1; b < members.size(); ++b) {
+      const std::size_t j = members[b];
       if (cell.content.labels[i] != cell.content.labels[j]) continue;
       const std::optional<bool> shared =
           share_a_segment(polys[i], cell.boxes[i], polys[j], cell.boxes[j]);
@@ -43,6 +48,12 @@ std::optional<bool> materials_meet_at_vertices_only(const Node& cell) {
     }
   }
   return true;
+}
+
+std::vector<std::size_t> all_members(const Node& cell) {
+  std::vector<std::size_t> out(cell.polygon_set().size());
+  for (std::size_t i = 0; i < out.size(); ++i) out[i] = i;
+  return out;
 }
 
 }  // namespace
@@ -63,9 +74,15 @@ bool cell_is_canonical_by_overlay(const Node& cell) {
 // left to the overlay.
 bool cell_is_canonical(const Node& cell) {
   if (!is_canonical(cell.polygon_set())) return false;
-  const std::optional<bool> apart = materials_meet_at_vertices_only(cell);
+  const std::optional<bool> apart = materials_meet_at_vertices_only(cell, all_members(cell));
   if (apart == true) return true;
   return cell_is_canonical_by_overlay(cell);
+}
+
+// A part of a canonical set is in canonical form (same rings, same order), so the argument above
+// applies to the members alone.
+bool members_stay_apart(const Node& cell, std::span<const std::size_t> members) {
+  return materials_meet_at_vertices_only(cell, members) == true;
 }
 
 }  // namespace edgeland::detail

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <limits>
 
+#include "canonical_cell.hpp"
 #include "cell_split.hpp"
 #include "changes.hpp"
 #include "check.hpp"
@@ -184,6 +185,8 @@ const ValidSet& EditBuilder::shape_in(std::size_t k, const Node& cell) const {
 
 // The steps whose shapes reach the cell, in order, in one overlay (relabel_cell).
 EditBuilder::Draft EditBuilder::edit_cell(const NodePtr& cell) {
+  if (std::optional<LabeledSet> kept = kept_members(*cell))
+    return Draft::cell(cell->box, cell->depth, std::move(*kept));
   cell_steps_.clear();
   for (std::size_t k = 0; k < steps_.size(); ++k)
     if (reach_[k].in_world && cell->box.overlaps_open(reach_[k].box))
@@ -194,6 +197,28 @@ EditBuilder::Draft EditBuilder::edit_cell(const NodePtr& cell) {
   Draft edited = Draft::cell(cell->box, cell->depth, std::move(*content));
   grow(cell->vertices, edited.vertices);
   return split_if_needed(std::move(edited));
+}
+
+// Landscape::remove takes some of a cell's own members out. The overlay of that carve writes
+// the canonical decomposition of what remains; when no two remaining members of one material
+// share a boundary segment, that is the remaining members as they are (canonical_cell.hpp), so
+// the overlay is spared. Else (pieces of a split hole remain) the overlay re-derives them.
+std::optional<LabeledSet> EditBuilder::kept_members(const Node& cell) const {
+  if (!cut_given_) return std::nullopt;
+  const auto& removed = reach_.front().cut->members;
+  const auto it = removed.find(&cell);
+  if (it == removed.end()) return std::nullopt;
+  std::vector<std::size_t> kept;
+  for (std::size_t i = 0, r = 0; i < cell.content.labels.size(); ++i) {
+    if (r < it->second.size() && it->second[r] == i)
+      ++r;
+    else
+      kept.push_back(i);
+  }
+  if (!members_stay_apart(cell, kept)) return std::nullopt;
+  LabeledSet out{subset(cell.content.set, kept), {}};
+  for (std::size_t i : kept) out.labels.push_back(cell.content.labels[i]);
+  return out;
 }
 
 EditBuilder::Draft EditBuilder::split_if_needed(Draft cell) {

@@ -105,6 +105,8 @@ class EditBuilder {
   Draft rebuild_region(const NodePtr& region);
   Draft unloaded(const NodePtr& stub) const;
   Draft edit_cell(const NodePtr& cell);
+  // A cell of Landscape::remove whose other members stay apart: those members as they are.
+  std::optional<LabeledSet> kept_members(const Node& cell) const;
   // What of step k's shape a cell's overlay takes: its pieces when the shape was cut to the
   // cells (shape_cut.hpp), else the whole shape.
   const ValidSet& shape_in(std::size_t k, const Node& cell) const;

@@ -65,6 +65,7 @@ ChangeSet Landscape::remove(std::span<const PolygonRef> polygons) {
       vertices += p.size();
     }
     cut.pieces.emplace(cell, std::move(piece));
+    cut.members.emplace(cell, indices);
   }
   if (vertices == 0) return {};
   // The log line: a carve of the removed polygons, in a fixed order.

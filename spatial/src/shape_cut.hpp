@@ -16,6 +16,7 @@
 #include <cstddef>
 #include <optional>
 #include <unordered_map>
+#include <vector>
 
 #include "edgeland/clip/relabel.hpp"
 #include "node.hpp"
@@ -28,6 +29,9 @@ inline constexpr std::size_t kCutFactor = 4;
 // The shape's pieces in each cell an edit reaches (box interiors meet the shape's box).
 struct ShapeCut {
   std::unordered_map<const Node*, ValidSet> pieces;
+  // Landscape::remove: each cell's pieces are these of its own members (ascending indices), so
+  // a cell whose other members stay apart keeps them as they are, without an overlay (edit.cpp).
+  std::unordered_map<const Node*, std::vector<std::size_t>> members;
   // The pieces of `cell`, or nullptr when it is not a cell the cut reached.
   const ValidSet* of(const Node& cell) const {
     const auto it = pieces.find(&cell);

@@ -163,6 +163,38 @@ RC_GTEST_PROP(ConvexPiecesProperty, HertelMehlhornBounds, ()) {
   RC_ASSERT(pieces <= triangulate(p).size());
 }
 
+// A straight vertex in the middle of the polygon's first edge whose midpoint is a lattice point
+// (the polygon unchanged when none is).
+Polygon with_straight_vertex(Polygon p) {
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const Point64 a = p[i], b = p[(i + 1) % p.size()];
+    if ((a.x + b.x) % 2 == 0 && (a.y + b.y) % 2 == 0) {
+      p.insert(p.begin() + static_cast<std::ptrdiff_t>(i) + 1, {(a.x + b.x) / 2, (a.y + b.y) / 2});
+      return p;
+    }
+  }
+  return p;
+}
+
+// The two decompositions together are each the one the separate call gives, with and without
+// straight vertices (the triangles are shared only without).
+RC_GTEST_PROP(ConvexPiecesProperty, TrianglesAndPiecesAreTheSeparateCalls, ()) {
+  const Polygon drawn = random_polygon();
+  const Polygon p = *rc::gen::arbitrary<bool>() ? with_straight_vertex(drawn) : drawn;
+  RC_PRE(validate(p, 1).ok());
+  const std::size_t n = *rc::gen::element<std::size_t>(3, 4, 8, kUnbounded);
+  const TrianglesAndPieces both = triangles_and_convex_pieces(p, n);
+  RC_ASSERT(both.triangles == triangulate(p));
+  RC_ASSERT(both.pieces == convex_pieces(p, n));
+}
+
+TEST(ConvexPieces, TrianglesAndPiecesRefuseWhatConvexPiecesRefuses) {
+  const Polygon square{{0, 0}, {4, 0}, {4, 4}, {0, 4}};
+  EXPECT_THROW(triangles_and_convex_pieces(square, 2), InvalidArgument);
+  const Polygon clockwise{{0, 0}, {0, 4}, {4, 4}, {4, 0}};
+  EXPECT_THROW(triangles_and_convex_pieces(clockwise), InvalidInput);
+}
+
 TEST(ConvexPiecesExhaustive, EveryPolygonOnSmallGrids) {
   std::size_t polygons = 0;
   GridPolygons(4, 3, 7).for_each([&](const Polygon& p) {

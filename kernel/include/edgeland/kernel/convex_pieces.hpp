@@ -6,6 +6,7 @@
 
 #include "edgeland/kernel/export.hpp"
 #include "edgeland/kernel/polygon.hpp"
+#include "edgeland/kernel/triangulate.hpp"
 
 namespace edgeland {
 
@@ -49,6 +50,17 @@ inline constexpr std::size_t kDefaultMaxPieceVertices = 8;
 // CoordinateOutOfRange for a coordinate beyond kCoordBound) for an invalid polygon, and
 // TooManyVertices beyond kMaxPolygonAlgorithmVertices (2^30) vertices (triangulate.hpp).
 EDGELAND_EXPORT std::vector<Polygon> convex_pieces(
+    const Polygon& polygon, std::size_t max_vertices = kDefaultMaxPieceVertices);
+
+// A polygon's triangles and its convex pieces together: exactly triangulate(polygon) and
+// convex_pieces(polygon, max_vertices), for one validation and, when the polygon has no straight
+// vertex (an operation's output never has), one triangulation instead of two: a debris body's
+// fixtures and its render mesh. The same errors as convex_pieces().
+struct TrianglesAndPieces {
+  std::vector<Triangle> triangles;
+  std::vector<Polygon> pieces;
+};
+EDGELAND_EXPORT TrianglesAndPieces triangles_and_convex_pieces(
     const Polygon& polygon, std::size_t max_vertices = kDefaultMaxPieceVertices);
 
 }  // namespace edgeland
