@@ -62,15 +62,22 @@ const SurfaceChain* preceding(const SurfaceChain& chain, const ChainsAround& aro
   return pick ? c.chains[*pick] : nullptr;
 }
 
+Ghosts ghosts_of(const SurfaceChain& chain, const ChainsAround& around, const Box64& world,
+                 bool border_wall) {
+  const std::size_t n = chain.points.size();
+  const SurfaceChain* next = following(chain, around, world, border_wall);
+  const SurfaceChain* prev = preceding(chain, around, world, border_wall);
+  return {prev ? prev->points[prev->points.size() - 2]
+               : straight_on(chain.points[0], chain.points[1]),
+          next ? next->points[1] : straight_on(chain.points[n - 1], chain.points[n - 2])};
+}
+
 void set_ghosts(SurfaceChain& chain, const ChainsAround& around, const Box64& world,
                 bool border_wall) {
   if (chain.closed) return;
-  const std::size_t n = chain.points.size();
-  const SurfaceChain* next = following(chain, around, world, border_wall);
-  chain.ghost_next = next ? next->points[1] : straight_on(chain.points[n - 1], chain.points[n - 2]);
-  const SurfaceChain* prev = preceding(chain, around, world, border_wall);
-  chain.ghost_prev =
-      prev ? prev->points[prev->points.size() - 2] : straight_on(chain.points[0], chain.points[1]);
+  const Ghosts g = ghosts_of(chain, around, world, border_wall);
+  chain.ghost_prev = g.prev;
+  chain.ghost_next = g.next;
 }
 
 void ChainEndIndex::add(const SurfaceChain& chain) {

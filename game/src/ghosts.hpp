@@ -24,7 +24,15 @@ const SurfaceChain* following(const SurfaceChain& chain, const ChainsAround& aro
 const SurfaceChain* preceding(const SurfaceChain& chain, const ChainsAround& around,
                               const Box64& world, bool border_wall);
 
-// Sets an open chain's ghosts from the chains around its ends (closed chains keep theirs).
+// An open chain's ghosts from the chains around its ends.
+struct Ghosts {
+  Point64 prev, next;
+  friend bool operator==(const Ghosts&, const Ghosts&) = default;
+};
+Ghosts ghosts_of(const SurfaceChain& chain, const ChainsAround& around, const Box64& world,
+                 bool border_wall);
+
+// Sets an open chain's ghosts (ghosts_of; closed chains keep theirs).
 void set_ghosts(SurfaceChain& chain, const ChainsAround& around, const Box64& world,
                 bool border_wall);
 

@@ -172,14 +172,14 @@ void SurfaceState::reghost_kept(const Box64& world, CellStore& store, ChainUpdat
     ends_.chains_at(p, around_);
     for (const SurfaceChain* kept : around_) {
       if (kept >= pending_begin && kept < pending_end) continue;
-      SurfaceChain again = *kept;
-      game_detail::set_ghosts(again, around, world, options_.border_wall);
-      if (!(again == *kept)) rekey(*kept, again, store, update);
+      // Only the ghosts can differ (the index holds open chains): no copy of the chain.
+      const Ghosts again = ghosts_of(*kept, around, world, options_.border_wall);
+      if (again != Ghosts{kept->ghost_prev, kept->ghost_next}) rekey(*kept, again, store, update);
     }
   }
 }
 
-void SurfaceState::rekey(const SurfaceChain& kept, const SurfaceChain& again, CellStore& store,
+void SurfaceState::rekey(const SurfaceChain& kept, const Ghosts& again, CellStore& store,
                          ChainUpdate& update) {
   std::vector<ChainId>& ids = store.at(kept.cell).chains;
   const auto at =
@@ -187,8 +187,8 @@ void SurfaceState::rekey(const SurfaceChain& kept, const SurfaceChain& again, Ce
   auto node = chains_.extract(*at);
   update.removed.push_back(node.key());
   node.key() = next_id_++;
-  node.mapped().ghost_prev = again.ghost_prev;
-  node.mapped().ghost_next = again.ghost_next;
+  node.mapped().ghost_prev = again.prev;
+  node.mapped().ghost_next = again.next;
   *at = node.key();
   update.added.emplace_back(node.key(), node.mapped());
   chains_.insert(std::move(node));

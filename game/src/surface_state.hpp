@@ -60,7 +60,7 @@ class SurfaceState {
   void unindex(const CellStore& store, std::span<const GoneCell> gone);
   void set_ghosts(const Box64& world);
   void reghost_kept(const Box64& world, CellStore& store, ChainUpdate& update);
-  void rekey(const SurfaceChain& kept, const SurfaceChain& again, CellStore& store,
+  void rekey(const SurfaceChain& kept, const Ghosts& again, CellStore& store,
              ChainUpdate& update);
   void commit(CellStore& store, std::span<const GoneCell> gone, ChainUpdate& update);
   ChainId take(SurfaceChain& chain, std::vector<ChainId>& old, ChainUpdate& update);

@@ -24,9 +24,16 @@ namespace Edgeland
             Value = e.Value; Limit = e.Limit; Minimum = e.Minimum; Where = e.Where;
         }
 
-        internal static unsafe void Check(int status, ref NativeError e)
+        internal static void Check(int status, ref NativeError e)
         {
-            if (status == 0) return;
+            EdgelandException error = Failure(status, ref e);
+            if (error != null) throw error;
+        }
+
+        // The exception of a status and its error, not thrown; null for EL_OK.
+        internal static unsafe EdgelandException Failure(int status, ref NativeError e)
+        {
+            if (status == 0) return null;
             string message;
             fixed (byte* m = e.Message)
             {
@@ -34,7 +41,7 @@ namespace Edgeland
                 while (n < 256 && m[n] != 0) ++n;
                 message = Encoding.UTF8.GetString(m, n);
             }
-            throw Make(status, e, message);
+            return Make(status, e, message);
         }
 
         static EdgelandException Make(int status, NativeError e, string message)
@@ -100,7 +107,8 @@ namespace Edgeland
     public class InvalidMaterialException : EdgelandException { internal InvalidMaterialException(int s, NativeError e, string m) : base(s, e, m) { } }
     // EL_LIMIT_EXCEEDED: Kind is the limit, Value requested of at most Limit [LimitExceeded].
     public class LimitExceededException : EdgelandException { internal LimitExceededException(int s, NativeError e, string m) : base(s, e, m) { } }
-    // EL_LOAD_ERROR: Index is the byte offset [LoadError].
+    // EL_LOAD_ERROR: Index is the byte offset [LoadError]; or the line (1-based) a replayed edit
+    // log stopped at (Landscape.ReplayLog).
     public class LoadException : EdgelandException { internal LoadException(int s, NativeError e, string m) : base(s, e, m) { } }
     // EL_DELTA_ERROR: Index is the byte offset [DeltaError].
     public class DeltaException : EdgelandException { internal DeltaException(int s, NativeError e, string m) : base(s, e, m) { } }

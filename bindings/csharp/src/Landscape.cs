@@ -61,6 +61,32 @@ namespace Edgeland
             EdgelandException.Check(Native.el_shape_create(xy.ToArray(), offsets, (UIntPtr)polygons.Length, out Handle, ref e), ref e);
         }
 
+        // Any polygons read with OGC semantics (el_shape_import; JavaScript's Shape.import): each
+        // polygon its rings, the exterior then its holes, as another library or an editor drew
+        // them: clockwise, self-intersecting or touching. Each ring winds around its points
+        // (non-zero), exteriors +1, holes -1; the shape is where the sum is positive, as valid
+        // hole-free pieces (none for rings of no area). CoordinateOutOfRangeException names the
+        // polygon (Index) and the vertex in its ring.
+        public static Shape Import(params Point[][][] polygons)
+        {
+            var polygonRings = new uint[polygons.Length + 1];
+            var ringOffsets = new List<uint> { 0 };
+            var xy = new List<long>();
+            for (int i = 0; i < polygons.Length; ++i)
+            {
+                foreach (Point[] ring in polygons[i])
+                {
+                    foreach (Point p in ring) { xy.Add(p.X); xy.Add(p.Y); }
+                    ringOffsets.Add((uint)(xy.Count / 2));
+                }
+                polygonRings[i + 1] = (uint)(ringOffsets.Count - 1);
+            }
+            var e = Call.Error();
+            ShapeHandle h;
+            EdgelandException.Check(Native.el_shape_import(xy.ToArray(), ringOffsets.ToArray(), polygonRings, (UIntPtr)polygons.Length, out h, ref e), ref e);
+            return new Shape(h);
+        }
+
         public static Shape Circle(Point center, long radius)
         {
             var e = Call.Error();
@@ -262,6 +288,20 @@ namespace Edgeland
             using (h) return Results.Polygons(h.DangerousGetHandle());
         }
 
+        // The boxes of the cells (the tree's leaves, empty ones too) that meet the closed box, in
+        // tree order; CellsIn() every cell of the world.
+        public Box[] CellsIn(Box box)
+        {
+            var e = Call.Error();
+            var cells = new Box[(int)Stats.Cells];  // every cell of the world: enough for any box
+            UIntPtr n;
+            EdgelandException.Check(Native.el_landscape_cells_in(handle, ref box, cells, (UIntPtr)cells.Length, out n, ref e), ref e);
+            Array.Resize(ref cells, (int)n);
+            return cells;
+        }
+
+        public Box[] CellsIn() { return CellsIn(World); }
+
         public BigInteger TwiceArea(int material)
         {
             var e = Call.Error();
@@ -365,6 +405,10 @@ namespace Edgeland
             EdgelandException.Check(Native.el_landscape_load(data, (UIntPtr)data.Length, ref c, out h, ref e), ref e);
             return new Landscape(h);
         }
+
+        // Replays an edit log (Log's text) as `edgeland replay` does: the world of its world line,
+        // then its edits in order up to the first bad line or refused edit (Replay.cs).
+        public static Replay ReplayLog(string log) { return Replay.Of(log); }
 
         public static uint Version { get { return Native.el_version(); } }
     }

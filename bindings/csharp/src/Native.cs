@@ -184,6 +184,11 @@ namespace Edgeland
         protected override bool ReleaseHandle() { Native.el_bytes_destroy(handle); return true; }
     }
 
+    internal sealed class ReplayHandle : NativeHandle
+    {
+        protected override bool ReleaseHandle() { Native.el_replay_destroy(handle); return true; }
+    }
+
     internal sealed class SurfaceTrackerHandle : NativeHandle
     {
         protected override bool ReleaseHandle() { Native.el_surface_tracker_destroy(handle); return true; }
@@ -238,6 +243,7 @@ namespace Edgeland
         [DllImport(Lib)] public static extern int el_shape_capsule(ref Point a, ref Point b, long radius, out ShapeHandle shape, ref NativeError error);
         [DllImport(Lib)] public static extern int el_shape_box(ref Box box, out ShapeHandle shape, ref NativeError error);
         [DllImport(Lib)] public static extern int el_shape_rotated_box(ref Point center, long halfWidth, long halfHeight, long angleNum, long angleDen, out ShapeHandle shape, ref NativeError error);
+        [DllImport(Lib)] public static extern int el_shape_import(long[] xy, uint[] ringOffsets, uint[] polygonRings, UIntPtr count, out ShapeHandle shape, ref NativeError error);
         [DllImport(Lib)] public static extern int el_shape_polygons(ShapeHandle shape, out PolygonsHandle polygons, ref NativeError error);
         [DllImport(Lib)] public static extern void el_shape_destroy(IntPtr shape);
 
@@ -256,6 +262,7 @@ namespace Edgeland
         [DllImport(Lib)] public static extern int el_landscape_overlaps_box(LandscapeHandle landscape, ref Box box, byte[] materials, out UIntPtr count, ref NativeError error);
         [DllImport(Lib)] public static extern int el_landscape_overlaps_shape(LandscapeHandle landscape, ShapeHandle shape, byte[] materials, out UIntPtr count, ref NativeError error);
         [DllImport(Lib)] public static extern int el_landscape_polygons_in(LandscapeHandle landscape, ref Box box, out PolygonsHandle polygons, ref NativeError error);
+        [DllImport(Lib)] public static extern int el_landscape_cells_in(LandscapeHandle landscape, ref Box box, [Out] Box[] buf, UIntPtr cap, out UIntPtr needed, ref NativeError error);
         [DllImport(Lib)] public static extern int el_landscape_twice_area(LandscapeHandle landscape, int material, out Int128Value area, ref NativeError error);
         [DllImport(Lib)] public static extern int el_landscape_world(LandscapeHandle landscape, out Box world, ref NativeError error);
         [DllImport(Lib)] public static extern void el_stats_init(ref LandscapeStats stats);
@@ -268,6 +275,13 @@ namespace Edgeland
         [DllImport(Lib)] public static extern int el_landscape_log(LandscapeHandle landscape, out BytesHandle log, ref NativeError error);
         [DllImport(Lib)] public static extern int el_landscape_save(LandscapeHandle landscape, out BytesHandle bytes, ref NativeError error);
         [DllImport(Lib)] public static extern int el_landscape_load(byte[] data, UIntPtr size, ref LandscapeConfig config, out LandscapeHandle landscape, ref NativeError error);
+
+        [DllImport(Lib)] public static extern int el_replay_log(byte[] text, UIntPtr size, out ReplayHandle replay, ref NativeError error);
+        [DllImport(Lib)] public static extern void el_replay_destroy(IntPtr replay);
+        [DllImport(Lib)] public static extern int el_replay_landscape(ReplayHandle replay, out LandscapeHandle landscape, ref NativeError error);
+        [DllImport(Lib)] public static extern UIntPtr el_replay_edits(ReplayHandle replay);
+        [DllImport(Lib)] public static extern int el_replay_stopped(ReplayHandle replay, ref NativeError error);
+        [DllImport(Lib)] public static extern int el_replay_report(ReplayHandle replay, out BytesHandle report, ref NativeError error);
 
         [DllImport(Lib)] public static extern void el_changes_destroy(IntPtr changes);
         [DllImport(Lib)] public static extern IntPtr el_changes_removed(IntPtr changes, out UIntPtr count);

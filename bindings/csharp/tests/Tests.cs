@@ -237,6 +237,157 @@ static class Tests
         }
     }
 
+    // Twice the signed area of a ring (shoelace): positive when counter-clockwise.
+    static long TwiceArea(Point[] ring)
+    {
+        long sum = 0;
+        for (int i = 0; i < ring.Length; ++i)
+        {
+            Point a = ring[i], b = ring[(i + 1) % ring.Length];
+            sum += a.X * b.Y - b.X * a.Y;
+        }
+        return sum;
+    }
+
+    static long TwiceArea(Point[][] polygons) { return polygons.Sum(p => TwiceArea(p)); }
+
+    static Point[] Ring(params long[] xy)
+    {
+        var ring = new Point[xy.Length / 2];
+        for (int i = 0; i < ring.Length; ++i) ring[i] = new Point(xy[2 * i], xy[2 * i + 1]);
+        return ring;
+    }
+
+    // An import's pieces are a valid set: counter-clockwise, and new Shape (which checks every
+    // rule) takes them as they are.
+    static void CheckValid(Shape s, string what)
+    {
+        Point[][] polygons = s.Polygons;
+        Check(polygons.All(p => TwiceArea(p) > 0), what + ": counter-clockwise pieces");
+        using (var again = new Shape(polygons))
+            Check(again.Polygons.Length == polygons.Length, what + ": a valid set");
+    }
+
+    // Shape.Import (el_shape_import): rings as others draw them, read with OGC semantics.
+    static void ShapeImport()
+    {
+        Point[] bowTie = Ring(0, 0, 100, 100, 100, 0, 0, 100);
+        Throws<InvalidInputException>(() => new Shape(bowTie), "a bow tie as drawn");
+        using (var s = Shape.Import(new[] { new[] { bowTie } }))
+        using (var world = new Landscape(new Box(0, 0, 256, 256)))
+        {
+            CheckValid(s, "bow tie");
+            // OGC: the two triangles meeting where the edges cross.
+            long ogc = Math.Abs(TwiceArea(Ring(0, 0, 50, 50, 0, 100))) + Math.Abs(TwiceArea(Ring(50, 50, 100, 100, 100, 0)));
+            Check(s.Polygons.Length == 2 && TwiceArea(s.Polygons) == ogc, "the bow tie's two lobes");
+            world.Fill(s, 2);
+            Check(world.TwiceArea(2) == ogc && world.MaterialAt(new Point(10, 50)) == 2 && world.MaterialAt(new Point(50, 10)) == 0, "the bow tie filled");
+        }
+        Point[] clockwise = Ring(0, 0, 0, 10, 10, 10, 10, 0);
+        Check(Throws<InvalidInputException>(() => new Shape(clockwise), "a clockwise ring as drawn").Kind == 5, "not counter-clockwise");
+        using (var s = Shape.Import(new[] { new[] { clockwise } }))
+        {
+            CheckValid(s, "clockwise");
+            Point[][] p = s.Polygons;
+            Check(p.Length == 1 && TwiceArea(p[0]) == -TwiceArea(clockwise) && p[0].OrderBy(q => q.X).ThenBy(q => q.Y).SequenceEqual(clockwise.OrderBy(q => q.X).ThenBy(q => q.Y)), "the clockwise ring turned");
+        }
+        Point[] outer = Square(0, 0, 30), hole = Square(10, 10, 10);
+        foreach (Point[] drawn in new[] { hole, hole.Reverse().ToArray() })
+        {
+            using (var s = Shape.Import(new[] { new[] { outer, drawn } }))
+            using (var world = new Landscape(new Box(0, 0, 64, 64)))
+            {
+                CheckValid(s, "holed square");
+                Check(s.Polygons.Length >= 2 && TwiceArea(s.Polygons) == 2 * (900 - 100), "the holed square's pieces");
+                world.Fill(s, 2);
+                Check(world.TwiceArea(2) == 2 * (900 - 100) && world.MaterialAt(new Point(15, 15)) == 0 && world.MaterialAt(new Point(5, 5)) == 2, "the holed square filled");
+                Check(world.Check().Length == 0, "the holed square's world is valid");
+            }
+        }
+        using (var s = Shape.Import(new[] { new[] { Square(0, 0, 10) }, new[] { Square(5, 5, 10) } }))
+            Check(TwiceArea(s.Polygons) == 2 * (100 + 100 - 25), "two overlapping polygons: their union");
+        using (var s = Shape.Import(new[] { new[] { Ring(0, 0, 10, 0, 20, 0) } }))
+            Check(s.Polygons.Length == 0, "a ring of no area");
+        var far = Throws<CoordinateOutOfRangeException>(() => Shape.Import(new[] { new[] { Square(0, 0, 5) }, new[] { Ring(0, 0, 1L << 40, 0, 0, 10) } }), "a vertex out of range");
+        Check(far.Operand == 2 && far.Index == 1 && far.Vertex == 1 && far.Where.X == 1L << 40, "its polygon and vertex");
+    }
+
+    static long Area(Box b) { return (b.Max.X - b.Min.X) * (b.Max.Y - b.Min.Y); }
+    static bool Meet(Box a, Box b) { return a.Min.X <= b.Max.X && b.Min.X <= a.Max.X && a.Min.Y <= b.Max.Y && b.Min.Y <= a.Max.Y; }
+    static bool InteriorsMeet(Box a, Box b) { return a.Min.X < b.Max.X && b.Min.X < a.Max.X && a.Min.Y < b.Max.Y && b.Min.Y < a.Max.Y; }
+
+    // CellsIn (el_landscape_cells_in): the cells tile the world, empty ones too.
+    static void CellsTileTheWorld()
+    {
+        var all = new Box(0, 0, 1024, 512);
+        using (var world = new Landscape(all, 1))
+        {
+            for (int k = 0; k < 12; ++k)  // enough edges to split the root
+                using (var hole = Shape.Circle(new Point(40 + 80 * k, 100 + 25 * k), 30)) world.Carve(hole);
+            Box[] cells = world.CellsIn();
+            Check(cells.Length == (int)world.Stats.Cells && cells.Length > 1, "a cell per leaf");
+            Check(cells.All(c => c.Min.X >= 0 && c.Max.X <= 1024 && c.Min.Y >= 0 && c.Max.Y <= 512 && Area(c) > 0), "cells inside the world");
+            Check(cells.Sum(c => Area(c)) == Area(all), "the cells' area is the world's");
+            bool overlap = false;
+            for (int i = 0; i < cells.Length; ++i)
+                for (int j = i + 1; j < cells.Length; ++j) overlap |= InteriorsMeet(cells[i], cells[j]);
+            Check(!overlap, "cells' interiors are disjoint");
+            Check(world.PolygonsIn(all).All(p => cells.Contains(p.Cell)), "every polygon's cell is a cell");
+            foreach (Box b in new[] { new Box(0, 0, 10, 10), new Box(500, 200, 700, 300), new Box(512, 0, 512, 512) })
+                Check(world.CellsIn(b).SequenceEqual(cells.Where(c => Meet(c, b))), "the cells a box meets, in tree order");
+            Check(world.CellsIn(new Box(10, 0, 0, 10)).Length == 0, "an inverted box holds no point");
+            Throws<CoordinateOutOfRangeException>(() => world.CellsIn(new Box(0, 0, 1L << 40, 10)), "a box out of range");
+        }
+        using (var empty = CellWorld())
+        {
+            Box[] cells = empty.CellsIn();
+            Check(empty.PolygonsIn(empty.World).Length == 0 && cells.Length == 64 && cells.All(c => Area(c) == (1024 / 8) * (512 / 8)), "an empty world's 8 x 8 cells");
+        }
+    }
+
+    // Landscape.ReplayLog (el_replay_*): a recorded log replays to the same world, a bad line
+    // stops it there.
+    static void ReplayLogs()
+    {
+        using (var world = new Landscape(new Box(0, 0, 1024, 512), 1))
+        using (var blast = Shape.Circle(new Point(512, 256), 100))
+        using (var ore = new Shape(Square(100, 100, 50)))
+        using (var corner = new Shape(Square(0, 0, 200)))
+        {
+            world.StartLog();
+            world.Carve(blast);
+            using (Landscape first = world.Clone())
+            {
+                world.Fill(ore, 3);
+                world.Relabel(corner, new KeyValuePair<int, int>(1, 4), new KeyValuePair<int, int>(3, 1));
+                string log = world.Log;
+                using (Replay r = Landscape.ReplayLog(log))
+                {
+                    Check(r.Stopped == null && r.Edits == 3, "a recorded log replays whole");
+                    Check(r.Landscape.StateHash == world.StateHash && r.Landscape.Log == log, "to the same world, which records itself");
+                    Check(r.Report.Contains("\"edits\":3,") && r.Report.Contains("\"state_hash\":\"" + world.StateHash.ToString("x16") + "\"") && !r.Report.Contains("stopped_at_line"), "the report");
+                    Check(r.Report.Contains("\"polygons\":" + world.Stats.Polygons + ","), "the report's polygons");
+                }
+                string[] lines = log.Split(new[] { '\n' }, StringSplitOptions.RemoveEmptyEntries);
+                foreach (string bad in new[] { "fill 300 POLYGON((0 0,10 0,10 10,0 10,0 0))", "smash 1 2 3", "carve POLYGON((0 0,10 0", "fill 1 POLYGON((0 0,3000000000 0,0 10,0 0))" })
+                {
+                    // After the world line and the first edit: that edit kept, the rest not.
+                    var text = string.Join("\n", lines.Take(2).Concat(new[] { bad }).Concat(lines.Skip(2))) + "\n";
+                    using (Replay r = Landscape.ReplayLog(text))
+                    {
+                        Check(r.Stopped is LoadException && r.Stopped.Index == 3 && r.Stopped.Message.StartsWith("line 3"), "stopped at line 3 by " + bad);
+                        Check(r.Edits == 1 && r.Landscape.StateHash == first.StateHash && r.Report.Contains("\"stopped_at_line\":3"), "the edit before it kept");
+                    }
+                }
+                using (Replay r = Landscape.ReplayLog(log + "fill 300 POLYGON((0 0,10 0,10 10,0 10,0 0))\n"))
+                    Check(r.Stopped.Index == (ulong)lines.Length + 1 && r.Edits == 3 && r.Landscape.StateHash == world.StateHash, "a bad last line");
+            }
+        }
+        foreach (string text in new[] { "carve POLYGON((0 0,1 0,1 1,0 1,0 0))\n", "world 10 0 0 10\n", "" })
+            using (Replay r = Landscape.ReplayLog(text))
+                Check(r.Landscape == null && r.Edits == 0 && r.Stopped is LoadException && r.Stopped.Index == 1 && r.Report.Contains("\"stopped_at_line\":1"), "no world: no landscape");
+    }
+
     static void DisposedObjectsRefuseUse()
     {
         using (var world = new Landscape(new Box(0, 0, 100, 100), 1))
@@ -371,6 +522,9 @@ static class Tests
         GameLayer();
         GameDriverFrames();
         GameDriverErrors();
+        ShapeImport();
+        CellsTileTheWorld();
+        ReplayLogs();
         DisposedObjectsRefuseUse();
         Console.WriteLine("csharp: " + checks + " checks passed");
         return 0;

@@ -140,8 +140,10 @@ test('a recorded log replays to the same world, which records itself again', () 
 test('a replay stops at a bad line and keeps the edits before it', () => withWorld((world) => {
   world.startLog();
   world.carve(square(100, 100, 50));
-  const bad = edgeland.replayLog(world.log + 'fill 300 POLYGON((0 0,10 0,10 10,0 10))\n');
+  // A closed ring: the line fails for its material, not for its WKT.
+  const bad = edgeland.replayLog(world.log + 'fill 300 POLYGON((0 0,10 0,10 10,0 10,0 0))\n');
   assert.ok(bad.stopped instanceof edgeland.LoadError && bad.stopped.index === 3);
+  assert.match(bad.stopped.message, /material '300'/);
   assert.equal(bad.edits, 1);
   assert.equal(bad.landscape.stateHash, world.stateHash);
   assert.equal(JSON.parse(bad.report).stopped_at_line, 3);

@@ -22,6 +22,7 @@ from .driver import Debris, Edit, GameDriver, GameUpdate, MeshUpdate, Work
 from .game import (Chain, ChainUpdate, IslandTracker, Mesh, SurfaceTracker, all_meshes,
                    convex_pieces, detach, mesh_update)
 from .landscape import Landscape
+from .replay import Replay, replay_log
 from .results import ChangeSet, Crossing, Polygon
 from .shapes import Shape
 

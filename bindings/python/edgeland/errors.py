@@ -106,7 +106,8 @@ class LimitExceeded(EdgelandError):
 
 
 class LoadError(EdgelandError, ValueError):
-    """EL_LOAD_ERROR: a save that cannot be read; `index` is the byte offset [LoadError]."""
+    """EL_LOAD_ERROR: a save that cannot be read, `index` the byte offset [LoadError]; or the
+    line (`index`, 1-based) an edit log's replay stopped at (replay_log)."""
 
 
 class DeltaError(EdgelandError, ValueError):
@@ -151,10 +152,16 @@ BY_STATUS = {1: NullArgument, 2: OutOfMemory, 3: VersionMismatch, 4: InternalErr
              41: BufferTooSmall}
 
 
-def call(function, *args):
-    """Calls an el_* function that takes an el_error* last; raises its exception on failure."""
+def failure(function, *args):
+    """Calls an el_* function that takes an el_error* last: its exception, or None on success."""
     detail = _native.Error()
     _native.lib.el_error_init(ctypes.byref(detail))
     status = function(*args, ctypes.byref(detail))
-    if status != 0:
-        raise BY_STATUS.get(status, EdgelandError)(status, detail)
+    return None if status == 0 else BY_STATUS.get(status, EdgelandError)(status, detail)
+
+
+def call(function, *args):
+    """Calls an el_* function that takes an el_error* last; raises its exception on failure."""
+    error = failure(function, *args)
+    if error is not None:
+        raise error

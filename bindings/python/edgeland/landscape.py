@@ -143,6 +143,15 @@ class Landscape(Handle):
         with self._polygons_handle(box) as h:
             return results.polygon_arrays(h)
 
+    def cells_in(self, box=None):
+        """The boxes of the cells (the tree's leaves, empty ones too) that meet the closed box
+        (default: the world), in tree order, each ((x0, y0), (x1, y1))."""
+        cap = self.stats["cells"]  # every cell of the world: enough for any box
+        cells, needed = (_native.Box * cap)(), ctypes.c_size_t()
+        call(_lib.el_landscape_cells_in, self, ctypes.byref(_box(box or self.world)), cells, cap,
+             ctypes.byref(needed))
+        return [results.box_tuple(b) for b in cells[:needed.value]]
+
     def twice_area(self, material):
         """Twice the area of a material, exact (an int; it may pass 2^64)."""
         v = _native.Int128()

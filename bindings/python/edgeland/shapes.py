@@ -16,6 +16,17 @@ def _box(b):
     return _native.Box(_point(b[0]), _point(b[1]))
 
 
+def _csr(point_lists):
+    """Point lists (each a sequence of (x, y)) as C arrays: the coordinates x0, y0, x1, ... and
+    the offsets 0, len(list 0), ... (the C API's CSR)."""
+    xy, offsets = [], [0]
+    for points in point_lists:
+        for x, y in points:
+            xy += (int(x), int(y))
+        offsets.append(len(xy) // 2)
+    return (ctypes.c_int64 * len(xy))(*xy), (ctypes.c_uint32 * len(offsets))(*offsets)
+
+
 class Shape(Handle):
     """A polygon set validated once: strictly simple, counter-clockwise, hole-free polygons with
     disjoint interiors, every coordinate within 2^31 - 1. Build it from polygons (a list of
@@ -26,15 +37,26 @@ class Shape(Handle):
 
     def __init__(self, polygons=None, *, _pointer=None):
         if _pointer is None:
-            xy, offsets = [], [0]
-            for polygon in polygons:
-                for x, y in polygon:
-                    xy += (int(x), int(y))
-                offsets.append(len(xy) // 2)
-            xy_array = (ctypes.c_int64 * len(xy))(*xy)
-            offsets_array = (ctypes.c_uint32 * len(offsets))(*offsets)
-            _pointer = made(_lib.el_shape_create, xy_array, offsets_array, len(offsets) - 1)
+            xy, offsets = _csr(polygons)
+            _pointer = made(_lib.el_shape_create, xy, offsets, len(offsets) - 1)
         super().__init__(_pointer)
+
+    @classmethod
+    def import_polygons(cls, polygons):
+        """Any polygons read with OGC semantics (el_shape_import; JavaScript's Shape.import, a
+        keyword in Python): each polygon a list of rings, its exterior then its holes, each ring a
+        sequence of (x, y) as another library or an editor drew it: clockwise, self-intersecting
+        or touching. Each ring winds around its points (non-zero), exteriors +1, holes -1; the
+        shape is where the sum is positive, as valid hole-free pieces (none for rings of no
+        area). CoordinateOutOfRange names the polygon (`index`) and the vertex in its ring."""
+        rings, polygon_rings = [], [0]
+        for polygon in polygons:
+            rings += polygon
+            polygon_rings.append(len(rings))
+        xy, ring_offsets = _csr(rings)
+        polygon_array = (ctypes.c_uint32 * len(polygon_rings))(*polygon_rings)
+        return cls(_pointer=made(_lib.el_shape_import, xy, ring_offsets, polygon_array,
+                                 len(polygon_rings) - 1))
 
     @classmethod
     def circle(cls, center, radius):
