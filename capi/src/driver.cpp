@@ -113,6 +113,18 @@ void add_edit(el_edits* edits, const el_shape* shape, Make&& make) {
   list.push_back(make(ValidSet(object_of(shape, "shape").set)));
 }
 
+// An update the driver returned, handed out; if that runs out of memory the caller never gets
+// it, and the driver is told so (its next reset() starts from what the caller held before).
+void hand_over(GameDriver& driver, std::unique_ptr<GameUpdateHandle> made, GameUpdate u,
+               el_game_update** update) {
+  try {
+    hand_out_update(std::move(made), std::move(u), update);
+  } catch (...) {
+    driver.update_lost();
+    throw;
+  }
+}
+
 }  // namespace
 }  // namespace edgeland::capi
 
@@ -201,7 +213,7 @@ EL_API el_status el_game_driver_apply(el_game_driver* driver, const el_edits* ed
   return execute(error, [&] {
     GameDriver& d = object_of(driver, "driver").driver;
     auto made = update != nullptr ? std::make_unique<GameUpdateHandle>() : nullptr;
-    hand_out_update(std::move(made), d.apply(edits_of(edits)), update);
+    hand_over(d, std::move(made), d.apply(edits_of(edits)), update);
   });
 }
 
@@ -211,7 +223,7 @@ EL_API el_status el_game_driver_reset(el_game_driver* driver, const el_landscape
     GameDriver& d = object_of(driver, "driver").driver;
     Landscape next = object_of(world, "world").world;
     auto made = update != nullptr ? std::make_unique<GameUpdateHandle>() : nullptr;
-    hand_out_update(std::move(made), d.reset(std::move(next)), update);
+    hand_over(d, std::move(made), d.reset(std::move(next)), update);
   });
 }
 

@@ -1,6 +1,8 @@
 #include "game_state.hpp"
 
 #include <algorithm>
+#include <bit>
+#include <stdexcept>
 
 #include "debris.hpp"
 #include "edgeland/clip/clip.hpp"
@@ -53,10 +55,9 @@ bool holds(const std::vector<Held>& list, const Held& h) {
 
 // The polygons of the cells a reset replaced, as a change set: those gone that the new cells do
 // not hold (same id, ring and material) are removed, the new cells' others added.
-ChangeSet changes_between(std::span<const GoneCell> gone, const CellStore& store,
+ChangeSet changes_between(std::vector<Held> before, const CellStore& store,
                           std::span<const Box64> fresh) {
-  std::vector<Held> before, after;
-  for (const GoneCell& g : gone) add_held(*g.contents, before);
+  std::vector<Held> after;
   for (const Box64& box : fresh) add_held(*store.at(box).scan.contents, after);
   const auto by_id = [](const Held& l, const Held& r) { return l.id < r.id; };
   std::sort(before.begin(), before.end(), by_id);
@@ -67,6 +68,19 @@ ChangeSet changes_between(std::span<const GoneCell> gone, const CellStore& store
     if (!holds(after, b)) out.removed.push_back(b.id);
   for (const Held& a : after)
     if (!holds(before, a)) out.added.push_back({a.id, a.material, *a.ring, a.cell});
+  return out;
+}
+
+std::vector<Held> held_in(std::span<const GoneCell> gone) {
+  std::vector<Held> out;
+  for (const GoneCell& g : gone) add_held(*g.contents, out);
+  return out;
+}
+
+// Every polygon of `world` (whose cells must outlive the list).
+std::vector<Held> held_in(const Landscape& world) {
+  std::vector<Held> out;
+  for (const Box64& box : all_cells(world)) add_held(*world.cell(box), out);
   return out;
 }
 
@@ -82,17 +96,39 @@ const GameOptions& checked(const GameOptions& options) {
 
 }  // namespace
 
-GameState::GameState(Landscape world, const GameOptions& options)
+// A new driver's game holds the world's chains and meshes as it finds them (chains(),
+// all_meshes()): that is what is delivered.
+GameState::GameState(Landscape world, const GameOptions& options, ChainId first_chain_id)
     : options_(checked(options)),
       land_(std::move(world)),
       filled_(land_),
-      surface_(options.surface) {
+      surface_(options.surface, first_chain_id),
+      delivered_(land_),
+      delivered_before_(land_) {
   const std::vector<Box64> cells = all_cells(land_);
   store_.scan(land_, cells, options_.surface.materials);
   surface_.update(land_, store_, {}, cells);
+  make_room_for(surface_.next_id());
+  for (const auto& chain : surface_.chains()) hold_chain(chain.first, true);
   if (!options_.debris) return;
   islands_ = std::make_unique<IslandTree>(land_, store_, options_.surface.materials);
   queue_islands(islands_of(land_, store_, islands_->islands()));
+}
+
+std::unique_ptr<GameState> GameState::rebuilt(const GameState& failed, Landscape world,
+                                              GameUpdate& out) {
+  auto fresh =
+      std::make_unique<GameState>(std::move(world), failed.options_, failed.surface_.next_id());
+  const std::vector<Box64> cells = all_cells(fresh->land_);
+  out = GameUpdate{};
+  out.changes = changes_between(held_in(failed.delivered_), fresh->store_, cells);
+  out.chains.removed = failed.held_chains();
+  for (const auto& chain : fresh->surface_.chains()) out.chains.added.push_back(chain);
+  finish_changes(out.changes, fresh->land_);
+  finish_chains(out.chains);
+  if (fresh->options_.meshes) out.meshes = landscape_mesh_update(out.changes);
+  out.debris_waiting = fresh->queue_.size();
+  return fresh;
 }
 
 // Stage "edit": the frame's edits as one batch (Landscape::apply_batch: one overlay per touched
@@ -100,35 +136,100 @@ GameState::GameState(Landscape world, const GameOptions& options)
 ChangeSet GameState::edit(std::span<const Edit> edits) { return land_.apply_batch(edits); }
 
 GameUpdate GameState::apply(std::span<const Edit> edits) {
+  if (broken_)
+    throw std::logic_error("GameDriver: an update ran out of memory; reset() it before applying");
   const Landscape before = land_;
   ChangeSet changes = edit(edits);  // the only step that may throw an input error
-  GameUpdate out;
-  start_work();
-  note_fills(edits);
-  filled_ = land_;  // before debris leaves it: a body in a fill that fell is buried too
-  follow(before, changes, out);
-  take_changes(out.changes, std::move(changes));
-  drain_debris(out);
-  finish(out);
-  return out;
+  return guarded([&] {
+    GameUpdate out;
+    start_work();
+    note_fills(edits);
+    filled_ = land_;  // before debris leaves it: a body in a fill that fell is buried too
+    follow(before, changes, out);
+    take_changes(out.changes, std::move(changes));
+    drain_debris(out);
+    finish(out);
+    return out;
+  });
 }
 
 GameUpdate GameState::reset(Landscape world) {
-  land_ = std::move(world);
-  fills_.clear();
-  filled_ = land_;
-  queue_.clear();
-  GameUpdate out;
-  start_work();
-  differing_cells(land_, store_, replaced_, fresh_);
-  replace_cells(replaced_, fresh_, out);
-  out.changes = changes_between(gone_, store_, fresh_);
-  if (islands_) {  // summaries made anew: every island of the world waits again
-    islands_ = std::make_unique<IslandTree>(land_, store_, options_.surface.materials);
-    queue_islands(islands_of(land_, store_, islands_->islands()));
+  return guarded([&] {
+    land_ = std::move(world);
+    fills_.clear();
+    filled_ = land_;
+    queue_.clear();
+    GameUpdate out;
+    start_work();
+    differing_cells(land_, store_, replaced_, fresh_);
+    replace_cells(replaced_, fresh_, out);
+    out.changes = changes_between(held_in(gone_), store_, fresh_);
+    if (islands_) {  // summaries made anew: every island of the world waits again
+      islands_ = std::make_unique<IslandTree>(land_, store_, options_.surface.materials);
+      queue_islands(islands_of(land_, store_, islands_->islands()));
+    }
+    drain_debris(out);
+    finish(out);
+    return out;
+  });
+}
+
+// The stages of an update, then its delivery; anything thrown there (only running out of
+// memory) leaves the state changed halfway: broken until rebuilt.
+template <class Stages>
+GameUpdate GameState::guarded(Stages&& stages) {
+  try {
+    GameUpdate out = stages();
+    deliver(out);
+    return out;
+  } catch (...) {
+    broken_ = true;
+    throw;
   }
-  drain_debris(out);
-  finish(out);
+}
+
+// Everything that can run out of memory first (the bitmap's room, the lists of the delivery),
+// then the bits and the landscapes, which cannot fail: the record is the old one or the new one.
+void GameState::deliver(const GameUpdate& out) {
+  last_delivery_ = false;
+  make_room_for(surface_.next_id());
+  last_added_.clear();
+  for (const auto& chain : out.chains.added) last_added_.push_back(chain.first);
+  last_removed_.assign(out.chains.removed.begin(), out.chains.removed.end());
+  for (ChainId id : last_added_) hold_chain(id, true);
+  for (ChainId id : last_removed_) hold_chain(id, false);
+  delivered_before_ = delivered_;
+  delivered_ = land_;
+  last_delivery_ = true;
+}
+
+void GameState::update_lost() noexcept {
+  if (last_delivery_) {
+    for (ChainId id : last_added_) hold_chain(id, false);
+    for (ChainId id : last_removed_) hold_chain(id, true);
+    delivered_ = delivered_before_;
+  }
+  last_delivery_ = false;
+  broken_ = true;
+}
+
+void GameState::make_room_for(ChainId id) {
+  if (delivered_chains_.size() <= id / 64) delivered_chains_.resize(id / 64 + 1, 0);
+}
+
+void GameState::hold_chain(ChainId id, bool held) noexcept {
+  const std::uint64_t bit = std::uint64_t{1} << (id % 64);
+  if (held)
+    delivered_chains_[id / 64] |= bit;
+  else
+    delivered_chains_[id / 64] &= ~bit;
+}
+
+std::vector<ChainId> GameState::held_chains() const {
+  std::vector<ChainId> out;
+  for (std::size_t w = 0; w < delivered_chains_.size(); ++w)
+    for (std::uint64_t bits = delivered_chains_[w]; bits != 0; bits &= bits - 1)
+      out.push_back(w * 64 + static_cast<ChainId>(std::countr_zero(bits)));
   return out;
 }
 

@@ -27,10 +27,21 @@ namespace edgeland::game_detail {
 
 class GameState {
  public:
-  GameState(Landscape world, const GameOptions& options);
+  GameState(Landscape world, const GameOptions& options, ChainId first_chain_id = 1);
 
   GameUpdate apply(std::span<const Edit> edits);
   GameUpdate reset(Landscape world);
+  // A state made anew from `world` that takes over from `failed` (a state an update threw out
+  // of after changing it): the update from what the game holds of `failed` (its last delivered
+  // update) to everything this state derives. Chain ids continue `failed`'s.
+  static std::unique_ptr<GameState> rebuilt(const GameState& failed, Landscape world,
+                                            GameUpdate& out);
+  // An update threw after changing the state (running out of memory): what it holds no longer
+  // matches what the game was told, and only rebuilt() recovers.
+  bool broken() const noexcept { return broken_; }
+  // The last update returned never reached the game (a binding ran out of memory handing it
+  // over): what the game holds is again what it was before that update, and the state is broken.
+  void update_lost() noexcept;
   bool buried(const Box64& box) const;
 
   const Landscape& landscape() const noexcept { return land_; }
@@ -57,6 +68,10 @@ class GameState {
   void finish(GameUpdate& out) const;
   void note_fills(std::span<const Edit> edits);
   void start_work();
+  // The update is the game's: what it holds now (delivered_, delivered_chains_) follows it.
+  void deliver(const GameUpdate& out);
+  template <class Stages>
+  GameUpdate guarded(Stages&& stages);
 
   GameOptions options_;
   Landscape land_;
@@ -75,6 +90,18 @@ class GameState {
   std::vector<Box64> replaced_, fresh_;
   std::vector<GoneCell> gone_;
   std::uint64_t scans_before_ = 0, passes_before_ = 0;
+  // What the game holds: the landscape of the last update delivered (its meshes and polygons)
+  // and the chains it was given, one bit per chain id (ids only grow, and a bit is set or
+  // cleared without allocating, so update_lost() can undo the last delivery). Kept so that a
+  // state an update failed in can be rebuilt.
+  bool broken_ = false;
+  Landscape delivered_, delivered_before_;
+  std::vector<std::uint64_t> delivered_chains_;     // bit id % 64 of word id / 64
+  std::vector<ChainId> last_added_, last_removed_;  // the last delivery's chains
+  bool last_delivery_ = false;                      // the two lists describe it
+  void hold_chain(ChainId id, bool held) noexcept;
+  std::vector<ChainId> held_chains() const;
+  void make_room_for(ChainId id);
 };
 
 }  // namespace edgeland::game_detail

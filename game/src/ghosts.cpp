@@ -67,9 +67,9 @@ Ghosts ghosts_of(const SurfaceChain& chain, const ChainsAround& around, const Bo
   const std::size_t n = chain.points.size();
   const SurfaceChain* next = following(chain, around, world, border_wall);
   const SurfaceChain* prev = preceding(chain, around, world, border_wall);
-  return {prev ? prev->points[prev->points.size() - 2]
-               : straight_on(chain.points[0], chain.points[1]),
-          next ? next->points[1] : straight_on(chain.points[n - 1], chain.points[n - 2])};
+  return {
+      prev ? prev->points[prev->points.size() - 2] : straight_on(chain.points[0], chain.points[1]),
+      next ? next->points[1] : straight_on(chain.points[n - 1], chain.points[n - 2])};
 }
 
 void set_ghosts(SurfaceChain& chain, const ChainsAround& around, const Box64& world,

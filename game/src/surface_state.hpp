@@ -30,7 +30,10 @@ namespace edgeland::game_detail {
 
 class SurfaceState {
  public:
-  explicit SurfaceState(const SurfaceOptions& options) : options_(options) {}
+  // Chain ids start at `first_id` (a driver rebuilt after a failure continues its old ids:
+  // ids a game was told are removed never come back).
+  explicit SurfaceState(const SurfaceOptions& options, ChainId first_id = 1)
+      : options_(options), next_id_(first_id) {}
   SurfaceState(const SurfaceState&) = delete;
   SurfaceState& operator=(const SurfaceState&) = delete;
 
@@ -41,6 +44,7 @@ class SurfaceState {
 
   const std::map<ChainId, SurfaceChain>& chains() const noexcept { return chains_; }
   const SurfaceOptions& options() const noexcept { return options_; }
+  ChainId next_id() const noexcept { return next_id_; }
   // The cells traced again by the last update (fresh ones and neighbours whose covers changed).
   std::size_t last_traced() const noexcept { return computed_.size(); }
 
@@ -60,8 +64,7 @@ class SurfaceState {
   void unindex(const CellStore& store, std::span<const GoneCell> gone);
   void set_ghosts(const Box64& world);
   void reghost_kept(const Box64& world, CellStore& store, ChainUpdate& update);
-  void rekey(const SurfaceChain& kept, const Ghosts& again, CellStore& store,
-             ChainUpdate& update);
+  void rekey(const SurfaceChain& kept, const Ghosts& again, CellStore& store, ChainUpdate& update);
   void commit(CellStore& store, std::span<const GoneCell> gone, ChainUpdate& update);
   ChainId take(SurfaceChain& chain, std::vector<ChainId>& old, ChainUpdate& update);
   void remove(ChainId id, ChainUpdate& update);

@@ -8,14 +8,15 @@
 // - on failure the out-parameters are left as they were (NULL here);
 // - a failed call changes nothing: the landscapes it was given hash as before (a failed carve's
 //   also passes check()), and the same call then succeeds on the same objects, with the result
-//   of a run that never met a fault (a failed driver apply: on a new driver, see
-//   DISABLED_GameDriverResetAfterApplyFails);
+//   of a run that never met a fault (a failed driver apply: on a new driver, and on the driver
+//   reset as edgeland.h asks, whose update takes the game's chains to the driver's);
 // - a call that succeeded although an allocation failed (the library absorbed it) gave that
 //   same result too.
 // Everything is freed on every path: under the sanitizer build, LeakSanitizer checks the failure
 // paths for leaks.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdio>
 #include <memory>
@@ -480,6 +481,45 @@ UpdateResult result_of(const el_game_driver* driver, const el_game_update* updat
   return r;
 }
 
+// The ids of a chain list's chains, ascending.
+std::vector<std::uint64_t> chain_ids(const el_chains* chains) {
+  std::size_t n = 0;
+  const el_chain_info* info = el_chains_info(chains, &n);
+  std::vector<std::uint64_t> ids;
+  for (std::size_t i = 0; i < n; ++i) ids.push_back(info[i].id);
+  std::sort(ids.begin(), ids.end());
+  return ids;
+}
+
+std::vector<std::uint64_t> driver_chain_ids(const el_game_driver* driver) {
+  el_chains* all = nullptr;
+  EXPECT_EQ(el_game_driver_chains(driver, &all, nullptr), EL_OK);
+  const std::vector<std::uint64_t> ids = chain_ids(all);
+  el_chains_destroy(all);
+  return ids;
+}
+
+// A game's chains after it applies a reset's update to those it held: every removed id was
+// held, no added id was, and the result is the driver's chains. The game's copy is what it was
+// told before the failed apply (that apply returned no update).
+void expect_reset_takes_the_game_along(std::vector<std::uint64_t> held, const el_game_update* reset,
+                                       const el_game_driver* driver) {
+  const el_chains* chains = el_game_update_chains(reset);
+  std::size_t removed_count = 0;
+  const std::uint64_t* removed = el_chains_removed(chains, &removed_count);
+  for (std::size_t i = 0; i < removed_count; ++i) {
+    const auto at = std::find(held.begin(), held.end(), removed[i]);
+    EXPECT_NE(at, held.end()) << "the reset removes chain " << removed[i] << ", never given";
+    if (at != held.end()) held.erase(at);
+  }
+  for (std::uint64_t id : chain_ids(chains)) {
+    EXPECT_EQ(std::find(held.begin(), held.end(), id), held.end()) << "chain " << id << " twice";
+    held.push_back(id);
+  }
+  std::sort(held.begin(), held.end());
+  EXPECT_EQ(held, driver_chain_ids(driver));
+}
+
 // How a run whose apply failed carries on.
 enum class Recovery {
   kNewDriver,  // the driver destroyed (a leak on the failure path shows here) and made anew
@@ -513,6 +553,7 @@ void apply_with_faults(Recovery recovery) {
   }
   for_each_fault("el_game_driver_apply", [&](std::size_t skip, FaultMode mode) {
     DriverPtr driver = driver_of(world.get());
+    const std::vector<std::uint64_t> held = driver_chain_ids(driver.get());
     el_game_update* out = nullptr;
     const Outcome o = with_fault(skip, mode, [&](el_error* e) {
       return el_game_driver_apply(driver.get(), edits.get(), &out, e);
@@ -523,8 +564,11 @@ void apply_with_faults(Recovery recovery) {
     if (failed(o)) {
       EXPECT_EQ(out, nullptr);
       if (recovery == Recovery::kReset) {
-        EXPECT_EQ(el_game_driver_reset(driver.get(), world.get(), nullptr, nullptr), EL_OK);
+        el_game_update* reset = nullptr;
+        EXPECT_EQ(el_game_driver_reset(driver.get(), world.get(), &reset, nullptr), EL_OK);
+        const UpdatePtr reset_update(reset);
         EXPECT_EQ(driver_hash(driver.get()), world_hash);
+        if (reset_update) expect_reset_takes_the_game_along(held, reset_update.get(), driver.get());
       } else {
         driver = driver_of(world.get());
       }
@@ -538,17 +582,10 @@ void apply_with_faults(Recovery recovery) {
 
 TEST(CapiOutOfMemory, GameDriverApply) { apply_with_faults(Recovery::kNewDriver); }
 
-// Disabled: a known bug of the game layer, outside the C border: after EL_OUT_OF_MEMORY from
-// apply, the reset edgeland.h prescribes does not bring the driver back. First at allocation 160
-// of this batch: CellStore::remove (game/src/cell_store.cpp) moves a record's chains and contents
-// into the GoneCell it pushes before push_back allocates; the push_back throws, the record stays
-// in the store without contents, and reset dereferences them (differing_cells -> same_cell ->
-// CellContents::ids: SIGSEGV). With that one made safe (both vectors reserved first), the apply
-// after the reset crashes in SurfaceState::rekey (game/src/surface_state.cpp): reset keeps
-// surface state that the failed apply left half changed. Run with
-// --gtest_also_run_disabled_tests once GameDriver::reset recovers from any failed apply.
-TEST(CapiOutOfMemory, DISABLED_GameDriverResetAfterApplyFails) {
-  apply_with_faults(Recovery::kReset);
-}
+// The reset edgeland.h prescribes after EL_OUT_OF_MEMORY from apply: the driver derives
+// everything anew from the world, and the reset's update takes the game from the chains it held
+// to the driver's. (Before the driver kept what it had delivered, this crashed: the failed apply
+// left the cell store and the surface state half changed, and reset read them.)
+TEST(CapiOutOfMemory, GameDriverResetAfterApplyFails) { apply_with_faults(Recovery::kReset); }
 
 }  // namespace

@@ -22,8 +22,12 @@
 // ERRORS. apply() validates the edits as the landscape does and throws the landscape's typed
 // errors (InvalidInput, CoordinateOutOfRange, InvalidMaterial, LimitExceeded, ...) with the
 // driver and its landscape exactly as they were (the strong guarantee). Nothing else throws
-// but running out of memory, after which the driver must be reset(). Detaching debris never
-// throws: an island that changed before its turn is found again by the update that changed it.
+// but running out of memory, after which the driver must be reset() (apply() throws
+// std::logic_error until then): reset() then derives everything anew from the world it is
+// given, and its update takes the game from what the last update it returned left it holding
+// to the new state (chain ids continue; what was removed never comes back). Detaching debris
+// never throws: an island that changed before its turn is found again by the update that
+// changed it.
 //
 // DETERMINISM. Integer and exact: the same edits give the same updates, ids and landscape
 // (state_hash) on every compiler and in WebAssembly.
@@ -59,6 +63,10 @@ class EDGELAND_EXPORT GameDriver {
   // The landscape replaced by another (an undo to a snapshot, a load): every cell whose polygons
   // differ from the last seen is taken again, so the update names exactly what changed. O(N).
   GameUpdate reset(Landscape world);
+  // For bindings: the update the last apply() or reset() returned never reached the game (handing
+  // it over ran out of memory). The driver forgets it gave it, as if that call had run out of
+  // memory: reset() it next, and its update starts from what the game held before.
+  void update_lost() noexcept;
 
   // Whether the last update's fills buried a body whose bounding box is `box`: the box's
   // interior meets the interior of a filling edit's shape (one that turns some non-solid
