@@ -1,6 +1,8 @@
 #include "debris_job.hpp"
 
+#include <algorithm>
 #include <map>
+#include <tuple>
 
 #include "edgeland/clip/clip.hpp"
 #include "edgeland/kernel/assert.hpp"
@@ -29,15 +31,47 @@ IslandRegion merged_region(Material material, PolygonSet pieces, bool checked) {
   return {material, std::move(merged)};
 }
 
+IslandRegion merged_region(Material material, std::span<const CellPieces> pieces, bool checked) {
+  std::vector<ValidSet> parts;
+  parts.reserve(pieces.size());
+  for (const CellPieces& c : pieces) parts.push_back(subset(c.cell.set(), c.members));
+  std::vector<BoxedSet> boxed;
+  for (std::size_t i = 0; i < pieces.size(); ++i) boxed.push_back({&parts[i], pieces[i].cell.box()});
+  const ValidSet joined = join(boxed);
+  if (joined.polygons().size() == 1 && !checked) return {material, joined.polygons()};
+  PolygonSet merged = merge_tiles(joined, {.checked = checked}).set.polygons();
+  if (checked && joined.polygons().size() == 1 && merged != joined.polygons())
+    detail::fail_stage("debris", "a one-polygon island's merge is not the polygon itself");
+  return {material, std::move(merged)};
+}
+
 // The area, centroid and bounds are the island's (exact, O(n)); the rest waits for the steps.
-DebrisJob::DebrisJob(Island island, bool checked) : island_(std::move(island)), checked_(checked) {
-  std::map<Material, PolygonSet> by_material;
+DebrisJob::DebrisJob(Island island, const CellStore& store, bool checked)
+    : island_(std::move(island)), checked_(checked) {
+  // Each piece found among its cell's polygons, grouped by material and then by cell.
+  std::map<Material, std::map<std::tuple<std::int64_t, std::int64_t, std::int64_t, std::int64_t>,
+                              CellPieces>>
+      by_material;
   PolygonSet all;
   for (const IslandPiece& p : island_.pieces) {
-    by_material[p.material].push_back(p.polygon);
+    const CellContents& cell = *store.at(p.cell).scan.contents;
+    const auto ids = cell.ids();
+    const auto at = static_cast<std::size_t>(std::find(ids.begin(), ids.end(), p.id) - ids.begin());
+    if (at == ids.size()) detail::fail_stage("debris", "an island's piece is not in its cell");
+    auto& pieces = by_material[p.material];
+    auto [it, added] = pieces.try_emplace({p.cell.min.x, p.cell.min.y, p.cell.max.x, p.cell.max.y},
+                                          CellPieces{cell, {}});
+    it->second.members.push_back(at);
     all.push_back(p.polygon);
   }
-  materials_.assign(by_material.begin(), by_material.end());
+  for (auto& [material, cells] : by_material) {
+    std::vector<CellPieces> list;
+    for (auto& [box, c] : cells) {
+      std::sort(c.members.begin(), c.members.end());
+      list.push_back(std::move(c));
+    }
+    materials_.emplace_back(material, std::move(list));
+  }
   vertices_ = vertices_of(all);
   debris_.twice_area = island_.twice_area;
   debris_.centroid = centroid(all);
@@ -49,7 +83,12 @@ bool DebrisJob::done() const noexcept {
 }
 
 std::size_t DebrisJob::next_cost() const {
-  if (merged_ < materials_.size()) return vertices_of(materials_[merged_].second);
+  if (merged_ < materials_.size()) {
+    std::size_t n = 0;
+    for (const CellPieces& c : materials_[merged_].second)
+      for (std::size_t i : c.members) n += c.cell.polygons()[i].size();
+    return n;
+  }
   return debris_.regions[region_].polygons[polygon_].size();
 }
 
@@ -57,7 +96,7 @@ std::size_t DebrisJob::next_cost() const {
 void DebrisJob::step(const GameOptions& options) {
   if (merged_ < materials_.size()) {
     auto& [material, pieces] = materials_[merged_++];
-    IslandRegion merged = merged_region(material, std::move(pieces), checked_);
+    IslandRegion merged = merged_region(material, pieces, checked_);
     if (!merged.polygons.empty()) debris_.regions.push_back(std::move(merged));
     return;
   }

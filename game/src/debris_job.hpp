@@ -8,9 +8,11 @@
 // edit left).
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "edgeland/game/game_types.hpp"
+#include "cell_store.hpp"
 #include "edgeland/game/islands.hpp"
 
 namespace edgeland::game_detail {
@@ -19,9 +21,18 @@ namespace edgeland::game_detail {
 // cell lines and bridges, never crossing: nothing rounds).
 IslandRegion merged_region(Material material, PolygonSet pieces, bool checked);
 
+// Some of one cell's polygons, as the landscape holds them: a valid set of the cell's, so an
+// island's pieces, cell by cell, make a valid set without validating again (clip's join()).
+struct CellPieces {
+  CellContents cell;
+  std::vector<std::size_t> members;  // ascending
+};
+IslandRegion merged_region(Material material, std::span<const CellPieces> pieces, bool checked);
+
 class DebrisJob {
  public:
-  DebrisJob(Island island, bool checked);
+  // `store` holds the cells the island was found in (its pieces' cells).
+  DebrisJob(Island island, const CellStore& store, bool checked);
 
   // How far advance() goes past the budget.
   enum class Pace : std::uint8_t {
@@ -45,7 +56,8 @@ class DebrisJob {
   Island island_;
   bool checked_;
   std::size_t vertices_ = 0;
-  std::vector<std::pair<Material, PolygonSet>> materials_;  // pieces to merge, ascending material
+  // Pieces to merge, ascending material, each material's by cell.
+  std::vector<std::pair<Material, std::vector<CellPieces>>> materials_;
   std::size_t merged_ = 0;                                  // materials merged so far
   std::size_t region_ = 0, polygon_ = 0;                    // next merged polygon to cut
   Debris debris_;

@@ -257,7 +257,7 @@ void GameState::follow(const Landscape& before, const ChangeSet& changes, GameUp
 void GameState::queue_islands(std::vector<Island> islands) {
   for (Island& island : islands) {
     const IslandKey key = key_of(island);
-    queue_.push_back({DebrisJob(std::move(island), land_.checked()), key, 0});
+    queue_.push_back({DebrisJob(std::move(island), store_, land_.checked()), key, 0});
   }
 }
 

@@ -12,6 +12,7 @@ const Box64& CellContents::box() const noexcept { return cell_->box; }
 std::size_t CellContents::size() const noexcept { return cell_->ids.size(); }
 std::span<const Polygon> CellContents::polygons() const noexcept { return cell_->polygon_set(); }
 std::span<const PolygonId> CellContents::ids() const noexcept { return cell_->ids; }
+const ValidSet& CellContents::set() const noexcept { return cell_->content.set; }
 std::span<const Box64> CellContents::bounds() const noexcept { return cell_->boxes; }
 Material CellContents::material(std::size_t i) const noexcept {
   return static_cast<std::uint8_t>(cell_->content.labels[i]);

@@ -11,6 +11,8 @@
 
 namespace edgeland {
 
+struct BoxedSet;  // below: the parts join() puts together
+
 // A polygon set known to be valid, so that operations on it need not validate it again: a game
 // that carves one set thousands of times pays for validation once, when the set is built, not
 // on every operation (validation is O(n log n) in the whole set, the operation near-linear in
@@ -30,6 +32,7 @@ class EDGELAND_EXPORT ValidSet {
   ValidSet(PolygonSet set, Trusted) noexcept : set_(std::move(set)) {}
   friend struct ValidSetFactory;
   friend ValidSet subset(const ValidSet& set, std::span<const std::size_t> members);
+  friend ValidSet join(std::span<const BoxedSet> parts);
   PolygonSet set_;
   bool canonical_ = false;  // in canonical form (an operation's output)
   // No ring has three consecutive collinear vertices (canonical sets, and validated sets found
@@ -41,6 +44,19 @@ class EDGELAND_EXPORT ValidSet {
 // without validating again (any part of a valid set is one), and in canonical form when `set`
 // is. Throws InvalidArgument for an index out of range or out of order.
 EDGELAND_EXPORT ValidSet subset(const ValidSet& set, std::span<const std::size_t> members);
+
+// A part of a set being put together: a valid set, and a box its members should lie in.
+struct BoxedSet {
+  const ValidSet* set = nullptr;
+  Box64 box;
+};
+
+// The members of the parts, in order, as one valid set. When every member lies in its part's
+// (closed) box and no two boxes' interiors meet (a landscape's cells, a grid's tiles), members of
+// different parts cannot overlap, and nothing is validated again: O(n) for the members' boxes
+// and O(k log k) for the k boxes. Otherwise the members are validated together, as ValidSet's
+// constructor does (InvalidInput on the first violation). A part whose set is null is empty.
+EDGELAND_EXPORT ValidSet join(std::span<const BoxedSet> parts);
 
 struct ValidClipResult {
   ValidSet set;

@@ -85,6 +85,9 @@ class EDGELAND_EXPORT CellContents {
   std::span<const PolygonId> ids() const noexcept;
   std::span<const Box64> bounds() const noexcept;  // each polygon's bounding box
   Material material(std::size_t i) const noexcept;
+  // The polygons as the valid set they are (clip's subset() takes some of them, join() puts
+  // several cells' together, neither validating again).
+  const ValidSet& set() const noexcept;
 
  private:
   friend class Landscape;
