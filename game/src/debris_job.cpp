@@ -36,7 +36,8 @@ IslandRegion merged_region(Material material, std::span<const CellPieces> pieces
   parts.reserve(pieces.size());
   for (const CellPieces& c : pieces) parts.push_back(subset(c.cell.set(), c.members));
   std::vector<BoxedSet> boxed;
-  for (std::size_t i = 0; i < pieces.size(); ++i) boxed.push_back({&parts[i], pieces[i].cell.box()});
+  for (std::size_t i = 0; i < pieces.size(); ++i)
+    boxed.push_back({&parts[i], pieces[i].cell.box()});
   const ValidSet joined = join(boxed);
   if (joined.polygons().size() == 1 && !checked) return {material, joined.polygons()};
   PolygonSet merged = merge_tiles(joined, {.checked = checked}).set.polygons();
@@ -49,8 +50,8 @@ IslandRegion merged_region(Material material, std::span<const CellPieces> pieces
 DebrisJob::DebrisJob(Island island, const CellStore& store, bool checked)
     : island_(std::move(island)), checked_(checked) {
   // Each piece found among its cell's polygons, grouped by material and then by cell.
-  std::map<Material, std::map<std::tuple<std::int64_t, std::int64_t, std::int64_t, std::int64_t>,
-                              CellPieces>>
+  std::map<Material,
+           std::map<std::tuple<std::int64_t, std::int64_t, std::int64_t, std::int64_t>, CellPieces>>
       by_material;
   PolygonSet all;
   for (const IslandPiece& p : island_.pieces) {

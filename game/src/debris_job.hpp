@@ -11,8 +11,8 @@
 #include <span>
 #include <vector>
 
-#include "edgeland/game/game_types.hpp"
 #include "cell_store.hpp"
+#include "edgeland/game/game_types.hpp"
 #include "edgeland/game/islands.hpp"
 
 namespace edgeland::game_detail {
@@ -58,8 +58,8 @@ class DebrisJob {
   std::size_t vertices_ = 0;
   // Pieces to merge, ascending material, each material's by cell.
   std::vector<std::pair<Material, std::vector<CellPieces>>> materials_;
-  std::size_t merged_ = 0;                                  // materials merged so far
-  std::size_t region_ = 0, polygon_ = 0;                    // next merged polygon to cut
+  std::size_t merged_ = 0;                // materials merged so far
+  std::size_t region_ = 0, polygon_ = 0;  // next merged polygon to cut
   Debris debris_;
 };
 

@@ -89,10 +89,10 @@ RC_GTEST_PROP(JoinProperty, RefusesExactlyTheOverlappingSquares, ()) {
   bool overlap = false;
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t j = i + 1; j < n; ++j)
-      overlap = overlap || (std::min(boxes[i].max.x, boxes[j].max.x) >
-                                std::max(boxes[i].min.x, boxes[j].min.x) &&
-                            std::min(boxes[i].max.y, boxes[j].max.y) >
-                                std::max(boxes[i].min.y, boxes[j].min.y));
+      overlap =
+          overlap ||
+          (std::min(boxes[i].max.x, boxes[j].max.x) > std::max(boxes[i].min.x, boxes[j].min.x) &&
+           std::min(boxes[i].max.y, boxes[j].max.y) > std::max(boxes[i].min.y, boxes[j].min.y));
   std::vector<ValidSet> sets;
   for (const Box64& b : boxes) sets.emplace_back(PolygonSet{box_shape(b)});
   std::vector<BoxedSet> parts;
