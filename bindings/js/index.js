@@ -793,7 +793,7 @@ function editsBatch(allocate, edits) {
 }
 
 // el_game_options: {solid, anchored, borderWall, meshes = true, debris = true,
-// maxPieceVertices = 8, debrisBudget = 4096, maxDebrisWait = 3}.
+// maxPieceVertices = 8, debrisBudget = 8192, maxDebrisWait = 3}.
 function gameOptions(allocate, options = {}) {
   const known = ['solid', 'anchored', 'borderWall', 'meshes', 'debris', 'maxPieceVertices',
     'debrisBudget', 'maxDebrisWait'];

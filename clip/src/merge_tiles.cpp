@@ -14,6 +14,8 @@
 //   3. the rings reduced to their corners and the points two rings touch at (what hole
 //      splitting may bridge to, as assembly's corner bridges), holes split (hole_splitting.hpp),
 //      each piece in canonical form, the pieces sorted.
+// TileMerge runs stages 1-2 in its constructor and stage 3 in finish(), owning the rings between
+// (a game spreads a big island's merge over two frames); merge_tiles is the two at once.
 // Nothing is rounded: every output vertex is a member's vertex. In checked mode the result is
 // validated and its area compared with the members' sum, exactly.
 #include <algorithm>
@@ -177,15 +179,25 @@ void reduce_to_corners(std::vector<ScratchRing>& rings, const std::vector<Point6
   }
 }
 
-// Stages 2 and 3: the faces of the stretches, holes split, the pieces canonical and sorted.
-PolygonSet pieces_of(const std::vector<Segment>& stretches, std::size_t& holes_split) {
-  ScratchVector<ScratchRing> faces, outers, holes;
+// Stage 2: the faces of the stretches, counter-clockwise outer rings and clockwise holes.
+void rings_of(const std::vector<Segment>& stretches, std::vector<Ring>& outers,
+              std::vector<Ring>& holes) {
+  ScratchVector<ScratchRing> faces;
   trace_faces(stretches, faces);
   for (ScratchRing& f : faces) {
     const Int128 area = twice_signed_area(f);
     if (area == 0) fail_stage("tile merge", "a traced face has no area");
-    (area > 0 ? outers : holes).push_back(std::move(f));
+    (area > 0 ? outers : holes).emplace_back(f.begin(), f.end());
   }
+}
+
+// Stage 3: the rings reduced to corners and shared points, holes split, the pieces canonical
+// and sorted.
+PolygonSet pieces_of(const std::vector<Ring>& outer_rings, const std::vector<Ring>& hole_rings,
+                     std::size_t& holes_split) {
+  ScratchVector<ScratchRing> outers, holes;
+  for (const Ring& r : outer_rings) outers.emplace_back().assign(r.begin(), r.end());
+  for (const Ring& r : hole_rings) holes.emplace_back().assign(r.begin(), r.end());
   if (!holes.empty()) {
     const std::vector<Point64> keep = shared_points(outers, holes);
     reduce_to_corners(outers, keep);
@@ -200,10 +212,10 @@ PolygonSet pieces_of(const std::vector<Segment>& stretches, std::size_t& holes_s
   return out;
 }
 
-void check_tiles_merged(const ValidSet& members, const PolygonSet& merged) {
+void check_tiles_merged(const Int128& members_twice_area, const PolygonSet& merged) {
   const ValidationReport report = validate(merged, 1);
   if (!report.ok()) fail_stage("tile merge", report.violations[0].describe());
-  if (twice_signed_area(merged) != twice_signed_area(members.polygons()))
+  if (twice_signed_area(merged) != members_twice_area)
     fail_stage("tile merge", "the union's area is not the members' sum");
 }
 
@@ -211,11 +223,29 @@ void check_tiles_merged(const ValidSet& members, const PolygonSet& merged) {
 }  // namespace detail
 
 ValidClipResult merge_tiles(const ValidSet& set, const ClipOptions& options) {
-  ClipResult out;
+  return TileMerge(set, options).finish();
+}
+
+// Stages 1, 1b and 2.
+TileMerge::TileMerge(const ValidSet& set, const ClipOptions& options) : options_(options) {
   std::vector<Segment> stretches = detail::boundary_stretches(set.polygons());
   detail::split_at_touching_ends(stretches);
-  out.polygons = detail::pieces_of(stretches, out.stats.holes_split);
-  if (options.checked) detail::check_tiles_merged(set, out.polygons);
+  detail::rings_of(stretches, outers_, holes_);
+  if (options.checked) twice_area_ = twice_signed_area(set.polygons());
+}
+
+std::size_t TileMerge::ring_vertices() const noexcept {
+  std::size_t n = 0;
+  for (const auto* rings : {&outers_, &holes_})
+    for (const Ring& r : *rings) n += r.size();
+  return n;
+}
+
+// Stage 3.
+ValidClipResult TileMerge::finish() && {
+  ClipResult out;
+  out.polygons = detail::pieces_of(outers_, holes_, out.stats.holes_split);
+  if (options_.checked) detail::check_tiles_merged(twice_area_, out.polygons);
   return ValidSetFactory::from(std::move(out));
 }
 

@@ -31,19 +31,14 @@ IslandRegion merged_region(Material material, PolygonSet pieces, bool checked) {
   return {material, std::move(merged)};
 }
 
-IslandRegion merged_region(Material material, std::span<const CellPieces> pieces, bool checked) {
+ValidSet joined_pieces(std::span<const CellPieces> pieces) {
   std::vector<ValidSet> parts;
   parts.reserve(pieces.size());
   for (const CellPieces& c : pieces) parts.push_back(subset(c.cell.set(), c.members));
   std::vector<BoxedSet> boxed;
   for (std::size_t i = 0; i < pieces.size(); ++i)
     boxed.push_back({&parts[i], pieces[i].cell.box()});
-  const ValidSet joined = join(boxed);
-  if (joined.polygons().size() == 1 && !checked) return {material, joined.polygons()};
-  PolygonSet merged = merge_tiles(joined, {.checked = checked}).set.polygons();
-  if (checked && joined.polygons().size() == 1 && merged != joined.polygons())
-    detail::fail_stage("debris", "a one-polygon island's merge is not the polygon itself");
-  return {material, std::move(merged)};
+  return join(boxed);
 }
 
 // The area, centroid and bounds are the island's (exact, O(n)); the rest waits for the steps.
@@ -84,6 +79,7 @@ bool DebrisJob::done() const noexcept {
 }
 
 std::size_t DebrisJob::next_cost() const {
+  if (merging_) return merging_->ring_vertices();
   if (merged_ < materials_.size()) {
     std::size_t n = 0;
     for (const CellPieces& c : materials_[merged_].second)
@@ -93,14 +89,10 @@ std::size_t DebrisJob::next_cost() const {
   return debris_.regions[region_].polygons[polygon_].size();
 }
 
-// One material merged, or one merged polygon cut into convex pieces (and meshed).
+// Half of one material's merge (its boundary traced, or its holes split), or one merged polygon
+// cut into convex pieces (and meshed).
 void DebrisJob::step(const GameOptions& options) {
-  if (merged_ < materials_.size()) {
-    auto& [material, pieces] = materials_[merged_++];
-    IslandRegion merged = merged_region(material, pieces, checked_);
-    if (!merged.polygons.empty()) debris_.regions.push_back(std::move(merged));
-    return;
-  }
+  if (merged_ < materials_.size()) return merge_step();
   const IslandRegion& r = debris_.regions[region_];
   const Polygon& p = r.polygons[polygon_];
   // The mesh's triangles are the pieces' first stage: made once. The polygon is merge_tiles'
@@ -110,6 +102,31 @@ void DebrisJob::step(const GameOptions& options) {
   add_pieces(r.material, std::move(both.pieces));
   if (options.meshes) debris_.meshes.push_back({0, r.material, p, std::move(both.triangles)});
   if (++polygon_ == r.polygons.size()) ++region_, polygon_ = 0;
+}
+
+// One piece is its own merge: a landscape polygon is in canonical form, as merge_tiles writes it
+// (most islands a game cuts loose are one polygon; checked mode compares the two). More are
+// merged in two steps (TileMerge), so a big island's merge is two updates' work, not one.
+void DebrisJob::merge_step() {
+  const Material material = materials_[merged_].first;
+  if (!merging_) {
+    ValidSet joined = joined_pieces(materials_[merged_].second);
+    if (joined.polygons().size() == 1 && !checked_) {
+      debris_.regions.push_back({material, joined.polygons()});
+      ++merged_;
+      return;
+    }
+    merging_.emplace(joined, ClipOptions{.checked = checked_});
+    if (joined.polygons().size() == 1) single_ = joined.polygons().front();
+    return;
+  }
+  PolygonSet merged = std::move(*merging_).finish().set.polygons();
+  merging_.reset();
+  if (single_ && merged != PolygonSet{*single_})
+    detail::fail_stage("debris", "a one-polygon island's merge is not the polygon itself");
+  single_.reset();
+  if (!merged.empty()) debris_.regions.push_back({material, std::move(merged)});
+  ++merged_;
 }
 
 void DebrisJob::add_pieces(Material material, std::vector<Polygon> pieces) {

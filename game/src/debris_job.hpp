@@ -1,17 +1,20 @@
 #pragma once
 // One island's debris made in steps (GameOptions::debris_budget), so that a big island spreads
 // its work over a few updates instead of stalling one: first each material's merge into maximal
-// polygons (clip's merge_tiles), then the convex pieces (and mesh) of one merged polygon at a
-// time. A step's cost is the vertices it reads. The island stays in the landscape until the job
+// polygons (clip's TileMerge, in two steps: the boundary traced, then the holes split; one piece
+// is its own merge), then the convex pieces (and mesh) of one merged polygon at a time. A
+// step's cost is the vertices it reads. The island stays in the landscape until the job
 // is done and the driver carves it out (debris.hpp, detach_prepared); if an edit changed it
 // meanwhile, the carve finds it stale and drops the job (the island tracker has queued what the
 // edit left).
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
 #include "cell_store.hpp"
+#include "edgeland/clip/clip.hpp"
 #include "edgeland/game/game_types.hpp"
 #include "edgeland/game/islands.hpp"
 
@@ -27,7 +30,8 @@ struct CellPieces {
   CellContents cell;
   std::vector<std::size_t> members;  // ascending
 };
-IslandRegion merged_region(Material material, std::span<const CellPieces> pieces, bool checked);
+// The pieces as one valid set, cell by cell (clip's join(): nothing validated again).
+ValidSet joined_pieces(std::span<const CellPieces> pieces);
 
 class DebrisJob {
  public:
@@ -58,7 +62,11 @@ class DebrisJob {
   std::size_t vertices_ = 0;
   // Pieces to merge, ascending material, each material's by cell.
   std::vector<std::pair<Material, std::vector<CellPieces>>> materials_;
+  void merge_step();
+
   std::size_t merged_ = 0;                // materials merged so far
+  std::optional<TileMerge> merging_;      // the current material's merge, its boundary traced
+  std::optional<Polygon> single_;         // checked mode: the one piece merging_ holds
   std::size_t region_ = 0, polygon_ = 0;  // next merged polygon to cut
   Debris debris_;
 };

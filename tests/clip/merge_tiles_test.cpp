@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
+#include <memory>
+
 #include "edgeland/clip/clip.hpp"
 #include "edgeland/kernel/area.hpp"
 #include "edgeland/kernel/canonical_form.hpp"
@@ -54,6 +56,23 @@ RC_GTEST_PROP(MergeTiles, QuadtreeTilesMergeToMergesRegion, ()) {
   std::vector<Box64> leaves;
   quadtree_leaves({{0, 0}, {128, 128}}, leaves);
   expect_same_region(tiles_of(set, leaves));
+}
+
+// TileMerge keeps what it needs: finished after the tiles are gone (a frame later, in a game),
+// with checked mode's area check against the tiles it was given, it gives merge_tiles' result.
+RC_GTEST_PROP(MergeTiles, ATileMergeFinishedLaterIsMergeTiles, ()) {
+  const PolygonSet raw = *gen::polygon_set({64, 64}, 60);
+  const ValidSet set =
+      normalize_to_valid_set(std::vector<Ring>(raw.begin(), raw.end()), FillRule::kPositive).set;
+  std::vector<Box64> leaves;
+  quadtree_leaves({{0, 0}, {128, 128}}, leaves);
+  auto tiles = std::make_unique<ValidSet>(tiles_of(set, leaves));
+  const ValidClipResult whole = merge_tiles(*tiles, {.checked = true});
+  TileMerge started(*tiles, {.checked = true});
+  tiles.reset();
+  const ValidClipResult finished = std::move(started).finish();
+  RC_ASSERT(finished.set.polygons() == whole.set.polygons());
+  RC_ASSERT(finished.stats.holes_split == whole.stats.holes_split);
 }
 
 PolygonSet squares(std::initializer_list<Box64> boxes) {

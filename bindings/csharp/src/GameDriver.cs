@@ -57,7 +57,7 @@ namespace Edgeland
         public PhysicsMaterials Materials = new PhysicsMaterials();
         public bool Meshes = true, Debris = true;
         public uint MaxPieceVertices = 8, MaxDebrisWait = 3;
-        public ulong DebrisBudget = 4096;
+        public ulong DebrisBudget = 8192;
 
         internal unsafe NativeGameOptions ToNative()
         {

@@ -166,7 +166,7 @@ class GameDriver(Handle):
     _destroy = "el_game_driver_destroy"
 
     def __init__(self, world, meshes=True, debris=True, border_wall=False, solid=None,
-                 anchored=(), max_piece_vertices=8, debris_budget=4096, max_debris_wait=3):
+                 anchored=(), max_piece_vertices=8, debris_budget=8192, max_debris_wait=3):
         o = _options(meshes, debris, border_wall, solid, anchored, max_piece_vertices,
                      debris_budget, max_debris_wait)
         super().__init__(made(_lib.el_game_driver_create, world, ctypes.byref(o)))

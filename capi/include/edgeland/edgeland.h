@@ -617,7 +617,7 @@ enum {
 
 /* C++ GameOptions. Defaults (el_game_options_init): EL_GAME_MESHES | EL_GAME_DEBRIS, every
  * material but 0 solid, none anchored, convex pieces of at most 8 vertices (3 or more), a debris
- * budget of 4096 island vertices per update, no island waiting more than 3 updates. */
+ * budget of 8192 island vertices per update, no island waiting more than 3 updates. */
 typedef struct el_game_options {
   uint32_t struct_size;
   uint32_t flags;

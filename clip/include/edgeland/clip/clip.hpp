@@ -117,6 +117,23 @@ EDGELAND_EXPORT ValidClipResult merge(const ValidSet& set, const ClipOptions& op
 // members' sum. O(n log n) plus hole splitting's bridges.
 EDGELAND_EXPORT ValidClipResult merge_tiles(const ValidSet& set, const ClipOptions& options = {});
 
+// merge_tiles() in two steps a caller can spread over two calls, a frame apart (a game's big
+// debris): the constructor traces the union's boundary into rings (the stretches, their faces),
+// finish() splits the holes and writes the pieces, returning exactly what merge_tiles() returns.
+// ring_vertices() tells the second step's size. It owns what it keeps (no storage of the
+// thread's scratch workspace), so it may live across frames.
+class EDGELAND_EXPORT TileMerge {
+ public:
+  explicit TileMerge(const ValidSet& set, const ClipOptions& options = {});
+  std::size_t ring_vertices() const noexcept;
+  ValidClipResult finish() &&;
+
+ private:
+  std::vector<Ring> outers_, holes_;
+  ClipOptions options_;
+  Int128 twice_area_ = 0;  // the members', for checked mode
+};
+
 // The part of a valid set inside a closed axis-aligned box (the landscape's cell cut); a box
 // of zero width or height gives the empty set. The box is the clip operand: a corner beyond
 // the bound throws CoordinateOutOfRange (polygon 0, ring 0, vertex kNone, `where` the corner),
