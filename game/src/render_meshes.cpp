@@ -9,17 +9,27 @@
 namespace edgeland {
 namespace game_detail {
 
+namespace {
+
+// The meshes a change set drops and builds, each built one made by `mesh_of`.
+template <class MeshOf>
+MeshUpdate update_of(const ChangeSet& changes, MeshOf mesh_of) {
+  MeshUpdate out;
+  out.dropped = changes.removed;
+  for (const ChangeSet::Added& a : changes.added)
+    out.built.push_back(mesh_of(a.id, a.material, a.polygon));
+  return out;
+}
+
+}  // namespace
+
 PolygonMesh landscape_mesh(PolygonId id, Material material, const Polygon& polygon) {
   if constexpr (EDGELAND_ASSERTS_ENABLED) detail::require_valid_polygon(polygon);
   return {id, material, polygon, detail::triangulate_valid(polygon)};
 }
 
 MeshUpdate landscape_mesh_update(const ChangeSet& changes) {
-  MeshUpdate out;
-  out.dropped = changes.removed;
-  for (const ChangeSet::Added& a : changes.added)
-    out.built.push_back(landscape_mesh(a.id, a.material, a.polygon));
-  return out;
+  return update_of(changes, landscape_mesh);
 }
 
 }  // namespace game_detail
@@ -29,11 +39,7 @@ PolygonMesh polygon_mesh(PolygonId id, Material material, const Polygon& polygon
 }
 
 MeshUpdate mesh_update(const ChangeSet& changes) {
-  MeshUpdate out;
-  out.dropped = changes.removed;
-  for (const ChangeSet::Added& a : changes.added)
-    out.built.push_back(polygon_mesh(a.id, a.material, a.polygon));
-  return out;
+  return game_detail::update_of(changes, polygon_mesh);
 }
 
 std::vector<PolygonMesh> all_meshes(const Landscape& world) {
