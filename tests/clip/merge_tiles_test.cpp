@@ -49,24 +49,24 @@ void expect_same_region(const ValidSet& tiles) {
   RC_ASSERT(fast.set.polygons().size() <= tiles.polygons().size());
 }
 
-RC_GTEST_PROP(MergeTiles, QuadtreeTilesMergeToMergesRegion, ()) {
+// A random valid set cut at the boxes of a random quadtree over it.
+ValidSet random_tiles() {
   const PolygonSet raw = *gen::polygon_set({64, 64}, 60);
   const ValidSet set =
       normalize_to_valid_set(std::vector<Ring>(raw.begin(), raw.end()), FillRule::kPositive).set;
   std::vector<Box64> leaves;
   quadtree_leaves({{0, 0}, {128, 128}}, leaves);
-  expect_same_region(tiles_of(set, leaves));
+  return tiles_of(set, leaves);
+}
+
+RC_GTEST_PROP(MergeTiles, QuadtreeTilesMergeToMergesRegion, ()) {
+  expect_same_region(random_tiles());
 }
 
 // TileMerge keeps what it needs: finished after the tiles are gone (a frame later, in a game),
 // with checked mode's area check against the tiles it was given, it gives merge_tiles' result.
 RC_GTEST_PROP(MergeTiles, ATileMergeFinishedLaterIsMergeTiles, ()) {
-  const PolygonSet raw = *gen::polygon_set({64, 64}, 60);
-  const ValidSet set =
-      normalize_to_valid_set(std::vector<Ring>(raw.begin(), raw.end()), FillRule::kPositive).set;
-  std::vector<Box64> leaves;
-  quadtree_leaves({{0, 0}, {128, 128}}, leaves);
-  auto tiles = std::make_unique<ValidSet>(tiles_of(set, leaves));
+  auto tiles = std::make_unique<ValidSet>(random_tiles());
   const ValidClipResult whole = merge_tiles(*tiles, {.checked = true});
   TileMerge started(*tiles, {.checked = true});
   tiles.reset();
