@@ -57,9 +57,24 @@ void successors(std::span<const SurfaceSegment> segs, const Box64& cell, const B
 
 // Follows `next` from segment `start`, marking segments used; stops at the end of the chain or
 // back at a used segment (the start of a cycle).
+// The segments follow() will take from `start`, or more (at most all of them): the chain's
+// arrays are allocated once, at their size.
+std::size_t length_from(const std::vector<std::size_t>& next, std::size_t start,
+                        const std::vector<std::uint8_t>& used) {
+  std::size_t n = 0;
+  for (std::size_t s = start; s != kNoSegment && !used[s] && n < next.size(); s = next[s]) {
+    ++n;
+    if (next[s] == start) break;
+  }
+  return n;
+}
+
 TracedChain follow(std::span<const SurfaceSegment> segs, const std::vector<std::size_t>& next,
                    std::size_t start, std::vector<std::uint8_t>& used) {
   TracedChain chain;
+  const std::size_t length = length_from(next, start, used);
+  chain.points.reserve(length + 1);
+  chain.materials.reserve(length);
   chain.points.push_back(segs[start].a);
   std::size_t s = start;
   while (s != kNoSegment && !used[s]) {

@@ -191,7 +191,7 @@ void SurfaceState::rekey(const SurfaceChain& kept, const Ghosts& again, CellStor
   node.mapped().ghost_next = again.next;
   *at = node.key();
   update.added.emplace_back(node.key(), node.mapped());
-  chains_.insert(std::move(node));
+  chains_.insert(chains_.end(), std::move(node));
 }
 
 // Stage "commit": each computed cell's new chains take the id of an equal old chain of the same
@@ -201,36 +201,44 @@ void SurfaceState::commit(CellStore& store, std::span<const GoneCell> gone, Chai
   for (Computed& c : computed_) {
     std::vector<ChainId>& ids = store.at(c.box).chains;
     ids.clear();
+    old_.clear();  // each old chain looked up once, not once per new chain
+    for (ChainId id : c.old) old_.emplace_back(id, held(id));
     for (std::size_t k = c.first; k < c.first + c.count; ++k)
-      ids.push_back(take(pending_[k], c.old, update));
-    for (ChainId id : c.old) remove(id, update);
+      ids.push_back(take(pending_[k], update));
+    for (const auto& [id, at] : old_) remove(at, update);
   }
   for (const GoneCell& g : gone)
     if (!traced_now(store, g.box))
-      for (ChainId id : g.chains) remove(id, update);
+      for (ChainId id : g.chains) remove(held(id), update);
 }
 
-// The id of a new chain: an equal old one's (taken out of `old`), or a fresh one.
-ChainId SurfaceState::take(SurfaceChain& chain, std::vector<ChainId>& old, ChainUpdate& update) {
-  const auto same =
-      std::find_if(old.begin(), old.end(), [&](ChainId id) { return chains_.at(id) == chain; });
-  if (same != old.end()) {
-    const ChainId id = *same;
-    old.erase(same);
-    const SurfaceChain& kept = chains_.at(id);
-    ends_.replace(&chain, kept);
+// The id of a new chain: an equal old one's (taken out of old_), or a fresh one. Ids only grow,
+// so a fresh one goes at the map's end.
+ChainId SurfaceState::take(SurfaceChain& chain, ChainUpdate& update) {
+  const auto same = std::find_if(old_.begin(), old_.end(),
+                                 [&](const OldChain& old) { return old.second->second == chain; });
+  if (same != old_.end()) {
+    const ChainId id = same->first;
+    ends_.replace(&chain, same->second->second);
+    old_.erase(same);
     return id;
   }
   const ChainId id = next_id_++;
-  const auto it = chains_.emplace(id, std::move(chain)).first;
+  const auto it = chains_.emplace_hint(chains_.end(), id, std::move(chain));
   ends_.replace(&chain, it->second);
   update.added.emplace_back(id, it->second);
   return id;
 }
 
-void SurfaceState::remove(ChainId id, ChainUpdate& update) {
-  chains_.erase(id);
-  update.removed.push_back(id);
+std::map<ChainId, SurfaceChain>::iterator SurfaceState::held(ChainId id) {
+  const auto at = chains_.find(id);
+  if (at == chains_.end()) throw std::logic_error("game layer: a chain id without its chain");
+  return at;
+}
+
+void SurfaceState::remove(std::map<ChainId, SurfaceChain>::iterator at, ChainUpdate& update) {
+  update.removed.push_back(at->first);
+  chains_.erase(at);
 }
 
 }  // namespace edgeland::game_detail

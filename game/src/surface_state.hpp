@@ -66,8 +66,10 @@ class SurfaceState {
   void reghost_kept(const Box64& world, CellStore& store, ChainUpdate& update);
   void rekey(const SurfaceChain& kept, const Ghosts& again, CellStore& store, ChainUpdate& update);
   void commit(CellStore& store, std::span<const GoneCell> gone, ChainUpdate& update);
-  ChainId take(SurfaceChain& chain, std::vector<ChainId>& old, ChainUpdate& update);
-  void remove(ChainId id, ChainUpdate& update);
+  using OldChain = std::pair<ChainId, std::map<ChainId, SurfaceChain>::iterator>;
+  ChainId take(SurfaceChain& chain, ChainUpdate& update);
+  void remove(std::map<ChainId, SurfaceChain>::iterator at, ChainUpdate& update);
+  std::map<ChainId, SurfaceChain>::iterator held(ChainId id);
   bool traced_now(const CellStore& store, const Box64& box) const;
 
   SurfaceOptions options_;
@@ -84,6 +86,7 @@ class SurfaceState {
   TraceScratch trace_scratch_;
   SideSpans covers_;
   std::vector<const SurfaceChain*> around_;
+  std::vector<OldChain> old_;  // commit: the old chains of the cell being committed
   std::unordered_map<Box64, const GoneCell*, BoxHash> gone_;
   std::uint64_t stamp_ = 0;  // this update's number (CellRecord::traced_in)
 };

@@ -6,6 +6,7 @@
 #include "edgeland/kernel/assert.hpp"
 #include "edgeland/kernel/errors.hpp"
 #include "edgeland/kernel/predicates.hpp"
+#include "edgeland/kernel/scratch.hpp"
 #include "edgeland/kernel/triangulation.hpp"
 #include "hertel_mehlhorn.hpp"
 #include "piece_mesh.hpp"
@@ -15,15 +16,25 @@ namespace {
 
 // The piece holding half-edge `first`, its corners only, counter-clockwise; marks its
 // half-edges taken.
+// Whether the piece turns strictly at the origin of half-edge h.
+bool corner_at(const detail::PieceMesh& mesh, std::uint32_t h) {
+  return orientation(mesh.point(mesh.prev(h)), mesh.point(h), mesh.point(mesh.next(h))) ==
+         Orientation::kCounterClockwise;
+}
+
 Polygon corners_of_piece(const detail::PieceMesh& mesh, std::uint32_t first,
                          std::vector<char>& taken) {
-  Polygon piece;
+  std::size_t count = 0;  // counted first: the piece is allocated once, at its size
   std::uint32_t h = first;
   do {
+    count += corner_at(mesh, h) ? 1 : 0;
+    h = mesh.next(h);
+  } while (h != first);
+  Polygon piece;
+  piece.reserve(count);
+  do {
     taken[h] = 1;
-    const Point64 before = mesh.point(mesh.prev(h)), at = mesh.point(h);
-    const Point64 after = mesh.point(mesh.next(h));
-    if (orientation(before, at, after) == Orientation::kCounterClockwise) piece.push_back(at);
+    if (corner_at(mesh, h)) piece.push_back(mesh.point(h));
     h = mesh.next(h);
   } while (h != first);
   return piece;
@@ -45,7 +56,8 @@ Polygon corners_of(const Polygon& polygon) {
 
 std::vector<Polygon> pieces_of(const detail::PieceMesh& mesh) {
   std::vector<Polygon> pieces;
-  std::vector<char> taken(mesh.half_edge_count(), 0);
+  detail::ScratchVector<char> taken;
+  taken.assign(mesh.half_edge_count(), 0);
   for (std::uint32_t h = 0; h < mesh.half_edge_count(); ++h)
     if (mesh.alive(h) && !taken[h]) pieces.push_back(corners_of_piece(mesh, h, taken));
   return pieces;

@@ -34,7 +34,7 @@ PieceMesh::PieceMesh(const Polygon& polygon, const std::vector<Triangle>& triang
   alive_.assign(count, 1);
   parent_.resize(triangles.size());
   corners_.assign(triangles.size(), 3);
-  std::vector<Keyed> diagonals;
+  ScratchVector<Keyed> diagonals;
   for (std::uint32_t t = 0; t < triangles.size(); ++t) {
     const std::uint32_t c[3] = {triangles[t].a, triangles[t].b, triangles[t].c};
     parent_[t] = t;

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "edgeland/kernel/polygon.hpp"
+#include "edgeland/kernel/scratch.hpp"
 #include "edgeland/kernel/triangulate.hpp"
 
 namespace edgeland::detail {
@@ -40,10 +41,11 @@ class PieceMesh {
   std::uint32_t root(std::uint32_t triangle);
 
   const Polygon& polygon_;
-  std::vector<std::uint32_t> origin_, next_, prev_, twin_;
-  std::vector<char> alive_;
-  std::vector<std::uint32_t> parent_;   // union-find over triangles
-  std::vector<std::uint32_t> corners_;  // at each root
+  // Scratch arrays: meshing a game's polygons one after another allocates none of them.
+  ScratchVector<std::uint32_t> origin_, next_, prev_, twin_;
+  ScratchVector<char> alive_;
+  ScratchVector<std::uint32_t> parent_;   // union-find over triangles
+  ScratchVector<std::uint32_t> corners_;  // at each root
 };
 
 }  // namespace edgeland::detail

@@ -3,15 +3,17 @@
 // polygons (by id) left and arrived.
 #include <vector>
 
+#include "edgeland/kernel/scratch.hpp"
 #include "node.hpp"
 
 namespace edgeland::detail {
 
+// Scratch arrays: an edit's diff allocates nothing in the steady state.
 struct Changes {
-  std::vector<NodePtr> old_cells;  // cells of the old tree that are gone
-  std::vector<NodePtr> new_cells;  // cells of the new tree that are new
+  ScratchVector<NodePtr> old_cells;  // cells of the old tree that are gone
+  ScratchVector<NodePtr> new_cells;  // cells of the new tree that are new
   // Inner nodes of the new tree that are new (their structure is what checked mode verifies).
-  std::vector<NodePtr> new_inner;
+  ScratchVector<NodePtr> new_inner;
 };
 
 // Walks both trees where they differ. O(size of the differing parts).

@@ -306,6 +306,7 @@ NodePtr EditBuilder::finish(Draft& draft, const NodePtr& old) {
 NodePtr EditBuilder::finish_node(Draft& draft, const NodePtr& old) {
   if (old->is_cell() || draft.is_cell()) return finish_within(draft, IdSource(old));
   std::vector<NodePtr> children;
+  children.reserve(draft.children.size());
   for (std::size_t i = 0; i < draft.children.size(); ++i)
     children.push_back(finish(draft.children[i], old->children[i]));
   return make_inner(draft.box, draft.depth, children, counter_at(draft.depth));
@@ -334,6 +335,7 @@ NodePtr EditBuilder::finish_within(Draft& draft, const IdSource& previous) {
                      counter_at(draft.depth));
   }
   std::vector<NodePtr> children;
+  children.reserve(draft.children.size());
   for (Draft& c : draft.children) children.push_back(finish_within(c, previous));
   return make_inner(draft.box, draft.depth, children, counter_at(draft.depth));
 }

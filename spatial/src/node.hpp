@@ -54,6 +54,15 @@ struct Node {
     const std::uint32_t iy = cut_y && p.y >= y_line ? 1 : 0;
     return *children[ix + (cut_x ? 2 : 1) * iy];
   }
+  // The box of child i (an inner node), from this node's box and cut lines: a walk picks the
+  // children a query meets without reading the others (split_boxes' order: x first).
+  Box64 child_box(std::uint32_t i) const noexcept {
+    const std::uint32_t ix = cut_x ? i % 2 : 0, iy = cut_x ? i / 2 : i;
+    Box64 b = box;
+    if (cut_x) (ix == 0 ? b.max.x : b.min.x) = x_line;
+    if (cut_y) (iy == 0 ? b.max.y : b.min.y) = y_line;
+    return b;
+  }
   const PolygonSet& polygon_set() const noexcept { return content.set.polygons(); }
   // The material of polygon i (labels are materials 1..255 by I1).
   Material material(std::size_t i) const { return content.labels[i]; }

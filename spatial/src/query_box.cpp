@@ -14,14 +14,26 @@ namespace {
 using detail::Node;
 using detail::NodePtr;
 
+bool meets(const Box64& node_box, const Box64& box, bool open) {
+  return open ? node_box.overlaps_open(box) : node_box.overlaps(box);
+}
+
+// n meets the box. A child is read only when its box (from n's cut lines) meets it too: a
+// small query reads one path and its neighbours, not every sibling along the way.
 template <class F>
-bool visit_cells_meeting(const NodePtr& n, const Box64& box, bool open, F&& f) {
-  if (open ? !n->box.overlaps_open(box) : !n->box.overlaps(box)) return true;
+bool visit_meeting_cells_below(const NodePtr& n, const Box64& box, bool open, F&& f) {
   detail::require_loaded(*n);
   if (n->is_cell()) return f(n);
   for (std::uint32_t i = 0; i < n->child_count; ++i)
-    if (!visit_cells_meeting(n->children[i], box, open, f)) return false;
+    if (meets(n->child_box(i), box, open) &&
+        !visit_meeting_cells_below(n->children[i], box, open, f))
+      return false;
   return true;
+}
+
+template <class F>
+bool visit_cells_meeting(const NodePtr& n, const Box64& box, bool open, F&& f) {
+  return !meets(n->box, box, open) || visit_meeting_cells_below(n, box, open, f);
 }
 
 // A closed box with min > max holds no point, so it meets nothing.

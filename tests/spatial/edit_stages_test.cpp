@@ -78,6 +78,29 @@ TEST(SplitBoxes, ChildrenPartitionTheParentAtTheWholeRange) {
   }
 }
 
+TEST(SplitBoxes, AnInnerNodeDerivesEachChildsBoxFromItsCutLines) {
+  // Node::child_box (what box queries descend by, without reading the children) is the box
+  // split_boxes gave the child, for both tree kinds, cuts in one or both directions, odd sizes.
+  const std::vector<Box64> boxes{{{0, 0}, {101, 64}},
+                                 {{-7, 3}, {9, 200}},
+                                 {{0, 0}, {16, 64}},
+                                 {{0, 0}, {64, 16}},
+                                 {{-5, -5}, {5, 5}}};
+  for (TreeKind kind : {TreeKind::kQuadtree, TreeKind::kKdTree}) {
+    LandscapeConfig config;
+    config.tree = kind;
+    config.min_cell_size = 16;
+    for (const Box64& box : boxes) {
+      if (!detail::can_split(box, config)) continue;
+      const std::vector<Box64> parts = detail::split_boxes(box, config);
+      std::vector<NodePtr> children;
+      for (const Box64& part : parts) children.push_back(cell(part, {}, {}, {}));
+      const NodePtr inner = detail::make_inner(box, 0, children);
+      for (std::uint32_t i = 0; i < parts.size(); ++i) EXPECT_EQ(inner->child_box(i), parts[i]);
+    }
+  }
+}
+
 // ---- cut_to_children -------------------------------------------------------------------------
 
 // A cell's canonical content: two regions (rock 1, ore 2) from `relabel` within the box.

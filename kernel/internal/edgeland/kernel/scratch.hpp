@@ -35,6 +35,7 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <initializer_list>
 #include <utility>
 #include <vector>
 
@@ -93,6 +94,7 @@ template <class T>
 class ScratchVector : public std::vector<T> {
  public:
   ScratchVector() : std::vector<T>(SpareArrays<T>::take()) { this->clear(); }
+  ScratchVector(std::initializer_list<T> items) : ScratchVector() { this->assign(items); }
   // A copy takes scratch storage of its own (tests copy stage results; the library does not).
   ScratchVector(const ScratchVector& other) : ScratchVector() {
     this->assign(other.begin(), other.end());
