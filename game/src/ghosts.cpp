@@ -1,7 +1,5 @@
 #include "ghosts.hpp"
 
-#include <algorithm>
-
 #include "chain_tracing.hpp"
 #include "edgeland/kernel/around_vertex.hpp"
 #include "edgeland/kernel/scratch.hpp"
@@ -82,35 +80,24 @@ void set_ghosts(SurfaceChain& chain, const ChainsAround& around, const Box64& wo
 
 void ChainEndIndex::add(const SurfaceChain& chain) {
   if (chain.closed) return;
-  at_[chain.points.front()].push_back(&chain);
-  if (chain.points.back() != chain.points.front()) at_[chain.points.back()].push_back(&chain);
-}
-
-void ChainEndIndex::erase(Point64 p, const SurfaceChain* chain) {
-  const auto it = at_.find(p);
-  if (it == at_.end()) return;
-  std::erase(it->second, chain);
-  if (it->second.empty()) at_.erase(it);
+  table_.insert(chain.points.front(), &chain);
+  if (chain.points.back() != chain.points.front()) table_.insert(chain.points.back(), &chain);
 }
 
 void ChainEndIndex::remove(const SurfaceChain& chain) {
   if (chain.closed) return;
-  erase(chain.points.front(), &chain);
-  if (chain.points.back() != chain.points.front()) erase(chain.points.back(), &chain);
+  table_.erase(chain.points.front(), &chain);
+  if (chain.points.back() != chain.points.front()) table_.erase(chain.points.back(), &chain);
 }
 
 void ChainEndIndex::replace(const SurfaceChain* from, const SurfaceChain& to) {
   if (to.closed) return;
-  for (const Point64 p : {to.points.front(), to.points.back()}) {
-    const auto it = at_.find(p);
-    if (it == at_.end()) continue;
-    std::replace(it->second.begin(), it->second.end(), from, &to);
-  }
+  table_.replace(to.points.front(), from, &to);
+  if (to.points.back() != to.points.front()) table_.replace(to.points.back(), from, &to);
 }
 
 void ChainEndIndex::chains_at(Point64 p, std::vector<const SurfaceChain*>& out) const {
-  const auto it = at_.find(p);
-  if (it != at_.end()) out.insert(out.end(), it->second.begin(), it->second.end());
+  table_.append(p, out);
 }
 
 ChainsAround ChainEndIndex::lookup() const {

@@ -7,9 +7,9 @@
 // ending at the first point. A chain that meets the world border (no wall) goes on in a straight
 // line: the ghost continues its end segment.
 #include <functional>
-#include <unordered_map>
 #include <vector>
 
+#include "chain_end_table.hpp"
 #include "edgeland/game/surface_chains.hpp"
 
 namespace edgeland::game_detail {
@@ -40,20 +40,21 @@ void set_ghosts(SurfaceChain& chain, const ChainsAround& around, const Box64& wo
 Point64 straight_on(Point64 end, Point64 before);
 
 // An index of open chains by their end points (closed chains are not in it): the chains a
-// ghost is taken from. The chains must stay where they are while indexed.
+// ghost is taken from. The chains must stay where they are while indexed. A point's chains come
+// in the order they were added there (`replace` keeps the place): a surface update re-keys kept
+// chains in that order, so it decides chain ids. Storage: one flat table (chain_end_table.hpp).
 class ChainEndIndex {
  public:
   void add(const SurfaceChain& chain);
   void remove(const SurfaceChain& chain);
   // `to` takes the place of `from` (a chain with the same end points, which may be gone).
   void replace(const SurfaceChain* from, const SurfaceChain& to);
-  // Appends the chains with an end at p.
+  // Appends the chains with an end at p, in the order they were added.
   void chains_at(Point64 p, std::vector<const SurfaceChain*>& out) const;
   ChainsAround lookup() const;
 
  private:
-  void erase(Point64 p, const SurfaceChain* chain);
-  std::unordered_map<Point64, std::vector<const SurfaceChain*>, Point64Hash> at_;
+  ChainEndTable table_;
 };
 
 }  // namespace edgeland::game_detail
