@@ -31,11 +31,23 @@ void CellStore::remove(std::span<const Box64> boxes, std::vector<GoneCell>& gone
     if (it == cells_.end()) continue;
     CellRecord& r = it->second;
     gone.push_back({box, std::move(r.chains), r.scan.port_spans, std::move(r.scan.contents)});
-    r.chains.clear();
-    r.scan.contents.reset();  // the old cell's polygons are not kept alive by a spare record
-    spare_.push_back(std::move(r));
-    cells_.erase(it);
+    retire(it);
   }
+}
+
+void CellStore::drop(std::span<const Box64> boxes) {
+  for (const Box64& box : boxes)
+    if (const auto it = cells_.find(box); it != cells_.end()) retire(it);
+}
+
+// The record's storage is kept for the next scan; the old cell's polygons are not kept alive by
+// a spare record.
+void CellStore::retire(Cells::iterator it) {
+  CellRecord& r = it->second;
+  r.chains.clear();
+  r.scan.contents.reset();
+  spare_.push_back(std::move(r));
+  cells_.erase(it);
 }
 
 void CellStore::scan(const Landscape& world, std::span<const Box64> boxes,

@@ -38,6 +38,8 @@ class CellStore {
  public:
   // Takes out the records of the boxes that have one, appending what is left of them to `gone`.
   void remove(std::span<const Box64> boxes, std::vector<GoneCell>& gone);
+  // Takes out the records of the boxes that have one, keeping nothing of them.
+  void drop(std::span<const Box64> boxes);
   // Scans the cells of `world` with these boxes into new records (replacing any).
   void scan(const Landscape& world, std::span<const Box64> boxes,
             const PhysicsMaterials& materials);
@@ -56,7 +58,9 @@ class CellStore {
   }
 
  private:
-  std::unordered_map<Box64, CellRecord, BoxHash> cells_;
+  using Cells = std::unordered_map<Box64, CellRecord, BoxHash>;
+  void retire(Cells::iterator it);
+  Cells cells_;
   std::vector<CellRecord> spare_;  // records taken out: their storage goes to the next scans
   ScanScratch scratch_;
   std::uint64_t scans_ = 0;

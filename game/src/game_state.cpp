@@ -13,6 +13,10 @@
 namespace edgeland::game_detail {
 namespace {
 
+bool box_less(const Box64& l, const Box64& r) {
+  return l.min != r.min ? l.min < r.min : l.max < r.max;
+}
+
 // The island's key as IslandTree keeps it: the fingerprint of its polygons' ids.
 IslandKey key_of(const Island& island) {
   IslandKey key = IslandKey::of(island.pieces.front().id);
@@ -148,6 +152,7 @@ GameUpdate GameState::apply(std::span<const Edit> edits) {
     follow(before, changes, out);
     take_changes(out.changes, std::move(changes));
     drain_debris(out);
+    trace_surface(out);
     finish(out);
     return out;
   });
@@ -162,13 +167,14 @@ GameUpdate GameState::reset(Landscape world) {
     GameUpdate out;
     start_work();
     differing_cells(land_, store_, replaced_, fresh_);
-    replace_cells(replaced_, fresh_, out);
+    replace_cells(replaced_, fresh_);
     out.changes = changes_between(held_in(gone_), store_, fresh_);
     if (islands_) {  // summaries made anew: every island of the world waits again
       islands_ = std::make_unique<IslandTree>(land_, store_, options_.surface.materials);
       queue_islands(islands_of(land_, store_, islands_->islands()));
     }
     drain_debris(out);
+    trace_surface(out);
     finish(out);
     return out;
   });
@@ -234,17 +240,15 @@ std::vector<ChainId> GameState::held_chains() const {
 }
 
 // Stage "follow": the change's cells replaced in the store (each new one scanned once), then
-// the chains and the island summaries from the records.
+// the island summaries from the records (the chains wait for trace_surface).
 void GameState::follow(const Landscape& before, const ChangeSet& changes, GameUpdate& out) {
   fresh_.clear();
   for (const Box64& box : changes.cells)
     if (land_.cell(box)) fresh_.push_back(box);  // a batch's step may re-cut a cell again
-  std::sort(fresh_.begin(), fresh_.end(), [](const Box64& l, const Box64& r) {
-    return l.min != r.min ? l.min < r.min : l.max < r.max;
-  });
+  std::sort(fresh_.begin(), fresh_.end(), box_less);
   fresh_.erase(std::unique(fresh_.begin(), fresh_.end()), fresh_.end());
   replaced_cells(before, fresh_, replaced_);
-  replace_cells(replaced_, fresh_, out);
+  replace_cells(replaced_, fresh_);
   if (!islands_) return;
   std::vector<Island> found = islands_of(land_, store_, islands_->update(land_, store_, fresh_));
   // A waiting island the change altered or tied to anchored ground is no island any more: its
@@ -261,13 +265,35 @@ void GameState::queue_islands(std::vector<Island> islands) {
   }
 }
 
-void GameState::replace_cells(std::span<const Box64> replaced, std::span<const Box64> fresh,
-                              GameUpdate& out) {
-  gone_.clear();
-  store_.remove(replaced, gone_);
+// The records of `replaced` leave the store and those of `fresh` are scanned into it. A replaced
+// cell scanned earlier in this update (debris carved where the edits just were) was never
+// traced: it leaves no trace behind, and the gone cells keep what the chains were made from.
+void GameState::replace_cells(std::span<const Box64> replaced, std::span<const Box64> fresh) {
+  traced_before_.clear();
+  for (const Box64& box : replaced) {
+    const auto at = std::lower_bound(untraced_.begin(), untraced_.end(), box, box_less);
+    if (at != untraced_.end() && *at == box)
+      untraced_.erase(at);
+    else
+      traced_before_.push_back(box);
+  }
+  store_.remove(traced_before_, gone_);
+  store_.drop(replaced);  // what is left of them: those of this update
   store_.scan(land_, fresh, options_.surface.materials);
-  take_chains(out.chains, surface_.update(land_, store_, gone_, fresh));
+  for (const Box64& box : fresh) {
+    const auto at = std::lower_bound(untraced_.begin(), untraced_.end(), box, box_less);
+    if (at == untraced_.end() || *at != box) untraced_.insert(at, box);
+  }
+}
+
+// Stage "surface": the chains of the cells the update's edits and debris left, traced once from
+// what they were at the last update (the gone cells) to what they are now.
+void GameState::trace_surface(GameUpdate& out) {
+  if (untraced_.empty() && gone_.empty()) return;
+  take_chains(out.chains, surface_.update(land_, store_, gone_, untraced_));
   out.work.cells_traced += surface_.last_traced();
+  gone_.clear();
+  untraced_.clear();
 }
 
 // Stage "debris": the queued islands' jobs advanced, those finished carved out in one edit,
@@ -318,6 +344,8 @@ void GameState::finish(GameUpdate& out) const {
 }
 
 void GameState::start_work() {
+  gone_.clear();
+  untraced_.clear();
   scans_before_ = store_.scans();
   passes_before_ = solid_boundary_runs();
 }

@@ -59,8 +59,8 @@ class GameState {
 
   ChangeSet edit(std::span<const Edit> edits);
   void follow(const Landscape& before, const ChangeSet& changes, GameUpdate& out);
-  void replace_cells(std::span<const Box64> replaced, std::span<const Box64> fresh,
-                     GameUpdate& out);
+  void replace_cells(std::span<const Box64> replaced, std::span<const Box64> fresh);
+  void trace_surface(GameUpdate& out);
   void drain_debris(GameUpdate& out);
   std::vector<DebrisJob> advance_jobs();
   DebrisJob::Pace pace_of(const Waiting& w) const;
@@ -87,8 +87,11 @@ class GameState {
   };
   std::vector<Fill> fills_;
   // Per update (storage reused).
-  std::vector<Box64> replaced_, fresh_;
+  std::vector<Box64> replaced_, fresh_, traced_before_;
+  // Since the chains were last traced (trace_surface): the cells gone, as they were then, and
+  // the boxes of the records scanned since (ascending).
   std::vector<GoneCell> gone_;
+  std::vector<Box64> untraced_;
   std::uint64_t scans_before_ = 0, passes_before_ = 0;
   // What the game holds: the landscape of the last update delivered (its meshes and polygons)
   // and the chains it was given, one bit per chain id (ids only grow, and a bit is set or

@@ -18,16 +18,24 @@ std::uint64_t mixed(std::uint64_t x) { return mix64(x + kSplitMix64Gamma); }
 
 // Ports of one group that abut along a side become one: a port overlaps another over a positive
 // length exactly when one of its parts does, so matching gives the same unions, and a node's
-// sides keep one port per run of solid instead of one per cell along them.
-void join_abutting(std::vector<Port>& side) {
+// sides keep one port per run of solid instead of one per cell along them. Compacts the sides in
+// place, in order.
+void join_abutting(Summary& s) {
   std::size_t kept = 0;
-  for (const Port& p : side) {
-    if (kept > 0 && side[kept - 1].hi == p.lo && side[kept - 1].group == p.group)
-      side[kept - 1].hi = p.hi;
-    else
-      side[kept++] = p;
+  for (std::size_t k = 0; k < 4; ++k) {
+    const std::size_t begin = s.side_begin[k], end = s.side_begin[k + 1];
+    s.side_begin[k] = static_cast<std::uint32_t>(kept);
+    for (std::size_t i = begin; i < end; ++i) {
+      const Port p = s.ports[i];
+      if (kept > s.side_begin[k] && s.ports[kept - 1].hi == p.lo &&
+          s.ports[kept - 1].group == p.group)
+        s.ports[kept - 1].hi = p.hi;
+      else
+        s.ports[kept++] = p;
+    }
   }
-  side.resize(kept);
+  s.side_begin[4] = static_cast<std::uint32_t>(kept);
+  s.ports.resize(kept);
 }
 
 // Groups 0..n-1 united into classes; keeps the classes that still have ports (renumbered in
@@ -44,16 +52,15 @@ void finish(std::span<Group> groups, ScratchUnionFind& uf, Summary& out) {
   out.closed.clear();
   ScratchVector<std::uint32_t> renumbered;
   renumbered.assign(groups.size(), kNotSolid);
-  for (std::vector<Port>& side : out.ports)
-    for (Port& p : side) {
-      std::uint32_t& n = renumbered[uf.find(p.group)];
-      if (n == kNotSolid) {
-        n = static_cast<std::uint32_t>(out.groups.size());
-        out.groups.push_back(groups[uf.find(p.group)]);
-      }
-      p.group = n;
+  for (Port& p : out.ports) {  // along the sides in order: the order of first appearance
+    std::uint32_t& n = renumbered[uf.find(p.group)];
+    if (n == kNotSolid) {
+      n = static_cast<std::uint32_t>(out.groups.size());
+      out.groups.push_back(groups[uf.find(p.group)]);
     }
-  for (std::vector<Port>& side : out.ports) join_abutting(side);
+    p.group = n;
+  }
+  join_abutting(out);
   for (std::uint32_t g = 0; g < groups.size(); ++g) {
     const Group& root = groups[g];
     if (uf.find(g) != g || renumbered[g] != kNotSolid || root.anchored) continue;
@@ -104,8 +111,12 @@ void leaf_summary(const CellScan& cell, Summary& out) {
       groups[g].key.add(key);
     }
   }
-  for (std::size_t k = 0; k < out.ports.size(); ++k)
-    out.ports[k].assign(cell.ports[k].begin(), cell.ports[k].end());
+  out.ports.clear();
+  for (std::size_t k = 0; k < cell.ports.size(); ++k) {
+    out.side_begin[k] = static_cast<std::uint32_t>(out.ports.size());
+    out.ports.insert(out.ports.end(), cell.ports[k].begin(), cell.ports[k].end());
+  }
+  out.side_begin[4] = static_cast<std::uint32_t>(out.ports.size());
   ScratchUnionFind uf(groups.size());
   finish(groups, uf, out);
 }
@@ -125,24 +136,25 @@ void combine(const Box64& node, std::span<const Box64> children,
       const Box64 &ba = children[a], &bb = children[b];
       const Summary &sa = *summaries[a], &sb = *summaries[b];
       if (ba.max.x == bb.min.x && ba.min.y < bb.max.y && bb.min.y < ba.max.y)
-        match(sa.ports[side_index(Side::kRight)], offset[a], sb.ports[side_index(Side::kLeft)],
-              offset[b], uf, matched);
+        match(sa.side(Side::kRight), offset[a], sb.side(Side::kLeft), offset[b], uf, matched);
       if (ba.max.y == bb.min.y && ba.min.x < bb.max.x && bb.min.x < ba.max.x)
-        match(sa.ports[side_index(Side::kTop)], offset[a], sb.ports[side_index(Side::kBottom)],
-              offset[b], uf, matched);
+        match(sa.side(Side::kTop), offset[a], sb.side(Side::kBottom), offset[b], uf, matched);
     }
+  out.ports.clear();
   for (Side s : kSides) {
-    std::vector<Port>& side = out.ports[side_index(s)];
-    side.clear();
+    const std::size_t begin = out.ports.size();
+    out.side_begin[side_index(s)] = static_cast<std::uint32_t>(begin);
     for (std::size_t c = 0; c < children.size(); ++c) {
       if (!on_side_of(children[c], s, node)) continue;
-      for (Port p : summaries[c]->ports[side_index(s)]) {
+      for (Port p : summaries[c]->side(s)) {
         p.group += offset[c];
-        side.push_back(p);
+        out.ports.push_back(p);
       }
     }
-    std::sort(side.begin(), side.end(), [](const Port& l, const Port& r) { return l.lo < r.lo; });
+    std::sort(out.ports.begin() + static_cast<std::ptrdiff_t>(begin), out.ports.end(),
+              [](const Port& l, const Port& r) { return l.lo < r.lo; });
   }
+  out.side_begin[4] = static_cast<std::uint32_t>(out.ports.size());
   finish(groups, uf, out);
 }
 

@@ -6,12 +6,6 @@
 namespace edgeland::game_detail {
 namespace {
 
-// The segment of the box's side as a flat box (a query for the cells across it).
-Box64 side_box(const Box64& box, Side side) {
-  const Span e = side_extent(box, side);
-  return segment_box(point_on(box, side, e.lo), point_on(box, side, e.hi));
-}
-
 // Whether `other` lies across `side` of `box` along a stretch of positive length.
 bool shares_side(const Box64& box, Side side, const Box64& other) {
   if (!across(box, side, other)) return false;
@@ -57,26 +51,38 @@ ChainUpdate SurfaceState::update(const Landscape& world, CellStore& store,
 void SurfaceState::compute_covers(const Landscape& world, CellStore& store,
                                   std::span<const Box64> fresh) {
   computed_.clear();
+  around_fresh_.clear();
+  around_begin_.clear();
   for (const Box64& box : fresh) {
     CellRecord& record = store.at(box);
     covers_of(world, store, box, record.covers);
+    around_begin_.push_back(around_fresh_.size());
+    for (const NeighbourSpans& n : neighbours_) around_fresh_.push_back(n.box);
     const auto before = gone_.find(box);
     add_computed(record, box,
                  before == gone_.end() ? std::vector<ChainId>{} : before->second->chains);
   }
-  for (const Box64& box : fresh) {
-    const auto before = gone_.find(box);
-    const SideSpans& now = store.at(box).scan.port_spans;
-    for (Side side : kSides) {
-      const auto s = static_cast<std::size_t>(side);
-      if (before != gone_.end() && before->second->port_spans.sides[s] == now.sides[s]) continue;
-      world.cells_in(side_box(box, side), [&](const CellView& c) {
-        if (!shares_side(box, side, c.box)) return true;
-        CellRecord& next = store.at(c.box);
-        if (next.traced_in != stamp_ && covers_changed(world, store, c.box))
-          add_computed(next, c.box, next.chains);
-        return true;
-      });
+  around_begin_.push_back(around_fresh_.size());
+  for (std::size_t k = 0; k < fresh.size(); ++k)
+    recover_neighbours(world, store, fresh[k],
+                       std::span<const Box64>(around_fresh_)
+                           .subspan(around_begin_[k], around_begin_[k + 1] - around_begin_[k]));
+}
+
+// The neighbours of a fresh cell (`around`: every cell touching it, in the tree's order) across
+// each side whose port spans changed are computed when their covers changed.
+void SurfaceState::recover_neighbours(const Landscape& world, CellStore& store, const Box64& box,
+                                      std::span<const Box64> around) {
+  const auto before = gone_.find(box);
+  const SideSpans& now = store.at(box).scan.port_spans;
+  for (Side side : kSides) {
+    const auto s = static_cast<std::size_t>(side);
+    if (before != gone_.end() && before->second->port_spans.sides[s] == now.sides[s]) continue;
+    for (const Box64& other : around) {
+      if (!shares_side(box, side, other)) continue;
+      CellRecord& next = store.at(other);
+      if (next.traced_in != stamp_ && covers_changed(world, store, other))
+        add_computed(next, other, next.chains);
     }
   }
 }

@@ -57,6 +57,8 @@ class SurfaceState {
   };
 
   void compute_covers(const Landscape& world, CellStore& store, std::span<const Box64> fresh);
+  void recover_neighbours(const Landscape& world, CellStore& store, const Box64& box,
+                          std::span<const Box64> around);
   void add_computed(CellRecord& record, const Box64& box, std::vector<ChainId> old);
   bool covers_changed(const Landscape& world, CellStore& store, const Box64& box);
   void covers_of(const Landscape& world, const CellStore& store, const Box64& box, SideSpans& out);
@@ -81,6 +83,10 @@ class SurfaceState {
   std::vector<SurfaceChain> pending_;
   std::vector<Point64> affected_;  // ends of chains that left or entered the index
   std::vector<NeighbourSpans> neighbours_;
+  // compute_covers: the cells touching fresh cell k are around_fresh_[around_begin_[k] ..
+  // around_begin_[k + 1]).
+  std::vector<Box64> around_fresh_;
+  std::vector<std::size_t> around_begin_;
   std::vector<SurfaceSegment> segments_;
   std::vector<TracedChain> traced_;
   TraceScratch trace_scratch_;
