@@ -65,8 +65,8 @@ class ChainEndTable {
 
   std::vector<Entry> slots_;
   std::vector<Entry> spare_;  // the slots before the last rehash, reused by the next one
-  std::size_t live_ = 0;  // live entries
-  std::size_t used_ = 0;  // live entries and tombstones
+  std::size_t live_ = 0;      // live entries
+  std::size_t used_ = 0;      // live entries and tombstones
   std::uint64_t next_seq_ = kFirstSeq;
   mutable std::vector<Match> matches_;  // append's scratch, kept to stay allocation-free
 };
