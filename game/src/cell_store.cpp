@@ -5,10 +5,6 @@
 namespace edgeland::game_detail {
 namespace {
 
-bool box_less(const Box64& l, const Box64& r) {
-  return l.min != r.min ? l.min < r.min : l.max < r.max;
-}
-
 // Whether a record still describes the cell: the same polygons with the same ids and materials
 // (ids alone could repeat in another landscape, a load).
 bool same_cell(const CellScan& kept, const CellContents& now) {

@@ -70,6 +70,12 @@ class CellStore {
 // ChangeSet::cells).
 void replaced_cells(const Landscape& before, std::span<const Box64> fresh, std::vector<Box64>& out);
 
+// The order cell boxes are kept in (lists of cells searched by binary search, a change set's
+// cells): by min corner, then max corner.
+inline bool box_less(const Box64& l, const Box64& r) {
+  return l.min != r.min ? l.min < r.min : l.max < r.max;
+}
+
 // The cells of `world` whose polygons differ from the store's records (`fresh`), and the
 // records that no longer match a cell of `world` as it is (`gone`): a change of any kind (a
 // snapshot restored, a load) as a replacement of cells. O(N).

@@ -13,10 +13,6 @@
 namespace edgeland::game_detail {
 namespace {
 
-bool box_less(const Box64& l, const Box64& r) {
-  return l.min != r.min ? l.min < r.min : l.max < r.max;
-}
-
 // The island's key as IslandTree keeps it: the fingerprint of its polygons' ids.
 IslandKey key_of(const Island& island) {
   IslandKey key = IslandKey::of(island.pieces.front().id);
@@ -270,15 +266,18 @@ void GameState::queue_islands(std::vector<Island> islands) {
 // traced: it leaves no trace behind, and the gone cells keep what the chains were made from.
 void GameState::replace_cells(std::span<const Box64> replaced, std::span<const Box64> fresh) {
   traced_before_.clear();
+  scanned_now_.clear();
   for (const Box64& box : replaced) {
     const auto at = std::lower_bound(untraced_.begin(), untraced_.end(), box, box_less);
-    if (at != untraced_.end() && *at == box)
+    if (at != untraced_.end() && *at == box) {
       untraced_.erase(at);
-    else
+      scanned_now_.push_back(box);
+    } else {
       traced_before_.push_back(box);
+    }
   }
   store_.remove(traced_before_, gone_);
-  store_.drop(replaced);  // what is left of them: those of this update
+  store_.drop(scanned_now_);
   store_.scan(land_, fresh, options_.surface.materials);
   for (const Box64& box : fresh) {
     const auto at = std::lower_bound(untraced_.begin(), untraced_.end(), box, box_less);

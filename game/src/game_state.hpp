@@ -87,7 +87,9 @@ class GameState {
   };
   std::vector<Fill> fills_;
   // Per update (storage reused).
-  std::vector<Box64> replaced_, fresh_, traced_before_;
+  // replace_cells splits the replaced cells into those traced before this update and those
+  // scanned in it.
+  std::vector<Box64> replaced_, fresh_, traced_before_, scanned_now_;
   // Since the chains were last traced (trace_surface): the cells gone, as they were then, and
   // the boxes of the records scanned since (ascending).
   std::vector<GoneCell> gone_;

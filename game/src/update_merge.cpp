@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "cell_store.hpp"
+
 namespace edgeland::game_detail {
 namespace {
 
@@ -45,9 +47,7 @@ void take_chains(ChainUpdate& into, ChainUpdate&& more) {
 void finish_changes(ChangeSet& changes, const Landscape& world) {
   std::sort(changes.removed.begin(), changes.removed.end());
   std::vector<Box64>& cells = changes.cells;
-  std::sort(cells.begin(), cells.end(), [](const Box64& l, const Box64& r) {
-    return l.min != r.min ? l.min < r.min : l.max < r.max;
-  });
+  std::sort(cells.begin(), cells.end(), box_less);
   cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
   std::erase_if(cells, [&](const Box64& b) { return !world.cell(b).has_value(); });
   std::sort(changes.twice_area_delta.begin(), changes.twice_area_delta.end(),
