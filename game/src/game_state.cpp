@@ -289,6 +289,7 @@ void GameState::replace_cells(std::span<const Box64> replaced, std::span<const B
 // what they were at the last update (the gone cells) to what they are now.
 void GameState::trace_surface(GameUpdate& out) {
   if (untraced_.empty() && gone_.empty()) return;
+  if (land_.checked()) check_before_surface();
   take_chains(out.chains, surface_.update(land_, store_, gone_, untraced_));
   out.work.cells_traced += surface_.last_traced();
   gone_.clear();
@@ -340,6 +341,21 @@ void GameState::finish(GameUpdate& out) const {
   out.debris_waiting = queue_.size();
   out.work.cells_scanned = static_cast<std::size_t>(store_.scans() - scans_before_);
   out.work.boundary_passes = static_cast<std::size_t>(solid_boundary_runs() - passes_before_);
+}
+
+// Checked mode: what the surface stage is handed (game/README.md, the invariant before it). Every
+// untraced box is a cell of the landscape with its record; a gone cell whose box the landscape
+// has again was scanned again (else its chains would be dropped for a cell that still holds them).
+void GameState::check_before_surface() const {
+  const auto untraced = [&](const Box64& box) {
+    return std::binary_search(untraced_.begin(), untraced_.end(), box, box_less);
+  };
+  for (const Box64& box : untraced_)
+    if (!land_.cell(box) || !store_.find(box))
+      throw std::logic_error("game layer: an untraced cell the landscape or the store lacks");
+  for (const GoneCell& g : gone_)
+    if (land_.cell(g.box) && !untraced(g.box))
+      throw std::logic_error("game layer: a gone cell the landscape has, not scanned again");
 }
 
 void GameState::start_work() {

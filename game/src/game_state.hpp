@@ -61,6 +61,7 @@ class GameState {
   void follow(const Landscape& before, const ChangeSet& changes, GameUpdate& out);
   void replace_cells(std::span<const Box64> replaced, std::span<const Box64> fresh);
   void trace_surface(GameUpdate& out);
+  void check_before_surface() const;
   void drain_debris(GameUpdate& out);
   std::vector<DebrisJob> advance_jobs();
   DebrisJob::Pace pace_of(const Waiting& w) const;
