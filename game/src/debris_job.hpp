@@ -48,6 +48,8 @@ class DebrisJob {
   // as far as `pace` allows. Returns done().
   bool advance(const GameOptions& options, std::size_t& spent, Pace pace);
   bool done() const noexcept;
+  // The island's bounding box.
+  const Box64& bounds() const noexcept { return debris_.bounds; }
   const Island& island() const noexcept { return island_; }
   std::size_t vertices() const noexcept { return vertices_; }
   Debris take() { return std::move(debris_); }

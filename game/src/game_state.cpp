@@ -248,16 +248,31 @@ void GameState::follow(const Landscape& before, const ChangeSet& changes, GameUp
   if (!islands_) return;
   std::vector<Island> found = islands_of(land_, store_, islands_->update(land_, store_, fresh_));
   // A waiting island the change altered or tied to anchored ground is no island any more: its
-  // job goes (what the change left of it, if still an island, is among those found).
+  // job goes (what the change left of it, if still an island, is among those found, and keeps
+  // its wait: a neighbour's detach re-cutting its cells must not restart the clock, or an island
+  // could wait for ever).
+  dropped_.clear();
+  for (const Waiting& w : queue_)
+    if (!islands_->holds(w.key)) dropped_.push_back({w.job.bounds(), w.age});
   std::erase_if(queue_, [&](const Waiting& w) { return !islands_->holds(w.key); });
   out.work.islands_found += found.size();
   queue_islands(std::move(found));
 }
 
+// How long an island found now has waited: the longest wait of a dropped job whose box meets
+// its own (what an altered island left is within the old one's box), else 0.
+std::size_t GameState::waited(const Box64& bounds) const {
+  std::size_t age = 0;
+  for (const auto& [box, dropped_age] : dropped_)
+    if (box.overlaps(bounds)) age = std::max(age, dropped_age);
+  return age;
+}
+
 void GameState::queue_islands(std::vector<Island> islands) {
   for (Island& island : islands) {
     const IslandKey key = key_of(island);
-    queue_.push_back({DebrisJob(std::move(island), store_, land_.checked()), key, 0});
+    const std::size_t age = waited(island.bounds);
+    queue_.push_back({DebrisJob(std::move(island), store_, land_.checked()), key, age});
   }
 }
 

@@ -66,6 +66,7 @@ class GameState {
   std::vector<DebrisJob> advance_jobs();
   DebrisJob::Pace pace_of(const Waiting& w) const;
   void queue_islands(std::vector<Island> islands);
+  std::size_t waited(const Box64& bounds) const;
   void finish(GameUpdate& out) const;
   void note_fills(std::span<const Edit> edits);
   void start_work();
@@ -95,6 +96,8 @@ class GameState {
   // the boxes of the records scanned since (ascending).
   std::vector<GoneCell> gone_;
   std::vector<Box64> untraced_;
+  // follow: the boxes and waits of the jobs the change dropped (their islands altered).
+  std::vector<std::pair<Box64, std::size_t>> dropped_;
   std::uint64_t scans_before_ = 0, passes_before_ = 0;
   // What the game holds: the landscape of the last update delivered (its meshes and polygons)
   // and the chains it was given, one bit per chain id (ids only grow, and a bit is set or
