@@ -159,6 +159,74 @@ RC_GTEST_PROP(GameDriverProperty, NoIslandWaitsLongerThanItsLimit, ()) {
   RC_ASSERT(find_islands(game.landscape(), options.surface.materials).empty());
 }
 
+// The case the property above shrank to once (before the fix): a detach re-cut the cells of
+// another waiting island, whose job was dropped and queued again from age 0, so with a budget of
+// one vertex it was still waiting after max_debris_wait + 1 empty updates.
+TEST(GameDriver, AnIslandReCutByANeighboursDetachKeepsItsWait) {
+  LandscapeConfig config;
+  config.tree = TreeKind::kKdTree;
+  config.edge_cap = 32;
+  config.merge_below = 10;
+  config.min_cell_size = 2;
+  GameOptions options;
+  options.debris_budget = 1;
+  options.max_debris_wait = 2;
+  GameDriver game(Landscape({{-300, -300}, {-44, -44}}, kEmpty, config), options);
+  const auto fill = [](Polygon p) { return Edit::fill(ValidSet(PolygonSet{std::move(p)}), 1); };
+  const auto fill_empty = [](Polygon p) {
+    return Edit::fill_empty(ValidSet(PolygonSet{std::move(p)}), 1);
+  };
+  const std::vector<std::vector<Edit>> frames{
+      {fill_empty({{-304, -304}, {-298, -304}, {-298, -298}}),
+       fill_empty({{-396, -396}, {-268, -396}, {-268, -268}})},
+      {fill({{-226, -206}, {-238, -203}, {-235, -209}, {-235, -210}, {-239, -210},
+             {-235, -211}, {-235, -212}, {-239, -214}, {-233, -212}, {-239, -216},
+             {-235, -214}, {-239, -219}, {-235, -218}, {-235, -219}, {-234, -219},
+             {-233, -218}, {-233, -219}, {-232, -218}, {-232, -219}, {-231, -218},
+             {-230, -219}, {-230, -218}, {-229, -219}, {-230, -214}, {-230, -213}})},
+      {fill_empty({{-177, -306}, {-171, -306}, {-171, -299}, {-177, -302}}),
+       fill_empty({{-396, -396},
+                   {-392, -396},
+                   {-394, -395},
+                   {-395, -395},
+                   {-397, -394},
+                   {-398, -394},
+                   {-396, -395},
+                   {-398, -395}})},
+      {fill({{-261, -141},
+             {-249, -199},
+             {-195, -213},
+             {-171, -236},
+             {-171, -235},
+             {-185, -201},
+             {-171, -234},
+             {-171, -233},
+             {-193, -181},
+             {-147, -180}})},
+      {fill_empty({{-168, -295},
+                   {-168, -294},
+                   {-169, -294},
+                   {-170, -293},
+                   {-170, -294},
+                   {-172, -293},
+                   {-171, -294},
+                   {-172, -295},
+                   {-172, -296},
+                   {-171, -296},
+                   {-172, -297},
+                   {-172, -298},
+                   {-171, -298},
+                   {-169, -297},
+                   {-168, -298},
+                   {-168, -297},
+                   {-167, -298},
+                   {-166, -298}})}};
+  for (const std::vector<Edit>& frame : frames) game.apply(frame);
+  for (std::size_t i = 0; i <= options.max_debris_wait; ++i) game.apply(std::span<const Edit>{});
+  EXPECT_EQ(game.debris_waiting(), 0u);
+  EXPECT_TRUE(find_islands(game.landscape(), options.surface.materials).empty());
+}
+
 // A networked game (net/README.md, "Debris"): the server's driver detaches debris, and a
 // client whose driver never does (debris off) reaches the server's state by applying the frame's
 // edits and then the carve of every debris polygon of the update, the COMMAND the server sends.
