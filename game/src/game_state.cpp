@@ -252,9 +252,11 @@ void GameState::follow(const Landscape& before, const ChangeSet& changes, GameUp
   // its wait: a neighbour's detach re-cutting its cells must not restart the clock, or an island
   // could wait for ever).
   dropped_.clear();
-  for (const Waiting& w : queue_)
-    if (!islands_->holds(w.key)) dropped_.push_back({w.job.bounds(), w.age});
-  std::erase_if(queue_, [&](const Waiting& w) { return !islands_->holds(w.key); });
+  std::erase_if(queue_, [&](const Waiting& w) {
+    if (islands_->holds(w.key)) return false;
+    dropped_.push_back({w.job.bounds(), w.age});
+    return true;
+  });
   out.work.islands_found += found.size();
   queue_islands(std::move(found));
 }
