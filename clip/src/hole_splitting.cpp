@@ -195,22 +195,33 @@ Obstacles obstacles_of(const Ring& outer, std::span<const Ring*> holes) {
   return {std::move(edges), std::move(vertices), std::move(rows), {}};
 }
 
-// Cuts one outer ring with its holes. Two bridges per hole normally leave no hole; when bridges
-// of pinched holes meet at a single vertex a face can still enclose a loop touching it there,
-// and that loop is cut again, with fresh bridges, one level down.
-void split_one(const Ring& outer, std::span<const Ring*> holes, int depth, std::vector<Ring>& out) {
-  Obstacles obstacles = obstacles_of(outer, holes);
-  const std::size_t ring_edges = obstacles.edges.size();
-  // Vertices of more than one ring (each ring visits a vertex once): where a hole already
-  // touches another ring.
+// The points on more than one ring, sorted (a ring visits a point once). A point two rings share
+// lies in a hole's box, so one hole whose box holds no point of the outer ring shares none: told
+// without sorting every point (the common case).
+ScratchVector<Point64> points_on_two_rings(const Ring& outer, std::span<const Ring*> holes,
+                                           const ScratchVector<Point64>& vertices) {
   ScratchVector<Point64> shared;
-  shared.assign(obstacles.vertices.begin(), obstacles.vertices.end());
-  std::sort(shared.begin(), shared.end());
-  auto touches_another_ring = [&](Point64 o) {
-    const auto range = std::equal_range(shared.begin(), shared.end(), o);
-    return range.second - range.first > 1;
-  };
+  if (holes.size() == 1) {
+    const Box64 box = *bounding_box(*holes[0]);
+    if (std::none_of(outer.begin(), outer.end(), [&](Point64 p) { return box.contains(p); }))
+      return shared;
+  }
+  ScratchVector<Point64> all;
+  all.assign(vertices.begin(), vertices.end());
+  std::sort(all.begin(), all.end());
+  for (std::size_t i = 0; i + 1 < all.size(); ++i)
+    if (all[i] == all[i + 1] && (shared.empty() || shared.back() != all[i]))
+      shared.push_back(all[i]);
+  return shared;
+}
 
+// Bridges every hole twice (in the order of their smallest vertices), leaving out a bridge from a
+// vertex another ring shares. Returns whether no point is on two rings.
+bool add_bridges(const Ring& outer, std::span<const Ring*> holes, Obstacles& obstacles) {
+  const ScratchVector<Point64> shared = points_on_two_rings(outer, holes, obstacles.vertices);
+  auto touches_another_ring = [&](Point64 o) {
+    return std::binary_search(shared.begin(), shared.end(), o);
+  };
   std::sort(holes.begin(), holes.end(), [](const Ring* a, const Ring* b) {
     return *std::min_element(a->begin(), a->end()) < *std::min_element(b->begin(), b->end());
   });
@@ -225,8 +236,13 @@ void split_one(const Ring& outer, std::span<const Ring*> holes, int depth, std::
       obstacles.add_bridge({o, *t});
     }
   }
+  return shared.empty();
+}
 
-  // Trace the faces of rings + bridges (each bridge usable once in each direction).
+// The faces of the rings and bridges (each bridge usable once in each direction), traced:
+// counter-clockwise ones to `pieces`, clockwise ones (holes left) to `left_holes`.
+void trace_pieces(const Obstacles& obstacles, std::size_t ring_edges,
+                  ScratchVector<ScratchRing>& pieces, ScratchVector<ScratchRing>& left_holes) {
   const ScratchVector<Segment>& edges = obstacles.edges;
   ScratchVector<Segment> directed;
   directed.assign(edges.begin(), edges.begin() + static_cast<std::ptrdiff_t>(ring_edges));
@@ -234,11 +250,86 @@ void split_one(const Ring& outer, std::span<const Ring*> holes, int depth, std::
     directed.push_back(edges[i]);
     directed.push_back({edges[i].b, edges[i].a});
   }
-  ScratchVector<ScratchRing> faces, pieces, left_holes;
+  ScratchVector<ScratchRing> faces;
   trace_faces(directed, faces);
   for (ScratchRing& ring : faces) {
     if (ring.size() < 3) continue;
     (twice_signed_area(ring) > 0 ? pieces : left_holes).push_back(std::move(ring));
+  }
+}
+
+std::size_t index_of(const Ring& r, Point64 p) {
+  return static_cast<std::size_t>(std::find(r.begin(), r.end(), p) - r.begin());
+}
+
+// Ring a's points from index i to j, then ring b's from k to l (each cyclic, ends included).
+void append_runs(const Ring& a, std::size_t i, std::size_t j, const Ring& b, std::size_t k,
+                 std::size_t l, ScratchRing& out) {
+  for (std::size_t at = i;; at = (at + 1) % a.size()) {
+    out.push_back(a[at]);
+    if (at == j) break;
+  }
+  for (std::size_t at = k;; at = (at + 1) % b.size()) {
+    out.push_back(b[at]);
+    if (at == l) break;
+  }
+}
+
+// One hole bridged twice, no point on two rings: the two faces trace_pieces() finds, walked
+// directly, in its order and from its first points. Every point but the four bridge ends has one
+// edge leaving it. Arriving at a bridge end along its ring, the bridge is the first edge
+// clockwise from the arriving edge's reverse (it leaves into the region's sector there);
+// arriving along the bridge, the ring's edge is (the bridge's reverse is passed over). So one
+// face runs outer t1 -> t2, bridge to o2, hole o2 -> o1, bridge to t1; the other outer t2 -> t1,
+// bridge to o1, hole o1 -> o2, bridge to t2. Both bound area: the two bridges are independent
+// paths from the hole to the outer ring (clip/README.md, "Hole splitting").
+void walk_two_faces(const Ring& outer, const Ring& hole, const Segment& west, const Segment& east,
+                    ScratchVector<ScratchRing>& pieces) {
+  const std::size_t n = outer.size();
+  const std::size_t o1 = index_of(hole, west.a), o2 = index_of(hole, east.a);
+  const std::size_t t1 = index_of(outer, west.b), t2 = index_of(outer, east.b);
+  // trace_faces() starts with the face of the outer ring's edge 0, at the outer ring's point 0,
+  // then the other from its first outer point.
+  const bool t1_face_first = (n - t1) % n < (t2 + n - t1) % n;
+  for (const bool from_t1 : {t1_face_first, !t1_face_first}) {
+    ScratchRing& face = pieces.emplace_back();
+    if (from_t1)
+      append_runs(outer, t1, t2, hole, o2, o1, face);
+    else
+      append_runs(outer, t2, t1, hole, o1, o2, face);
+  }
+  const std::size_t start = t1_face_first ? t1 : t2;
+  std::rotate(pieces[0].begin(), pieces[0].begin() + static_cast<std::ptrdiff_t>((n - start) % n),
+              pieces[0].end());
+}
+
+// Checked builds: walk_two_faces() gave what tracing gives.
+void check_two_faces(const ScratchVector<ScratchRing>& walked, const Obstacles& obstacles,
+                     std::size_t ring_edges) {
+  ScratchVector<ScratchRing> pieces, left_holes;
+  trace_pieces(obstacles, ring_edges, pieces, left_holes);
+  const auto same = [](const ScratchRing& x, const ScratchRing& y) {
+    return std::equal(x.begin(), x.end(), y.begin(), y.end());
+  };
+  if (!left_holes.empty() ||
+      !std::equal(walked.begin(), walked.end(), pieces.begin(), pieces.end(), same))
+    fail_stage("hole splitting", "the two faces walked are not the faces traced");
+}
+
+// Cuts one outer ring with its holes. Two bridges per hole normally leave no hole; when bridges
+// of pinched holes meet at a single vertex a face can still enclose a loop touching it there,
+// and that loop is cut again, with fresh bridges, one level down.
+void split_one(const Ring& outer, std::span<const Ring*> holes, int depth, std::vector<Ring>& out) {
+  Obstacles obstacles = obstacles_of(outer, holes);
+  const std::size_t ring_edges = obstacles.edges.size();
+  const bool rings_apart = add_bridges(outer, holes, obstacles);
+  ScratchVector<ScratchRing> pieces, left_holes;
+  if (holes.size() == 1 && rings_apart) {  // the common case: walked, not traced
+    walk_two_faces(outer, *holes[0], obstacles.edges[ring_edges], obstacles.edges[ring_edges + 1],
+                   pieces);
+    if constexpr (EDGELAND_ASSERTS_ENABLED) check_two_faces(pieces, obstacles, ring_edges);
+  } else {
+    trace_pieces(obstacles, ring_edges, pieces, left_holes);
   }
   if (left_holes.empty()) {
     for (const ScratchRing& piece : pieces) out.emplace_back(piece.begin(), piece.end());

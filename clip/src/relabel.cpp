@@ -196,6 +196,7 @@ std::vector<LabeledSet> cut_to_windows(const ValidSet& regions, std::span<const 
           p.clip_box(windows[k], static_cast<std::int32_t>(k));
         return p.collinear_free(ValidSetFactory::collinear_free(regions))
             .corner_bridges()
+            .small_overlay(true)
             .run(nullptr, true);
       },
       options, "cut_to_windows", inputs, windows_wkt);

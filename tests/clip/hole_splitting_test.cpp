@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "assembly.hpp"
+#include "canonical.hpp"
 #include "edgeland/kernel/area.hpp"
 #include "edgeland/kernel/point_in_polygon.hpp"
 #include "edgeland/kernel/validate.hpp"
@@ -114,6 +115,26 @@ TEST(HoleSplitting, SquareWithOneHole) {
   Int128 sum = 0;
   for (const Ring& p : pieces) sum += twice_signed_area(p);
   EXPECT_EQ(sum, Int128(2 * (100 - 16)));
+}
+
+TEST(HoleSplitting, OneHoleIsCutAlongItsTwoBridges) {
+  // The one-hole case is walked, not traced (checked builds trace it too and compare). Bridges:
+  // from the hole's smallest vertex (3, 3) west, the ray meets x = 0 at (0, 3) and the triangle
+  // (3, 3), (0, 3), (0, 0) holds no other vertex, so (0, 0); from its largest (7, 7) east, by the
+  // same rule mirrored, (10, 10). The pieces lie on either side of the path they make.
+  const Ring hole = cw(rect(3, 3, 7, 7));
+  const std::set<Ring> want{
+      detail::canonical_ring({{0, 0}, {10, 0}, {10, 10}, {7, 7}, {7, 3}, {3, 3}}),
+      detail::canonical_ring({{10, 10}, {0, 10}, {0, 0}, {3, 3}, {3, 7}, {7, 7}})};
+  for (std::ptrdiff_t start = 0; start < 4; ++start) {  // the outer ring from each corner
+    Ring outer = rect(0, 0, 10, 10);
+    std::rotate(outer.begin(), outer.begin() + start, outer.end());
+    std::size_t n = 0;
+    std::set<Ring> got;
+    for (Ring& p : detail::split_holes({outer}, {hole}, n)) got.insert(detail::canonical_ring(p));
+    EXPECT_EQ(got, want) << "outer ring from corner " << start;
+    EXPECT_EQ(split_problems({outer}, {hole}), "");
+  }
 }
 
 TEST(HoleSplitting, SeveralHolesSideBySideTouchingAndStacked) {
