@@ -270,11 +270,16 @@ std::size_t GameState::waited(const Box64& bounds) const {
   return age;
 }
 
+// Each before the first job that has waited less: an island found again keeps its wait, which
+// may be longer than that of jobs queued after its first finding, and advance_jobs() stops at the
+// first job that stops (a longer wait behind a shorter one could pass max_debris_wait).
 void GameState::queue_islands(std::vector<Island> islands) {
   for (Island& island : islands) {
     const IslandKey key = key_of(island);
     const std::size_t age = waited(island.bounds);
-    queue_.push_back({DebrisJob(std::move(island), store_, land_.checked()), key, age});
+    const auto at =
+        std::find_if(queue_.begin(), queue_.end(), [&](const Waiting& w) { return w.age < age; });
+    queue_.insert(at, {DebrisJob(std::move(island), store_, land_.checked()), key, age});
   }
 }
 
@@ -317,6 +322,7 @@ void GameState::trace_surface(GameUpdate& out) {
 // then followed.
 void GameState::drain_debris(GameUpdate& out) {
   if (queue_.empty()) return;
+  if (land_.checked()) check_queue_order();
   std::vector<DebrisJob> finished = advance_jobs();
   for (Waiting& w : queue_) ++w.age;
   if (finished.empty()) return;
@@ -373,6 +379,14 @@ void GameState::check_before_surface() const {
   for (const GoneCell& g : gone_)
     if (land_.cell(g.box) && !untraced(g.box))
       throw std::logic_error("game layer: a gone cell the landscape has, not scanned again");
+}
+
+// Checked mode: what the debris stage is handed. advance_jobs() stops at the first job that
+// stops, which bounds every wait only if no job waited longer than one queued before it.
+void GameState::check_queue_order() const {
+  for (std::size_t i = 1; i < queue_.size(); ++i)
+    if (queue_[i].age > queue_[i - 1].age)
+      throw std::logic_error("game layer: a queued island has waited longer than one before it");
 }
 
 void GameState::start_work() {

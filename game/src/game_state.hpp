@@ -62,6 +62,7 @@ class GameState {
   void replace_cells(std::span<const Box64> replaced, std::span<const Box64> fresh);
   void trace_surface(GameUpdate& out);
   void check_before_surface() const;
+  void check_queue_order() const;
   void drain_debris(GameUpdate& out);
   std::vector<DebrisJob> advance_jobs();
   DebrisJob::Pace pace_of(const Waiting& w) const;

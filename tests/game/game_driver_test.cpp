@@ -227,6 +227,50 @@ TEST(GameDriver, AnIslandReCutByANeighboursDetachKeepsItsWait) {
   EXPECT_TRUE(find_islands(game.landscape(), options.surface.materials).empty());
 }
 
+// The case MirrorsOfUpdatesEqualFullExportsAfterEveryFrame shrank to with the queue's order
+// checked (before the fix): an island found again kept its wait but was queued behind younger
+// jobs, so the pass, which stops at the first job that stops, could leave it past its limit.
+TEST(GameDriver, AnIslandFoundAgainIsQueuedBeforeYoungerJobs) {
+  LandscapeConfig config;
+  config.tree = TreeKind::kKdTree;
+  config.edge_cap = 40;
+  config.merge_below = 13;
+  config.min_cell_size = 2;
+  GameOptions options;
+  options.surface.border_wall = false;
+  for (int m = 1; m < 6; ++m) {
+    options.surface.materials.solid[m] = m == 1;
+    options.surface.materials.anchored[m] = m != 1;
+  }
+  options.debris_budget = 0;
+  options.max_debris_wait = 2;
+  Landscape world({{-300, -300}, {-236, -236}}, kEmpty, config);
+  world.set_checked(true);  // the queue's order is checked before every debris pass
+  GameDriver game(std::move(world), options);
+  const auto edit = [](Edit::Kind kind, Polygon p) {
+    ValidSet shape(PolygonSet{std::move(p)});
+    return kind == Edit::Kind::kFill ? Edit::fill(std::move(shape), 1)
+                                     : Edit::fill_empty(std::move(shape), 1);
+  };
+  const std::vector<Edit> edits{
+      edit(Edit::Kind::kFillEmpty, {{-329, -329},
+                                    {-325, -329},
+                                    {-327, -328},
+                                    {-328, -328},
+                                    {-330, -327},
+                                    {-331, -327},
+                                    {-329, -328},
+                                    {-331, -328}}),
+      edit(Edit::Kind::kFillEmpty, {{-250, -275}, {-247, -275}, {-247, -269}}),
+      edit(Edit::Kind::kFill, {{-300, -300}, {-298, -299}, {-299, -299}}),
+      edit(Edit::Kind::kFill, {{-249, -275}, {-262, -275}, {-262, -285}})};
+  for (const Edit& e : edits) EXPECT_NO_THROW(game.apply(std::span<const Edit>(&e, 1)));
+  for (std::size_t i = 0; i <= options.max_debris_wait; ++i)
+    EXPECT_NO_THROW(game.apply(std::span<const Edit>{}));
+  EXPECT_EQ(game.debris_waiting(), 0u);
+  EXPECT_TRUE(find_islands(game.landscape(), options.surface.materials).empty());
+}
+
 // A networked game (net/README.md, "Debris"): the server's driver detaches debris, and a
 // client whose driver never does (debris off) reaches the server's state by applying the frame's
 // edits and then the carve of every debris polygon of the update, the COMMAND the server sends.
