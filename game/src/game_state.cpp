@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <bit>
+#include <cstring>
 #include <stdexcept>
+#include <string>
 
 #include "debris.hpp"
 #include "edgeland/clip/clip.hpp"
@@ -137,7 +139,8 @@ ChangeSet GameState::edit(std::span<const Edit> edits) { return land_.apply_batc
 
 GameUpdate GameState::apply(std::span<const Edit> edits) {
   if (broken_)
-    throw std::logic_error("GameDriver: an update ran out of memory; reset() it before applying");
+    throw std::logic_error(std::string("GameDriver: an update stopped halfway (") +
+                           broken_by_.data() + "); reset() it before applying");
   const Landscape before = land_;
   ChangeSet changes = edit(edits);  // the only step that may throw an input error
   return guarded([&] {
@@ -176,18 +179,29 @@ GameUpdate GameState::reset(Landscape world) {
   });
 }
 
-// The stages of an update, then its delivery; anything thrown there (only running out of
-// memory) leaves the state changed halfway: broken until rebuilt.
+// The stages of an update, then its delivery; anything thrown there (running out of memory, or
+// an internal error a checked landscape found) leaves the state changed halfway: broken until
+// rebuilt, the message kept to say why.
 template <class Stages>
 GameUpdate GameState::guarded(Stages&& stages) {
   try {
     GameUpdate out = stages();
     deliver(out);
     return out;
+  } catch (const std::exception& e) {
+    break_by(e.what());
+    throw;
   } catch (...) {
-    broken_ = true;
+    break_by("an exception of an unknown type");
     throw;
   }
+}
+
+void GameState::break_by(const char* why) noexcept {
+  broken_ = true;
+  const std::size_t n = std::min(std::strlen(why), broken_by_.size() - 1);
+  std::copy_n(why, n, broken_by_.begin());
+  broken_by_[n] = '\0';
 }
 
 // Everything that can run out of memory first (the bitmap's room, the lists of the delivery),
@@ -212,7 +226,7 @@ void GameState::update_lost() noexcept {
     delivered_ = delivered_before_;
   }
   last_delivery_ = false;
-  broken_ = true;
+  break_by("its last update did not reach the game: update_lost()");
 }
 
 void GameState::make_room_for(ChainId id) {

@@ -11,6 +11,7 @@
 //            the first;
 //   finish   the steps' changes, chains and meshes merged into one GameUpdate (what was added
 //            and removed within the update appears in neither list).
+#include <array>
 #include <deque>
 #include <memory>
 #include <span>
@@ -73,6 +74,8 @@ class GameState {
   void start_work();
   // The update is the game's: what it holds now (delivered_, delivered_chains_) follows it.
   void deliver(const GameUpdate& out);
+  // Broken until rebuilt, `why` kept (cut to fit) for the next apply's error.
+  void break_by(const char* why) noexcept;
   template <class Stages>
   GameUpdate guarded(Stages&& stages);
 
@@ -105,6 +108,9 @@ class GameState {
   // cleared without allocating, so update_lost() can undo the last delivery). Kept so that a
   // state an update failed in can be rebuilt.
   bool broken_ = false;
+  // What stopped it (the exception's message, or the lost update), cut to fit: noting it must
+  // not allocate, as it runs when memory ran out.
+  std::array<char, 160> broken_by_{};
   Landscape delivered_, delivered_before_;
   std::vector<std::uint64_t> delivered_chains_;     // bit id % 64 of word id / 64
   std::vector<ChainId> last_added_, last_removed_;  // the last delivery's chains

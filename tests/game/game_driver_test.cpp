@@ -9,6 +9,8 @@
 
 #include <algorithm>
 #include <map>
+#include <stdexcept>
+#include <string>
 
 #include "edgeland/game/islands.hpp"
 #include "edgeland/game/render_meshes.hpp"
@@ -393,6 +395,25 @@ TEST(GameDriver, ResetAfterAnUndoNamesWhatChanged) {
   apply_update(chains, meshes, game.reset(before));
   EXPECT_EQ(sorted(values(chains)), sorted(surface_chains(before)));
   EXPECT_EQ(values(meshes), all_meshes(before));
+}
+
+TEST(GameDriver, AStoppedDriverSaysWhatStoppedItUntilReset) {
+  // A binding that could not hand an update over says so (update_lost()); the driver refuses
+  // updates, naming that, until reset() rebuilds it.
+  GameDriver game(layered_world(1024));
+  const ValidSet hole(PolygonSet{{{100, 100}, {300, 100}, {200, 700}}});
+  game.apply(Edit::carve(hole));
+  game.update_lost();
+  try {
+    game.apply(Edit::carve(hole));
+    ADD_FAILURE() << "a stopped driver applied an update";
+  } catch (const std::logic_error& e) {
+    EXPECT_NE(std::string(e.what()).find("update_lost()"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("reset()"), std::string::npos) << e.what();
+  }
+  game.reset(game.landscape());
+  EXPECT_NO_THROW(
+      game.apply(Edit::carve(ValidSet(PolygonSet{{{500, 100}, {600, 100}, {550, 300}}}))));
 }
 
 }  // namespace

@@ -22,8 +22,9 @@
 // ERRORS. apply() validates the edits as the landscape does and throws the landscape's typed
 // errors (InvalidInput, CoordinateOutOfRange, InvalidMaterial, LimitExceeded, ...) with the
 // driver and its landscape exactly as they were (the strong guarantee). Nothing else throws
-// but running out of memory, after which the driver must be reset() (apply() throws
-// std::logic_error until then): reset() then derives everything anew from the world it is
+// but running out of memory (or, on a checked landscape, an internal error its checks found),
+// after which the driver must be reset() (apply() throws std::logic_error until then, naming
+// what stopped the update): reset() then derives everything anew from the world it is
 // given, and its update takes the game from what the last update it returned left it holding
 // to the new state (chain ids continue; what was removed never comes back). Detaching debris
 // never throws: an island that changed before its turn is found again by the update that
