@@ -338,6 +338,7 @@ void GameState::drain_debris(GameUpdate& out) {
   if (queue_.empty()) return;
   if (land_.checked()) check_queue_order();
   std::vector<DebrisJob> finished = advance_jobs();
+  if (land_.checked()) check_waits_bounded();
   for (Waiting& w : queue_) ++w.age;
   if (finished.empty()) return;
   const Landscape before = land_;
@@ -393,6 +394,14 @@ void GameState::check_before_surface() const {
   for (const GoneCell& g : gone_)
     if (land_.cell(g.box) && !untraced(g.box))
       throw std::logic_error("game layer: a gone cell the landscape has, not scanned again");
+}
+
+// Checked mode: the bound game/README.md promises (no island waits more than max_debris_wait + 1
+// updates): after the jobs advanced, none that has waited its limit is still queued.
+void GameState::check_waits_bounded() const {
+  for (const Waiting& w : queue_)
+    if (w.age >= options_.max_debris_wait)
+      throw std::logic_error("game layer: a queued island has waited its limit and is not done");
 }
 
 // Checked mode: what the debris stage is handed. advance_jobs() stops at the first job that

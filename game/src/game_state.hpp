@@ -64,6 +64,7 @@ class GameState {
   void trace_surface(GameUpdate& out);
   void check_before_surface() const;
   void check_queue_order() const;
+  void check_waits_bounded() const;
   void drain_debris(GameUpdate& out);
   std::vector<DebrisJob> advance_jobs();
   DebrisJob::Pace pace_of(const Waiting& w) const;
